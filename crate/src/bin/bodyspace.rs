@@ -1,0 +1,45 @@
+//! `bodyspace`: batch work on body scans from the command line.
+//!
+//! Every subcommand prints JSON on stdout; a bad input exits with status 2 and one line on stderr.
+
+// The command-line program is native only; a wasm32 build of the tests sees an empty main.
+#[cfg(target_arch = "wasm32")]
+fn main() {}
+
+#[cfg(not(target_arch = "wasm32"))]
+fn main() {
+    native::main()
+}
+
+#[cfg(not(target_arch = "wasm32"))]
+mod native {
+    use clap::{Parser, Subcommand};
+
+    #[derive(Parser)]
+    #[command(
+        name = "bodyspace",
+        version,
+        about = "Align a body template onto scans and build PCA shape models"
+    )]
+    struct Cli {
+        #[command(subcommand)]
+        command: Command,
+    }
+
+    #[derive(Subcommand)]
+    enum Command {
+        /// Print vertex/triangle counts, bounding box, units, holes, components (and landmarks) as JSON.
+        Info(bodyspace::cli::info::InfoArgs),
+    }
+
+    pub fn main() {
+        let cli = Cli::parse();
+        let result = match cli.command {
+            Command::Info(args) => bodyspace::cli::info::run(&args),
+        };
+        if let Err(message) = result {
+            eprintln!("bodyspace: {message}");
+            std::process::exit(2);
+        }
+    }
+}

@@ -1,0 +1,3 @@
+//! The native `bodyspace` command-line program: one module per subcommand.
+
+pub mod info;

@@ -1,0 +1,1 @@
+//! The synthetic population: MakeHuman-based subjects, posed, scanned by a virtual body scanner, with ground truth.

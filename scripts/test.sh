@@ -1,0 +1,28 @@
+#!/usr/bin/env bash
+# The one test command (README, .ci/run): installs what is missing, lints, then runs the three
+# depths of tests: Rust unit + algorithm end-to-end, the WASM bindings in a real browser, and
+# Playwright against the built app.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+export PATH="$HOME/.cargo/bin:$PATH"
+
+bash scripts/setup.sh
+
+echo "== lint"
+cargo fmt --manifest-path crate/Cargo.toml --check
+cargo clippy --manifest-path crate/Cargo.toml --all-targets -- -D warnings
+cargo clippy --manifest-path crate/Cargo.toml --lib --target wasm32-unknown-unknown -- -D warnings
+npx tsc --noEmit -p tsconfig.json
+
+echo "== rust tests"
+cargo test --manifest-path crate/Cargo.toml
+
+echo "== wasm tests (headless chromium)"
+bash scripts/test-wasm.sh
+
+echo "== build"
+bash scripts/build-wasm.sh
+npx vite build --logLevel warn
+
+echo "== browser tests (playwright)"
+npx playwright test
