@@ -46,6 +46,8 @@ fn export_writes_mesh_landmarks_segments_and_provenance() {
     let lm = std::fs::read_to_string(dir.join("landmarks.csv")).unwrap();
     assert!(lm.starts_with("name,vertex,x,y,z\n\"Sellion\","));
     assert_eq!(lm.lines().count(), 74);
+    let vl = std::fs::read_to_string(dir.join("virtual_landmarks.csv")).unwrap();
+    assert_eq!(vl.lines().count(), 13);
     let seg = std::fs::read_to_string(dir.join("segments.csv")).unwrap();
     assert!(seg.starts_with("vertex,segment,weight\n"));
     assert!(seg.lines().count() > 13380);

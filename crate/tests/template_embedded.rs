@@ -249,3 +249,39 @@ fn broken_files_are_rejected() {
     let again = Template::from_bytes(&bytes).unwrap();
     assert_eq!(again.mesh(), base().mesh());
 }
+
+#[test]
+fn virtual_landmarks_sit_where_their_rules_say() {
+    let t = base();
+    let v = t.virtual_landmark_vertices().unwrap();
+    let names: Vec<&str> = v.iter().map(|(n, _)| n.as_str()).collect();
+    assert_eq!(names, bodyspace::template::VIRTUAL_LANDMARKS);
+    let p = |name: &str| t.mesh().positions[v.iter().find(|(n, _)| n == name).unwrap().1 as usize];
+    let stature = t
+        .mesh()
+        .positions
+        .iter()
+        .map(|p| p.y)
+        .fold(f64::MIN, f64::max);
+    assert!(stature - p("Virtual Head Top").y < 0.005);
+    for side in ["Lt.", "Rt."] {
+        assert!(p(&format!("{side} Virtual Sole")).y < 0.01);
+        let sign = if side == "Lt." { 1.0 } else { -1.0 };
+        for limb in ["Upper Arm", "Forearm", "Thigh", "Shank", "Sole"] {
+            assert!(
+                p(&format!("{side} Virtual {limb}")).x * sign > 0.05,
+                "{side} {limb}"
+            );
+        }
+    }
+    let belly = p("Virtual Belly");
+    assert!(belly.x.abs() < 0.03 && belly.z > 0.05, "belly at {belly}");
+    // The same rules run on the fine template give the same points (base vertices come first
+    // and new vertices lie between them).
+    let f = t.at_resolution(Resolution::Fine);
+    let vf = f.virtual_landmark_vertices().unwrap();
+    for ((n, a), (_, b)) in v.iter().zip(&vf) {
+        let d = (t.mesh().positions[*a as usize] - f.mesh().positions[*b as usize]).norm();
+        assert!(d < 0.02, "{n} moves {d} m between resolutions");
+    }
+}
