@@ -1,5 +1,7 @@
 //! The template build tool reproduces the frozen file, and `bodyspace template --export` writes
 //! what it promises.
+// Native only: reads files and runs the CLI (the browser tests are in web.rs).
+#![cfg(not(target_arch = "wasm32"))]
 
 use std::process::Command;
 

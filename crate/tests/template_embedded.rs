@@ -1,4 +1,6 @@
 //! The embedded template: landmarks, segments, flags, resolutions, orientation.
+// Native only: reads files and runs the CLI (the browser tests are in web.rs).
+#![cfg(not(target_arch = "wasm32"))]
 
 use bodyspace::landmarks::CAESAR_LANDMARKS;
 use bodyspace::template::topology::{signed_volume, vertex_normals};
