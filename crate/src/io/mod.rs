@@ -10,6 +10,7 @@ pub mod landmarks_read;
 pub mod lnd;
 pub mod obj_read;
 pub mod obj_write;
+pub mod ply_fast;
 pub mod ply_header;
 pub mod ply_read;
 pub mod ply_write;

@@ -8,6 +8,7 @@
 
 use nalgebra::Point3;
 
+use super::ply_fast::{fixed_vertices, uchar_int_faces};
 use super::ply_header::{parse_header, Element, PlyFormat, PropertyKind, ScalarType};
 use super::IoError;
 use crate::mesh::Mesh;
@@ -29,6 +30,10 @@ trait Source {
     const BINARY: bool;
     /// Smallest number of bytes one value of type `t` can take.
     fn min_value_bytes(t: ScalarType) -> usize;
+    /// The raw body, read position and byte order, for the binary fast paths.
+    fn binary_parts(&mut self) -> Option<(&[u8], &mut usize, bool)> {
+        None
+    }
 }
 
 struct Binary<'a> {
@@ -93,6 +98,10 @@ impl Source for Binary<'_> {
 
     fn min_value_bytes(t: ScalarType) -> usize {
         t.size()
+    }
+
+    fn binary_parts(&mut self) -> Option<(&[u8], &mut usize, bool)> {
+        Some((self.bytes, &mut self.pos, self.big_endian))
     }
 }
 
@@ -199,11 +208,24 @@ fn read_body<S: Source>(elements: &[Element], mut src: S, file: &str) -> Result<
         let result = match element.name.as_str() {
             "vertex" => {
                 mesh.positions.reserve(capacity);
-                read_vertices(element, &mut src, &mut mesh.positions, file)?
+                let fast = src.binary_parts().and_then(|(bytes, pos, big)| {
+                    fixed_vertices(bytes, pos, big, element, &mut mesh.positions, file)
+                });
+                match fast {
+                    Some(done) => done.map(Ok)?,
+                    None => read_vertices(element, &mut src, &mut mesh.positions, file)?,
+                }
             }
             "face" => {
                 mesh.triangles.reserve(capacity);
-                read_faces(element, &mut src, vertex_count, &mut mesh.triangles, file)?
+                let fast = src.binary_parts().and_then(|(bytes, pos, big)| {
+                    let triangles = &mut mesh.triangles;
+                    uchar_int_faces(bytes, pos, big, element, vertex_count, triangles, file)
+                });
+                match fast {
+                    Some(done) => done.map(Ok)?,
+                    None => read_faces(element, &mut src, vertex_count, &mut mesh.triangles, file)?,
+                }
             }
             _ => skip_element(element, &mut src),
         };

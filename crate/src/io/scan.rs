@@ -43,8 +43,8 @@ pub fn read_scan(bytes: &[u8], file_name: &str) -> Result<Mesh, IoError> {
     }
 }
 
-/// The format of (decompressed) `data`: magic bytes first, then the extension, then a look at
-/// the text for OBJ statements.
+/// The format of (decompressed) `data`: magic bytes first (`ply`, a binary STL's consistent size,
+/// `solid`), then a look at the text for OBJ statements, then the extension.
 pub fn detect_format(data: &[u8], file_name: &str) -> Option<ScanFormat> {
     if is_ply(data) {
         return Some(ScanFormat::Ply);
@@ -52,14 +52,17 @@ pub fn detect_format(data: &[u8], file_name: &str) -> Option<ScanFormat> {
     if is_binary_stl(data) || looks_like_ascii_stl(data) {
         return Some(ScanFormat::Stl);
     }
-    let name = inner_name(file_name);
-    match name.rsplit('.').next() {
-        Some("ply") => return Some(ScanFormat::Ply),
-        Some("obj") => return Some(ScanFormat::Obj),
-        Some("stl") => return Some(ScanFormat::Stl),
-        _ => {}
+    if looks_like_obj(data) {
+        return Some(ScanFormat::Obj);
     }
-    looks_like_obj(data).then_some(ScanFormat::Obj)
+    // The content is no clean example of any format: let the extension pick the reader, whose
+    // error then says what is wrong in that format's terms.
+    match inner_name(file_name).rsplit('.').next() {
+        Some("ply") => Some(ScanFormat::Ply),
+        Some("obj") => Some(ScanFormat::Obj),
+        Some("stl") => Some(ScanFormat::Stl),
+        _ => None,
+    }
 }
 
 /// Whether the first lines of `data` are OBJ statements (`v `, `f `, `#`, `o `, ...).
