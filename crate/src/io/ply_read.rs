@@ -280,11 +280,25 @@ fn check_fits<S: Source>(element: &Element, src: &S, file: &str) -> Result<(), I
     Ok(())
 }
 
-/// How many records to reserve: never more than the bytes left could hold.
+/// Upper bound on records reserved up front; larger meshes grow the vectors as they are read.
+const MAX_RESERVE: u64 = 1 << 22;
+
+/// How many records to reserve: never more than the bytes left could hold (counting lists as
+/// triangles, the smallest polygon that yields output), and never more than [`MAX_RESERVE`], so
+/// a lying header costs at most a small multiple of the file size.
 fn capacity_for<S: Source>(element: &Element, src: &S) -> usize {
-    let min = min_record_bytes::<S>(element).max(1);
-    let fits = src.remaining() / min;
-    (element.count.min(fits as u64)) as usize
+    let per_record: usize = element
+        .properties
+        .iter()
+        .map(|p| match p.kind {
+            PropertyKind::Scalar(t) => S::min_value_bytes(t),
+            PropertyKind::List { count, item } => {
+                S::min_value_bytes(count) + 3 * S::min_value_bytes(item)
+            }
+        })
+        .sum();
+    let fits = (src.remaining() / per_record.max(1)) as u64;
+    element.count.min(fits).min(MAX_RESERVE) as usize
 }
 
 type RecordResult = Result<(), (u64, Fail)>;
