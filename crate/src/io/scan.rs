@@ -86,3 +86,46 @@ fn looks_like_obj(data: &[u8]) -> bool {
     }
     saw_vertex
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn content_beats_the_extension() {
+        assert_eq!(
+            detect_format(b"ply\nformat ascii 1.0\n", "x.obj"),
+            Some(ScanFormat::Ply)
+        );
+        assert_eq!(
+            detect_format(b"solid x\nfacet\n", "x.ply"),
+            Some(ScanFormat::Stl)
+        );
+        assert_eq!(
+            detect_format(b"# hi\nv 1 2 3\n", "x.ply"),
+            Some(ScanFormat::Obj)
+        );
+        let mut binary_stl = vec![b's'; 80];
+        binary_stl.extend_from_slice(&1u32.to_le_bytes());
+        binary_stl.extend_from_slice(&[0u8; 50]);
+        assert_eq!(detect_format(&binary_stl, "x"), Some(ScanFormat::Stl));
+    }
+
+    #[test]
+    fn extension_decides_unclear_content_and_nothing_decides_noise() {
+        assert_eq!(
+            detect_format(b"\x00\x01junk", "x.PLY"),
+            Some(ScanFormat::Ply)
+        );
+        assert_eq!(
+            detect_format(b"\x00\x01junk", "x.obj.gz"),
+            Some(ScanFormat::Obj)
+        );
+        assert_eq!(
+            detect_format(b"\x00\x01junk", "x.stl"),
+            Some(ScanFormat::Stl)
+        );
+        assert_eq!(detect_format(b"\x00\x01junk", "x.bin"), None);
+        assert_eq!(detect_format(b"hello world\n", "notes.txt"), None);
+    }
+}
