@@ -13,6 +13,7 @@ pub mod obj_write;
 pub mod ply_fast;
 pub mod ply_header;
 pub mod ply_read;
+pub mod ply_source;
 pub mod ply_write;
 pub mod scan;
 pub mod stl_read;
