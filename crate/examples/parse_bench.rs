@@ -1,12 +1,14 @@
 //! Scan parsing benchmark: a deterministic 300,000-triangle binary PLY (a wavy grid) is built in
-//! memory, parsed N times with `read_scan`, and the median time is printed.
+//! memory, parsed N times with `read_scan`, and the median time is printed; likewise the same mesh
+//! as OBJ, and the mesh analysis (`summarise`, `vertex_normals`) on it.
 //!
 //! `cargo run --release --example parse_bench [N]`
 
 use std::time::Instant;
 
 use bodyspace::io::{read_scan, write_obj, write_ply};
-use bodyspace::mesh::Mesh;
+use bodyspace::mesh::normals::vertex_normals;
+use bodyspace::mesh::{summarise, Mesh};
 use nalgebra::Point3;
 
 /// A `(n+1)²`-vertex grid of `2n²` triangles with a smooth height field.
@@ -30,18 +32,23 @@ fn grid(n: u32) -> Mesh {
     Mesh::new(positions, triangles)
 }
 
-fn median_ms(runs: usize, bytes: &[u8], name: &str, triangles: usize) -> f64 {
+fn median_of(runs: usize, mut work: impl FnMut()) -> f64 {
     let mut times: Vec<f64> = (0..runs)
         .map(|_| {
             let start = Instant::now();
-            let mesh = read_scan(bytes, name).expect("the generated file parses");
-            let ms = start.elapsed().as_secs_f64() * 1e3;
-            assert_eq!(mesh.triangles.len(), triangles);
-            ms
+            work();
+            start.elapsed().as_secs_f64() * 1e3
         })
         .collect();
     times.sort_by(f64::total_cmp);
     times[times.len() / 2]
+}
+
+fn median_ms(runs: usize, bytes: &[u8], name: &str, triangles: usize) -> f64 {
+    median_of(runs, || {
+        let mesh = read_scan(bytes, name).expect("the generated file parses");
+        assert_eq!(mesh.triangles.len(), triangles);
+    })
 }
 
 fn main() {
@@ -62,6 +69,14 @@ fn main() {
     println!(
         "OBJ: {:.1} MB; median of {runs}: {:.2} ms",
         obj.len() as f64 / 1e6,
-        median_ms(runs.min(5), &obj, "bench.obj", mesh.triangles.len())
+        median_ms(runs, &obj, "bench.obj", mesh.triangles.len())
     );
+    let summary_ms = median_of(runs, || {
+        let s = summarise(&mesh);
+        assert_eq!((s.components, s.boundary_loops), (1, 1));
+    });
+    let normals_ms = median_of(runs, || {
+        assert_eq!(vertex_normals(&mesh).len(), mesh.positions.len());
+    });
+    println!("summarise: {summary_ms:.2} ms; vertex_normals: {normals_ms:.2} ms");
 }
