@@ -274,6 +274,21 @@ fn ply_out_of_range_and_negative_indices_are_errors() {
 }
 
 #[test]
+fn ply_binary_triangle_fast_path_checks_indices() {
+    let positions = vec![
+        Point3::origin(),
+        Point3::new(1.0, 0.0, 0.0),
+        Point3::new(0.0, 1.0, 0.0),
+    ];
+    let bad = Mesh::new(positions, vec![[0, 1, 2], [0, 1, 5]]);
+    let err = read_scan(&write_ply(&bad), "scan.ply").unwrap_err();
+    assert_eq!(
+        err.to_string(),
+        "scan.ply: face 1 refers to vertex 5 but the file has 3 vertices"
+    );
+}
+
+#[test]
 fn ply_bad_tokens_and_missing_coordinates_are_errors() {
     let text = "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\nproperty float z\nend_header\n0 zero 0\n";
     let err = read_scan(text.as_bytes(), "scan.ply").unwrap_err();

@@ -142,16 +142,28 @@ pub(super) fn uchar_int_faces(
             return Some(Err(truncated()));
         };
         p += 1 + 4 * n;
+        let out_of_range = |v: i64| {
+            Some(Err(IoError::IndexOutOfRange {
+                file: file.to_string(),
+                face,
+                index: v,
+                vertex_count,
+            }))
+        };
+        if n == 3 {
+            // Triangles are nearly every face of a scan: no polygon buffer.
+            let t = [0, 4, 8].map(|o| index(bytes_at::<4>(items, o)));
+            if let Some(&v) = t.iter().find(|&&v| v < 0 || v as u64 >= vertex_count) {
+                return out_of_range(v);
+            }
+            triangles.push(t.map(|v| v as u32));
+            continue;
+        }
         polygon.clear();
         for k in 0..n {
             let v = index(bytes_at::<4>(items, 4 * k));
             if v < 0 || v as u64 >= vertex_count {
-                return Some(Err(IoError::IndexOutOfRange {
-                    file: file.to_string(),
-                    face,
-                    index: v,
-                    vertex_count,
-                }));
+                return out_of_range(v);
             }
             polygon.push(v as u32);
         }

@@ -6,25 +6,27 @@ use super::Mesh;
 
 /// Boundary edges `[a, b]`, directed as in their triangle (so loops run consistently), sorted.
 pub fn boundary_edges(mesh: &Mesh) -> Vec<[u32; 2]> {
-    let mut edges: Vec<(u32, u32, [u32; 2])> = Vec::with_capacity(mesh.triangles.len() * 3);
+    // Key = (min << 32 | max): one u64 comparison per sort step instead of a tuple compare.
+    let mut edges: Vec<(u64, [u32; 2])> = Vec::with_capacity(mesh.triangles.len() * 3);
     for t in &mesh.triangles {
         for k in 0..3 {
             let (a, b) = (t[k], t[(k + 1) % 3]);
             if a != b {
-                edges.push((a.min(b), a.max(b), [a, b]));
+                let key = ((a.min(b) as u64) << 32) | a.max(b) as u64;
+                edges.push((key, [a, b]));
             }
         }
     }
-    edges.sort_unstable_by_key(|e| (e.0, e.1));
+    edges.sort_unstable_by_key(|e| e.0);
     let mut out = Vec::new();
     let mut i = 0;
     while i < edges.len() {
         let mut j = i + 1;
-        while j < edges.len() && (edges[j].0, edges[j].1) == (edges[i].0, edges[i].1) {
+        while j < edges.len() && edges[j].0 == edges[i].0 {
             j += 1;
         }
         if j - i == 1 {
-            out.push(edges[i].2);
+            out.push(edges[i].1);
         }
         i = j;
     }
