@@ -223,6 +223,35 @@ mod tests {
     }
 
     #[test]
+    fn cube_with_two_opposite_faces_removed_has_two_loops() {
+        let mut mesh = cube();
+        mesh.triangles.drain(0..4); // the z = 0 and z = 1 faces
+        let loops = boundary_loops(&mesh);
+        assert_eq!(loops.len(), 2);
+        assert!(loops.iter().all(|l| l.len() == 4));
+        assert_eq!(components(&mesh), 1);
+    }
+
+    #[test]
+    fn an_edge_shared_by_three_triangles_is_not_a_boundary_edge() {
+        let mesh = Mesh::new(
+            vec![
+                Point3::origin(),
+                Point3::new(1.0, 0.0, 0.0),
+                Point3::new(0.0, 1.0, 0.0),
+                Point3::new(0.0, -1.0, 0.0),
+                Point3::new(0.0, 0.0, 1.0),
+            ],
+            vec![[0, 1, 2], [1, 0, 3], [0, 1, 4]],
+        );
+        let edges = boundary_edges(&mesh);
+        assert!(!edges
+            .iter()
+            .any(|e| (e[0].min(e[1]), e[0].max(e[1])) == (0, 1)));
+        assert_eq!(edges.len(), 6);
+    }
+
+    #[test]
     fn single_triangle_is_one_loop_of_three() {
         let mesh = Mesh::new(
             vec![
