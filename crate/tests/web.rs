@@ -14,7 +14,12 @@ fn square_ply_mm() -> Vec<u8> {
 property float x\nproperty float y\nproperty float z\nelement face 2\n\
 property list uchar int vertex_indices\nend_header\n"
         .to_vec();
-    for p in [[0.0f32, 0.0, 0.0], [1000.0, 0.0, 0.0], [1000.0, 1600.0, 0.0], [0.0, 1600.0, 0.0]] {
+    for p in [
+        [0.0f32, 0.0, 0.0],
+        [1000.0, 0.0, 0.0],
+        [1000.0, 1600.0, 0.0],
+        [0.0, 1600.0, 0.0],
+    ] {
         for v in p {
             bytes.extend_from_slice(&v.to_le_bytes());
         }
@@ -76,7 +81,10 @@ fn an_lnd_comes_out_with_canonical_names_and_a_report() {
 END =\r\n";
     let json = parse_landmarks(lnd.as_bytes(), "s.lnd").unwrap_or_else(|_| panic!("readable"));
     let parsed: serde_json::Value = serde_json::from_str(&json).unwrap_or_else(|e| panic!("{e}"));
-    assert_eq!(parsed["names"], serde_json::json!(["Sellion", "Rt. Acromion"]));
+    assert_eq!(
+        parsed["names"],
+        serde_json::json!(["Sellion", "Rt. Acromion"])
+    );
     assert_eq!(
         parsed["positions"],
         serde_json::json!([1.0, 1600.0, 110.0, -180.0, 1450.0, 2.5])
@@ -86,7 +94,10 @@ END =\r\n";
         parsed["report"]["found"],
         serde_json::json!(["Sellion", "Rt. Acromion"])
     );
-    assert_eq!(parsed["report"]["missing"].as_array().map(Vec::len), Some(71));
+    assert_eq!(
+        parsed["report"]["missing"].as_array().map(Vec::len),
+        Some(71)
+    );
     assert_eq!(parsed["report"]["unknown"], serde_json::json!([]));
 }
 

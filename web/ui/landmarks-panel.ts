@@ -48,7 +48,6 @@ export class LandmarksPanel {
     const unknown = facts.report.unknown;
     const unknownSection = unknown.length
       ? [
-          h('div', { class: 'section' }),
           h('h2', {}, `Not CAESAR names (${unknown.length})`),
           h(
             'ul',

@@ -56,7 +56,6 @@ export class ScanPanel {
         ...fact('Holes', 'scan-holes', formatCount(s.boundary_loops)),
         ...fact('Parts', 'scan-components', formatCount(s.components)),
       ),
-      h('div', { class: 'section' }),
       h('h2', {}, 'Bounding box (m)'),
       h(
         'dl',

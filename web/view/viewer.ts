@@ -9,6 +9,9 @@ import { LandmarkTooltip } from './tooltip';
 export type { BodyContent, BodyMesh } from './body-layer';
 export type { LandmarkPoints } from './landmark-markers';
 
+/** Where a standing adult would be: what the camera frames before anything is loaded. */
+const EMPTY_SCENE_BOX = new THREE.Box3(new THREE.Vector3(-0.3, 0, -0.15), new THREE.Vector3(0.3, 1.75, 0.15));
+
 export class Viewer {
   private readonly renderer: THREE.WebGLRenderer;
   private readonly scene = new THREE.Scene();
@@ -28,11 +31,8 @@ export class Viewer {
 
     addLights(this.scene);
     this.scene.add(this.grid);
-    this.camera.position.set(2.2, 1.6, 3.6);
     this.controls = new OrbitControls(this.camera, this.renderer.domElement);
-    this.controls.target.set(0, 0.9, 0);
     this.controls.addEventListener('change', () => this.requestRender());
-    this.controls.update();
 
     const tooltip = new LandmarkTooltip(this.renderer.domElement, this.camera, () =>
       [...this.layers.values()].flatMap((l) => (l.landmarkMarkers ? [l.landmarkMarkers] : [])),
@@ -41,6 +41,7 @@ export class Viewer {
 
     new ResizeObserver(() => this.resize()).observe(container);
     this.resize();
+    this.aimAt(EMPTY_SCENE_BOX);
   }
 
   /**
@@ -78,13 +79,17 @@ export class Viewer {
   /** Points the camera at everything shown, from the front-right, the whole body in view. */
   frame(): void {
     const box = this.contentBounds();
-    if (box.isEmpty()) return;
+    if (!box.isEmpty()) this.aimAt(box);
+  }
+
+  private aimAt(box: THREE.Box3): void {
     const sphere = box.getBoundingSphere(new THREE.Sphere());
     const radius = Math.max(sphere.radius, 0.05);
     const fov = THREE.MathUtils.degToRad(this.camera.fov);
     const fitHeight = radius / Math.sin(fov / 2);
     const fitWidth = radius / Math.sin(Math.atan(Math.tan(fov / 2) * this.camera.aspect));
-    const distance = Math.max(fitHeight, fitWidth) * 1.05;
+    // The bounding sphere is loose around a standing body; 0.92 fills the view without cropping.
+    const distance = Math.max(fitHeight, fitWidth) * 0.92;
     const direction = new THREE.Vector3(0.45, 0.2, 1).normalize();
     this.controls.target.copy(sphere.center);
     this.camera.position.copy(sphere.center).addScaledVector(direction, distance);
