@@ -48,11 +48,11 @@ const median = (xs) => {
 };
 const row = (label, key) => {
   const xs = samples.map((s) => s[key]);
-  return `| ${label.padEnd(44)} | ${median(xs).toFixed(1).padStart(8)} | ${Math.min(...xs).toFixed(1).padStart(8)} | ${Math.max(...xs).toFixed(1).padStart(8)} |`;
+  return `| ${label.padEnd(48)} | ${median(xs).toFixed(1).padStart(8)} | ${Math.min(...xs).toFixed(1).padStart(8)} | ${Math.max(...xs).toFixed(1).padStart(8)} |`;
 };
 console.log(`Chromium ${version}, ${runs} runs (ms)`);
-console.log(`| ${'browser (WASM in the core worker)'.padEnd(44)} | ${'median'.padStart(8)} | ${'min'.padStart(8)} | ${'max'.padStart(8)} |`);
-console.log(`|${'-'.repeat(46)}|${'-'.repeat(10)}|${'-'.repeat(10)}|${'-'.repeat(10)}|`);
+console.log(`| ${'browser (WASM in the core worker)'.padEnd(48)} | ${'median'.padStart(8)} | ${'min'.padStart(8)} | ${'max'.padStart(8)} |`);
+console.log(`|${'-'.repeat(50)}|${'-'.repeat(10)}|${'-'.repeat(10)}|${'-'.repeat(10)}|`);
 console.log(row('round trip, UI thread (post → result)', 'roundTrip'));
 console.log(row('in worker: core call (read + normals + summary)', 'core'));
 console.log(row('in worker: copy out + scale to metres', 'copy'));

@@ -45,15 +45,15 @@ fn main() -> Result<(), String> {
         total.push(ms(t0, t3));
     }
     println!("native, {triangles} triangles, {runs} runs, medians (ms)");
-    println!("| {:<44} | {:>8} |", "native (release)", "median");
-    println!("|{}|{}|", "-".repeat(46), "-".repeat(10));
+    println!("| {:<48} | {:>8} |", "native (release)", "median");
+    println!("|{}|{}|", "-".repeat(50), "-".repeat(10));
     for (label, xs) in [
         ("read_scan", read),
         ("vertex_normals", normals),
         ("summarise (bbox, units, holes, parts)", summary),
         ("total", total),
     ] {
-        println!("| {:<44} | {:>8.1} |", label, median(xs));
+        println!("| {:<48} | {:>8.1} |", label, median(xs));
     }
     Ok(())
 }
