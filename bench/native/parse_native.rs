@@ -20,7 +20,10 @@ fn median(mut xs: Vec<f64>) -> f64 {
 fn main() -> Result<(), String> {
     let mut args = std::env::args().skip(1);
     let path = args.next().ok_or("usage: parse-native SCAN.ply [RUNS]")?;
-    let runs: usize = args.next().map_or(Ok(7), |r| r.parse()).map_err(|e| format!("RUNS: {e}"))?;
+    let runs: usize = args
+        .next()
+        .map_or(Ok(7), |r| r.parse())
+        .map_err(|e| format!("RUNS: {e}"))?;
     let bytes = std::fs::read(&path).map_err(|e| format!("{path}: {e}"))?;
     let name = std::path::Path::new(&path)
         .file_name()
