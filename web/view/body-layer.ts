@@ -49,6 +49,11 @@ export class BodyLayer {
     return this.markers?.count ?? 0;
   }
 
+  /** The body's surface, which hides markers behind it from the tooltip. */
+  get surface(): THREE.Mesh | null {
+    return this.mesh;
+  }
+
   get landmarkMarkers(): LandmarkMarkers | null {
     return this.markers;
   }

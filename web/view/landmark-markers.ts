@@ -43,10 +43,11 @@ export class LandmarkMarkers {
     return this.names.length;
   }
 
-  /** The name of the nearest marker the ray hits, or null. */
-  pick(raycaster: THREE.Raycaster): string | null {
+  /** The nearest marker the ray hits: its name and distance along the ray, or null. */
+  pick(raycaster: THREE.Raycaster): { name: string; distance: number } | null {
     const hit = raycaster.intersectObject(this.object, false)[0];
-    return hit?.instanceId === undefined ? null : (this.names[hit.instanceId] ?? null);
+    const name = hit?.instanceId === undefined ? undefined : this.names[hit.instanceId];
+    return hit && name !== undefined ? { name, distance: hit.distance } : null;
   }
 
   dispose(): void {

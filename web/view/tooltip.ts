@@ -12,6 +12,7 @@ export class LandmarkTooltip {
     private readonly canvas: HTMLCanvasElement,
     private readonly camera: THREE.Camera,
     private readonly markers: () => LandmarkMarkers[],
+    private readonly occluders: () => THREE.Object3D[],
   ) {
     this.element.className = 'tooltip';
     this.element.dataset.testid = 'landmark-tooltip';
@@ -30,19 +31,27 @@ export class LandmarkTooltip {
     const at = this.pending;
     this.pending = null;
     if (!at) return;
+    // Tests wait on this count rather than on time.
+    this.element.dataset.updates = String(Number(this.element.dataset.updates ?? '0') + 1);
     const rect = this.canvas.getBoundingClientRect();
     this.pointer.set(((at.x - rect.left) / rect.width) * 2 - 1, -((at.y - rect.top) / rect.height) * 2 + 1);
     this.raycaster.setFromCamera(this.pointer, this.camera);
-    let name: string | null = null;
+    let nearest: { name: string; distance: number } | null = null;
     for (const set of this.markers()) {
-      name = set.pick(this.raycaster);
-      if (name) break;
+      const hit = set.pick(this.raycaster);
+      if (hit && (!nearest || hit.distance < nearest.distance)) nearest = hit;
     }
-    if (!name) return this.hide();
-    this.element.textContent = name;
+    if (!nearest || this.hidden(nearest.distance)) return this.hide();
+    this.element.textContent = nearest.name;
     this.element.style.left = `${at.x - rect.left + 14}px`;
     this.element.style.top = `${at.y - rect.top + 14}px`;
     this.element.hidden = false;
+  }
+
+  /** Whether a surface lies in front of a marker hit at `distance` (only tested on a hit). */
+  private hidden(distance: number): boolean {
+    const surface = this.raycaster.intersectObjects(this.occluders(), false)[0];
+    return surface !== undefined && surface.distance < distance;
   }
 
   private hide(): void {

@@ -36,6 +36,7 @@ export class Viewer {
 
     const tooltip = new LandmarkTooltip(this.renderer.domElement, this.camera, () =>
       [...this.layers.values()].flatMap((l) => (l.landmarkMarkers ? [l.landmarkMarkers] : [])),
+      () => [...this.layers.values()].flatMap((l) => (l.surface ? [l.surface] : [])),
     );
     container.appendChild(tooltip.element);
 
