@@ -32,7 +32,10 @@ export async function readFiles(
     try {
       const bytes = await file.arrayBuffer();
       const t0 = performance.now();
-      const scan = await client.call({ type: 'parseScan', bytes, fileName: file.name }, { transfer: [bytes] });
+      const scan = await client.call(
+        { type: 'parseScan', bytes, fileName: file.name },
+        { transfer: [bytes], onProgress: (_fraction, label) => onStatus(`${label}…`) },
+      );
       outcome.scans.push({ scan, roundTripMs: performance.now() - t0 });
     } catch (error) {
       outcome.errors.push(messageFor(file.name, error));
