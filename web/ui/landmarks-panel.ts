@@ -58,8 +58,9 @@ export class LandmarksPanel {
           ),
         ]
       : [];
+    // Unknown names first: they usually need attention, and the 73-line list would bury them.
     this.root.replaceChildren(
-      title,
+      h('h2', {}, 'Landmarks'),
       h('div', { class: 'file-name', 'data-testid': 'landmarks-file' }, facts.fileName),
       h(
         'div',
@@ -69,8 +70,9 @@ export class LandmarksPanel {
         h('span', { class: 'unknown' }, '? ', h('span', { 'data-testid': 'landmarks-unknown' }, String(unknown.length)), ' unknown'),
       ),
       h('p', { class: 'note', 'data-testid': 'landmarks-units' }, facts.unitsNote),
-      list,
       ...unknownSection,
+      title,
+      list,
     );
   }
 }
