@@ -77,6 +77,12 @@ export class CoreClient {
     return this.pending.size > 0;
   }
 
+  /** Replaces a worker whose core trapped; queued calls go to the new one. */
+  private restart(): void {
+    this.worker.terminate();
+    this.worker = this.start();
+  }
+
   private start(): Worker {
     const worker = this.makeWorker();
     worker.onmessage = (event: MessageEvent<CoreReply>) => this.receive(event.data);
@@ -105,7 +111,10 @@ export class CoreClient {
     this.pending.delete(reply.id);
     if (this.running === reply.id) this.running = null;
     if (reply.type === 'result') entry.resolve(reply.result);
-    else entry.reject(new CoreError(reply.message));
+    else {
+      if (reply.fatal) this.restart();
+      entry.reject(new CoreError(reply.message));
+    }
     this.pump();
   }
 

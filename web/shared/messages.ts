@@ -26,5 +26,6 @@ export type ResultOf<R extends CoreRequestBody> = CoreResults[R['type']];
 /** A reply from the worker: any number of `progress`, then one `result` or one `error`. */
 export type CoreReply =
   | { id: number; type: 'result'; result: unknown }
-  | { id: number; type: 'error'; message: string }
+  /** `fatal`: the core trapped (a WASM panic) and the worker must be replaced. */
+  | { id: number; type: 'error'; message: string; fatal?: boolean }
   | { id: number; type: 'progress'; fraction: number; label: string };

@@ -65,6 +65,14 @@ self.onmessage = async (event: MessageEvent<CoreRequest>) => {
         break;
     }
   } catch (error) {
-    post({ id: request.id, type: 'error', message: error instanceof Error ? error.message : String(error) });
+    // A trap leaves the WASM instance unusable; every other error is the core's message.
+    const fatal = error instanceof WebAssembly.RuntimeError;
+    const message = error instanceof Error ? error.message : String(error);
+    post({
+      id: request.id,
+      type: 'error',
+      message: fatal ? `the core stopped unexpectedly (${message}); it has been restarted` : message,
+      fatal,
+    });
   }
 };
