@@ -13,7 +13,8 @@ bash scripts/build-wasm.sh
 npx vite build --logLevel warn
 node bench/make-ply.mjs "$work/torus-300k.ply"
 
-npx vite preview --host 127.0.0.1 --port "$port" --strictPort >"$work/server.log" 2>&1 &
+# node directly (not npx), so that $! is the server itself and the trap stops it.
+node node_modules/vite/bin/vite.js preview --host 127.0.0.1 --port "$port" --strictPort >"$work/server.log" 2>&1 &
 server=$!
 for _ in $(seq 1 100); do
   curl -sf "http://127.0.0.1:$port/" >/dev/null && break
