@@ -1,8 +1,104 @@
+// Wires the page: the core client, the viewer, the panels, and file drops / picks.
+import './style.css';
+import { Session } from './app/session';
+import { readFiles } from './app/read-files';
 import { CoreClient } from './client/core-client';
+import { METRES_PER_UNIT, type Units } from './shared/results';
+import { acceptDrops } from './ui/drop-overlay';
+import { byId } from './ui/dom';
+import { ErrorBanner } from './ui/error-banner';
+import { LandmarksPanel } from './ui/landmarks-panel';
+import { ScanPanel } from './ui/scan-panel';
+import { TopBar } from './ui/top-bar';
+import { Viewer } from './view/viewer';
 
-const app = document.getElementById('app')!;
 const client = new CoreClient();
-client.version().catch((e: Error) => e.message).then((v) => {
-  app.textContent = `BodySpace core ${v}`;
-  document.body.dataset.ready = 'true';
-});
+const session = new Session();
+const viewer = new Viewer(byId('viewport'));
+const banner = new ErrorBanner();
+const topBar = new TopBar((files) => void open(files));
+const scanPanel = new ScanPanel(changeUnits);
+const landmarksPanel = new LandmarksPanel();
+const emptyHint = byId('empty-hint');
+const body = document.body;
+let lastReadMs = 0;
+let loads = 0;
+
+acceptDrops((files) => void open(files));
+
+Promise.all([client.call({ type: 'version' }), client.call({ type: 'caesarNames' })])
+  .then(([version, names]) => {
+    landmarksPanel.setCaesarNames(names);
+    landmarksPanel.render(null);
+    topBar.setStatus(`Core ${version} ready. Drop a scan and its landmarks anywhere on the page.`);
+    body.dataset.coreReady = 'true';
+  })
+  .catch((error: Error) => {
+    topBar.setStatus('The core did not start.');
+    banner.show([`The BodySpace core could not start: ${error.message}`]);
+  });
+
+/** Reads `files` and shows whatever was read; failures leave what was shown before in place. */
+async function open(files: File[]): Promise<void> {
+  body.dataset.busy = 'true';
+  const outcome = await readFiles(client, files, (text) => topBar.setStatus(text));
+  const scan = outcome.scans.at(-1);
+  if (scan) {
+    session.setScan(scan.scan);
+    lastReadMs = scan.roundTripMs;
+    body.dataset.lastScanRoundTripMs = scan.roundTripMs.toFixed(2);
+    body.dataset.lastScanCoreMs = scan.scan.timings.coreMs.toFixed(2);
+    body.dataset.lastScanCopyMs = scan.scan.timings.copyMs.toFixed(2);
+  }
+  const landmarks = outcome.landmarks.at(-1);
+  if (landmarks) session.setLandmarks(landmarks);
+  if (scan || landmarks) refresh(Boolean(scan) || !session.scan);
+
+  if (outcome.errors.length > 0) banner.show(outcome.errors);
+  else if (scan || landmarks) banner.dismiss();
+  const read = [...outcome.scans.map((s) => s.scan.fileName), ...outcome.landmarks.map((l) => l.fileName)];
+  topBar.setStatus(
+    read.length ? `Opened ${read.join(', ')}` : outcome.errors.length ? 'Nothing opened; see the message above.' : '',
+  );
+  body.dataset.busy = 'false';
+  body.dataset.loads = String(++loads);
+}
+
+function changeUnits(units: Units): void {
+  session.scanUnits = units;
+  refresh(true);
+}
+
+/** Pushes the session into the view and the panels; `frame` re-aims the camera. */
+function refresh(frame: boolean): void {
+  const scan = session.scan;
+  const set = session.landmarks;
+  viewer.showBody(
+    'scan',
+    {
+      mesh: scan,
+      meshScale: session.scanScale,
+      landmarks: set
+        ? { names: set.names, positions: session.landmarkPositionsMetres(), flagged: new Set(set.report.unknown) }
+        : null,
+    },
+    frame,
+  );
+  emptyHint.hidden = Boolean(scan || set);
+  const summary = session.scanSummary;
+  scanPanel.render(
+    scan && summary ? { fileName: scan.fileName, summary, units: session.scanUnits, readMs: lastReadMs } : null,
+  );
+  landmarksPanel.render(
+    set ? { fileName: set.fileName, report: set.report, unitsNote: landmarkUnitsNote(set.units) } : null,
+  );
+  body.dataset.scanLoaded = String(Boolean(scan));
+  body.dataset.landmarksLoaded = String(Boolean(set));
+  body.dataset.scanUnits = session.scanUnits;
+}
+
+function landmarkUnitsNote(fixed: Units | null): string {
+  const units = session.landmarkUnits ?? 'metres';
+  const why = fixed ? 'as the file format says' : session.scan ? 'following the scan' : 'guessed from their spread';
+  return `Coordinates read in ${units} (${why}); 1 unit = ${METRES_PER_UNIT[units]} m.`;
+}

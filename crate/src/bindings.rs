@@ -1,10 +1,147 @@
 //! The one layer that exposes the core to JavaScript (wasm32 only): flat typed arrays in and out,
 //! errors as `JsError` with messages a person can act on. Validates at the boundary, trusts inside.
+//!
+//! Every array handed to JavaScript is a copy (`Float32Array::from(&[f32])`), never a view into
+//! WASM memory, so a later allocation cannot invalidate it.
 
+use js_sys::{Float32Array, Uint32Array};
+use nalgebra::Vector3;
+use serde::Serialize;
 use wasm_bindgen::prelude::*;
+
+use crate::io::{read_landmarks, read_scan};
+use crate::landmarks::report::{report, LandmarkReport};
+use crate::landmarks::CAESAR_LANDMARKS;
+use crate::mesh::normals::vertex_normals;
+use crate::mesh::summary::{summarise, MeshSummary};
+use crate::mesh::Mesh;
 
 /// The core's version, so the front end can show what it runs.
 #[wasm_bindgen(js_name = coreVersion)]
 pub fn core_version() -> String {
     env!("CARGO_PKG_VERSION").to_string()
+}
+
+/// The 73 canonical CAESAR landmark names in `.lnd` file order.
+#[wasm_bindgen(js_name = caesarLandmarkNames)]
+pub fn caesar_landmark_names() -> Vec<String> {
+    CAESAR_LANDMARKS
+        .iter()
+        .map(|l| l.name.to_string())
+        .collect()
+}
+
+/// A scan read by the core: `#V` positions in the file's units, `#F` triangles, `#V` unit vertex
+/// normals and the mesh summary (counts, bounding box in metres, detected units, holes, parts).
+#[wasm_bindgen]
+pub struct ParsedScan {
+    mesh: Mesh,
+    normals: Vec<Vector3<f64>>,
+    summary: MeshSummary,
+}
+
+#[wasm_bindgen]
+impl ParsedScan {
+    /// Number of vertices `#V`.
+    #[wasm_bindgen(getter, js_name = vertexCount)]
+    pub fn vertex_count(&self) -> u32 {
+        self.mesh.vertex_count() as u32
+    }
+
+    /// Number of triangles `#F`.
+    #[wasm_bindgen(getter, js_name = triangleCount)]
+    pub fn triangle_count(&self) -> u32 {
+        self.mesh.triangle_count() as u32
+    }
+
+    /// `#V·3` positions `[x0, y0, z0, x1, ...]` in the file's units (copied out).
+    pub fn positions(&self) -> Float32Array {
+        Float32Array::from(self.mesh.flat_positions_f32().as_slice())
+    }
+
+    /// `#F·3` vertex indices `[a0, b0, c0, a1, ...]` (copied out).
+    pub fn triangles(&self) -> Uint32Array {
+        Uint32Array::from(self.mesh.flat_triangles().as_slice())
+    }
+
+    /// `#V·3` unit vertex normals, xyz interleaved (copied out).
+    pub fn normals(&self) -> Float32Array {
+        let flat: Vec<f32> = self
+            .normals
+            .iter()
+            .flat_map(|n| [n.x as f32, n.y as f32, n.z as f32])
+            .collect();
+        Float32Array::from(flat.as_slice())
+    }
+
+    /// The [`MeshSummary`] as JSON (snake_case fields, bounding box in metres).
+    #[wasm_bindgen(js_name = summaryJson)]
+    pub fn summary_json(&self) -> Result<String, JsError> {
+        serde_json::to_string(&self.summary).map_err(|e| JsError::new(&e.to_string()))
+    }
+}
+
+/// Reads a scan (PLY, OBJ or STL, optionally gzip-compressed) and computes its normals and
+/// summary. The error message is the core's, starting with `file_name`.
+#[wasm_bindgen(js_name = parseScan)]
+pub fn parse_scan(bytes: &[u8], file_name: &str) -> Result<ParsedScan, JsError> {
+    let file_name = checked_file_name(file_name)?;
+    let mesh = read_scan(bytes, file_name).map_err(|e| JsError::new(&e.to_string()))?;
+    let normals = vertex_normals(&mesh);
+    let summary = summarise(&mesh);
+    Ok(ParsedScan {
+        mesh,
+        normals,
+        summary,
+    })
+}
+
+/// What `parseLandmarks` returns (as JSON): landmarks in file order with their positions in the
+/// file's units, and the report against the 73 CAESAR landmarks.
+#[derive(Serialize)]
+struct ParsedLandmarks {
+    /// Canonical name of each present landmark (or the name as given when unknown).
+    names: Vec<String>,
+    /// `#L·3` positions, xyz interleaved, in the file's units.
+    positions: Vec<f64>,
+    /// Units the file format fixes (`"millimetres"` for CAESAR `.lnd`), else `null`: the
+    /// landmarks then follow the scan's units.
+    units: Option<&'static str>,
+    report: LandmarkReport,
+}
+
+/// Reads a landmark file (CSV, CAESAR `.lnd` or JSON; names mapped to canonical CAESAR names) and
+/// returns it as JSON: `{names, positions, units, report: {found, missing, unknown}}`.
+#[wasm_bindgen(js_name = parseLandmarks)]
+pub fn parse_landmarks(bytes: &[u8], file_name: &str) -> Result<String, JsError> {
+    let file_name = checked_file_name(file_name)?;
+    let set = read_landmarks(bytes, file_name).map_err(|e| JsError::new(&e.to_string()))?;
+    let parsed = ParsedLandmarks {
+        names: set.landmarks.iter().map(|l| l.name.clone()).collect(),
+        positions: set
+            .landmarks
+            .iter()
+            .flat_map(|l| [l.position.x, l.position.y, l.position.z])
+            .collect(),
+        units: fixed_units(file_name),
+        report: report(&set),
+    };
+    serde_json::to_string(&parsed).map_err(|e| JsError::new(&e.to_string()))
+}
+
+/// The file name as given, or an error naming the problem when it is blank.
+fn checked_file_name(file_name: &str) -> Result<&str, JsError> {
+    if file_name.trim().is_empty() {
+        return Err(JsError::new(
+            "a file name is needed to tell the format and to name the file in messages",
+        ));
+    }
+    Ok(file_name)
+}
+
+/// CAESAR `.lnd` files are in millimetres by definition; other landmark formats carry no units.
+fn fixed_units(file_name: &str) -> Option<&'static str> {
+    let lower = file_name.to_ascii_lowercase();
+    let stem = lower.strip_suffix(".gz").unwrap_or(&lower);
+    stem.ends_with(".lnd").then_some("millimetres")
 }

@@ -1,11 +1,42 @@
-// The only code that imports the WASM core. Runs every core call off the UI thread.
-import init, { coreVersion } from '../pkg/bodyspace.js';
+// The only code that imports the WASM core. Runs every core call off the UI thread; arrays come
+// out of WASM memory as copies and go back to the UI thread transferred, never copied again.
+import init, { caesarLandmarkNames, coreVersion, parseLandmarks, parseScan } from '../pkg/bodyspace.js';
 import type { CoreReply, CoreRequest } from '../shared/messages';
+import type { MeshSummary, ParsedLandmarks, ParsedScan } from '../shared/results';
 
 const ready = init();
 
-function post(reply: CoreReply): void {
-  (self as unknown as Worker).postMessage(reply);
+function post(reply: CoreReply, transfer: Transferable[] = []): void {
+  (self as unknown as Worker).postMessage(reply, transfer);
+}
+
+/** Reads a scan with the core and returns its arrays with positions scaled to metres. */
+function readScan(bytes: ArrayBuffer, fileName: string): ParsedScan {
+  const t0 = performance.now();
+  const scan = parseScan(new Uint8Array(bytes), fileName);
+  const t1 = performance.now();
+  try {
+    const summary = JSON.parse(scan.summaryJson()) as MeshSummary;
+    const positions = scan.positions();
+    const scale = summary.scale_to_metres;
+    if (scale !== 1) for (let i = 0; i < positions.length; i++) positions[i] = positions[i]! * scale;
+    const result: ParsedScan = {
+      fileName,
+      positions,
+      triangles: scan.triangles(),
+      normals: scan.normals(),
+      summary,
+      timings: { coreMs: t1 - t0, copyMs: performance.now() - t1 },
+    };
+    return result;
+  } finally {
+    scan.free();
+  }
+}
+
+function readLandmarks(bytes: ArrayBuffer, fileName: string): ParsedLandmarks {
+  const parsed = JSON.parse(parseLandmarks(new Uint8Array(bytes), fileName)) as Omit<ParsedLandmarks, 'fileName'>;
+  return { fileName, ...parsed };
 }
 
 self.onmessage = async (event: MessageEvent<CoreRequest>) => {
@@ -16,8 +47,32 @@ self.onmessage = async (event: MessageEvent<CoreRequest>) => {
       case 'version':
         post({ id: request.id, type: 'result', result: coreVersion() });
         break;
+      case 'caesarNames':
+        post({ id: request.id, type: 'result', result: caesarLandmarkNames() });
+        break;
+      case 'parseScan': {
+        post({ id: request.id, type: 'progress', fraction: 0, label: `Reading ${request.fileName}` });
+        const scan = readScan(request.bytes, request.fileName);
+        post({ id: request.id, type: 'result', result: scan }, [
+          scan.positions.buffer,
+          scan.triangles.buffer,
+          scan.normals.buffer,
+        ]);
+        break;
+      }
+      case 'parseLandmarks':
+        post({ id: request.id, type: 'result', result: readLandmarks(request.bytes, request.fileName) });
+        break;
     }
   } catch (error) {
-    post({ id: request.id, type: 'error', message: error instanceof Error ? error.message : String(error) });
+    // A trap leaves the WASM instance unusable; every other error is the core's message.
+    const fatal = error instanceof WebAssembly.RuntimeError;
+    const message = error instanceof Error ? error.message : String(error);
+    post({
+      id: request.id,
+      type: 'error',
+      message: fatal ? `the core stopped unexpectedly (${message}); it has been restarted` : message,
+      fatal,
+    });
   }
 };

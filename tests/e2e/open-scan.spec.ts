@@ -1,0 +1,109 @@
+import { expect, test, type Page } from '@playwright/test';
+import {
+  LND_FOUND,
+  LND_MISSING_IN_FILE,
+  LND_UNKNOWN,
+  dropFiles,
+  gzipped,
+  holedBoxPly,
+  subjectLnd,
+  truncated,
+  waitForLoads,
+} from './fixtures';
+
+async function openApp(page: Page): Promise<void> {
+  await page.goto('./');
+  await expect(page.locator('body')).toHaveAttribute('data-core-ready', 'true');
+}
+
+const byTestId = (page: Page, id: string) => page.getByTestId(id);
+
+test('a dropped PLY and .lnd show their counts, box, units, holes, parts and landmarks', async ({ page }) => {
+  await openApp(page);
+  await dropFiles(page, [subjectLnd(), holedBoxPly()]);
+  await waitForLoads(page, 1);
+
+  await expect(byTestId(page, 'error-banner')).toBeHidden();
+  await expect(byTestId(page, 'scan-file')).toHaveText('subject.ply');
+  await expect(byTestId(page, 'scan-vertices')).toHaveText('12');
+  await expect(byTestId(page, 'scan-triangles')).toHaveText('14');
+  await expect(byTestId(page, 'scan-units')).toHaveValue('millimetres');
+  await expect(byTestId(page, 'scan-bbox-min')).toHaveText('(-0.200, 0.000, -0.150)');
+  await expect(byTestId(page, 'scan-bbox-max')).toHaveText('(0.200, 1.700, 0.150)');
+  await expect(byTestId(page, 'scan-size-y')).toHaveText('1.700 m');
+  await expect(byTestId(page, 'scan-holes')).toHaveText('1');
+  await expect(byTestId(page, 'scan-components')).toHaveText('2');
+
+  await expect(byTestId(page, 'landmarks-file')).toHaveText('subject.lnd');
+  await expect(byTestId(page, 'landmarks-found')).toHaveText(String(LND_FOUND.length));
+  await expect(byTestId(page, 'landmarks-missing')).toHaveText(String(73 - LND_FOUND.length));
+  await expect(byTestId(page, 'landmarks-unknown')).toHaveText(String(LND_UNKNOWN.length));
+  const list = byTestId(page, 'landmark-list');
+  await expect(list.locator('li')).toHaveCount(73);
+  for (const name of LND_FOUND) await expect(list.locator(`li[data-name="${name}"]`)).toHaveAttribute('data-status', 'found');
+  for (const name of LND_MISSING_IN_FILE)
+    await expect(list.locator(`li[data-name="${name}"]`)).toHaveAttribute('data-status', 'missing');
+  await expect(byTestId(page, 'landmark-unknown-list').locator('li')).toHaveText(LND_UNKNOWN.map((n) => `?${n}`));
+
+  // What the scene holds: the scan's triangles and one marker per landmark in the file.
+  const viewport = page.locator('#viewport');
+  await expect(viewport).toHaveAttribute('data-scan-triangles', '14');
+  await expect(viewport).toHaveAttribute('data-scan-markers', String(LND_FOUND.length + LND_UNKNOWN.length));
+});
+
+test('a broken file names the file and the problem, and what was loaded stays', async ({ page }) => {
+  await openApp(page);
+  const scan = holedBoxPly();
+  await dropFiles(page, [scan]);
+  await waitForLoads(page, 1);
+  await expect(byTestId(page, 'scan-triangles')).toHaveText('14');
+
+  await dropFiles(page, [truncated(scan, 'broken.ply')]);
+  await waitForLoads(page, 2);
+  const banner = byTestId(page, 'error-banner');
+  await expect(banner).toBeVisible();
+  await expect(byTestId(page, 'error-text')).toContainText('broken.ply');
+  await expect(byTestId(page, 'error-text')).toContainText(/declares|ends|truncated|short/i);
+
+  await expect(byTestId(page, 'scan-file')).toHaveText('subject.ply');
+  await expect(byTestId(page, 'scan-vertices')).toHaveText('12');
+  await expect(byTestId(page, 'scan-triangles')).toHaveText('14');
+  await expect(page.locator('#viewport')).toHaveAttribute('data-scan-triangles', '14');
+
+  await byTestId(page, 'error-dismiss').click();
+  await expect(banner).toBeHidden();
+});
+
+test('an unsupported file is refused by name', async ({ page }) => {
+  await openApp(page);
+  await dropFiles(page, [{ name: 'notes.txt', bytes: Buffer.from('hello') }]);
+  await waitForLoads(page, 1);
+  await expect(byTestId(page, 'error-text')).toContainText('notes.txt: unsupported file type');
+  await expect(byTestId(page, 'scan-empty')).toBeVisible();
+});
+
+test('overriding the units re-scales the bounding box shown', async ({ page }) => {
+  await openApp(page);
+  await dropFiles(page, [holedBoxPly()]);
+  await waitForLoads(page, 1);
+  await expect(byTestId(page, 'scan-bbox-max')).toHaveText('(0.200, 1.700, 0.150)');
+
+  await byTestId(page, 'scan-units').selectOption('metres');
+  await expect(byTestId(page, 'scan-bbox-max')).toHaveText('(200.000, 1700.000, 150.000)');
+  await expect(byTestId(page, 'scan-size-y')).toHaveText('1700.000 m');
+  await expect(page.locator('body')).toHaveAttribute('data-scan-units', 'metres');
+
+  await byTestId(page, 'scan-units').selectOption('millimetres');
+  await expect(byTestId(page, 'scan-bbox-min')).toHaveText('(-0.200, 0.000, -0.150)');
+});
+
+test('a gzip-compressed scan opens like the plain one, picked with the button', async ({ page }) => {
+  await openApp(page);
+  const file = gzipped(holedBoxPly());
+  await byTestId(page, 'file-input').setInputFiles({ name: file.name, mimeType: 'application/gzip', buffer: file.bytes });
+  await waitForLoads(page, 1);
+  await expect(byTestId(page, 'scan-file')).toHaveText('subject.ply.gz');
+  await expect(byTestId(page, 'scan-triangles')).toHaveText('14');
+  await expect(byTestId(page, 'scan-holes')).toHaveText('1');
+  await expect(byTestId(page, 'scan-bbox-max')).toHaveText('(0.200, 1.700, 0.150)');
+});

@@ -1,0 +1,62 @@
+// Sends dropped or picked files to the core worker, scans before landmarks, one at a time.
+// Each file's bytes are transferred to the worker; a file that fails only adds its message.
+import { CoreClient } from '../client/core-client';
+import { classifyFile, unsupportedMessage } from '../shared/file-kind';
+import type { ParsedLandmarks, ParsedScan } from '../shared/results';
+
+/** A scan as read, with the round trip timed on this thread around the worker call. */
+export interface ReadScan {
+  scan: ParsedScan;
+  roundTripMs: number;
+}
+
+export interface ReadOutcome {
+  scans: ReadScan[];
+  landmarks: ParsedLandmarks[];
+  /** One message per failed file, each naming the file. */
+  errors: string[];
+}
+
+export async function readFiles(
+  client: CoreClient,
+  files: File[],
+  onStatus: (text: string) => void,
+): Promise<ReadOutcome> {
+  const outcome: ReadOutcome = { scans: [], landmarks: [], errors: [] };
+  const scans = files.filter((f) => classifyFile(f.name) === 'scan');
+  const landmarks = files.filter((f) => classifyFile(f.name) === 'landmarks');
+  for (const f of files) if (classifyFile(f.name) === null) outcome.errors.push(unsupportedMessage(f.name));
+
+  for (const file of scans) {
+    onStatus(`Reading ${file.name}…`);
+    try {
+      const bytes = await file.arrayBuffer();
+      const t0 = performance.now();
+      const scan = await client.call(
+        { type: 'parseScan', bytes, fileName: file.name },
+        { transfer: [bytes], onProgress: (_fraction, label) => onStatus(`${label}…`) },
+      );
+      outcome.scans.push({ scan, roundTripMs: performance.now() - t0 });
+    } catch (error) {
+      outcome.errors.push(messageFor(file.name, error));
+    }
+  }
+  for (const file of landmarks) {
+    onStatus(`Reading ${file.name}…`);
+    try {
+      const bytes = await file.arrayBuffer();
+      outcome.landmarks.push(
+        await client.call({ type: 'parseLandmarks', bytes, fileName: file.name }, { transfer: [bytes] }),
+      );
+    } catch (error) {
+      outcome.errors.push(messageFor(file.name, error));
+    }
+  }
+  return outcome;
+}
+
+/** The core's message, which starts with the file name; prefixed with it when it does not. */
+function messageFor(fileName: string, error: unknown): string {
+  const message = error instanceof Error ? error.message : String(error);
+  return message.startsWith(fileName) ? message : `${fileName}: ${message}`;
+}

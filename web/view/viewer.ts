@@ -1,0 +1,135 @@
+// The 3D view: renderer, camera, orbit controls, lights, ground grid, and one BodyLayer per body.
+// Renders on demand (after a change or a camera move), not in a loop: software WebGL is slow.
+import * as THREE from 'three';
+import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
+import { BodyLayer, type BodyContent } from './body-layer';
+import { addLights, makeGrid } from './stage';
+import { LandmarkTooltip } from './tooltip';
+
+export type { BodyContent, BodyMesh } from './body-layer';
+export type { LandmarkPoints } from './landmark-markers';
+
+/** Where a standing adult would be: what the camera frames before anything is loaded. */
+const EMPTY_SCENE_BOX = new THREE.Box3(new THREE.Vector3(-0.3, 0, -0.15), new THREE.Vector3(0.3, 1.75, 0.15));
+
+export class Viewer {
+  private readonly renderer: THREE.WebGLRenderer;
+  private readonly scene = new THREE.Scene();
+  private readonly camera = new THREE.PerspectiveCamera(40, 1, 0.01, 200);
+  private readonly controls: OrbitControls;
+  private readonly grid = makeGrid();
+  private readonly layers = new Map<string, BodyLayer>();
+  private frameRequested = false;
+
+  constructor(private readonly container: HTMLElement) {
+    this.renderer = new THREE.WebGLRenderer({ antialias: true });
+    this.renderer.setPixelRatio(Math.min(window.devicePixelRatio, 2));
+    this.renderer.outputColorSpace = THREE.SRGBColorSpace;
+    this.renderer.setClearColor(0x15181d);
+    this.renderer.domElement.dataset.testid = 'viewport-canvas';
+    container.appendChild(this.renderer.domElement);
+
+    addLights(this.scene);
+    this.scene.add(this.grid);
+    this.controls = new OrbitControls(this.camera, this.renderer.domElement);
+    this.controls.addEventListener('change', () => this.requestRender());
+
+    const tooltip = new LandmarkTooltip(this.renderer.domElement, this.camera, () =>
+      [...this.layers.values()].flatMap((l) => (l.landmarkMarkers ? [l.landmarkMarkers] : [])),
+      () => [...this.layers.values()].flatMap((l) => (l.surface ? [l.surface] : [])),
+    );
+    container.appendChild(tooltip.element);
+
+    new ResizeObserver(() => this.resize()).observe(container);
+    this.resize();
+    this.aimAt(EMPTY_SCENE_BOX);
+  }
+
+  /**
+   * Shows a body (a mesh and/or its landmarks) under `key`, e.g. `'scan'` or `'template'`,
+   * replacing what that key showed; frames the camera on it when `frame` is set.
+   */
+  showBody(key: string, content: BodyContent, frame = false): void {
+    let layer = this.layers.get(key);
+    if (!layer) {
+      layer = new BodyLayer(key);
+      this.layers.set(key, layer);
+      this.scene.add(layer.group);
+    }
+    layer.update(content);
+    this.container.dataset[`${key}Triangles`] = String(layer.triangleCount);
+    this.container.dataset[`${key}Markers`] = String(layer.markerCount);
+    this.placeGrid();
+    if (frame) this.frame();
+    this.requestRender();
+  }
+
+  /** Removes the body shown under `key`. */
+  removeBody(key: string): void {
+    const layer = this.layers.get(key);
+    if (!layer) return;
+    this.scene.remove(layer.group);
+    layer.dispose();
+    this.layers.delete(key);
+    delete this.container.dataset[`${key}Triangles`];
+    delete this.container.dataset[`${key}Markers`];
+    this.placeGrid();
+    this.requestRender();
+  }
+
+  /** Points the camera at everything shown, from the front-right, the whole body in view. */
+  frame(): void {
+    const box = this.contentBounds();
+    if (!box.isEmpty()) this.aimAt(box);
+  }
+
+  private aimAt(box: THREE.Box3): void {
+    const sphere = box.getBoundingSphere(new THREE.Sphere());
+    const radius = Math.max(sphere.radius, 0.05);
+    const fov = THREE.MathUtils.degToRad(this.camera.fov);
+    const fitHeight = radius / Math.sin(fov / 2);
+    const fitWidth = radius / Math.sin(Math.atan(Math.tan(fov / 2) * this.camera.aspect));
+    // The bounding sphere is loose around a standing body; 0.92 fills the view without cropping.
+    const distance = Math.max(fitHeight, fitWidth) * 0.92;
+    const direction = new THREE.Vector3(0.45, 0.2, 1).normalize();
+    this.controls.target.copy(sphere.center);
+    this.camera.position.copy(sphere.center).addScaledVector(direction, distance);
+    this.camera.near = distance / 100;
+    this.camera.far = distance * 100;
+    this.camera.updateProjectionMatrix();
+    this.controls.update();
+    this.requestRender();
+  }
+
+  requestRender(): void {
+    if (this.frameRequested) return;
+    this.frameRequested = true;
+    requestAnimationFrame(() => {
+      this.frameRequested = false;
+      this.renderer.render(this.scene, this.camera);
+      const rendered = Number(this.container.dataset.frames ?? '0') + 1;
+      this.container.dataset.frames = String(rendered);
+    });
+  }
+
+  private contentBounds(): THREE.Box3 {
+    const box = new THREE.Box3();
+    for (const layer of this.layers.values()) box.union(layer.bounds());
+    return box;
+  }
+
+  /** The grid sits under the lowest point shown, so bodies stand on it. */
+  private placeGrid(): void {
+    const box = this.contentBounds();
+    this.grid.position.y = box.isEmpty() ? 0 : box.min.y;
+  }
+
+  private resize(): void {
+    const { clientWidth: w, clientHeight: h } = this.container;
+    if (w === 0 || h === 0) return;
+    this.renderer.setSize(w, h, false);
+    this.camera.aspect = w / h;
+    this.camera.updateProjectionMatrix();
+    this.requestRender();
+  }
+}
