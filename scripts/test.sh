@@ -8,6 +8,9 @@ export PATH="$HOME/.cargo/bin:$PATH"
 
 bash scripts/setup.sh
 
+echo "== build the core for the browser (the TypeScript check reads its types)"
+bash scripts/build-wasm.sh
+
 echo "== lint"
 cargo fmt --manifest-path crate/Cargo.toml --check
 cargo clippy --manifest-path crate/Cargo.toml --all-targets -- -D warnings
@@ -20,8 +23,7 @@ cargo test --manifest-path crate/Cargo.toml
 echo "== wasm tests (headless chromium)"
 bash scripts/test-wasm.sh
 
-echo "== build"
-bash scripts/build-wasm.sh
+echo "== build the app"
 npx vite build --logLevel warn
 
 echo "== browser tests (playwright)"
