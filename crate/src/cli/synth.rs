@@ -41,12 +41,18 @@ pub struct SynthArgs {
     /// Landmark placement noise (standard deviation per axis), mm.
     #[arg(long, default_value_t = 2.0)]
     pub landmark_noise: f64,
+    /// Write the PLY files gzip-compressed (`.ply.gz`).
+    #[arg(long)]
+    pub gzip: bool,
 }
 
 /// Runs `bodyspace synth`; the error is the one-line message for stderr.
 pub fn run(args: &SynthArgs) -> Result<(), String> {
     if !(0.0..=1.0).contains(&args.missing) {
-        return Err(format!("--missing {} is not a probability in [0, 1]", args.missing));
+        return Err(format!(
+            "--missing {} is not a probability in [0, 1]",
+            args.missing
+        ));
     }
     if !(args.step >= 0.5 && args.step <= 50.0) {
         return Err(format!("--step {} mm is outside 0.5–50 mm", args.step));
@@ -80,10 +86,12 @@ pub fn run(args: &SynthArgs) -> Result<(), String> {
         .into_par_iter()
         .map(|i| {
             let id = format!("{:0width$}", i + 1);
-            let (subject, set) =
-                population_subject(&data, &template, args.seed, i as u64, &scanner, &landmarks, units)
-                    .map_err(|e| e.to_string())?;
-            write_subject(&args.out, &id, &subject, &set, units).map_err(|e| e.to_string())?;
+            let (subject, set) = population_subject(
+                &data, &template, args.seed, i as u64, &scanner, &landmarks, units,
+            )
+            .map_err(|e| e.to_string())?;
+            write_subject(&args.out, &id, &subject, &set, units, args.gzip)
+                .map_err(|e| e.to_string())?;
             Ok(json!({
                 "id": id,
                 "sex": subject.params.sex,
@@ -97,8 +105,14 @@ pub fn run(args: &SynthArgs) -> Result<(), String> {
         .collect::<Result<_, String>>()?;
     let seconds = made.elapsed().as_secs_f64();
     write_tables(&args.out, args, &scanner, &landmarks, units, &records)?;
-    let statures: Vec<f64> = records.iter().filter_map(|r| r["stature_m"].as_f64()).collect();
-    let verts: Vec<f64> = records.iter().filter_map(|r| r["scan_vertices"].as_f64()).collect();
+    let statures: Vec<f64> = records
+        .iter()
+        .filter_map(|r| r["stature_m"].as_f64())
+        .collect();
+    let verts: Vec<f64> = records
+        .iter()
+        .filter_map(|r| r["scan_vertices"].as_f64())
+        .collect();
     println!(
         "{}",
         json!({

@@ -5,7 +5,11 @@
 //! (metres, y up, facing +z): `(x, y, z) ↦ s·(x, −z, y)` with `s` = 1000 or 1. Scan, noise-free
 //! surface, ground truth and landmarks are all in this one frame.
 
+use std::io::Write;
 use std::path::Path;
+
+use flate2::write::GzEncoder;
+use flate2::Compression;
 
 use nalgebra::Point3;
 use rand::Rng;
@@ -55,7 +59,10 @@ pub fn to_output_frame(p: &Point3<f64>, units: Units) -> Point3<f64> {
 /// A template-frame mesh in the output frame.
 pub fn mesh_to_output_frame(mesh: &Mesh, units: Units) -> Mesh {
     Mesh::new(
-        mesh.positions.iter().map(|p| to_output_frame(p, units)).collect(),
+        mesh.positions
+            .iter()
+            .map(|p| to_output_frame(p, units))
+            .collect(),
         mesh.triangles.clone(),
     )
 }
@@ -88,13 +95,15 @@ pub fn subject_landmarks<R: Rng>(
     units: Units,
     rng: &mut R,
 ) -> LandmarkSet {
-    let noise = Normal::new(0.0, params.sigma.max(0.0)).unwrap_or_else(|_| Normal::new(0.0, 0.0).expect("sd 0 is valid"));
+    let noise = Normal::new(0.0, params.sigma.max(0.0))
+        .unwrap_or_else(|_| Normal::new(0.0, 0.0).expect("sd 0 is valid"));
     let mut set = LandmarkSet::default();
     for (name, v) in landmark_vertices {
         let Some(p) = posed.get(*v as usize) else {
             continue;
         };
-        let jitter = nalgebra::Vector3::new(noise.sample(rng), noise.sample(rng), noise.sample(rng));
+        let jitter =
+            nalgebra::Vector3::new(noise.sample(rng), noise.sample(rng), noise.sample(rng));
         let dropped = rng.gen_bool(params.missing.clamp(0.0, 1.0));
         if dropped {
             set.missing.push(name.clone());
@@ -121,19 +130,39 @@ pub fn truth_points(subject: &Subject, units: Units) -> Mesh {
     )
 }
 
-/// Writes `scan_ID.ply`, `surface_ID.ply`, `truth_ID.ply`, `landmarks_ID.csv`, `landmarks_ID.lnd`.
+/// Writes `scan_ID.ply`, `surface_ID.ply`, `truth_ID.ply` (each `.ply.gz` when `gzip`),
+/// `landmarks_ID.csv` and `landmarks_ID.lnd`.
 pub fn write_subject(
     dir: &Path,
     id: &str,
     subject: &Subject,
     landmarks: &LandmarkSet,
     units: Units,
+    gzip: bool,
 ) -> Result<(), SynthError> {
+    let ply = |name: &str, mesh: &Mesh| -> Result<(String, Vec<u8>), SynthError> {
+        let bytes = write_ply(mesh);
+        if !gzip {
+            return Ok((format!("{name}_{id}.ply"), bytes));
+        }
+        let file = format!("{name}_{id}.ply.gz");
+        let mut z = GzEncoder::new(Vec::new(), Compression::best());
+        z.write_all(&bytes)
+            .and_then(|_| z.finish())
+            .map(|b| (file.clone(), b))
+            .map_err(|e| SynthError::Write {
+                path: dir.join(&file).display().to_string(),
+                message: e.to_string(),
+            })
+    };
     let files: [(String, Vec<u8>); 5] = [
-        (format!("scan_{id}.ply"), write_ply(&mesh_to_output_frame(&subject.scan.mesh, units))),
-        (format!("surface_{id}.ply"), write_ply(&mesh_to_output_frame(&subject.surface, units))),
-        (format!("truth_{id}.ply"), write_ply(&truth_points(subject, units))),
-        (format!("landmarks_{id}.csv"), write_landmarks_csv(landmarks)),
+        ply("scan", &mesh_to_output_frame(&subject.scan.mesh, units))?,
+        ply("surface", &mesh_to_output_frame(&subject.surface, units))?,
+        ply("truth", &truth_points(subject, units))?,
+        (
+            format!("landmarks_{id}.csv"),
+            write_landmarks_csv(landmarks),
+        ),
         (format!("landmarks_{id}.lnd"), write_lnd(landmarks, id)),
     ];
     for (name, bytes) in files {

@@ -27,6 +27,9 @@ pub struct Subject {
     pub scan: Scan,
 }
 
+/// Template vertices at rest (morphed) and posed.
+pub type RestAndPosed = (Vec<Point3<f64>>, Vec<Point3<f64>>);
+
 /// Bones the pose moves (MakeHuman default rig names).
 const TRUNK_BONE: &str = "spine04";
 const HEAD_BONE: &str = "neck01";
@@ -109,7 +112,7 @@ fn morphed(data: &MakeHumanData, params: &SubjectParams) -> Vec<Point3<f64>> {
 pub fn shape_and_pose(
     data: &MakeHumanData,
     params: &SubjectParams,
-) -> Result<(Vec<Point3<f64>>, Vec<Point3<f64>>), SynthError> {
+) -> Result<RestAndPosed, SynthError> {
     let full = morphed(data, params);
     let heads = joint_positions(&data.rig, &data.model.joint_pos_idxs, &full)?;
     let mut rest: Vec<Point3<f64>> = data.provenance.iter().map(|&v| full[v as usize]).collect();
