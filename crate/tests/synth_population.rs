@@ -272,3 +272,40 @@ fn default_scanner_gives_caesar_like_density() {
     assert!((100_000..=300_000).contains(&v), "{v} scan vertices");
     assert!(boundary_loops(&s.scan.mesh) > 20);
 }
+
+#[test]
+fn files_round_trip_through_the_readers() {
+    let (d, t) = data();
+    let (s, set) = population_subject(
+        d,
+        t,
+        4,
+        0,
+        &coarse(),
+        &LandmarkParams::default(),
+        Units::Millimetres,
+    )
+    .unwrap();
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("synth_files");
+    std::fs::create_dir_all(&dir).unwrap();
+    output::write_subject(&dir, "001", &s, &set, Units::Millimetres, true).unwrap();
+    let scan_bytes = std::fs::read(dir.join("scan_001.ply.gz")).unwrap();
+    let scan = bodyspace::io::read_scan(&scan_bytes, "scan_001.ply.gz").unwrap();
+    assert_eq!(scan.vertex_count(), s.scan.mesh.vertex_count());
+    assert_eq!(scan.triangles, s.scan.mesh.triangles);
+    let expect = output::to_output_frame(&s.scan.mesh.positions[0], Units::Millimetres);
+    assert!((scan.positions[0] - expect).norm() < 1e-3, "mm, z up");
+    let truth_bytes = std::fs::read(dir.join("truth_001.ply.gz")).unwrap();
+    let truth = bodyspace::io::read_scan(&truth_bytes, "truth_001.ply.gz").unwrap();
+    assert_eq!(truth.vertex_count(), t.base_vertex_count());
+    let expect = output::to_output_frame(&s.surface.positions[7], Units::Millimetres);
+    assert!((truth.positions[7] - expect).norm() < 1e-3);
+    for name in ["landmarks_001.csv", "landmarks_001.lnd"] {
+        let bytes = std::fs::read(dir.join(name)).unwrap();
+        let read = bodyspace::io::read_landmarks(&bytes, name).unwrap();
+        assert_eq!(read.landmarks.len(), 73, "{name}");
+        let a = read.landmarks[0].position;
+        let b = set.get(&read.landmarks[0].name).unwrap();
+        assert!((a - b).norm() < 0.01, "{name}: {a} vs {b}");
+    }
+}

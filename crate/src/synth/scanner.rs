@@ -300,3 +300,79 @@ fn bounds(points: &[Point3<f64>]) -> (Point3<f64>, Point3<f64>) {
         |(lo, hi), p| (lo.inf(p), hi.sup(p)),
     )
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use rand::SeedableRng;
+    use rand_chacha::ChaCha8Rng;
+
+    /// A UV sphere of radius `r` centred at (0, r + 0.1, 0), outward triangles.
+    fn sphere(r: f64, n: usize) -> Mesh {
+        let mut positions = Vec::new();
+        for i in 0..=n {
+            let theta = std::f64::consts::PI * i as f64 / n as f64;
+            for j in 0..2 * n {
+                let phi = std::f64::consts::PI * j as f64 / n as f64;
+                positions.push(Point3::new(
+                    r * theta.sin() * phi.cos(),
+                    r + 0.1 + r * theta.cos(),
+                    r * theta.sin() * phi.sin(),
+                ));
+            }
+        }
+        let w = 2 * n as u32;
+        let mut triangles = Vec::new();
+        for i in 0..n as u32 {
+            for j in 0..w {
+                let (a, b) = (i * w + j, i * w + (j + 1) % w);
+                let (c, d) = (a + w, b + w);
+                triangles.push([a, b, d]);
+                triangles.push([a, d, c]);
+            }
+        }
+        Mesh::new(positions, triangles)
+    }
+
+    #[test]
+    fn sphere_scan_is_on_the_sphere_with_grazing_holes_at_the_poles() {
+        let r = 0.3;
+        let mesh = sphere(r, 64);
+        let params = ScannerParams {
+            vertical_step: 0.01,
+            horizontal_step: 0.01,
+            noise_sigma: 0.0,
+            ..ScannerParams::default()
+        };
+        let s = scan(&mesh, &params, &mut ChaCha8Rng::seed_from_u64(1));
+        assert!(s.mesh.vertex_count() > 1000);
+        let centre = Point3::new(0.0, r + 0.1, 0.0);
+        for p in &s.mesh.positions {
+            let d = ((p - centre).norm() - r).abs();
+            assert!(d < 2e-3, "sample {d} m off the sphere");
+        }
+        // Horizontal rays meet the poles at grazing angles: nothing above ~75° latitude.
+        let top = s
+            .mesh
+            .positions
+            .iter()
+            .map(|p| p.y)
+            .fold(f64::MIN, f64::max);
+        assert!(top < centre.y + r * 0.97, "pole was scanned ({top})");
+        // Every triangle faces outward (towards the head that saw it).
+        for t in &s.mesh.triangles {
+            let [a, b, c] = t.map(|i| s.mesh.positions[i as usize]);
+            let n = (b - a).cross(&(c - a));
+            let mid = Point3::from((a.coords + b.coords + c.coords) / 3.0);
+            assert!(n.dot(&(mid - centre)) > 0.0);
+        }
+        // Views are partitioned: no two samples from different heads at the same place.
+        let mut seen = std::collections::HashMap::new();
+        for (p, h) in s.mesh.positions.iter().zip(&s.head) {
+            let key = ((p.x * 1e4) as i64, (p.y * 1e4) as i64, (p.z * 1e4) as i64);
+            if let Some(other) = seen.insert(key, *h) {
+                assert_eq!(other, *h, "two heads kept the same point");
+            }
+        }
+    }
+}
