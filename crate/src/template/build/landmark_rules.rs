@@ -286,12 +286,20 @@ pub fn place_landmarks(
         |p| p.x,
     )?;
     left.push(("Iliocristale", ilio));
+    // Greater trochanter: lateral-most relative to the thigh axis, level with the hip joint.
+    let knee = f.j("lowerleg01.L____head")?;
+    let a_thigh = (knee - hip).normalize();
+    let lat_thigh = perp(x, &a_thigh);
     left.push((
         "Trochanterion",
         f.best(
             "Lt. Trochanterion",
-            |v, p| p.x > 0.0 && p.y > hip.y - 0.09 && p.y < hip.y - 0.02 && f.arm_weight(v) < 0.05,
-            |p| p.x,
+            |v, p| {
+                p.x > 0.0
+                    && (-0.01..0.03).contains(&(p - hip).dot(&a_thigh))
+                    && f.arm_weight(v) < 0.05
+            },
+            |p| p.coords.dot(&lat_thigh),
         )?,
     ));
 
@@ -457,7 +465,6 @@ pub fn place_landmarks(
     ));
 
     // Leg.
-    let knee = f.j("lowerleg01.L____head")?;
     let ankle = f.j("foot.L____head")?;
     let a_shin = (ankle - knee).normalize();
     left.push((

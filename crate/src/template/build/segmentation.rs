@@ -15,13 +15,14 @@ use super::context::BuildContext;
 /// Parameters of the segmentation.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct SegmentationParams {
-    /// Half-width `h` of the overlap band, metres. Default 0.03 (a 6 cm band).
+    /// Half-width `h` of the overlap band, metres. Default 0.06 (a 12 cm band: the base mesh has
+    /// 3–4 cm edges at the hips, so a narrower band would be a single edge).
     pub half_band: f64,
 }
 
 impl Default for SegmentationParams {
     fn default() -> Self {
-        Self { half_band: 0.03 }
+        Self { half_band: 0.06 }
     }
 }
 
