@@ -16,6 +16,7 @@ pub fn parse_csv(text: &str, file: &str) -> Result<Vec<RawLandmark>, IoError> {
         .from_reader(text.as_bytes());
     let mut columns = [0usize, 1, 2, 3];
     let mut out = Vec::new();
+    let mut first_row = true;
     for (k, record) in reader.records().enumerate() {
         let record = record.map_err(|e| {
             let line = e.position().map_or(k + 1, |p| p.line() as usize);
@@ -25,7 +26,8 @@ pub fn parse_csv(text: &str, file: &str) -> Result<Vec<RawLandmark>, IoError> {
         if record.iter().all(str::is_empty) {
             continue;
         }
-        if k == 0 && record.get(1).is_some_and(|f| f.parse::<f64>().is_err()) {
+        let is_first = std::mem::replace(&mut first_row, false);
+        if is_first && record.get(1).is_some_and(|f| f.parse::<f64>().is_err()) {
             columns = header_columns(&record).ok_or_else(|| {
                 IoError::at_line(
                     file,
@@ -95,4 +97,25 @@ pub fn write_landmarks_csv(set: &LandmarkSet) -> Vec<u8> {
         ]);
     }
     writer.into_inner().unwrap_or_default()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn header_after_blank_lines_and_comments_is_recognised() {
+        let raw = parse_csv("\n# exported\n\nname,x,y,z\nSellion,1,2,3\n", "a.csv").unwrap();
+        assert_eq!(raw.len(), 1);
+        assert_eq!(raw[0].name, "Sellion");
+    }
+
+    #[test]
+    fn a_header_without_coordinates_is_an_error() {
+        let err = parse_csv("label,u,v,w\nSellion,1,2,3\n", "a.csv").unwrap_err();
+        assert_eq!(
+            err.to_string(),
+            "a.csv: line 1: the header must name the columns name, x, y and z"
+        );
+    }
 }

@@ -22,7 +22,7 @@ pub struct RawLandmark {
 }
 
 /// Reads a landmark file: CAESAR `.lnd`, CSV `name,x,y,z` (header optional, quoted names) or JSON
-/// `{"name": [x, y, z]}` (`null` = missing), optionally gzip-compressed. Names are normalised to
+/// `{"name": [x, y, z]}` (`null` = missing; an array of `{name, position}` also works), optionally gzip-compressed. Names are normalised to
 /// canonical CAESAR names; unrecognised names are kept as written and listed in `unknown`; a
 /// landmark given twice is an error naming it.
 pub fn read_landmarks(bytes: &[u8], file_name: &str) -> Result<LandmarkSet, IoError> {
@@ -50,7 +50,9 @@ pub fn read_landmarks(bytes: &[u8], file_name: &str) -> Result<LandmarkSet, IoEr
         Some("lnd") => lnd::parse_lnd(text, file_name)?,
         Some("json") => landmarks_json::parse_json(text, file_name)?,
         Some("csv") => landmarks_csv::parse_csv(text, file_name)?,
-        _ if text.trim_start().starts_with('{') => landmarks_json::parse_json(text, file_name)?,
+        _ if text.trim_start().starts_with(['{', '[']) => {
+            landmarks_json::parse_json(text, file_name)?
+        }
         _ if lnd::looks_like_lnd(text) => lnd::parse_lnd(text, file_name)?,
         _ => landmarks_csv::parse_csv(text, file_name)?,
     };

@@ -166,3 +166,26 @@ pub fn write_lnd(set: &LandmarkSet, subject_id: &str) -> Vec<u8> {
     out.push_str("END =\n");
     out.into_bytes()
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn names_keep_inner_spaces_commas_and_slashes() {
+        let text = "AUX =\r\n  13   0   1   0.0  1 2 3  Rt. Thelion/Bustpoint \r\n  28 0 1 0.0 4 5 6 Waist,  Preferred, Post.\r\nEND =\r\n";
+        let raw = parse_lnd(text, "a.lnd").unwrap();
+        assert_eq!(raw[0].name, "Rt. Thelion/Bustpoint");
+        assert_eq!(raw[1].name, "Waist,  Preferred, Post.");
+        assert!(looks_like_lnd(text));
+        assert!(!looks_like_lnd("name,x,y,z\n"));
+    }
+
+    #[test]
+    fn minus_999_in_either_integer_field_is_missing() {
+        let text = "AUX =\n1 -999 0 0.0 1 2 3 Sellion\n2 0 -999 0.0 1 2 3 Crotch\n3 0 1 0.0 1 2 3 Cervicale\n";
+        let raw = parse_lnd(text, "a.lnd").unwrap();
+        let present: Vec<bool> = raw.iter().map(|r| r.position.is_some()).collect();
+        assert_eq!(present, [false, false, true]);
+    }
+}

@@ -43,8 +43,8 @@ pub fn read_scan(bytes: &[u8], file_name: &str) -> Result<Mesh, IoError> {
     }
 }
 
-/// The format of (decompressed) `data`: magic bytes first, then the extension, then a look at
-/// the text for OBJ statements.
+/// The format of (decompressed) `data`: magic bytes first (`ply`, a binary STL's consistent size,
+/// `solid`), then a look at the text for OBJ statements, then the extension.
 pub fn detect_format(data: &[u8], file_name: &str) -> Option<ScanFormat> {
     if is_ply(data) {
         return Some(ScanFormat::Ply);
@@ -52,14 +52,17 @@ pub fn detect_format(data: &[u8], file_name: &str) -> Option<ScanFormat> {
     if is_binary_stl(data) || looks_like_ascii_stl(data) {
         return Some(ScanFormat::Stl);
     }
-    let name = inner_name(file_name);
-    match name.rsplit('.').next() {
-        Some("ply") => return Some(ScanFormat::Ply),
-        Some("obj") => return Some(ScanFormat::Obj),
-        Some("stl") => return Some(ScanFormat::Stl),
-        _ => {}
+    if looks_like_obj(data) {
+        return Some(ScanFormat::Obj);
     }
-    looks_like_obj(data).then_some(ScanFormat::Obj)
+    // The content is no clean example of any format: let the extension pick the reader, whose
+    // error then says what is wrong in that format's terms.
+    match inner_name(file_name).rsplit('.').next() {
+        Some("ply") => Some(ScanFormat::Ply),
+        Some("obj") => Some(ScanFormat::Obj),
+        Some("stl") => Some(ScanFormat::Stl),
+        _ => None,
+    }
 }
 
 /// Whether the first lines of `data` are OBJ statements (`v `, `f `, `#`, `o `, ...).
@@ -82,4 +85,47 @@ fn looks_like_obj(data: &[u8]) -> bool {
         }
     }
     saw_vertex
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn content_beats_the_extension() {
+        assert_eq!(
+            detect_format(b"ply\nformat ascii 1.0\n", "x.obj"),
+            Some(ScanFormat::Ply)
+        );
+        assert_eq!(
+            detect_format(b"solid x\nfacet\n", "x.ply"),
+            Some(ScanFormat::Stl)
+        );
+        assert_eq!(
+            detect_format(b"# hi\nv 1 2 3\n", "x.ply"),
+            Some(ScanFormat::Obj)
+        );
+        let mut binary_stl = vec![b's'; 80];
+        binary_stl.extend_from_slice(&1u32.to_le_bytes());
+        binary_stl.extend_from_slice(&[0u8; 50]);
+        assert_eq!(detect_format(&binary_stl, "x"), Some(ScanFormat::Stl));
+    }
+
+    #[test]
+    fn extension_decides_unclear_content_and_nothing_decides_noise() {
+        assert_eq!(
+            detect_format(b"\x00\x01junk", "x.PLY"),
+            Some(ScanFormat::Ply)
+        );
+        assert_eq!(
+            detect_format(b"\x00\x01junk", "x.obj.gz"),
+            Some(ScanFormat::Obj)
+        );
+        assert_eq!(
+            detect_format(b"\x00\x01junk", "x.stl"),
+            Some(ScanFormat::Stl)
+        );
+        assert_eq!(detect_format(b"\x00\x01junk", "x.bin"), None);
+        assert_eq!(detect_format(b"hello world\n", "notes.txt"), None);
+    }
 }

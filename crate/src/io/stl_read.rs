@@ -172,3 +172,53 @@ fn read_ascii(bytes: &[u8], file: &str) -> Result<Mesh, IoError> {
     }
     Ok(welder.mesh)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn binary(corners: &[[f32; 3]]) -> Vec<u8> {
+        let mut out = vec![0u8; 80];
+        out.extend_from_slice(&((corners.len() / 3) as u32).to_le_bytes());
+        for t in corners.chunks(3) {
+            out.extend_from_slice(&[0u8; 12]);
+            for c in t.iter().flatten() {
+                out.extend_from_slice(&c.to_le_bytes());
+            }
+            out.extend_from_slice(&[0u8; 2]);
+        }
+        out
+    }
+
+    #[test]
+    fn shared_corners_merge_including_signed_zero() {
+        let bytes = binary(&[
+            [0.0, 0.0, 0.0],
+            [1.0, 0.0, 0.0],
+            [0.0, 1.0, 0.0],
+            [-0.0, 0.0, 0.0],
+            [0.0, 1.0, 0.0],
+            [1.0, 0.0, 0.0],
+        ]);
+        let mesh = read_stl(&bytes, "t.stl").unwrap();
+        assert_eq!(mesh.positions.len(), 3);
+        assert_eq!(mesh.triangles, vec![[0, 1, 2], [0, 2, 1]]);
+    }
+
+    #[test]
+    fn non_finite_corner_is_named() {
+        let bytes = binary(&[[0.0, 0.0, 0.0], [f32::NAN, 0.0, 0.0], [0.0, 1.0, 0.0]]);
+        let err = read_stl(&bytes, "t.stl").unwrap_err();
+        assert_eq!(
+            err.to_string(),
+            "t.stl: triangle 0 corner 1 has a non-finite coordinate (NaN or infinity)"
+        );
+    }
+
+    #[test]
+    fn short_files_and_empty_ascii_are_errors() {
+        assert!(read_stl(b"abc", "t.stl").is_err());
+        let err = read_stl(b"solid empty\nendsolid empty\n", "t.stl").unwrap_err();
+        assert_eq!(err.to_string(), "t.stl: the ASCII STL holds no facets");
+    }
+}
