@@ -309,3 +309,43 @@ fn files_round_trip_through_the_readers() {
         assert!((a - b).norm() < 0.01, "{name}: {a} vs {b}");
     }
 }
+
+#[test]
+fn pose_angles_move_the_body_the_documented_way() {
+    let (d, t) = data();
+    let mut params = fit_height(d, &sample_subject(&mut subject_rng(9, 0)));
+    params.pose = PoseParams::default();
+    let (_, neutral) = subject::shape_and_pose(d, &params).unwrap();
+    let vertex = |name: &str| {
+        t.landmark_vertices()
+            .iter()
+            .find(|(n, _)| n == name)
+            .unwrap()
+            .1 as usize
+    };
+    // Left arm abducted by 10°: the left wrist moves up and out (+x is the subject's left).
+    params.pose.left_shoulder_abduction = 10.0;
+    let (_, raised) = subject::shape_and_pose(d, &params).unwrap();
+    let w = vertex("Lt. Radial Styloid");
+    assert!(
+        raised[w].y > neutral[w].y + 0.03 && raised[w].x > neutral[w].x,
+        "left wrist"
+    );
+    let rw = vertex("Rt. Radial Styloid");
+    assert!(
+        (raised[rw] - neutral[rw]).norm() < 1e-9,
+        "right arm untouched"
+    );
+    // Head flexion forward: Sellion moves forward (+z) and down.
+    params.pose.left_shoulder_abduction = 0.0;
+    params.pose.head_flexion = 8.0;
+    let (_, nod) = subject::shape_and_pose(d, &params).unwrap();
+    let s = vertex("Sellion");
+    assert!(
+        nod[s].z > neutral[s].z + 0.005 && nod[s].y < neutral[s].y,
+        "sellion"
+    );
+    // Legs do not move with the upper body.
+    let m = vertex("Lt. Lateral Malleolus");
+    assert!((nod[m] - neutral[m]).norm() < 1e-9);
+}
