@@ -33,6 +33,9 @@ mod native {
         /// The generic template: export it (`--resolution base|fine --export DIR`) or rebuild it
         /// from MakeHuman data (`template build --makehuman DIR --out public/template`).
         Template(bodyspace::cli::template::TemplateArgs),
+        /// Make N synthetic subjects (scan, landmarks, ground truth) from MakeHuman data:
+        /// `synth --n N --seed S --out DIR`.
+        Synth(bodyspace::cli::synth::SynthArgs),
     }
 
     pub fn main() {
@@ -40,6 +43,7 @@ mod native {
         let result = match cli.command {
             Command::Info(args) => bodyspace::cli::info::run(&args),
             Command::Template(args) => bodyspace::cli::template::run(&args),
+            Command::Synth(args) => bodyspace::cli::synth::run(&args),
         };
         if let Err(message) = result {
             eprintln!("bodyspace: {message}");
