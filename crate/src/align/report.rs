@@ -68,7 +68,7 @@ pub struct AlignReport {
     pub template_vertices: usize,
     /// Scan vertices.
     pub scan_vertices: usize,
-    /// Distance of every scan vertex to the fitted template surface, signed positive when the scan
+    /// Distance of every scan vertex (used by a triangle) to the fitted template surface, signed positive when the scan
     /// lies outside (along the template's normal) — the paper's Table 1.
     pub scan_to_template: DistanceStats,
     /// Distance of every template vertex with a non-zero data weight to the scan surface, signed
@@ -125,7 +125,7 @@ pub fn template_to_scan_distances(
         .collect()
 }
 
-/// Signed distances of every scan vertex to the fitted template surface, positive when the scan
+/// Signed distances of every scan vertex used by a triangle to the fitted template surface, positive when the scan
 /// lies outside the template (along the template face normal).
 pub fn scan_to_template_distances(
     fitted: &[Point3<f64>],
@@ -134,8 +134,7 @@ pub fn scan_to_template_distances(
 ) -> Result<Vec<f64>, AlignError> {
     let template = ScanIndex::from_parts("fitted template", fitted, triangles)?;
     Ok(scan
-        .positions()
-        .iter()
+        .surface_vertices()
         .map(|s| match template.closest(s, None, &EXACT) {
             Some(m) => {
                 let d = s - m.point;

@@ -47,6 +47,9 @@ pub struct ScanIndex {
     boundary_triangle: Vec<bool>,
     rings: OneRings,
     tree: ImmutableKdTree<f64, 3>,
+    /// Tree item → scan vertex: only vertices used by a triangle are indexed, so stray points
+    /// (unreferenced vertices, common in raw scans) are never matched.
+    tree_vertex: Vec<u32>,
     bvh: OnceLock<Option<TriMesh>>,
 }
 
@@ -102,7 +105,21 @@ impl ScanIndex {
             });
         }
         validate_mesh(what, positions, triangles)?;
-        let coords: Vec<[f64; 3]> = positions.iter().map(|p| [p.x, p.y, p.z]).collect();
+        let mut used = vec![false; positions.len()];
+        triangles
+            .iter()
+            .flatten()
+            .for_each(|&v| used[v as usize] = true);
+        let tree_vertex: Vec<u32> = (0..positions.len() as u32)
+            .filter(|&v| used[v as usize])
+            .collect();
+        let coords: Vec<[f64; 3]> = tree_vertex
+            .iter()
+            .map(|&v| {
+                let p = &positions[v as usize];
+                [p.x, p.y, p.z]
+            })
+            .collect();
         let tree = ImmutableKdTree::new_from_slice(&coords).map_err(|_| {
             AlignError::ScanHasNoTriangles {
                 vertices: positions.len(),
@@ -122,6 +139,7 @@ impl ScanIndex {
             boundary_triangle,
             rings: OneRings::new(positions.len(), triangles),
             tree,
+            tree_vertex,
             bvh: OnceLock::new(),
         })
     }
@@ -134,6 +152,18 @@ impl ScanIndex {
     /// Scan vertex positions (metres).
     pub fn positions(&self) -> &[Point3<f64>] {
         &self.positions
+    }
+
+    /// Scan vertices used by at least one triangle (the points that are matched and measured).
+    pub fn surface_vertices(&self) -> impl Iterator<Item = &Point3<f64>> + '_ {
+        self.tree_vertex
+            .iter()
+            .map(|&v| &self.positions[v as usize])
+    }
+
+    /// Number of scan vertices used by at least one triangle.
+    pub fn surface_vertex_count(&self) -> usize {
+        self.tree_vertex.len()
     }
 
     /// Per-vertex boundary flags (`true` on hole rims and open borders).
@@ -208,7 +238,7 @@ impl ScanIndex {
         normal: Option<&Vector3<f64>>,
         query: &MatchQuery,
     ) -> Option<usize> {
-        let k = NonZero::new(query.candidates.min(self.positions.len()))?;
+        let k = NonZero::new(query.candidates.min(self.tree_vertex.len()))?;
         let q = [p.x, p.y, p.z];
         if query.min_cos.is_none() || normal.is_none() {
             let hit = self
@@ -216,7 +246,7 @@ impl ScanIndex {
                 .query(&q)
                 .nearest_one::<SquaredEuclidean<f64>>()
                 .execute();
-            return Some(hit.item as usize);
+            return Some(self.tree_vertex[hit.item as usize] as usize);
         }
         let hits = self
             .tree
@@ -224,7 +254,7 @@ impl ScanIndex {
             .nearest_n::<SquaredEuclidean<f64>>(k)
             .execute();
         hits.iter()
-            .map(|h| h.item as usize)
+            .map(|h| self.tree_vertex[h.item as usize] as usize)
             .find(|&v| Self::compatible(query.min_cos, normal, &self.vertex_normals[v]))
     }
 
