@@ -141,6 +141,7 @@ fn main() {
         );
     }
 
+    schedules(&template, &index);
     let weights = vec![1.0; template.positions.len()];
     for mode in [
         CorrespondenceMode::NearestVertex,
@@ -177,6 +178,28 @@ scan→template RMS {:.3} mm mean {:+.3} mm sd {:.3} mm; template→scan RMS {:.
                     rep.scan_to_template.std_dev * 1e3,
                     rep.template_to_scan.rms * 1e3,
                 );
+                if let Ok(mut d) = bodyspace::align::report::scan_to_template_distances(
+                    &r.positions,
+                    &template.triangles,
+                    &index,
+                ) {
+                    let worst = d
+                        .iter()
+                        .enumerate()
+                        .max_by(|a, b| a.1.abs().total_cmp(&b.1.abs()))
+                        .map(|(i, v)| (scan.positions[i], *v));
+                    d.iter_mut().for_each(|v| *v = v.abs());
+                    d.sort_by(f64::total_cmp);
+                    let q = |f: f64| d[((d.len() - 1) as f64 * f) as usize] * 1e3;
+                    println!(
+                        "  |scan→template| percentiles 50/90/99/100: {:.3}/{:.3}/{:.3}/{:.3} mm; worst at {:?}",
+                        q(0.5),
+                        q(0.9),
+                        q(0.99),
+                        q(1.0),
+                        worst
+                    );
+                }
                 let marks: Vec<String> = rep
                     .curve
                     .iter()
@@ -189,6 +212,35 @@ scan→template RMS {:.3} mm mean {:+.3} mm sd {:.3} mm; template→scan RMS {:.
                 );
             }
             Err(e) => println!("fine_align {mode:?}: {e}"),
+        }
+    }
+}
+
+/// Time/accuracy trade-off of the schedule (VertexOneRing): iterations per round × limit.
+fn schedules(template: &Mesh, index: &ScanIndex) {
+    let weights = vec![1.0; template.positions.len()];
+    for (per_round, limit) in [(10, 60), (10, 100), (20, 100), (20, 200), (40, 200)] {
+        let params = FineAlignParams {
+            iterations_per_round: per_round,
+            max_iterations: limit,
+            ..FineAlignParams::default()
+        };
+        let t = Instant::now();
+        if let Ok(r) = fine_align(
+            &template.positions,
+            &template.triangles,
+            index,
+            &weights,
+            &params,
+            &mut |_| ControlFlow::Continue(()),
+        ) {
+            println!(
+                "schedule {per_round:>2}/round, max {limit:>3}: {:.0} ms, {} iterations, scan→template RMS {:.3} mm, template→scan RMS {:.3} mm",
+                ms(t),
+                r.report.iterations,
+                r.report.scan_to_template.rms * 1e3,
+                r.report.template_to_scan.rms * 1e3
+            );
         }
     }
 }

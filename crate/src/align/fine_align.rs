@@ -6,7 +6,8 @@
 //! vertex normals), switches off the data term of vertices without a compatible match, on a hole
 //! rim or too far (paper §3.2.1), then runs `iterations_per_round` L-BFGS iterations warm-started
 //! from the current transforms, with E_s weighted by b·max(1, initial_stiffness·decay^r). It stops
-//! after a round that lowered E by less than `relative_tolerance`·E (once annealing is over), after
+//! after a round that lowered E by less than `relative_tolerance`·E or moved the vertices by less
+//! than `displacement_tolerance` RMS (once annealing is over), after
 //! `max_iterations` iterations in total, or when `on_progress` returns `Break`.
 
 use super::energy::{
@@ -176,8 +177,18 @@ pub fn fine_align(
     'rounds: while iteration < params.max_iterations {
         let round = rounds;
         rounds += 1;
+        let mut moved_sq = 0.0;
         for (i, v) in vertices.iter().enumerate() {
-            positions[i] = transformed(optimizer.x(), v, i) + centroid;
+            let p = transformed(optimizer.x(), v, i) + centroid;
+            moved_sq += (p - positions[i]).norm_squared();
+            positions[i] = p;
+        }
+        if round > 0
+            && last_stiffness <= 1.0
+            && (moved_sq / n as f64).sqrt() < params.displacement_tolerance
+        {
+            converged = true;
+            break;
         }
         vertex_normals_into(&positions, triangles, &mut normals);
         for i in 0..n {

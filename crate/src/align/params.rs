@@ -36,6 +36,9 @@ pub struct FineAlignParams {
     pub iterations_per_round: usize,
     /// Stop when a round lowers E by less than this fraction of E.
     pub relative_tolerance: f64,
+    /// Stop when the RMS displacement of the template vertices over one round falls below this
+    /// (metres): the surface has stopped moving even if E still creeps down by sliding.
+    pub displacement_tolerance: f64,
     /// L-BFGS memory m (pairs of correction vectors kept).
     pub lbfgs_memory: usize,
     /// How correspondences are searched.
@@ -67,6 +70,7 @@ impl Default for FineAlignParams {
             max_iterations: 200,
             iterations_per_round: 10,
             relative_tolerance: 1e-4,
+            displacement_tolerance: 1e-4,
             lbfgs_memory: 7,
             correspondence: CorrespondenceMode::VertexOneRing,
             normal_compatibility: true,
@@ -112,6 +116,14 @@ impl FineAlignParams {
         if !(self.relative_tolerance.is_finite() && self.relative_tolerance >= 0.0) {
             let v = self.relative_tolerance;
             return Err(bad("relative_tolerance", v, "must be finite and ≥ 0"));
+        }
+        if !(self.displacement_tolerance.is_finite() && self.displacement_tolerance >= 0.0) {
+            let v = self.displacement_tolerance;
+            return Err(bad(
+                "displacement_tolerance",
+                v,
+                "must be finite and ≥ 0 (metres)",
+            ));
         }
         if !(0.0..=180.0).contains(&self.max_normal_angle_deg) {
             let v = self.max_normal_angle_deg;

@@ -240,13 +240,16 @@ impl ScanIndex {
     ) -> Option<usize> {
         let k = NonZero::new(query.candidates.min(self.tree_vertex.len()))?;
         let q = [p.x, p.y, p.z];
-        if query.min_cos.is_none() || normal.is_none() {
-            let hit = self
-                .tree
-                .query(&q)
-                .nearest_one::<SquaredEuclidean<f64>>()
-                .execute();
-            return Some(self.tree_vertex[hit.item as usize] as usize);
+        // The nearest vertex is compatible almost everywhere; only where it is not (legs, folds)
+        // is the k-nearest query (which allocates its result) needed.
+        let hit = self
+            .tree
+            .query(&q)
+            .nearest_one::<SquaredEuclidean<f64>>()
+            .execute();
+        let nearest = self.tree_vertex[hit.item as usize] as usize;
+        if Self::compatible(query.min_cos, normal, &self.vertex_normals[nearest]) {
+            return Some(nearest);
         }
         let hits = self
             .tree
