@@ -10,6 +10,7 @@
 //! * [`params`], [`error`] — the params struct with its documented defaults, the error enum.
 
 pub mod error;
+pub mod fast_math;
 pub mod fit;
 pub mod kernel;
 pub mod params;
