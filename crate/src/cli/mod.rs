@@ -1,3 +1,5 @@
 //! The native `bodyspace` command-line program: one module per subcommand.
 
+pub mod align;
 pub mod info;
+pub mod template;
