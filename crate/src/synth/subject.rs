@@ -1,0 +1,190 @@
+//! One synthetic subject: morph the base mesh, pose it, put it on the floor, scan it.
+
+use std::collections::HashMap;
+
+use nalgebra::{Point3, Rotation3, Vector3};
+use rand::Rng;
+
+use crate::mesh::Mesh;
+
+use super::data::MakeHumanData;
+use super::error::SynthError;
+use super::macros::macro_target_weights;
+use super::population::{PoseParams, SubjectParams};
+use super::scanner::{scan, Scan, ScannerParams};
+use super::skeleton::{bone_transforms, joint_positions, skin};
+
+/// A made subject, in the template frame (metres, y up, feet on y = 0, facing +z).
+#[derive(Debug, Clone)]
+pub struct Subject {
+    pub params: SubjectParams,
+    /// Standing height of the unposed, morphed body (top of head to soles), metres.
+    pub stature: f64,
+    /// The posed body: template base-mesh triangles on the subject's vertex positions, i.e. the
+    /// noise-free surface *and* the ground-truth position of every template vertex.
+    pub surface: Mesh,
+    /// The virtual scan of `surface`.
+    pub scan: Scan,
+}
+
+/// Template vertices at rest (morphed) and posed.
+pub type RestAndPosed = (Vec<Point3<f64>>, Vec<Point3<f64>>);
+
+/// Bones the pose moves (MakeHuman default rig names).
+const TRUNK_BONE: &str = "spine04";
+const HEAD_BONE: &str = "neck01";
+const LEFT_ARM_BONE: &str = "upperarm01.L";
+const RIGHT_ARM_BONE: &str = "upperarm01.R";
+
+/// Morphs, poses and scans one subject; the scanner noise comes from `rng`.
+pub fn make_subject<R: Rng>(
+    data: &MakeHumanData,
+    params: &SubjectParams,
+    scanner: &ScannerParams,
+    rng: &mut R,
+) -> Result<Subject, SynthError> {
+    let params = &fit_height(data, params);
+    let (rest, posed) = shape_and_pose(data, params)?;
+    let stature = extent_y(&rest);
+    let surface = Mesh::new(posed, data.skin.triangles.clone());
+    let scan = scan(&surface, scanner, rng);
+    Ok(Subject {
+        params: params.clone(),
+        stature,
+        surface,
+        scan,
+    })
+}
+
+/// `params` with MakeHuman's height value solved so that the morphed body's stature is
+/// `params.stature_target`. Target weights are piecewise linear in the height value with a kink
+/// at 0.5, so stature is too (up to which vertex is the highest): evaluate it at 0, ½ and 1,
+/// interpolate on the right half, and refine once by a secant step. Clamped to [0, 1].
+pub fn fit_height(data: &MakeHumanData, params: &SubjectParams) -> SubjectParams {
+    let mut p = params.clone();
+    let at = |h: f64, p: &mut SubjectParams| {
+        p.shape.height = h;
+        rest_stature(data, p)
+    };
+    let (s0, s5, s1) = (at(0.0, &mut p), at(0.5, &mut p), at(1.0, &mut p));
+    let target = params.stature_target;
+    let (lo, hi, slo, shi) = if target <= s5 {
+        (0.0, 0.5, s0, s5)
+    } else {
+        (0.5, 1.0, s5, s1)
+    };
+    let lerp = |a: f64, b: f64, sa: f64, sb: f64| {
+        if (sb - sa).abs() < 1e-9 {
+            a
+        } else {
+            (a + (b - a) * (target - sa) / (sb - sa)).clamp(lo, hi)
+        }
+    };
+    let h1 = lerp(lo, hi, slo, shi);
+    let s_h1 = at(h1, &mut p);
+    // Secant step from the nearer end of the segment.
+    let h2 = if (h1 - lo).abs() < (hi - h1).abs() {
+        lerp(lo, h1, slo, s_h1)
+    } else {
+        lerp(h1, hi, s_h1, shi)
+    };
+    p.shape.height = h2;
+    p
+}
+
+/// Stature (y extent of the body skin) of the morphed, unposed body.
+pub fn rest_stature(data: &MakeHumanData, params: &SubjectParams) -> f64 {
+    let full = morphed(data, params);
+    let skin: Vec<Point3<f64>> = data.provenance.iter().map(|&v| full[v as usize]).collect();
+    extent_y(&skin)
+}
+
+fn morphed(data: &MakeHumanData, params: &SubjectParams) -> Vec<Point3<f64>> {
+    let mut full: Vec<Vector3<f64>> = data.model.positions.iter().map(|p| p.coords).collect();
+    let mut weights = macro_target_weights(&params.shape);
+    weights.extend(params.local_target_weights());
+    data.targets
+        .blend_into(&weights, data.model.frame.scale, &mut full);
+    full.into_iter().map(Point3::from).collect()
+}
+
+/// The subject's template vertices at rest (morphed only) and posed, both with feet on y = 0.
+pub fn shape_and_pose(
+    data: &MakeHumanData,
+    params: &SubjectParams,
+) -> Result<RestAndPosed, SynthError> {
+    let full = morphed(data, params);
+    let heads = joint_positions(&data.rig, &data.model.joint_pos_idxs, &full)?;
+    let mut rest: Vec<Point3<f64>> = data.provenance.iter().map(|&v| full[v as usize]).collect();
+    let pose = pose_rotations(data, &params.pose)?;
+    let transforms = bone_transforms(&data.rig, &heads, &pose);
+    let mut posed = skin(&rest, &data.influences, &transforms);
+    on_floor(&mut rest);
+    on_floor(&mut posed);
+    Ok((rest, posed))
+}
+
+fn pose_rotations(
+    data: &MakeHumanData,
+    pose: &PoseParams,
+) -> Result<HashMap<usize, Rotation3<f64>>, SynthError> {
+    let bone = |name: &str| {
+        data.rig
+            .bone(name)
+            .ok_or_else(|| SynthError::Rig(format!("bone `{name}` is missing")))
+    };
+    // Template-frame axes: x to the subject's left, y up, z forward. Flexion turns about +x
+    // (top moves forward), lateral tilt about −z (top moves to the subject's left), turn about +y.
+    let rot = |flex: f64, lateral: f64, turn: f64| {
+        Rotation3::from_axis_angle(&Vector3::z_axis(), -lateral.to_radians())
+            * Rotation3::from_axis_angle(&Vector3::x_axis(), flex.to_radians())
+            * Rotation3::from_axis_angle(&Vector3::y_axis(), turn.to_radians())
+    };
+    let mut out = HashMap::new();
+    out.insert(
+        bone(TRUNK_BONE)?,
+        rot(pose.trunk_flexion, pose.trunk_lateral, 0.0),
+    );
+    out.insert(
+        bone(HEAD_BONE)?,
+        rot(pose.head_flexion, pose.head_lateral, pose.head_turn),
+    );
+    // Abduction raises the arm sideways: the left arm (x > 0) turns about +z, the right about −z.
+    out.insert(
+        bone(LEFT_ARM_BONE)?,
+        Rotation3::from_axis_angle(
+            &Vector3::z_axis(),
+            pose.left_shoulder_abduction.to_radians(),
+        ),
+    );
+    out.insert(
+        bone(RIGHT_ARM_BONE)?,
+        Rotation3::from_axis_angle(
+            &Vector3::z_axis(),
+            -pose.right_shoulder_abduction.to_radians(),
+        ),
+    );
+    Ok(out)
+}
+
+fn extent_y(points: &[Point3<f64>]) -> f64 {
+    let (lo, hi) = points
+        .iter()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), p| {
+            (lo.min(p.y), hi.max(p.y))
+        });
+    if lo.is_finite() {
+        hi - lo
+    } else {
+        0.0
+    }
+}
+
+fn on_floor(points: &mut [Point3<f64>]) {
+    let lo = points.iter().map(|p| p.y).fold(f64::INFINITY, f64::min);
+    if lo.is_finite() {
+        for p in points {
+            p.y -= lo;
+        }
+    }
+}
