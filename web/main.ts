@@ -1,6 +1,9 @@
 // Wires the page: the core client, the viewer, the panels, and file drops / picks.
 import './style.css';
+import { AlignStep } from './app/align-step';
 import { Session } from './app/session';
+import { TemplateView } from './app/template-view';
+import { WarpStep } from './app/warp-step';
 import { readFiles } from './app/read-files';
 import { CoreClient } from './client/core-client';
 import { METRES_PER_UNIT, type Units } from './shared/results';
@@ -21,6 +24,10 @@ const scanPanel = new ScanPanel(changeUnits);
 const landmarksPanel = new LandmarksPanel();
 const emptyHint = byId('empty-hint');
 const body = document.body;
+const showError = (message: string) => banner.show([message]);
+const templateView = new TemplateView(client, viewer, showError);
+const warpStep = new WarpStep(client, viewer, session, templateView, showError);
+const alignStep = new AlignStep(client, viewer, session, templateView, warpStep, showError);
 let lastReadMs = 0;
 let loads = 0;
 
@@ -32,6 +39,7 @@ Promise.all([client.call({ type: 'version' }), client.call({ type: 'caesarNames'
     landmarksPanel.render(null);
     topBar.setStatus(`Core ${version} ready. Drop a scan and its landmarks anywhere on the page.`);
     body.dataset.coreReady = 'true';
+    return templateView.load('base', true);
   })
   .catch((error: Error) => {
     topBar.setStatus('The core did not start.');
@@ -53,6 +61,10 @@ async function open(files: File[]): Promise<void> {
   const landmarks = outcome.landmarks.at(-1);
   if (landmarks) session.setLandmarks(landmarks);
   if (scan || landmarks) refresh(Boolean(scan) || !session.scan);
+  if (scan || landmarks) {
+    alignStep.reset();
+    warpStep.reset();
+  }
 
   if (outcome.errors.length > 0) banner.show(outcome.errors);
   else if (scan || landmarks) banner.dismiss();
@@ -67,6 +79,8 @@ async function open(files: File[]): Promise<void> {
 function changeUnits(units: Units): void {
   session.scanUnits = units;
   refresh(true);
+  alignStep.reset();
+  warpStep.reset();
 }
 
 /** Pushes the session into the view and the panels; `frame` re-aims the camera. */

@@ -4,6 +4,12 @@
 //! Every array handed to JavaScript is a copy (`Float32Array::from(&[f32])`), never a view into
 //! WASM memory, so a later allocation cannot invalidate it.
 
+mod align;
+mod template;
+
+pub use align::{align_scan, export_mesh, rbf_warp_js, AlignOutcome, WarpOutcome};
+pub use template::{load_template, TemplateHandle};
+
 use js_sys::{Float32Array, Uint32Array};
 use nalgebra::Vector3;
 use serde::Serialize;

@@ -1,6 +1,6 @@
 // Owns the core worker: typed requests queued one at a time, replies matched by id, progress
 // callbacks, and cancellation by terminating the worker and starting a fresh one.
-import type { CoreReply, CoreRequest, CoreRequestBody, ResultOf } from '../shared/messages';
+import type { CoreEvent, CoreReply, CoreRequest, CoreRequestBody, ResultOf } from '../shared/messages';
 
 /** The rejection of every call pending when `cancel()` ran. */
 export class CancelledError extends Error {
@@ -21,6 +21,8 @@ export class CoreError extends Error {
 export interface CallOptions {
   /** Called for each progress reply: fraction in [0, 1] and what the core is doing. */
   onProgress?: (fraction: number, label: string) => void;
+  /** Called for each event of a long call (alignment progress, intermediate positions). */
+  onEvent?: (event: CoreEvent) => void;
   /** Buffers moved to the worker instead of copied; detached in the caller afterwards. */
   transfer?: Transferable[];
 }
@@ -29,6 +31,7 @@ interface Pending {
   resolve: (value: unknown) => void;
   reject: (error: Error) => void;
   onProgress?: CallOptions['onProgress'];
+  onEvent?: CallOptions['onEvent'];
 }
 
 interface Queued {
@@ -55,6 +58,7 @@ export class CoreClient {
         resolve: resolve as (value: unknown) => void,
         reject,
         onProgress: options.onProgress,
+        onEvent: options.onEvent,
       });
       this.queue.push({ request: { ...body, id } as CoreRequest, transfer: options.transfer ?? [] });
       this.pump();
@@ -106,6 +110,10 @@ export class CoreClient {
     if (!entry) return;
     if (reply.type === 'progress') {
       entry.onProgress?.(reply.fraction, reply.label);
+      return;
+    }
+    if (reply.type === 'event') {
+      entry.onEvent?.(reply.event);
       return;
     }
     this.pending.delete(reply.id);

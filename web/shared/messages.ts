@@ -1,5 +1,7 @@
 // Messages between the UI thread and the core worker. No DOM here: shared by both threads.
+import type { AlignProgress, AlignResult, FineSettings, RbfSettings, ScanInput, WarpResult } from './align-types';
 import type { ParsedLandmarks, ParsedScan } from './results';
+import type { TemplateData, TemplateResolution } from './template-data';
 
 /** Every request the worker understands, without its `id` (the client adds it). */
 export type CoreRequestBody =
@@ -7,7 +9,12 @@ export type CoreRequestBody =
   | { type: 'caesarNames' }
   /** `bytes` is transferred, not copied: the sender's buffer is detached afterwards. */
   | { type: 'parseScan'; bytes: ArrayBuffer; fileName: string }
-  | { type: 'parseLandmarks'; bytes: ArrayBuffer; fileName: string };
+  | { type: 'parseLandmarks'; bytes: ArrayBuffer; fileName: string }
+  | { type: 'loadTemplate'; resolution: TemplateResolution }
+  | { type: 'rbfWarp'; scan: ScanInput; settings: RbfSettings }
+  /** RBF warp then fine alignment; replies with `alignProgress` and `alignRound` events. */
+  | { type: 'align'; scan: ScanInput; rbf: RbfSettings; fine: FineSettings }
+  | { type: 'exportMesh'; positions: Float32Array; triangles: Uint32Array; format: 'ply' | 'obj' };
 
 /** A request to the worker; `id` pairs it with its replies. */
 export type CoreRequest = CoreRequestBody & { id: number };
@@ -18,14 +25,25 @@ export interface CoreResults {
   caesarNames: string[];
   parseScan: ParsedScan;
   parseLandmarks: ParsedLandmarks;
+  loadTemplate: TemplateData;
+  rbfWarp: WarpResult;
+  align: AlignResult;
+  exportMesh: Uint8Array;
 }
 
 /** The result type of a request body. */
 export type ResultOf<R extends CoreRequestBody> = CoreResults[R['type']];
 
-/** A reply from the worker: any number of `progress`, then one `result` or one `error`. */
+/** Events a long call sends before its result. */
+export type CoreEvent =
+  | ({ kind: 'alignProgress' } & AlignProgress)
+  /** The template's current positions (metres, scan frame) at the start of a round. */
+  | { kind: 'alignRound'; round: number; iteration: number; positions: Float32Array };
+
+/** A reply from the worker: any number of `progress` / `event`, then one `result` or one `error`. */
 export type CoreReply =
   | { id: number; type: 'result'; result: unknown }
   /** `fatal`: the core trapped (a WASM panic) and the worker must be replaced. */
   | { id: number; type: 'error'; message: string; fatal?: boolean }
-  | { id: number; type: 'progress'; fraction: number; label: string };
+  | { id: number; type: 'progress'; fraction: number; label: string }
+  | { id: number; type: 'event'; event: CoreEvent };

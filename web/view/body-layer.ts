@@ -7,7 +7,8 @@ import { LandmarkMarkers, type LandmarkPoints } from './landmark-markers';
 export interface BodyMesh {
   positions: Float32Array;
   triangles: Uint32Array;
-  normals: Float32Array;
+  /** Computed from the triangles when absent. */
+  normals?: Float32Array;
 }
 
 /** What `Viewer.showBody` draws; `null` removes that part, `undefined` keeps it. */
@@ -17,6 +18,14 @@ export interface BodyContent {
   meshScale?: number;
   landmarks?: LandmarkPoints | null;
   colour?: number;
+  /** `#V·3` linear RGB per vertex (replaces `colour`); `null` goes back to the plain colour. */
+  vertexColours?: Float32Array | null;
+  /** 1 opaque (default); below 1 the surface is drawn see-through, markers stay opaque. */
+  opacity?: number;
+  /** Hidden bodies keep their geometry, so showing them again is instant. */
+  visible?: boolean;
+  /** Column-major 4×4 display transform of the whole body (e.g. a z-up scan shown upright). */
+  transform?: number[] | null;
 }
 
 /** Marker radius as a fraction of the body's height: 8 mm on a 1.75 m body. */
@@ -37,6 +46,15 @@ export class BodyLayer {
   update(content: BodyContent): void {
     if (content.mesh !== undefined && content.mesh !== this.source) this.setMesh(content.mesh, content.colour);
     if (this.mesh && content.meshScale !== undefined) this.mesh.scale.setScalar(content.meshScale);
+    if (content.vertexColours !== undefined) this.setVertexColours(content.vertexColours);
+    if (content.opacity !== undefined) this.setOpacity(content.opacity);
+    if (content.visible !== undefined) this.group.visible = content.visible;
+    if (content.transform !== undefined) {
+      this.group.matrixAutoUpdate = false;
+      if (content.transform) this.group.matrix.fromArray(content.transform);
+      else this.group.matrix.identity();
+      this.group.matrixWorldNeedsUpdate = true;
+    }
     if (content.landmarks !== undefined) this.landmarks = content.landmarks;
     this.rebuildMarkers();
   }
@@ -58,8 +76,19 @@ export class BodyLayer {
     return this.markers;
   }
 
+  /** Whether the surface is drawn with per-vertex colours. */
+  get coloured(): boolean {
+    return Boolean(this.mesh?.geometry.getAttribute('color'));
+  }
+
+  /** Whether the body is shown (hidden ones keep their geometry). */
+  get visible(): boolean {
+    return this.group.visible;
+  }
+
   /** World-space bounds of everything in the layer (empty when nothing is shown). */
   bounds(): THREE.Box3 {
+    if (!this.group.visible) return new THREE.Box3();
     this.group.updateMatrixWorld(true);
     return new THREE.Box3().setFromObject(this.group);
   }
@@ -70,7 +99,10 @@ export class BodyLayer {
     this.markers = null;
   }
 
+  private colour = 0xc9c3bb;
+
   private setMesh(body: BodyMesh | null, colour = 0xc9c3bb): void {
+    this.colour = colour;
     if (this.mesh) {
       this.group.remove(this.mesh);
       this.mesh.geometry.dispose();
@@ -81,8 +113,9 @@ export class BodyLayer {
     if (!body) return;
     const geometry = new THREE.BufferGeometry();
     geometry.setAttribute('position', new THREE.BufferAttribute(body.positions, 3));
-    geometry.setAttribute('normal', new THREE.BufferAttribute(body.normals, 3));
     geometry.setIndex(new THREE.BufferAttribute(body.triangles, 1));
+    if (body.normals) geometry.setAttribute('normal', new THREE.BufferAttribute(body.normals, 3));
+    else geometry.computeVertexNormals();
     geometry.computeBoundingBox();
     geometry.computeBoundingSphere();
     // Scans have holes and open borders: show both faces so the inside of a hole is not see-through.
@@ -95,6 +128,32 @@ export class BodyLayer {
     this.mesh = new THREE.Mesh(geometry, material);
     this.mesh.name = 'body-mesh';
     this.group.add(this.mesh);
+  }
+
+  private setVertexColours(colours: Float32Array | null): void {
+    if (!this.mesh) return;
+    const material = this.mesh.material as THREE.MeshStandardMaterial;
+    if (colours && colours.length === this.mesh.geometry.getAttribute('position').count * 3) {
+      this.mesh.geometry.setAttribute('color', new THREE.BufferAttribute(colours, 3));
+      material.vertexColors = true;
+      material.color.set(0xffffff);
+    } else {
+      this.mesh.geometry.deleteAttribute('color');
+      material.vertexColors = false;
+      material.color.set(this.colour);
+    }
+    material.needsUpdate = true;
+  }
+
+  private setOpacity(opacity: number): void {
+    if (!this.mesh) return;
+    const material = this.mesh.material as THREE.MeshStandardMaterial;
+    material.transparent = opacity < 1;
+    material.opacity = opacity;
+    // A see-through body must not hide what is inside it from the depth test.
+    material.depthWrite = opacity >= 1;
+    this.mesh.renderOrder = opacity < 1 ? 1 : 0;
+    material.needsUpdate = true;
   }
 
   private rebuildMarkers(): void {

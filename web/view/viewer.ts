@@ -35,8 +35,8 @@ export class Viewer {
     this.controls.addEventListener('change', () => this.requestRender());
 
     const tooltip = new LandmarkTooltip(this.renderer.domElement, this.camera, () =>
-      [...this.layers.values()].flatMap((l) => (l.landmarkMarkers ? [l.landmarkMarkers] : [])),
-      () => [...this.layers.values()].flatMap((l) => (l.surface ? [l.surface] : [])),
+      [...this.layers.values()].flatMap((l) => (l.visible && l.landmarkMarkers ? [l.landmarkMarkers] : [])),
+      () => [...this.layers.values()].flatMap((l) => (l.visible && l.surface ? [l.surface] : [])),
     );
     container.appendChild(tooltip.element);
 
@@ -59,6 +59,8 @@ export class Viewer {
     layer.update(content);
     this.container.dataset[`${key}Triangles`] = String(layer.triangleCount);
     this.container.dataset[`${key}Markers`] = String(layer.markerCount);
+    this.container.dataset[`${key}Visible`] = String(layer.visible);
+    this.container.dataset[`${key}Coloured`] = String(layer.coloured);
     this.placeGrid();
     if (frame) this.frame();
     this.requestRender();
@@ -73,6 +75,7 @@ export class Viewer {
     this.layers.delete(key);
     delete this.container.dataset[`${key}Triangles`];
     delete this.container.dataset[`${key}Markers`];
+    delete this.container.dataset[`${key}Visible`];
     this.placeGrid();
     this.requestRender();
   }

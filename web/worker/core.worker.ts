@@ -3,6 +3,8 @@
 import init, { caesarLandmarkNames, coreVersion, parseLandmarks, parseScan } from '../pkg/bodyspace.js';
 import type { CoreReply, CoreRequest } from '../shared/messages';
 import type { MeshSummary, ParsedLandmarks, ParsedScan } from '../shared/results';
+import { runAlign, runExport, runRbfWarp } from './align-handlers';
+import { templateData, templateTransfer } from './template-handlers';
 
 const ready = init();
 
@@ -63,6 +65,30 @@ self.onmessage = async (event: MessageEvent<CoreRequest>) => {
       case 'parseLandmarks':
         post({ id: request.id, type: 'result', result: readLandmarks(request.bytes, request.fileName) });
         break;
+      case 'loadTemplate': {
+        post({ id: request.id, type: 'progress', fraction: 0, label: `Loading the ${request.resolution} template` });
+        const data = templateData(request.resolution);
+        post({ id: request.id, type: 'result', result: data }, templateTransfer(data));
+        break;
+      }
+      case 'rbfWarp': {
+        const warp = runRbfWarp(request.scan, request.settings);
+        post({ id: request.id, type: 'result', result: warp }, [warp.positions.buffer, warp.normals.buffer]);
+        break;
+      }
+      case 'align': {
+        const id = request.id;
+        const result = runAlign(request.scan, request.rbf, request.fine, (event, transfer) =>
+          post({ id, type: 'event', event }, transfer),
+        );
+        post({ id, type: 'result', result }, [result.positions.buffer, result.normals.buffer, result.distances.buffer]);
+        break;
+      }
+      case 'exportMesh': {
+        const bytes = runExport(request.positions, request.triangles, request.format);
+        post({ id: request.id, type: 'result', result: bytes }, [bytes.buffer]);
+        break;
+      }
     }
   } catch (error) {
     // A trap leaves the WASM instance unusable; every other error is the core's message.

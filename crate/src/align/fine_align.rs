@@ -109,6 +109,29 @@ pub fn fine_align(
     params: &FineAlignParams,
     on_progress: &mut dyn FnMut(&Progress) -> ControlFlow<()>,
 ) -> Result<FineAlignResult, AlignError> {
+    fine_align_observed(
+        template_positions,
+        triangles,
+        scan,
+        weights,
+        params,
+        on_progress,
+        &mut |_, _| {},
+    )
+}
+
+/// [`fine_align`] that also hands `on_round(round, positions)` the current template positions
+/// (`#V`, metres, input order) at the start of every correspondence round, so a caller that may
+/// be stopped abruptly (a terminated web worker) always holds the last good state.
+pub fn fine_align_observed(
+    template_positions: &[Point3<f64>],
+    triangles: &[[u32; 3]],
+    scan: &ScanIndex,
+    weights: &[f64],
+    params: &FineAlignParams,
+    on_progress: &mut dyn FnMut(&Progress) -> ControlFlow<()>,
+    on_round: &mut dyn FnMut(usize, &[Point3<f64>]),
+) -> Result<FineAlignResult, AlignError> {
     let start = now_ms();
     params.validate()?;
     let n = template_positions.len();
@@ -190,6 +213,7 @@ pub fn fine_align(
             converged = true;
             break;
         }
+        on_round(round, &positions);
         vertex_normals_into(&positions, triangles, &mut normals);
         for i in 0..n {
             coefficients[i] = 0.0;

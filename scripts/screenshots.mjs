@@ -1,0 +1,48 @@
+// Screenshots of the template, RBF warp and Align steps with headless Chromium, for looking at
+// the UI (not a test). Needs `npx vite preview --port 4173` running. Usage: node scripts/screenshots.mjs OUTDIR
+import { readFileSync } from 'node:fs';
+import { chromium } from '@playwright/test';
+
+const out = process.argv[2] ?? 'screenshots';
+const browser = await chromium.launch({
+  executablePath: process.env.CHROMIUM_PATH ?? '/usr/bin/chromium',
+  args: ['--no-sandbox', '--use-angle=swiftshader', '--enable-unsafe-swiftshader'],
+});
+const page = await browser.newPage({ viewport: { width: 1500, height: 950 } });
+const t0 = Date.now();
+const stamp = (what) => console.log(`${((Date.now() - t0) / 1000).toFixed(1)} s  ${what}`);
+await page.goto('http://127.0.0.1:4173/');
+await page.waitForFunction(() => document.body.dataset.templateReady === 'true', undefined, { timeout: 60000 });
+stamp('template shown');
+await page.waitForTimeout(500);
+await page.screenshot({ path: `${out}/1-template.png` });
+await page.getByTestId('template-segment-colours').check();
+await page.waitForTimeout(500);
+await page.screenshot({ path: `${out}/2-segments.png` });
+await page.getByTestId('template-segment-colours').uncheck();
+
+const files = ['scan_001.ply.gz', 'landmarks_001.csv'].map((name) => ({
+  name,
+  data: [...readFileSync(`public/samples/${name}`)],
+}));
+const dt = await page.evaluateHandle((items) => {
+  const d = new DataTransfer();
+  for (const f of items) d.items.add(new File([new Uint8Array(f.data)], f.name));
+  return d;
+}, files);
+await page.dispatchEvent('#viewport', 'drop', { dataTransfer: dt });
+await page.waitForFunction(() => document.body.dataset.rbfState === 'done', undefined, { timeout: 60000 });
+stamp('warp done');
+await page.waitForTimeout(800);
+await page.screenshot({ path: `${out}/3-warp.png` });
+await page.getByTestId('align-run').click();
+await page.waitForFunction(() => Number(document.body.dataset.alignIteration ?? 0) >= 15, undefined, { timeout: 120000 });
+stamp('align iteration 15');
+await page.screenshot({ path: `${out}/4-aligning.png` });
+await page.waitForFunction(() => document.body.dataset.alignState === 'done', undefined, { timeout: 300000 });
+stamp('align done');
+await page.waitForTimeout(800);
+await page.screenshot({ path: `${out}/5-aligned.png` });
+await page.locator('.left-column').evaluate((e) => (e.scrollTop = e.scrollHeight));
+await page.screenshot({ path: `${out}/6-aligned-panel.png` });
+await browser.close();

@@ -1,0 +1,110 @@
+import { expect, test, type Page } from '@playwright/test';
+import { dropFiles, waitForLoads, type TestFile } from './fixtures';
+import { sampleFile, sampleSubject } from './samples';
+
+async function openWithSample(page: Page, files: TestFile[] = sampleSubject()): Promise<void> {
+  await page.goto('./');
+  await expect(page.locator('body')).toHaveAttribute('data-template-ready', 'true', { timeout: 60_000 });
+  await dropFiles(page, files);
+  await waitForLoads(page, 1);
+}
+
+test('the RBF warp lands every used landmark and reports residuals before and after', async ({ page }) => {
+  await openWithSample(page);
+  // Loading a scan with landmarks warps once with the default settings.
+  await expect(page.locator('body')).toHaveAttribute('data-rbf-state', 'done', { timeout: 60_000 });
+  await page.getByTestId('rbf-kernel').selectOption('thin-plate');
+  await page.getByTestId('rbf-run').click();
+  await expect(page.locator('body')).toHaveAttribute('data-rbf-state', 'done', { timeout: 60_000 });
+  await expect(page.getByTestId('rbf-used-count')).toHaveText('85');
+  const rows = page.getByTestId('rbf-residuals').locator('tbody tr');
+  await expect(rows).toHaveCount(85);
+  const values = await rows.evaluateAll((trs) =>
+    trs.map((tr) => ({
+      before: Number((tr as HTMLElement).dataset.beforeMm),
+      after: Number((tr as HTMLElement).dataset.afterMm),
+    })),
+  );
+  for (const v of values) expect(v.after).toBeLessThan(0.01);
+  const meanBefore = values.reduce((s, v) => s + v.before, 0) / values.length;
+  expect(meanBefore).toBeGreaterThan(1);
+  // The z-up sample is shown upright: the note says what was assumed.
+  await expect(page.getByTestId('rbf-frame-note')).toContainText('+z-up');
+  await expect(page.locator('#viewport')).toHaveAttribute('data-warped-visible', 'true');
+  await page.getByTestId('show-scan').uncheck();
+  await expect(page.locator('#viewport')).toHaveAttribute('data-scan-visible', 'false');
+});
+
+test('Align fits the template and shows the RMS, the heat map and keeps the subject', async ({ page }) => {
+  test.setTimeout(300_000);
+  await openWithSample(page);
+  await expect(page.locator('body')).toHaveAttribute('data-rbf-state', 'done', { timeout: 60_000 });
+  await page.getByTestId('align-run').click();
+  await expect(page.locator('body')).toHaveAttribute('data-align-state', 'done', { timeout: 240_000 });
+  const rms = Number(await page.getByTestId('align-rms').getAttribute('data-rms-mm'));
+  expect(Number.isFinite(rms)).toBe(true);
+  expect(rms).toBeGreaterThan(0);
+  expect(rms).toBeLessThan(5);
+  expect(Number(await page.getByTestId('align-chart').getAttribute('data-points'))).toBeGreaterThan(1);
+  await expect(page.locator('#viewport')).toHaveAttribute('data-fitted-coloured', 'true');
+  await expect(page.getByTestId('heat-legend')).toBeVisible();
+  const download = page.waitForEvent('download');
+  await page.getByTestId('export-ply').click();
+  expect((await download).suggestedFilename()).toBe('scan_001-fitted.ply');
+  await page.getByTestId('align-keep').click();
+  await expect(page.locator('body')).toHaveAttribute('data-subjects', '1');
+});
+
+test('Cancel keeps the last good state, flagged with its iteration, and the scan stays loaded', async ({ page }) => {
+  test.setTimeout(300_000);
+  await openWithSample(page);
+  await expect(page.locator('body')).toHaveAttribute('data-rbf-state', 'done', { timeout: 60_000 });
+  // Cancel as soon as the first progress arrives (in the page, so a fast run cannot finish first).
+  await page.evaluate(() => {
+    new MutationObserver((_, observer) => {
+      if (Number(document.body.dataset.alignIteration ?? '0') < 1) return;
+      observer.disconnect();
+      document.querySelector<HTMLButtonElement>('[data-testid="align-cancel"]')!.click();
+    }).observe(document.body, { attributes: true, attributeFilter: ['data-align-iteration'] });
+  });
+  await page.getByTestId('align-run').click();
+  await expect(page.locator('body')).toHaveAttribute('data-align-state', 'cancelled', { timeout: 120_000 });
+  const note = page.getByTestId('align-cancelled');
+  await expect(note).toContainText(/Cancelled at iteration \d+/);
+  expect(Number(await note.getAttribute('data-iteration'))).toBeGreaterThanOrEqual(1);
+  // The positions of the last round the worker sent are on screen.
+  await expect(page.locator('#viewport')).toHaveAttribute('data-fitted-visible', 'true');
+  await expect(page.locator('body')).toHaveAttribute('data-scan-loaded', 'true');
+  await expect(page.locator('body')).toHaveAttribute('data-landmarks-loaded', 'true');
+  // The fresh worker gets the scan again: a new warp works.
+  await page.getByTestId('rbf-run').click();
+  await expect(page.locator('body')).toHaveAttribute('data-rbf-state', 'done', { timeout: 60_000 });
+});
+
+test('a landmark file with too few landmarks shows the core RBF error and keeps the scan', async ({ page }) => {
+  await openWithSample(page);
+  await expect(page.locator('body')).toHaveAttribute('data-rbf-state', 'done', { timeout: 60_000 });
+  const csv = sampleFile('landmarks_001.csv').bytes.toString('utf8').trim().split('\n');
+  const few: TestFile = { name: 'few_landmarks.csv', bytes: Buffer.from(csv.slice(0, 4).join('\n')) };
+  await dropFiles(page, [few]);
+  await waitForLoads(page, 2);
+  await expect(page.locator('body')).toHaveAttribute('data-rbf-state', 'error', { timeout: 60_000 });
+  await expect(page.getByTestId('rbf-error')).toContainText('RBF warp');
+  await expect(page.getByTestId('rbf-error')).toContainText('landmark');
+  await expect(page.getByTestId('error-banner')).toBeVisible();
+  await expect(page.locator('body')).toHaveAttribute('data-scan-loaded', 'true');
+  await expect(page.getByTestId('file-name').or(page.locator('.file-name')).first()).toHaveText('scan_001.ply.gz');
+});
+
+test('a landmark file with a duplicated name is refused and the loaded landmarks stay', async ({ page }) => {
+  await openWithSample(page);
+  await expect(page.locator('body')).toHaveAttribute('data-rbf-state', 'done', { timeout: 60_000 });
+  const csv = sampleFile('landmarks_001.csv').bytes.toString('utf8').trim().split('\n');
+  const dup: TestFile = { name: 'dup_landmarks.csv', bytes: Buffer.from([...csv, csv[1]].join('\n')) };
+  await dropFiles(page, [dup]);
+  await waitForLoads(page, 2);
+  await expect(page.getByTestId('error-banner')).toBeVisible();
+  await expect(page.getByTestId('error-text')).toContainText('dup_landmarks.csv');
+  await expect(page.getByTestId('landmarks-file')).toHaveText('landmarks_001.csv');
+  await expect(page.getByTestId('rbf-used-count')).toHaveText('85');
+});

@@ -1,0 +1,164 @@
+// The Align step: RBF warp then fine alignment in the worker, with live progress and the
+// template's latest positions after every round, so Cancel (which terminates the worker) leaves
+// the last good state on screen. The result is shown as a distance heat map.
+import { CancelledError, type CoreClient } from '../client/core-client';
+import type { AlignResult } from '../shared/align-types';
+import type { CoreEvent } from '../shared/messages';
+import { AlignPanel } from '../ui/align-panel';
+import { heatColours } from '../view/heat-colours';
+import type { Viewer } from '../view/viewer';
+import { download } from './download';
+import { scanInput, scanTransfer } from './scan-input';
+import type { Session } from './session';
+import { subjects } from './subjects';
+import type { TemplateView } from './template-view';
+import { SCAN_OPACITY, type WarpStep } from './warp-step';
+
+const FITTED_COLOUR = 0x8fd19e;
+
+export class AlignStep {
+  readonly panel: AlignPanel;
+  private result: AlignResult | null = null;
+  private latest: { positions: Float32Array; iteration: number } | null = null;
+  private iteration = 0;
+  private running = false;
+  private kept = false;
+  private legendMaxMm = 10;
+
+  constructor(
+    private readonly client: CoreClient,
+    private readonly viewer: Viewer,
+    private readonly session: Session,
+    private readonly template: TemplateView,
+    private readonly warp: WarpStep,
+    private readonly onError: (message: string) => void,
+  ) {
+    this.panel = new AlignPanel({
+      onAlign: () => void this.run(),
+      onCancel: () => this.cancel(),
+      onExport: (format) => void this.export(format),
+      onKeep: () => this.keep(),
+    });
+    warp.onTransform((transform) => this.viewer.showBody('fitted', { transform }));
+  }
+
+  /** A new scan or landmark file: the old fit no longer applies. */
+  reset(): void {
+    if (this.running) this.cancel();
+    this.result = null;
+    this.latest = null;
+    this.viewer.removeBody('fitted');
+    this.panel.render(this.warp.ready ? { state: 'idle' } : { state: 'unavailable' });
+  }
+
+  async run(): Promise<void> {
+    const template = this.template.data;
+    const input = template ? scanInput(this.session, template.resolution) : null;
+    if (!template || !input) return;
+    this.running = true;
+    this.result = null;
+    this.latest = null;
+    this.kept = false;
+    this.iteration = 0;
+    this.panel.chart.clear();
+    this.panel.render({ state: 'running', iteration: 0, maxIterations: 200, rmsMm: null });
+    const triangles = template.triangles;
+    const onEvent = (event: CoreEvent) => {
+      if (event.kind === 'alignProgress') {
+        this.iteration = event.iteration;
+        document.body.dataset.alignIteration = String(event.iteration);
+        this.panel.chart.add({ iteration: event.iteration, energy: event.energy, rmsMm: event.rmsMetres * 1e3 });
+        this.panel.render({ state: 'running', iteration: event.iteration, maxIterations: event.maxIterations, rmsMm: event.rmsMetres * 1e3 });
+      } else {
+        this.latest = { positions: event.positions, iteration: event.iteration };
+        this.showFitted({ positions: event.positions, triangles }, null);
+      }
+    };
+    try {
+      const result = await this.client.call(
+        { type: 'align', scan: input, rbf: this.warp.panel.current, fine: {} },
+        { transfer: scanTransfer(input), onEvent },
+      );
+      this.result = result;
+      const distancesMm = Float32Array.from(result.distances, (d) => d * 1e3);
+      this.legendMaxMm = legendMax(distancesMm);
+      this.showFitted({ positions: result.positions, triangles, normals: result.normals }, heatColours(distancesMm, 0, this.legendMaxMm));
+      this.panel.render({ state: 'done', report: result.report, legendMaxMm: this.legendMaxMm, kept: false });
+    } catch (error) {
+      if (error instanceof CancelledError) this.showCancelled();
+      else {
+        const message = error instanceof Error ? error.message : String(error);
+        this.panel.render({ state: 'error', message });
+        this.onError(message);
+      }
+    } finally {
+      this.running = false;
+    }
+  }
+
+  cancel(): void {
+    if (this.running) this.client.cancel();
+  }
+
+  private showCancelled(): void {
+    const template = this.template.data;
+    if (this.latest && template) this.showFitted({ positions: this.latest.positions, triangles: template.triangles }, null);
+    else this.viewer.showBody('warped', { visible: true });
+    document.body.dataset.alignCancelledIteration = String(this.iteration);
+    this.panel.render({ state: 'cancelled', iteration: this.iteration, hasPositions: Boolean(this.latest) });
+  }
+
+  private showFitted(mesh: { positions: Float32Array; triangles: Uint32Array; normals?: Float32Array }, colours: Float32Array | null): void {
+    this.viewer.showBody('warped', { visible: false });
+    this.viewer.showBody('scan', { opacity: SCAN_OPACITY });
+    this.viewer.showBody('fitted', {
+      mesh,
+      colour: FITTED_COLOUR,
+      vertexColours: colours,
+      transform: this.warp.transform,
+      visible: true,
+    });
+  }
+
+  private async export(format: 'ply' | 'obj'): Promise<void> {
+    const template = this.template.data;
+    if (!this.result || !template) return;
+    try {
+      const bytes = await this.client.call({
+        type: 'exportMesh',
+        positions: this.result.positions.slice(),
+        triangles: template.triangles.slice(),
+        format,
+      });
+      download(bytes, `${baseName(this.session.scan?.fileName ?? 'scan')}-fitted.${format}`);
+    } catch (error) {
+      this.onError(`Export: ${error instanceof Error ? error.message : String(error)}`);
+    }
+  }
+
+  private keep(): void {
+    const template = this.template.data;
+    if (!this.result || !template || this.kept) return;
+    subjects.add({
+      name: baseName(this.session.scan?.fileName ?? 'scan'),
+      positions: this.result.positions.slice(),
+      resolution: template.resolution,
+      source: 'aligned',
+      rmsMetres: this.result.report.fine.scan_to_template.rms_mm / 1e3,
+    });
+    this.kept = true;
+    document.body.dataset.subjects = String(subjects.all.length);
+    this.panel.render({ state: 'done', report: this.result.report, legendMaxMm: this.legendMaxMm, kept: true });
+  }
+}
+
+/** The heat scale's top: the 98th percentile (a few outliers must not wash out the rest), ≥ 1 mm. */
+function legendMax(valuesMm: Float32Array): number {
+  const sorted = Float32Array.from(valuesMm).sort();
+  const p = sorted[Math.floor(0.98 * (sorted.length - 1))] ?? 1;
+  return Math.max(1, Math.ceil(p));
+}
+
+function baseName(fileName: string): string {
+  return fileName.replace(/\.gz$/i, '').replace(/\.[^.]+$/, '');
+}

@@ -1,0 +1,118 @@
+// Inputs and results of the RBF warp (paper §3.1) and fine alignment (§3.2). No DOM here.
+import type { TemplateResolution } from './template-data';
+
+export type KernelName = 'gaussian' | 'thin-plate' | 'multiquadric';
+
+/** RBF settings; `param` is the Gaussian width c or the multiquadric stiffness s, in metres. */
+export interface RbfSettings {
+  kernel: KernelName;
+  param: number | null;
+  lambda: number;
+  affine: boolean;
+}
+
+/** The core's defaults (docs/rbf.md): Gaussian c = 0.2 m, multiquadric s = 0.01 m. */
+export const DEFAULT_KERNEL_PARAM: Record<KernelName, number | null> = {
+  gaussian: 0.2,
+  'thin-plate': null,
+  multiquadric: 0.01,
+};
+
+/** Fine-alignment settings; absent fields keep the core's defaults (a = 0.96, b = 0.04). */
+export interface FineSettings {
+  a?: number;
+  b?: number;
+  max_iterations?: number;
+}
+
+/** The scan and its landmarks as the core needs them, all in metres. */
+export interface ScanInput {
+  resolution: TemplateResolution;
+  positions: Float32Array;
+  triangles: Uint32Array;
+  landmarkNames: string[];
+  landmarkPositions: Float64Array;
+}
+
+export interface LandmarkResidual {
+  name: string;
+  /** After the similarity (Procrustes) alone. */
+  before_mm: number;
+  /** After the RBF warp. */
+  after_mm: number;
+}
+
+/** Template → scan similarity y = scale·R·x + t (metres). */
+export interface Similarity {
+  scale: number;
+  rotation: [number, number, number][];
+  translation: [number, number, number];
+}
+
+export interface WarpReport {
+  kernel: KernelName;
+  param: number | null;
+  lambda: number;
+  affine: boolean;
+  used: string[];
+  skipped: string[];
+  virtual_off_surface: string[];
+  residuals: LandmarkResidual[];
+  similarity: Similarity;
+  rcond: number;
+}
+
+/** The warped template: positions and normals in the scan's frame, metres, template order. */
+export interface WarpResult {
+  positions: Float32Array;
+  normals: Float32Array;
+  report: WarpReport;
+  workerMs: number;
+}
+
+/** The paper's Table 1 statistics of a distance, in millimetres. */
+export interface DistanceStatsMm {
+  count: number;
+  mean_mm: number;
+  std_dev_mm: number;
+  rms_mm: number;
+  max_abs_mm: number;
+}
+
+export interface AlignReport {
+  warp: WarpReport;
+  rough_ms: number;
+  index_ms: number;
+  total_ms: number;
+  fine: {
+    template_vertices: number;
+    scan_vertices: number;
+    scan_to_template: DistanceStatsMm;
+    template_to_scan: DistanceStatsMm;
+    iterations: number;
+    rounds: number;
+    converged: boolean;
+    cancelled: boolean;
+    elapsed_ms: number;
+  };
+}
+
+/** The fitted template and the per-vertex distance (metres) to the scan. */
+export interface AlignResult {
+  positions: Float32Array;
+  normals: Float32Array;
+  distances: Float32Array;
+  report: AlignReport;
+}
+
+/** Sent after every L-BFGS iteration. */
+export interface AlignProgress {
+  iteration: number;
+  round: number;
+  energy: number;
+  dataError: number;
+  smoothnessError: number;
+  rmsMetres: number;
+  elapsedMs: number;
+  maxIterations: number;
+}

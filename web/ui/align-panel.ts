@@ -1,0 +1,132 @@
+// The Align step (paper §3.1 + §3.2): Align / Cancel, progress, the live E/RMS chart, and the
+// result — the paper's Table 1 numbers, the heat-map legend, export and "keep as aligned subject".
+import type { AlignReport } from '../shared/align-types';
+import { byId, h } from './dom';
+import { EnergyChart } from './energy-chart';
+import { formatCount } from './format';
+import { heatLegend } from './heat-legend';
+
+export interface AlignControls {
+  onAlign: () => void;
+  onCancel: () => void;
+  onExport: (format: 'ply' | 'obj') => void;
+  onKeep: () => void;
+}
+
+export type AlignView =
+  | { state: 'unavailable' }
+  | { state: 'idle' }
+  | { state: 'running'; iteration: number; maxIterations: number; rmsMm: number | null }
+  | { state: 'cancelled'; iteration: number; hasPositions: boolean }
+  | { state: 'error'; message: string }
+  | { state: 'done'; report: AlignReport; legendMaxMm: number; kept: boolean };
+
+export class AlignPanel {
+  private readonly root = byId('align-panel');
+  readonly chart = new EnergyChart();
+
+  constructor(private readonly controls: AlignControls) {
+    this.render({ state: 'unavailable' });
+  }
+
+  /** The progress bar and status line while running, updated in place so Cancel stays put. */
+  private live: { bar: HTMLProgressElement; status: HTMLElement } | null = null;
+
+  render(view: AlignView): void {
+    const title = h('h2', {}, 'Align');
+    document.body.dataset.alignState = view.state;
+    if (view.state === 'running' && this.live) {
+      this.live.bar.max = view.maxIterations;
+      this.live.bar.value = view.iteration;
+      this.live.bar.dataset.iteration = String(view.iteration);
+      this.live.status.textContent = statusText(view.iteration, view.maxIterations, view.rmsMm);
+      return;
+    }
+    this.live = null;
+    if (view.state === 'unavailable') {
+      this.root.replaceChildren(title, h('p', { class: 'placeholder' }, 'Load a scan and its landmarks, then Align fits the template to it (RBF warp, then fine alignment).'));
+      return;
+    }
+    const running = view.state === 'running';
+    const align = button('align-run', running ? 'Aligning…' : 'Align', 'button primary', () => this.controls.onAlign());
+    align.disabled = running;
+    const cancel = button('align-cancel', 'Cancel', 'button', () => this.controls.onCancel());
+    cancel.hidden = !running;
+    const parts: (HTMLElement | string)[] = [title, h('div', { class: 'actions' }, align, cancel)];
+    if (view.state === 'running') {
+      const bar = h('progress', {
+        'data-testid': 'align-progress',
+        max: String(view.maxIterations),
+        value: String(view.iteration),
+        'data-iteration': String(view.iteration),
+      });
+      const status = h('p', { class: 'note', 'data-testid': 'align-status' }, statusText(view.iteration, view.maxIterations, view.rmsMm));
+      this.live = { bar, status };
+      parts.push(bar, status);
+    }
+    if (view.state !== 'idle') parts.push(this.chart.canvas);
+    if (view.state === 'cancelled') {
+      parts.push(
+        h(
+          'p',
+          { class: 'warn-note', 'data-testid': 'align-cancelled', 'data-iteration': String(view.iteration) },
+          view.hasPositions
+            ? `Cancelled at iteration ${view.iteration}: the template is shown as it was at the last round.`
+            : `Cancelled at iteration ${view.iteration}, before the first round finished: the RBF warp is shown.`,
+        ),
+      );
+    }
+    if (view.state === 'error') parts.push(h('p', { class: 'error-note', 'data-testid': 'align-error' }, view.message));
+    if (view.state === 'done') parts.push(...this.result(view.report, view.legendMaxMm, view.kept));
+    this.root.replaceChildren(...parts);
+  }
+
+  private result(r: AlignReport, legendMaxMm: number, kept: boolean): HTMLElement[] {
+    const s = r.fine.scan_to_template;
+    const t = r.fine.template_to_scan;
+    const mm = (v: number) => v.toFixed(2);
+    const keep = button('align-keep', kept ? 'Kept ✓' : 'Keep as aligned subject', 'button', () => this.controls.onKeep());
+    keep.disabled = kept;
+    return [
+      h('h2', {}, 'Scan → template (paper Table 1)'),
+      h(
+        'dl',
+        { class: 'facts' },
+        h('dt', {}, 'Points'),
+        h('dd', { 'data-testid': 'align-points' }, formatCount(s.count)),
+        h('dt', {}, 'Mean signed (mm)'),
+        h('dd', { 'data-testid': 'align-mean' }, mm(s.mean_mm)),
+        h('dt', {}, 'SD (mm)'),
+        h('dd', { 'data-testid': 'align-sd' }, mm(s.std_dev_mm)),
+        h('dt', {}, 'RMS (mm)'),
+        h('dd', { 'data-testid': 'align-rms', 'data-rms-mm': String(s.rms_mm) }, mm(s.rms_mm)),
+        h('dt', {}, 'Template → scan RMS'),
+        h('dd', { 'data-testid': 'align-t2s-rms' }, `${mm(t.rms_mm)} mm`),
+        h('dt', {}, 'Iterations'),
+        h('dd', { 'data-testid': 'align-iterations' }, `${r.fine.iterations} (${r.fine.rounds} rounds${r.fine.converged ? ', converged' : ''})`),
+        h('dt', {}, 'Time'),
+        h('dd', { 'data-testid': 'align-time' }, `${(r.total_ms / 1000).toFixed(2)} s`),
+      ),
+      heatLegend(0, legendMaxMm, `Distance of each template vertex to the scan; ≥ ${legendMaxMm.toFixed(1)} mm in yellow`),
+      h(
+        'div',
+        { class: 'actions' },
+        button('export-ply', 'Export PLY', 'button', () => this.controls.onExport('ply')),
+        button('export-obj', 'Export OBJ', 'button', () => this.controls.onExport('obj')),
+      ),
+      h('div', { class: 'actions' }, keep),
+      h('p', { class: 'note' }, 'Exports are in metres, in the scan’s frame, in template vertex order.'),
+    ];
+  }
+}
+
+function statusText(iteration: number, maxIterations: number, rmsMm: number | null): string {
+  const rms = rmsMm === null ? '' : `, RMS ${rmsMm.toFixed(2)} mm`;
+  return iteration === 0 ? 'RBF warp and scan index…' : `Iteration ${iteration} of at most ${maxIterations}${rms}`;
+}
+
+function button(testid: string, label: string, cls: string, onClick: () => void): HTMLButtonElement {
+  const b = h('button', { class: cls, type: 'button', 'data-testid': testid }, label);
+  b.addEventListener('click', onClick);
+  return b;
+}
