@@ -60,10 +60,11 @@ async function open(files: File[]): Promise<void> {
   }
   const landmarks = outcome.landmarks.at(-1);
   if (landmarks) session.setLandmarks(landmarks);
-  if (scan || landmarks) refresh(Boolean(scan) || !session.scan);
   if (scan || landmarks) {
+    // Before the refresh, so the camera frames the new data, not the template beside it.
     alignStep.reset();
     warpStep.reset();
+    refresh(Boolean(scan) || !session.scan);
   }
 
   if (outcome.errors.length > 0) banner.show(outcome.errors);

@@ -83,6 +83,8 @@ export class AlignStep {
       const distancesMm = Float32Array.from(result.distances, (d) => d * 1e3);
       this.legendMaxMm = legendMax(distancesMm);
       this.showFitted({ positions: result.positions, triangles, normals: result.normals }, heatColours(distancesMm, 0, this.legendMaxMm));
+      // The see-through scan would speckle the heat map it coincides with; its toggle brings it back.
+      this.warp.show('scan', false);
       this.panel.render({ state: 'done', report: result.report, legendMaxMm: this.legendMaxMm, kept: false });
     } catch (error) {
       if (error instanceof CancelledError) this.showCancelled();
@@ -103,13 +105,13 @@ export class AlignStep {
   private showCancelled(): void {
     const template = this.template.data;
     if (this.latest && template) this.showFitted({ positions: this.latest.positions, triangles: template.triangles }, null);
-    else this.viewer.showBody('warped', { visible: true });
+    else this.warp.show('warped', true);
     document.body.dataset.alignCancelledIteration = String(this.iteration);
     this.panel.render({ state: 'cancelled', iteration: this.iteration, hasPositions: Boolean(this.latest) });
   }
 
   private showFitted(mesh: { positions: Float32Array; triangles: Uint32Array; normals?: Float32Array }, colours: Float32Array | null): void {
-    this.viewer.showBody('warped', { visible: false });
+    this.warp.show('warped', false);
     this.viewer.showBody('scan', { opacity: SCAN_OPACITY });
     this.viewer.showBody('fitted', {
       mesh,

@@ -12,6 +12,7 @@ export class TemplateView {
   private colourBySegment = false;
   private shown = true;
   private readonly listeners: ((data: TemplateData) => void)[] = [];
+  private readonly shownListeners: ((on: boolean) => void)[] = [];
 
   constructor(
     private readonly client: CoreClient,
@@ -68,9 +69,17 @@ export class TemplateView {
     document.body.dataset.templateSegmentColours = String(on);
   }
 
+  /** Shows or hides the template and keeps every toggle of it in step. */
   setShown(on: boolean): void {
     this.shown = on;
     this.viewer.showBody('template', { visible: on });
+    this.panel.setShown(on);
+    for (const listener of this.shownListeners) listener(on);
+  }
+
+  /** Called whenever the template is shown or hidden. */
+  onShown(listener: (on: boolean) => void): void {
+    this.shownListeners.push(listener);
   }
 
   private facts(data: TemplateData) {

@@ -30,6 +30,7 @@ export class WarpStep {
       onRun: (settings) => void this.run(settings),
       onShow: (what, on) => this.show(what, on),
     });
+    template.onShown((on) => this.panel.setShown('template', on));
   }
 
   /** Called when the display transform changes (the align step shows its layer with it). */
@@ -46,7 +47,11 @@ export class WarpStep {
     this.last = null;
     this.transform = null;
     this.viewer.removeBody('warped');
-    if (this.session.scan) this.viewer.showBody('scan', { transform: null, opacity: 1 });
+    if (this.session.scan) this.viewer.showBody('scan', { transform: null, opacity: 1, visible: true });
+    this.panel.setShown('scan', true);
+    this.panel.setShown('warped', true);
+    // The loaded data takes the stage; the template's toggle brings it back.
+    this.template.setShown(false);
     this.panel.render(this.ready, null, null);
     if (this.ready) void this.run(this.panel.current);
   }
@@ -64,7 +69,8 @@ export class WarpStep {
       this.viewer.showBody('scan', { transform: this.transform, opacity: SCAN_OPACITY });
       const triangles = this.template.data?.triangles;
       if (!triangles) return;
-      this.viewer.showBody('warped', { mesh: { positions: warp.positions, normals: warp.normals, triangles }, colour: 0x7fb8e6, transform: this.transform, visible: true });
+      this.viewer.showBody('warped', { mesh: { positions: warp.positions, normals: warp.normals, triangles }, colour: 0x7fb8e6, transform: this.transform });
+      this.show('warped', true);
       this.template.setShown(false);
       this.viewer.frame();
       for (const listener of this.listeners) listener(this.transform);
@@ -94,8 +100,10 @@ export class WarpStep {
     return { report: r, frameNote: note, workerMs: warp.workerMs };
   }
 
-  private show(what: 'scan' | 'template' | 'warped', on: boolean): void {
+  /** Shows or hides one of the bodies the toggles name, keeping the toggle in step. */
+  show(what: 'scan' | 'template' | 'warped', on: boolean): void {
     if (what === 'template') this.template.setShown(on);
     else this.viewer.showBody(what, { visible: on });
+    this.panel.setShown(what, on);
   }
 }

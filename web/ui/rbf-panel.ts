@@ -94,18 +94,25 @@ export class RbfPanel {
     );
   }
 
+  private readonly inputs = new Map<string, HTMLInputElement>();
+
   private toggles(): HTMLElement {
-    const make = (what: 'scan' | 'template' | 'warped', label: string) =>
-      checkbox(`show-${what}`, label, this.shown[what], (on) => {
+    const make = (what: 'scan' | 'template' | 'warped', label: string) => {
+      const toggle = checkbox(`show-${what}`, label, this.shown[what], (on) => {
         this.shown[what] = on;
         this.controls.onShow(what, on);
       });
+      this.inputs.set(what, toggle.querySelector('input')!);
+      return toggle;
+    };
     return h('div', { class: 'toggles' }, make('scan', 'Scan'), make('template', 'Template'), make('warped', 'Warped'));
   }
 
-  /** Sets a toggle from outside (e.g. the template panel's own toggle). */
+  /** Reflects a change made elsewhere (the template panel's toggle, the Align result). */
   setShown(what: 'scan' | 'template' | 'warped', on: boolean): void {
     this.shown[what] = on;
+    const input = this.inputs.get(what);
+    if (input) input.checked = on;
   }
 
   private result(outcome: RbfOutcome | null, error: string | null): HTMLElement[] {

@@ -22,9 +22,16 @@ export class TemplatePanel {
   private readonly root = byId('template-panel');
   private segmentColours = false;
   private shown = true;
+  private showInput: HTMLInputElement | null = null;
 
   constructor(private readonly controls: TemplateControls) {
     this.render(null);
+  }
+
+  /** Reflects a change made elsewhere (e.g. the warp hides the template). */
+  setShown(on: boolean): void {
+    this.shown = on;
+    if (this.showInput) this.showInput.checked = on;
   }
 
   render(facts: TemplateFacts | null, loading = false): void {
@@ -48,6 +55,7 @@ export class TemplatePanel {
       this.shown = on;
       this.controls.onShow(on);
     });
+    this.showInput = show.querySelector('input');
     const legend = h(
       'ul',
       { class: 'swatches', 'data-testid': 'segment-legend' },
