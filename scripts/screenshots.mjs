@@ -45,4 +45,18 @@ await page.waitForTimeout(800);
 await page.screenshot({ path: `${out}/5-aligned.png` });
 await page.locator('.left-column').evaluate((e) => (e.scrollTop = e.scrollHeight));
 await page.screenshot({ path: `${out}/6-aligned-panel.png` });
+await page.evaluate(() => {
+  new MutationObserver((_, observer) => {
+    if (Number(document.body.dataset.alignIteration ?? 0) < 25) return;
+    observer.disconnect();
+    document.querySelector('[data-testid="align-cancel"]').click();
+  }).observe(document.body, { attributes: true, attributeFilter: ['data-align-iteration'] });
+  document.body.dataset.alignIteration = '0';
+});
+await page.getByTestId('align-run').click();
+await page.waitForFunction(() => document.body.dataset.alignState === 'cancelled', undefined, { timeout: 120000 });
+stamp('cancelled');
+await page.waitForTimeout(800);
+await page.locator('.left-column').evaluate((e) => (e.scrollTop = e.scrollHeight));
+await page.screenshot({ path: `${out}/7-cancelled.png` });
 await browser.close();

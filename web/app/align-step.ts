@@ -62,6 +62,7 @@ export class AlignStep {
     this.iteration = 0;
     this.panel.chart.clear();
     this.panel.render({ state: 'running', iteration: 0, maxIterations: 200, rmsMm: null });
+    this.warp.show('scan', true);
     const triangles = template.triangles;
     const onEvent = (event: CoreEvent) => {
       if (event.kind === 'alignProgress') {

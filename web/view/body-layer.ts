@@ -172,8 +172,9 @@ export class BodyLayer {
     let height = 0;
     if (this.mesh) {
       this.mesh.updateMatrixWorld(true);
-      const box = new THREE.Box3().setFromObject(this.mesh);
-      height = box.getSize(new THREE.Vector3()).y;
+      // The largest side, not y: a z-up scan (CAESAR) is only ~0.4 m tall in y.
+      const size = new THREE.Box3().setFromObject(this.mesh).getSize(new THREE.Vector3());
+      height = Math.max(size.x, size.y, size.z);
     } else if (this.landmarks) {
       const p = this.landmarks.positions;
       const box = new THREE.Box3();
