@@ -50,6 +50,30 @@ pub fn overlapping_pairs(weights: &[[f32; 6]]) -> Vec<(usize, usize)> {
     pairs
 }
 
+/// Mesh edges whose two vertices share no segment. Stitching is seamless only across overlap
+/// bands: where two segments meet along such an edge without overlapping, different coefficients
+/// can tear the body, so a template should have none — except between parts that only touch when
+/// they carry the same body's coefficients.
+pub fn edges_without_common_segment(
+    triangles: &[[u32; 3]],
+    weights: &[[f32; 6]],
+) -> Vec<(u32, u32)> {
+    let mut edges: Vec<(u32, u32)> = triangles
+        .iter()
+        .flat_map(|t| [(t[0], t[1]), (t[1], t[2]), (t[2], t[0])])
+        .map(|(a, b)| (a.min(b), a.max(b)))
+        .filter(
+            |&(a, b)| match (weights.get(a as usize), weights.get(b as usize)) {
+                (Some(wa), Some(wb)) => !(0..6).any(|s| wa[s] > 0.0 && wb[s] > 0.0),
+                _ => false,
+            },
+        )
+        .collect();
+    edges.sort_unstable();
+    edges.dedup();
+    edges
+}
+
 /// Checks the blend weights: one `[f32; 6]` per vertex, all finite and ≥ 0.
 pub fn validate_weights(weights: &[[f32; 6]], vertex_count: usize) -> Result<(), String> {
     if weights.len() != vertex_count {
