@@ -30,12 +30,16 @@ mod native {
     enum Command {
         /// Print vertex/triangle counts, bounding box, units, holes, components (and landmarks) as JSON.
         Info(bodyspace::cli::info::InfoArgs),
+        /// The generic template: export it (`--resolution base|fine --export DIR`) or rebuild it
+        /// from MakeHuman data (`template build --makehuman DIR --out public/template`).
+        Template(bodyspace::cli::template::TemplateArgs),
     }
 
     pub fn main() {
         let cli = Cli::parse();
         let result = match cli.command {
             Command::Info(args) => bodyspace::cli::info::run(&args),
+            Command::Template(args) => bodyspace::cli::template::run(&args),
         };
         if let Err(message) = result {
             eprintln!("bodyspace: {message}");

@@ -1,6 +1,32 @@
-//! The generic template: body mesh, 73 CAESAR landmarks, virtual landmarks, six overlapping
-//! segments with blend weights, and region flags (hands, ears, soles, unseen parts).
+//! The generic template: body mesh, 73 CAESAR landmarks, six overlapping segments with blend
+//! weights, and region flags (hands, ears, soles, unseen parts). See `docs/template.md`.
+//!
+//! * [`model`]: the [`Template`] type and its accessors; [`resolution`]: base / fine.
+//! * [`subdivide`]: the linear subdivision operator base → fine.
+//! * [`store`]: the stored file format; [`flags`]: region flag bits.
+//! * [`makehuman`]: reader of the MakeHuman base mesh (CC0 data) into the template frame.
+//! * [`frame`]: the template frame transform (metres, y up, feet on y = 0, facing +z).
+//! * [`build`]: the tool that made the stored template (landmark rules, segments, flags).
+//! * [`topology`]: edges, neighbours, normals, signed volume, edge distance.
+//! * [`segment`]: the six segments; [`error`]: the error enum `TemplateError`.
 
+pub mod build;
+pub mod error;
+pub mod flags;
+pub mod frame;
+pub mod makehuman;
+pub mod model;
+pub mod resolution;
 pub mod segment;
+pub mod store;
+pub mod subdivide;
+pub mod topology;
 
+pub use error::TemplateError;
+pub use flags::RegionFlags;
+pub use frame::FrameTransform;
+pub use makehuman::MakeHumanModel;
+pub use model::Template;
+pub use resolution::Resolution;
 pub use segment::Segment;
+pub use subdivide::Subdivision;

@@ -1,0 +1,220 @@
+//! [`Template`]: the generic body model every scan is aligned to.
+
+use crate::landmarks::{Landmark, LandmarkSet};
+use crate::mesh::Mesh;
+
+use super::error::TemplateError;
+use super::flags::RegionFlags;
+use super::resolution::Resolution;
+use super::segment::Segment;
+use super::store::{self, StoredTemplate};
+use super::subdivide::Subdivision;
+use super::topology::unique_edges;
+
+/// The stored base template, embedded in the binary.
+pub const EMBEDDED_TEMPLATE: &[u8] =
+    include_bytes!("../../../public/template/template_base.bin.gz");
+
+/// The generic template at one resolution: mesh (metres, y up, feet on y = 0, facing +z; the
+/// subject's right side is x < 0), 73 CAESAR landmarks as vertex indices, six segment blend
+/// weights per vertex, region flags and provenance.
+#[derive(Debug, Clone)]
+pub struct Template {
+    mesh: Mesh,
+    resolution: Resolution,
+    landmarks: Vec<(String, u32)>,
+    segment_weights: Vec<[f32; 6]>,
+    flags: Vec<u8>,
+    base_vertex_count: usize,
+    /// MakeHuman vertex index of each base vertex.
+    makehuman_vertex: Vec<u32>,
+    base_triangles: Vec<[u32; 3]>,
+    /// Fine resolution only: per vertex, the base vertices and weights it was made from.
+    stencils: Option<Vec<Vec<(u32, f64)>>>,
+    band_width: f64,
+    header: store::StoredHeader,
+}
+
+impl Template {
+    /// Reads a stored template (gzipped or not); see [`store`] for the format.
+    pub fn from_bytes(bytes: &[u8]) -> Result<Template, TemplateError> {
+        Ok(Self::from_stored(store::decode(bytes)?))
+    }
+
+    /// The embedded base template (`public/template/template_base.bin.gz`).
+    pub fn embedded() -> Result<Template, TemplateError> {
+        Self::from_bytes(EMBEDDED_TEMPLATE)
+    }
+
+    pub(crate) fn from_stored(s: StoredTemplate) -> Template {
+        Template {
+            base_vertex_count: s.mesh.positions.len(),
+            base_triangles: s.mesh.triangles.clone(),
+            mesh: s.mesh,
+            resolution: Resolution::Base,
+            landmarks: s.header.landmarks.clone(),
+            segment_weights: s.segment_weights,
+            flags: s.flags,
+            makehuman_vertex: s.provenance,
+            stencils: None,
+            band_width: s.header.band_width,
+            header: s.header,
+        }
+    }
+
+    /// The stored form of a base template (for the build tool).
+    pub fn to_bytes(&self) -> Vec<u8> {
+        store::encode(&StoredTemplate {
+            header: self.header.clone(),
+            mesh: Mesh::new(
+                self.mesh.positions[..self.base_vertex_count].to_vec(),
+                self.base_triangles.clone(),
+            ),
+            segment_weights: self.segment_weights[..self.base_vertex_count].to_vec(),
+            flags: self.flags[..self.base_vertex_count].to_vec(),
+            provenance: self.makehuman_vertex.clone(),
+        })
+    }
+
+    /// The subdivision operator from this template's base resolution to `resolution`.
+    pub fn subdivision(&self, resolution: Resolution) -> Subdivision {
+        Subdivision::new(
+            self.base_vertex_count,
+            &self.base_triangles,
+            resolution.levels(),
+        )
+    }
+
+    /// This template at `resolution`. Fine: subdivided mesh (base vertices first with the same
+    /// indices, so landmarks and flags carry over), segment weights interpolated by the stencils,
+    /// a new vertex flagged where all its source vertices share the flag.
+    pub fn at_resolution(&self, resolution: Resolution) -> Template {
+        if resolution == self.resolution {
+            return self.clone();
+        }
+        let base = Template::from_stored(store::StoredTemplate {
+            header: self.header.clone(),
+            mesh: Mesh::new(
+                self.mesh.positions[..self.base_vertex_count].to_vec(),
+                self.base_triangles.clone(),
+            ),
+            segment_weights: self.segment_weights[..self.base_vertex_count].to_vec(),
+            flags: self.flags[..self.base_vertex_count].to_vec(),
+            provenance: self.makehuman_vertex.clone(),
+        });
+        if resolution == Resolution::Base {
+            return base;
+        }
+        let sub = base.subdivision(resolution);
+        let positions = sub.apply(&base.mesh.positions);
+        let segment_weights = sub
+            .apply_values(&base.segment_weights)
+            .into_iter()
+            .map(|w| {
+                let s: f32 = w.iter().sum();
+                w.map(|x| x / s.max(f32::MIN_POSITIVE))
+            })
+            .collect();
+        let flags = sub
+            .stencils
+            .iter()
+            .map(|s| {
+                s.iter()
+                    .fold(0xffu8, |f, &(v, _)| f & base.flags[v as usize])
+            })
+            .collect();
+        Template {
+            mesh: Mesh::new(positions, sub.triangles),
+            resolution,
+            landmarks: self.landmarks.clone(),
+            segment_weights,
+            flags,
+            base_vertex_count: self.base_vertex_count,
+            makehuman_vertex: self.makehuman_vertex.clone(),
+            base_triangles: self.base_triangles.clone(),
+            stencils: Some(sub.stencils),
+            band_width: self.band_width,
+            header: self.header.clone(),
+        }
+    }
+
+    pub fn resolution(&self) -> Resolution {
+        self.resolution
+    }
+
+    pub fn mesh(&self) -> &Mesh {
+        &self.mesh
+    }
+
+    /// Number of base-resolution vertices; these come first at every resolution.
+    pub fn base_vertex_count(&self) -> usize {
+        self.base_vertex_count
+    }
+
+    /// The 73 CAESAR landmarks as (canonical name, vertex index), in CAESAR order.
+    pub fn landmark_vertices(&self) -> &[(String, u32)] {
+        &self.landmarks
+    }
+
+    /// The landmarks at their vertices' positions.
+    pub fn landmark_positions(&self) -> LandmarkSet {
+        LandmarkSet {
+            landmarks: self
+                .landmarks
+                .iter()
+                .map(|(name, v)| Landmark {
+                    name: name.clone(),
+                    position: self.mesh.positions[*v as usize],
+                })
+                .collect(),
+            missing: Vec::new(),
+            unknown: Vec::new(),
+        }
+    }
+
+    /// Blend weights of the six segments (in [`Segment::ALL`] order) at `vertex`; they sum to 1.
+    pub fn segment_weights(&self, vertex: u32) -> [f32; 6] {
+        self.segment_weights[vertex as usize]
+    }
+
+    /// The vertices that belong to `segment` (blend weight > 0), overlap bands included.
+    pub fn segment_vertices(&self, segment: Segment) -> Vec<u32> {
+        let k = segment.index();
+        (0..self.segment_weights.len() as u32)
+            .filter(|&v| self.segment_weights[v as usize][k] > 0.0)
+            .collect()
+    }
+
+    pub fn flags(&self, vertex: u32) -> RegionFlags {
+        RegionFlags(self.flags[vertex as usize])
+    }
+
+    /// Unique undirected edges `(a, b)`, `a < b` (for the smoothness term).
+    pub fn edges(&self) -> Vec<[u32; 2]> {
+        unique_edges(&self.mesh.triangles)
+    }
+
+    /// Width of the overlap band between neighbouring segments, metres.
+    pub fn band_width(&self) -> f64 {
+        self.band_width
+    }
+
+    /// The MakeHuman base-mesh vertex `vertex` coincides with, if it is an original vertex.
+    pub fn source_vertex(&self, vertex: u32) -> Option<u32> {
+        self.makehuman_vertex.get(vertex as usize).copied()
+    }
+
+    /// The base-template vertices and weights `vertex` was made from (itself with weight 1 for
+    /// base vertices).
+    pub fn provenance(&self, vertex: u32) -> Vec<(u32, f64)> {
+        match &self.stencils {
+            Some(s) => s[vertex as usize].clone(),
+            None => vec![(vertex, 1.0)],
+        }
+    }
+
+    /// The file header (source, licence, flag bits, ...).
+    pub fn header(&self) -> &store::StoredHeader {
+        &self.header
+    }
+}
