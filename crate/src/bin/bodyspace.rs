@@ -33,6 +33,12 @@ mod native {
         /// The generic template: export it (`--resolution base|fine --export DIR`) or rebuild it
         /// from MakeHuman data (`template build --makehuman DIR --out public/template`).
         Template(bodyspace::cli::template::TemplateArgs),
+        /// Build the whole-body and six segment PCA models from fits in template vertex order.
+        BuildModel(bodyspace::cli::build_model::BuildModelArgs),
+        /// Print a fit's whole-body and segment coefficients as JSON.
+        Project(bodyspace::cli::project::ProjectArgs),
+        /// Write the stitched body for given coefficients as PLY (prints seam and measurements).
+        Reconstruct(bodyspace::cli::reconstruct::ReconstructArgs),
     }
 
     pub fn main() {
@@ -40,6 +46,9 @@ mod native {
         let result = match cli.command {
             Command::Info(args) => bodyspace::cli::info::run(&args),
             Command::Template(args) => bodyspace::cli::template::run(&args),
+            Command::BuildModel(args) => bodyspace::cli::build_model::run(&args),
+            Command::Project(args) => bodyspace::cli::project::run(&args),
+            Command::Reconstruct(args) => bodyspace::cli::reconstruct::run(&args),
         };
         if let Err(message) = result {
             eprintln!("bodyspace: {message}");

@@ -256,22 +256,24 @@ pub fn read_model(bytes: &[u8]) -> Result<BodyModel, PcaError> {
             PcaError::BadMagic
         });
     }
-    if bytes.len() < 16 {
-        return Err(PcaError::Truncated(format!(
-            "{} bytes, the fixed header needs 16",
-            bytes.len()
-        )));
-    }
-    let word =
-        |at: usize| u32::from_le_bytes([bytes[at], bytes[at + 1], bytes[at + 2], bytes[at + 3]]);
-    let version = word(8);
-    if version != FORMAT_VERSION {
+    let word = |at: usize| {
+        bytes
+            .get(at..at + 4)
+            .map(|b| u32::from_le_bytes([b[0], b[1], b[2], b[3]]))
+    };
+    if let Some(version) = word(8).filter(|&v| v != FORMAT_VERSION) {
         return Err(PcaError::UnsupportedVersion {
             found: version,
             supported: FORMAT_VERSION,
         });
     }
-    let header_len = word(12) as usize;
+    let Some(header_len) = word(12) else {
+        return Err(PcaError::Truncated(format!(
+            "{} bytes, the fixed header needs 16",
+            bytes.len()
+        )));
+    };
+    let header_len = header_len as usize;
     let header_end = header_len.saturating_add(16);
     let data_start = header_end.saturating_add(3) / 4 * 4;
     if bytes.len() < header_end {
