@@ -9,7 +9,7 @@
 use crate::mesh::Mesh;
 use crate::pca::file::read_model_for;
 use crate::pca::measure::{
-    measure, triangles_in_segment, MeasureLandmarks, MeasureParams, Measurements,
+    measure, triangles_in_segments, MeasureLandmarks, MeasureParams, Measurements,
 };
 use crate::pca::{BodyModel, TemplateIdentity};
 use crate::template::{Resolution, Segment, Template};
@@ -107,16 +107,20 @@ pub fn measure_landmarks(template: &Template) -> Result<MeasureLandmarks, String
     })
 }
 
-/// Measures flat positions on the template's triangles (girths on the torso segment only).
+/// Measures flat positions on the template's triangles (girths on torso + legs, never arms).
 pub fn measure_body(
     template: &Template,
     model: &BodyModel,
     positions: &[f32],
 ) -> Result<Measurements, String> {
-    let torso = triangles_in_segment(
+    let torso = triangles_in_segments(
         &model.triangles,
         &model.segment_weights,
-        Segment::Torso.index(),
+        &[
+            Segment::Torso.index(),
+            Segment::LeftLeg.index(),
+            Segment::RightLeg.index(),
+        ],
     );
     measure(
         positions,

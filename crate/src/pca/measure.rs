@@ -19,7 +19,8 @@ pub struct MeasureLandmarks {
     pub chest: Vec<u32>,
     /// Waist plane (e.g. both 10th Ribs, or "Waist, Preferred, Post.").
     pub waist: Vec<u32>,
-    /// Hip plane (e.g. both Trochanterions).
+    /// Hip plane (e.g. both Trochanterions), raised to at least
+    /// [`MeasureParams::hip_above_crotch`] above the crotch so it surrounds both legs.
     pub hip: Vec<u32>,
     /// Arm path, summed segment by segment (e.g. Acromion → Radiale → Radial Styloid).
     pub arm: Vec<u32>,
@@ -32,11 +33,17 @@ pub struct MeasureLandmarks {
 pub struct MeasureParams {
     /// Index of the up axis (0 = x, 1 = y, 2 = z); default 1 (y up, as in three.js and MakeHuman).
     pub up_axis: usize,
+    /// Least height of the hip plane above the crotch vertex (the template's Trochanterions sit
+    /// within millimetres of the crotch, where a plane may pass between the legs); default 0.02 m.
+    pub hip_above_crotch: f64,
 }
 
 impl Default for MeasureParams {
     fn default() -> Self {
-        Self { up_axis: 1 }
+        Self {
+            up_axis: 1,
+            hip_above_crotch: 0.02,
+        }
     }
 }
 
@@ -220,21 +227,29 @@ pub fn girth_at(
         })
 }
 
-/// Triangles whose three vertices all belong to segment `s` (weight > 0) — the torso's for girths.
-pub fn triangles_in_segment(triangles: &[[u32; 3]], weights: &[[f32; 6]], s: usize) -> Vec<u32> {
+/// Triangles whose three vertices each belong to one of `segments` (weight > 0). For girths:
+/// torso + both legs, so arms hanging beside the body are never crossed while the hip section
+/// (which runs through the torso/leg overlap band) stays closed.
+pub fn triangles_in_segments(
+    triangles: &[[u32; 3]],
+    weights: &[[f32; 6]],
+    segments: &[usize],
+) -> Vec<u32> {
+    let inside = |v: u32| {
+        weights
+            .get(v as usize)
+            .is_some_and(|w| segments.iter().any(|&s| w.get(s).is_some_and(|x| *x > 0.0)))
+    };
     triangles
         .iter()
         .enumerate()
-        .filter(|(_, t)| {
-            t.iter()
-                .all(|&v| weights.get(v as usize).is_some_and(|w| w[s] > 0.0))
-        })
+        .filter(|(_, t)| t.iter().all(|&v| inside(v)))
         .map(|(i, _)| i as u32)
         .collect()
 }
 
 /// Measures a body given as flat positions (3V), its triangles, the triangles to section for
-/// girths (normally [`triangles_in_segment`] of the torso) and the landmark vertices.
+/// girths (normally [`triangles_in_segments`] of torso and legs) and the landmark vertices.
 pub fn measure(
     positions: &[f32],
     triangles: &[[u32; 3]],
@@ -257,7 +272,8 @@ pub fn measure(
         vertex(positions, v)
             .ok_or_else(|| fail(what, format!("landmark vertex {v} is beyond the mesh")))
     };
-    let level = |what: &str, vs: &[u32]| -> Result<Option<Girth>, PcaError> {
+    let crotch = at("inseam", landmarks.crotch)?[up];
+    let level = |what: &str, vs: &[u32], least: f64| -> Result<Option<Girth>, PcaError> {
         if vs.is_empty() {
             return Ok(None);
         }
@@ -265,7 +281,13 @@ pub fn measure(
         for &v in vs {
             h += at(what, v)?[up] / vs.len() as f64;
         }
-        Ok(girth_at(positions, triangles, section_triangles, up, h))
+        Ok(girth_at(
+            positions,
+            triangles,
+            section_triangles,
+            up,
+            h.max(least),
+        ))
     };
     let mut arm_length = 0.0;
     for pair in landmarks.arm.windows(2) {
@@ -273,11 +295,15 @@ pub fn measure(
     }
     Ok(Measurements {
         stature: top - floor,
-        chest: level("chest girth", &landmarks.chest)?,
-        waist: level("waist girth", &landmarks.waist)?,
-        hip: level("hip girth", &landmarks.hip)?,
+        chest: level("chest girth", &landmarks.chest, f64::NEG_INFINITY)?,
+        waist: level("waist girth", &landmarks.waist, f64::NEG_INFINITY)?,
+        hip: level(
+            "hip girth",
+            &landmarks.hip,
+            crotch + params.hip_above_crotch,
+        )?,
         arm_length,
-        inseam: at("inseam", landmarks.crotch)?[up] - floor,
+        inseam: crotch - floor,
     })
 }
 
