@@ -71,12 +71,15 @@ fn build_project_reconstruct_round_trip() {
         csv.to_str().unwrap(),
         "--specificity-samples",
         "5",
+        "--gltf",
+        dir.join("model.glb").to_str().unwrap(),
     ]);
     assert!(ok, "{err}");
     assert_eq!(summary["subjects"], 6);
     // Two shape parameters (height, girth) vary; everything else is rigid pose, removed by GPA.
     let modes = summary["models"]["whole"]["modes"].as_u64().unwrap();
     assert!((2..=5).contains(&modes), "{modes} modes");
+    assert_eq!(&std::fs::read(dir.join("model.glb")).unwrap()[..4], b"glTF");
     let quality = std::fs::read_to_string(csv.join("quality.csv")).unwrap();
     assert!(quality.starts_with("model,modes,compactness"));
 
@@ -118,7 +121,9 @@ fn build_project_reconstruct_round_trip() {
     // The template (≈1.67 m) measures ≈0.79 m chest, 0.68 m waist, 0.98 m hip (convex hull);
     // the fits are scaled by a few per cent.
     for (girth, low, high) in [("chest", 0.6, 1.0), ("waist", 0.5, 0.9), ("hip", 0.8, 1.2)] {
-        let g = rebuilt["measurements"][girth]["girth"].as_f64().unwrap_or(0.0);
+        let g = rebuilt["measurements"][girth]["girth"]
+            .as_f64()
+            .unwrap_or(0.0);
         assert!(g > low && g < high, "{girth} girth {g}");
     }
     assert!(body.metadata().unwrap().len() > 100_000);

@@ -1,4 +1,5 @@
-//! `bodyspace build-model --fits DIR --out MODEL [--variance 0.99] [--scale] [--f16] [--csv DIR]`.
+//! `bodyspace build-model --fits DIR --out MODEL [--variance 0.99] [--scale] [--f16] [--csv DIR]
+//! [--gltf FILE.glb]`.
 
 use super::model::{read_fit, template_for_vertex_count, template_identity};
 use crate::pca::export::{eigenvalues_csv, quality_csv, scores_csv};
@@ -33,6 +34,10 @@ pub struct BuildModelArgs {
     /// Write eigenvalues.csv, scores.csv and quality.csv into this directory.
     #[arg(long)]
     pub csv: Option<PathBuf>,
+    /// Also write the whole-body model as binary glTF (GLB) with its modes as morph targets
+    /// (morph weight = slider value in standard deviations).
+    #[arg(long)]
+    pub gltf: Option<PathBuf>,
     /// Skip generalization and specificity (compactness is always computed).
     #[arg(long)]
     pub no_quality: bool,
@@ -127,6 +132,10 @@ pub fn run(args: &BuildModelArgs) -> Result<(), String> {
     };
     let bytes = write_model(&model, precision);
     std::fs::write(&args.out, &bytes).map_err(|e| format!("{}: {e}", args.out.display()))?;
+    if let Some(gltf) = &args.gltf {
+        let glb = crate::pca::gltf::model_glb(&model, usize::MAX);
+        std::fs::write(gltf, glb).map_err(|e| format!("{}: {e}", gltf.display()))?;
+    }
     if let Some(csv) = &args.csv {
         std::fs::create_dir_all(csv).map_err(|e| format!("{}: {e}", csv.display()))?;
         for (name, text) in [
@@ -166,6 +175,7 @@ pub fn run(args: &BuildModelArgs) -> Result<(), String> {
         "basis": precision,
         "models": modes,
         "csv": args.csv.as_ref().map(|d| d.display().to_string()),
+        "gltf": args.gltf.as_ref().map(|d| d.display().to_string()),
     });
     println!("{summary}");
     Ok(())

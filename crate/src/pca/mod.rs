@@ -10,6 +10,7 @@
 //! * [`metrics`] — compactness, generalization, specificity (Styner 2003)
 //! * [`export`] — eigenvalues, scores and quality curves as CSV
 //! * [`measure`] — stature, girths by plane sections, arm length, inseam
+//! * [`gltf`] — the whole-body model as GLB with modes as morph targets
 //! * [`file`] — the versioned model file format ([`f16`] for the compact basis)
 //! * [`random`] — seeded normal draws
 
@@ -18,6 +19,7 @@ pub mod error;
 pub mod export;
 pub mod f16;
 pub mod file;
+pub mod gltf;
 pub mod gram;
 pub mod measure;
 pub mod metrics;
