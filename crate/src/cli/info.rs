@@ -1,6 +1,10 @@
 //! `bodyspace info SCAN [--landmarks FILE]`.
 
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
+
+use crate::io::{read_landmarks, read_scan};
+use crate::landmarks::report;
+use crate::mesh::summarise;
 
 /// Arguments of `bodyspace info`.
 #[derive(clap::Args, Debug)]
@@ -12,10 +16,31 @@ pub struct InfoArgs {
     pub landmarks: Option<PathBuf>,
 }
 
-/// Runs `bodyspace info`; the error is the one-line message for stderr.
+fn read_file(path: &Path) -> Result<(Vec<u8>, String), String> {
+    let name = path.display().to_string();
+    let bytes = std::fs::read(path).map_err(|e| format!("{name}: cannot read the file: {e}"))?;
+    Ok((bytes, name))
+}
+
+/// Runs `bodyspace info`: prints one JSON object (`vertices`, `triangles`, `bbox_min`/`bbox_max`
+/// in metres, `units_detected`, `scale_to_metres`, `boundary_loops`, `components`, and with
+/// `--landmarks` also `landmarks_found`, `landmarks_missing`, `landmarks_unknown`). The error is
+/// the one-line message for stderr.
 pub fn run(args: &InfoArgs) -> Result<(), String> {
-    Err(format!(
-        "info is being built; cannot read {}",
-        args.scan.display()
-    ))
+    let (bytes, name) = read_file(&args.scan)?;
+    let mesh = read_scan(&bytes, &name).map_err(|e| e.to_string())?;
+    let summary = summarise(&mesh);
+    let mut json = serde_json::to_value(&summary).map_err(|e| e.to_string())?;
+    if let Some(path) = &args.landmarks {
+        let (bytes, name) = read_file(path)?;
+        let set = read_landmarks(&bytes, &name).map_err(|e| e.to_string())?;
+        let r = report(&set);
+        if let Some(object) = json.as_object_mut() {
+            object.insert("landmarks_found".into(), r.found.into());
+            object.insert("landmarks_missing".into(), r.missing.into());
+            object.insert("landmarks_unknown".into(), r.unknown.into());
+        }
+    }
+    println!("{json}");
+    Ok(())
 }

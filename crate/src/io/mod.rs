@@ -1,1 +1,27 @@
-//! Readers and writers of the field's file formats: scans (PLY, OBJ, STL, gzip) and landmarks (CSV, CAESAR .lnd, JSON).
+//! Readers and writers of the field's file formats: scans (PLY, OBJ, STL, gzip) and landmarks
+//! (CSV, CAESAR .lnd, JSON). Every reader is a pure function of bytes and a file name (the name
+//! helps format detection and starts every error message).
+
+pub mod error;
+pub mod gzip;
+pub mod landmarks_csv;
+pub mod landmarks_json;
+pub mod landmarks_read;
+pub mod lnd;
+pub mod obj_read;
+pub mod obj_write;
+pub mod ply_fast;
+pub mod ply_header;
+pub mod ply_read;
+pub mod ply_source;
+pub mod ply_write;
+pub mod scan;
+pub mod stl_read;
+
+pub use error::IoError;
+pub use landmarks_csv::write_landmarks_csv;
+pub use landmarks_read::read_landmarks;
+pub use lnd::write_lnd;
+pub use obj_write::write_obj;
+pub use ply_write::{write_ply, write_ply_ascii};
+pub use scan::read_scan;

@@ -31,4 +31,40 @@ impl LandmarkSet {
             .find(|l| l.name == name)
             .map(|l| l.position)
     }
+
+    /// The set with every position multiplied by `factor` (e.g. `Units::scale_to_metres()`).
+    pub fn scaled(&self, factor: f64) -> LandmarkSet {
+        LandmarkSet {
+            landmarks: self
+                .landmarks
+                .iter()
+                .map(|l| Landmark {
+                    name: l.name.clone(),
+                    position: l.position * factor,
+                })
+                .collect(),
+            missing: self.missing.clone(),
+            unknown: self.unknown.clone(),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn scaled_multiplies_positions_only() {
+        let set = LandmarkSet {
+            landmarks: vec![Landmark {
+                name: "Sellion".into(),
+                position: Point3::new(100.0, 1700.0, -20.0),
+            }],
+            missing: vec!["Crotch".into()],
+            unknown: vec![],
+        };
+        let m = set.scaled(1e-3);
+        assert_eq!(m.get("Sellion"), Some(Point3::new(0.1, 1.7, -0.02)));
+        assert_eq!(m.missing, set.missing);
+    }
 }

@@ -40,8 +40,29 @@ impl Mesh {
             .collect()
     }
 
+    /// The mesh with every position multiplied by `factor` (e.g. `Units::scale_to_metres()`).
+    pub fn scaled(&self, factor: f64) -> Mesh {
+        Mesh {
+            positions: self.positions.iter().map(|p| p * factor).collect(),
+            triangles: self.triangles.clone(),
+        }
+    }
+
     /// Triangles as a flat `[a0, b0, c0, a1, ...]` index array.
     pub fn flat_triangles(&self) -> Vec<u32> {
         self.triangles.iter().flatten().copied().collect()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn scaled_multiplies_positions_and_keeps_triangles() {
+        let mesh = Mesh::new(vec![Point3::new(1000.0, -500.0, 2.0)], vec![[0, 0, 0]]);
+        let m = mesh.scaled(1e-3);
+        assert_eq!(m.positions[0], Point3::new(1.0, -0.5, 0.002));
+        assert_eq!(m.triangles, mesh.triangles);
     }
 }

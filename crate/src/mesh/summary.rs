@@ -1,0 +1,90 @@
+//! A one-look summary of a scan: sizes, bounding box in metres, units, holes and components.
+
+use nalgebra::Point3;
+use serde::Serialize;
+
+use super::topology::{boundary_loops, components};
+use super::units::{detect_units, Units};
+use super::Mesh;
+
+/// What `bodyspace info` and the app show about a loaded scan.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct MeshSummary {
+    /// `#V`.
+    pub vertices: usize,
+    /// `#F`.
+    pub triangles: usize,
+    /// Bounding-box minimum corner in metres (after `scale_to_metres`); zeros for an empty mesh.
+    pub bbox_min: [f64; 3],
+    /// Bounding-box maximum corner in metres.
+    pub bbox_max: [f64; 3],
+    /// Units the file was taken to be in, from the largest bounding-box extent.
+    pub units_detected: Units,
+    /// Factor from file units to metres.
+    pub scale_to_metres: f64,
+    /// Number of boundary loops (holes and open borders).
+    pub boundary_loops: usize,
+    /// Number of connected components.
+    pub components: usize,
+}
+
+/// Bounding box `(min, max)` of `positions` in their own units; `None` when empty.
+pub fn bounding_box(positions: &[Point3<f64>]) -> Option<(Point3<f64>, Point3<f64>)> {
+    let first = *positions.first()?;
+    Some(
+        positions
+            .iter()
+            .fold((first, first), |(lo, hi), p| (lo.inf(p), hi.sup(p))),
+    )
+}
+
+/// Summarises a mesh whose positions are in file units.
+pub fn summarise(mesh: &Mesh) -> MeshSummary {
+    let bbox = bounding_box(&mesh.positions);
+    let extent = bbox.map_or(0.0, |(lo, hi)| (hi - lo).max());
+    let units = detect_units(extent);
+    let s = units.scale_to_metres();
+    let (lo, hi) = bbox.unwrap_or((Point3::origin(), Point3::origin()));
+    MeshSummary {
+        vertices: mesh.vertex_count(),
+        triangles: mesh.triangle_count(),
+        bbox_min: [lo.x * s, lo.y * s, lo.z * s],
+        bbox_max: [hi.x * s, hi.y * s, hi.z * s],
+        units_detected: units,
+        scale_to_metres: s,
+        boundary_loops: boundary_loops(mesh).len(),
+        components: components(mesh),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn millimetre_body_is_scaled_to_metres() {
+        let mesh = Mesh::new(
+            vec![
+                Point3::new(-200.0, 0.0, -100.0),
+                Point3::new(200.0, 1750.0, 100.0),
+                Point3::new(0.0, 900.0, 0.0),
+            ],
+            vec![[0, 1, 2]],
+        );
+        let s = summarise(&mesh);
+        assert_eq!(s.units_detected, Units::Millimetres);
+        assert_eq!(s.scale_to_metres, 1e-3);
+        assert!((s.bbox_max[1] - 1.75).abs() < 1e-12);
+        assert!((s.bbox_min[0] + 0.2).abs() < 1e-12);
+        assert_eq!((s.vertices, s.triangles), (3, 1));
+        assert_eq!((s.boundary_loops, s.components), (1, 1));
+    }
+
+    #[test]
+    fn empty_mesh_summarises_to_zeros() {
+        let s = summarise(&Mesh::default());
+        assert_eq!(s.bbox_min, [0.0; 3]);
+        assert_eq!(s.units_detected, Units::Metres);
+        assert_eq!(s.components, 0);
+    }
+}
