@@ -13,7 +13,7 @@ use std::path::PathBuf;
 /// Arguments of `bodyspace build-model`.
 #[derive(clap::Args, Debug)]
 pub struct BuildModelArgs {
-    /// Directory of fitted meshes (PLY or OBJ) in template vertex order; all are used.
+    /// Directory of fitted meshes (PLY, OBJ, STL, optionally .gz) in template vertex order; all are used.
     #[arg(long)]
     pub fits: PathBuf,
     /// The model file to write.
@@ -61,7 +61,11 @@ pub fn run(args: &BuildModelArgs) -> Result<(), String> {
                 .and_then(|e| e.to_str())
                 .unwrap_or("")
                 .to_ascii_lowercase();
-            ext == "ply" || ext == "obj"
+            let name = p.to_string_lossy().to_ascii_lowercase();
+            ["ply", "obj", "stl"].contains(&ext.as_str())
+                || [".ply.gz", ".obj.gz", ".stl.gz"]
+                    .iter()
+                    .any(|e| name.ends_with(e))
         })
         .collect();
     files.sort();
