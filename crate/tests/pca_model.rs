@@ -131,3 +131,38 @@ fn quality_curves_have_the_expected_shape() {
     assert!(q.specificity.iter().all(|s| s.is_finite() && *s > 0.0));
     assert!(q.compactness.windows(2).all(|w| w[1] >= w[0]));
 }
+
+#[test]
+fn generalization_in_coefficient_space_matches_rebuilding_each_model() {
+    let rows: Vec<Vec<f64>> = pca_support::subjects(7, 41)
+        .iter()
+        .map(|s| s.iter().flat_map(|p| [p.x, p.y, p.z]).collect())
+        .collect();
+    let (fast, _) = generalization(&snapshot_pca(&rows), 10);
+    assert_eq!(fast.len(), 5);
+    for (m, g) in fast.iter().enumerate() {
+        let mut total = 0.0;
+        for i in 0..rows.len() {
+            let others: Vec<Vec<f64>> = (0..rows.len())
+                .filter(|&j| j != i)
+                .map(|j| rows[j].clone())
+                .collect();
+            let loo = snapshot_pca(&others);
+            let mut r: Vec<f64> = rows[i]
+                .iter()
+                .zip(&loo.mean)
+                .map(|(x, mu)| x - mu)
+                .collect();
+            for phi in loo.modes.iter().take(m + 1) {
+                let c: f64 = r.iter().zip(phi).map(|(a, b)| a * b).sum();
+                r.iter_mut().zip(phi).for_each(|(a, b)| *a -= c * b);
+            }
+            total += bodyspace::pca::metrics::mean_vertex_norm(&r) / rows.len() as f64;
+        }
+        assert!(
+            (g - total).abs() < 1e-9 * total.max(1e-3),
+            "G({}) = {g}, rebuilt {total}",
+            m + 1
+        );
+    }
+}
