@@ -198,4 +198,17 @@ fn sigma_units_scale_by_the_standard_deviation() {
     let b = model.whole.coefficients_from_sigma(&[2.0]).unwrap();
     assert!((b[0] - 2.0 * model.whole.variances[0].sqrt()).abs() < 1e-12);
     assert!((model.whole.sigma_from_coefficients(&b)[0] - 2.0).abs() < 1e-12);
+    let random = model.whole.random_coefficients(7);
+    assert_eq!(random.len(), model.whole.mode_count());
+    assert_eq!(random, model.whole.random_coefficients(7));
+    assert_ne!(random, model.whole.random_coefficients(8));
+    // A few thousand draws: every mode's standard deviation is its √λ within 5 %.
+    let draws: Vec<Vec<f64>> = (0..4000)
+        .map(|s| model.whole.random_coefficients(s))
+        .collect();
+    for k in 0..model.whole.mode_count() {
+        let var = draws.iter().map(|d| d[k] * d[k]).sum::<f64>() / draws.len() as f64;
+        let ratio = (var / model.whole.variances[k]).sqrt();
+        assert!((ratio - 1.0).abs() < 0.05, "mode {k}: sd ratio {ratio}");
+    }
 }

@@ -4,10 +4,10 @@
 use crate::mesh::Mesh;
 use crate::pca::file::read_model_for;
 use crate::pca::measure::{
-    measure, triangles_in_segments, MeasureLandmarks, MeasureParams, Measurements,
+    girth_triangles, measure, MeasureLandmarks, MeasureParams, Measurements,
 };
 use crate::pca::{BodyModel, TemplateIdentity};
-use crate::template::{Resolution, Segment, Template};
+use crate::template::{Resolution, Template};
 use nalgebra::Point3;
 use std::path::Path;
 
@@ -74,31 +74,9 @@ pub fn load_model(path: &Path) -> Result<(BodyModel, Template), String> {
     Ok((model, template))
 }
 
-/// Measurement landmarks of the template: chest at the Thelions, waist at the 10th ribs, hip at
-/// the Trochanterions, right arm Acromion → Radiale → Radial Styloid, Crotch.
+/// Measurement landmarks of the template ([`MeasureLandmarks::from_named`]).
 pub fn measure_landmarks(template: &Template) -> Result<MeasureLandmarks, String> {
-    let find = |name: &str| {
-        template
-            .landmark_vertices()
-            .iter()
-            .find(|(n, _)| n == name)
-            .map(|(_, v)| *v)
-            .ok_or_else(|| format!("template has no landmark {name}"))
-    };
-    Ok(MeasureLandmarks {
-        chest: vec![
-            find("Rt. Thelion/Bustpoint")?,
-            find("Lt. Thelion/Bustpoint")?,
-        ],
-        waist: vec![find("Rt. 10th Rib")?, find("Lt. 10th Rib")?],
-        hip: vec![find("Rt. Trochanterion")?, find("Lt. Trochanterion")?],
-        arm: vec![
-            find("Rt. Acromion")?,
-            find("Rt. Radiale")?,
-            find("Rt. Radial Styloid")?,
-        ],
-        crotch: find("Crotch")?,
-    })
+    MeasureLandmarks::from_named(template.landmark_vertices()).map_err(|e| e.to_string())
 }
 
 /// Measures flat positions on the template's triangles (girths on torso + legs, never arms).
@@ -107,19 +85,11 @@ pub fn measure_body(
     model: &BodyModel,
     positions: &[f32],
 ) -> Result<Measurements, String> {
-    let torso = triangles_in_segments(
-        &model.triangles,
-        &model.segment_weights,
-        &[
-            Segment::Torso.index(),
-            Segment::LeftLeg.index(),
-            Segment::RightLeg.index(),
-        ],
-    );
+    let sections = girth_triangles(&model.triangles, &model.segment_weights);
     measure(
         positions,
         &model.triangles,
-        &torso,
+        &sections,
         &measure_landmarks(template)?,
         &MeasureParams::default(),
     )

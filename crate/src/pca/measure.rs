@@ -28,6 +28,38 @@ pub struct MeasureLandmarks {
     pub crotch: u32,
 }
 
+impl MeasureLandmarks {
+    /// From the template's (canonical CAESAR name, vertex) list: chest at both
+    /// Thelion/Bustpoints, waist at both 10th Ribs, hip at both Trochanterions, right arm
+    /// Acromion → Radiale → Radial Styloid, Crotch. Names a missing landmark on failure.
+    pub fn from_named(landmarks: &[(String, u32)]) -> Result<Self, PcaError> {
+        let find = |name: &str| {
+            landmarks
+                .iter()
+                .find(|(n, _)| n == name)
+                .map(|(_, v)| *v)
+                .ok_or_else(|| PcaError::Measurement {
+                    what: "landmarks".into(),
+                    reason: format!("the template has no landmark {name}"),
+                })
+        };
+        Ok(Self {
+            chest: vec![
+                find("Rt. Thelion/Bustpoint")?,
+                find("Lt. Thelion/Bustpoint")?,
+            ],
+            waist: vec![find("Rt. 10th Rib")?, find("Lt. 10th Rib")?],
+            hip: vec![find("Rt. Trochanterion")?, find("Lt. Trochanterion")?],
+            arm: vec![
+                find("Rt. Acromion")?,
+                find("Rt. Radiale")?,
+                find("Rt. Radial Styloid")?,
+            ],
+            crotch: find("Crotch")?,
+        })
+    }
+}
+
 /// Parameters of [`measure`].
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct MeasureParams {
@@ -246,6 +278,20 @@ pub fn triangles_in_segments(
         .filter(|(_, t)| t.iter().all(|&v| inside(v)))
         .map(|(i, _)| i as u32)
         .collect()
+}
+
+/// The triangles girths are sectioned on: torso and both legs (see [`triangles_in_segments`]).
+pub fn girth_triangles(triangles: &[[u32; 3]], weights: &[[f32; 6]]) -> Vec<u32> {
+    use crate::template::Segment;
+    triangles_in_segments(
+        triangles,
+        weights,
+        &[
+            Segment::Torso.index(),
+            Segment::LeftLeg.index(),
+            Segment::RightLeg.index(),
+        ],
+    )
 }
 
 /// Measures a body given as flat positions (3V), its triangles, the triangles to section for

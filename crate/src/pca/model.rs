@@ -132,6 +132,15 @@ impl ShapeModel {
             .collect()
     }
 
+    /// A random plausible shape: bₖ ~ N(0, λₖ) for every kept mode, reproducible from `seed`.
+    pub fn random_coefficients(&self, seed: u64) -> Vec<f64> {
+        let mut rng = super::random::NormalRng::new(seed);
+        self.variances
+            .iter()
+            .map(|v| rng.next_normal() * v.sqrt())
+            .collect()
+    }
+
     /// Coefficients of training subject i (row of `scores`).
     pub fn subject_scores(&self, i: usize) -> Option<&[f32]> {
         let m = self.mode_count();
