@@ -28,7 +28,7 @@ fn main() {
     let v = template.positions.len();
     println!("{v} template vertices, n = {n} landmark pairs");
     for kernel in [
-        Kernel::Gaussian { c: 0.15 },
+        Kernel::Gaussian { c: 0.2 },
         Kernel::ThinPlate,
         Kernel::Multiquadric { s: 0.01 },
     ] {
