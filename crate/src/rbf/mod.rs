@@ -4,12 +4,16 @@
 //! * [`kernel`] — Φ: thin-plate, multiquadric, Gaussian (eq. 3–5).
 //! * [`fit`] — the network f(p_i) = q_i (eq. 1–2) with optional affine term, LU solve,
 //!   conditioning checks.
+//! * [`evaluate`] — the warp loop: the network at every template vertex, vectorised.
+//! * [`checks`] — input checks naming the offending landmarks; [`fast_math`] — exp/ln for the loop.
 //! * [`procrustes`] — similarity pre-alignment so the scan's frame and units do not matter.
 //! * [`virtual_landmarks`] — the 12 automatically made landmarks (n = 73 + 12 = 85).
 //! * [`warp`] — `rbf_warp`: Procrustes, fit, warp every template vertex.
 //! * [`params`], [`error`] — the params struct with its documented defaults, the error enum.
 
+pub mod checks;
 pub mod error;
+pub mod evaluate;
 pub mod fast_math;
 pub mod fit;
 pub mod kernel;

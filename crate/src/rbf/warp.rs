@@ -10,8 +10,9 @@
 use nalgebra::Point3;
 use serde::Serialize;
 
+use super::checks::check_unique_names;
 use super::error::RbfError;
-use super::fit::{check_unique_names, fit, RbfNetwork};
+use super::fit::{fit, RbfNetwork};
 use super::kernel::Kernel;
 use super::params::RbfParams;
 use super::procrustes::{similarity_named, Similarity};
