@@ -1,5 +1,6 @@
 //! The native `bodyspace` command-line program: one module per subcommand.
 
+pub mod align;
 pub mod build_model;
 pub mod info;
 pub mod model;
