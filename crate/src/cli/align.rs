@@ -2,8 +2,9 @@
 //!
 //! Structure (the fine-alignment step extends this file): [`AlignArgs`] → [`load`] the scan,
 //! its landmarks and the template → [`rough`] (paper §3.1, RBF warp) → write the PLY and print
-//! the JSON report. Without `--rough-only` the fine step (paper §3.2) is meant to follow the
-//! rough one; until it exists, the command says so.
+//! the JSON report. Without `--rough-only` the fine step (paper §3.2, [`crate::align::fine_align`])
+//! follows: the warped template, in metres, is fitted to the scan by per-vertex affine transforms;
+//! the result is written in template vertex order, in the scan's frame and units.
 
 use std::path::{Path, PathBuf};
 use std::str::FromStr;
@@ -51,6 +52,22 @@ pub struct AlignArgs {
     /// Template resolution: base or fine.
     #[arg(long, default_value = "base")]
     pub resolution: String,
+    /// Weight a of the data error in fine alignment (paper Fig. 9: 0.96).
+    #[arg(long, default_value_t = 0.96)]
+    pub a: f64,
+    /// Weight b of the smoothness error in fine alignment (paper Fig. 9: 0.04).
+    #[arg(long, default_value_t = 0.04)]
+    pub b: f64,
+    /// Limit on fine-alignment L-BFGS iterations.
+    #[arg(long, default_value_t = 200)]
+    pub max_iterations: usize,
+    /// Also write the JSON report to this file.
+    #[arg(long)]
+    pub report: Option<PathBuf>,
+    /// Ground truth for a synthetic subject: PLY whose vertex i is template (base) vertex i on
+    /// the subject, scan frame and units; adds the mean correspondence error to the report.
+    #[arg(long)]
+    pub truth: Option<PathBuf>,
 }
 
 /// What `align` works on.
@@ -63,10 +80,7 @@ pub struct Inputs {
 /// Runs `bodyspace align`; the error is the one-line message for stderr.
 pub fn run(args: &AlignArgs) -> Result<(), String> {
     if !args.rough_only {
-        return Err(
-            "fine alignment (paper §3.2) is not available yet; pass --rough-only for the RBF warp"
-                .into(),
-        );
+        return super::align_fine::run_full(args);
     }
     let params = rough_params(args)?;
     let inputs = load(args)?;
