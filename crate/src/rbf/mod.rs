@@ -19,7 +19,6 @@ pub mod fit;
 pub mod kernel;
 pub mod params;
 pub mod procrustes;
-pub mod virtual_landmarks;
 pub mod warp;
 
 pub use error::RbfError;
@@ -27,7 +26,9 @@ pub use fit::{fit, RbfNetwork};
 pub use kernel::Kernel;
 pub use params::RbfParams;
 pub use procrustes::{similarity, Similarity};
-pub use virtual_landmarks::{
-    virtual_landmarks, virtual_landmarks_detailed, VirtualLandmark, VIRTUAL_LANDMARK_COUNT,
+// The virtual landmarks live with the other landmarks; re-exported here, where the RBF uses them.
+pub use crate::landmarks::virtual_landmarks;
+pub use crate::landmarks::virtual_landmarks::{
+    virtual_landmarks_detailed, VirtualLandmark, VIRTUAL_LANDMARK_COUNT,
 };
 pub use warp::{rbf_warp, rbf_warp_mesh, LandmarkResidual, RbfWarp};

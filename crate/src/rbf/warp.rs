@@ -16,7 +16,7 @@ use super::fit::{fit, RbfNetwork};
 use super::kernel::Kernel;
 use super::params::RbfParams;
 use super::procrustes::{similarity_named, Similarity};
-use super::virtual_landmarks::{virtual_landmarks_detailed, VIRTUAL_PREFIX};
+use crate::landmarks::virtual_landmarks::{virtual_landmarks_detailed, VIRTUAL_PREFIX};
 use crate::landmarks::{Landmark, LandmarkSet};
 use crate::mesh::Mesh;
 
