@@ -28,7 +28,8 @@ fn main() {
     let v = template.positions.len();
     println!("{v} template vertices, n = {n} landmark pairs");
     for kernel in [
-        Kernel::Gaussian { c: 0.15 },
+        Kernel::Gaussian { c: 0.1 },
+        Kernel::Gaussian { c: 0.2 },
         Kernel::ThinPlate,
         Kernel::Multiquadric { s: 0.01 },
     ] {
@@ -70,9 +71,10 @@ fn main() {
         );
         let whole_ms = t.elapsed().as_secs_f64() * 1e3;
         println!(
-            "{:13} fit (LU + rcond) {fit_ms:6.2} ms   warp {best:7.1} ms wall (best of 5, all \
+            "{:13} {:5} fit (LU + rcond) {fit_ms:6.2} ms   warp {best:7.1} ms wall (best of 5, all \
              cores)   {} ms CPU (one thread)   rbf_warp total {whole_ms:7.1} ms wall{}",
             kernel.name(),
+            kernel.param().map_or(String::new(), |p| format!("{p}")),
             cpu_ms.map_or("?".into(), |c| format!("{c:.1}")),
             if whole.is_ok() { "" } else { " (failed)" }
         );

@@ -1,5 +1,7 @@
 //! The RBF network alone (paper eq. 1–5): exact interpolation, affine reproduction, smoothing,
 //! and the documented errors on singular input — never NaNs.
+// Native only; tests/rbf_wasm.rs runs the same checks in the browser.
+#![cfg(not(target_arch = "wasm32"))]
 mod rbf_support;
 
 use bodyspace::rbf::{fit, Kernel, RbfError, RbfParams};

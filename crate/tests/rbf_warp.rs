@@ -1,5 +1,7 @@
 //! End-to-end `rbf_warp` (paper §3.1): a procedural body warped onto a known non-linear subject
 //! given in CAESAR's frame (millimetres, z-up), with explicit tolerances.
+// Native only; tests/rbf_wasm.rs runs the same checks in the browser.
+#![cfg(not(target_arch = "wasm32"))]
 mod rbf_support;
 
 use bodyspace::landmarks::{Landmark, LandmarkSet};

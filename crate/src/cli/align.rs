@@ -37,7 +37,7 @@ pub struct AlignArgs {
     #[arg(long, default_value = "gaussian")]
     pub kernel: String,
     /// Kernel parameter in template metres: Gaussian width c or multiquadric stiffness s
-    /// (default 0.2 for c, 0.01 for s; see docs/rbf.md).
+    /// (default 0.1 for c, 0.01 for s; see docs/rbf.md).
     #[arg(long)]
     pub kernel_param: Option<f64>,
     /// Smoothing λ ≥ 0 added to the kernel diagonal (0 interpolates the landmarks exactly).

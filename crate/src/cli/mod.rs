@@ -2,6 +2,10 @@
 
 pub mod align;
 pub mod align_fine;
+pub mod build_model;
 pub mod info;
+pub mod model;
+pub mod project;
+pub mod reconstruct;
 pub mod synth;
 pub mod template;

@@ -97,7 +97,7 @@ impl Kernel {
 }
 
 /// Default Gaussian width c in template units (metres); see docs/rbf.md for the measurement.
-pub const DEFAULT_GAUSSIAN_C: f64 = 0.2;
+pub const DEFAULT_GAUSSIAN_C: f64 = 0.1;
 
 /// Default multiquadric stiffness s in template units (metres): the paper's largest value.
 pub const DEFAULT_MULTIQUADRIC_S: f64 = 0.01;

@@ -3,8 +3,8 @@
 
 use nalgebra::{Matrix3, Point3, Vector3};
 
+use super::checks::{check_finite, check_spread};
 use super::error::RbfError;
-use super::fit::{check_finite, check_spread};
 
 /// x ↦ s·R·x + t with s > 0 and R a proper rotation (det R = +1).
 #[derive(Debug, Clone, Copy, PartialEq)]

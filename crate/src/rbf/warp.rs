@@ -10,12 +10,13 @@
 use nalgebra::Point3;
 use serde::Serialize;
 
+use super::checks::check_unique_names;
 use super::error::RbfError;
-use super::fit::{check_unique_names, fit, RbfNetwork};
+use super::fit::{fit, RbfNetwork};
 use super::kernel::Kernel;
 use super::params::RbfParams;
 use super::procrustes::{similarity_named, Similarity};
-use super::virtual_landmarks::{virtual_landmarks_detailed, VIRTUAL_PREFIX};
+use crate::landmarks::virtual_landmarks::{virtual_landmarks_detailed, VIRTUAL_PREFIX};
 use crate::landmarks::{Landmark, LandmarkSet};
 use crate::mesh::Mesh;
 

@@ -40,13 +40,14 @@ type Direction = Unit<Vector3<f64>>;
 enum Snap {
     /// The surface vertex nearest to the constructed point.
     Nearest,
-    /// Where the ray from the anchor along `axis` leaves the body: the surface vertex seen from
-    /// the anchor at the smallest angle to `axis`, if that angle is below `half_angle_deg`
-    /// (a larger one means the ray leaves through a hole). Unlike "the extreme vertex along
-    /// the axis" this is well posed on flat parts such as the soles.
+    /// Where the ray from the anchor along `axis` leaves the body: the surface vertex ahead of
+    /// the anchor nearest to the ray line, if that distance is below `radius` (a larger one
+    /// means the ray leaves through a hole). `radius` is a quarter of a nearby landmark
+    /// distance, so the rule has no absolute length. Unlike "the extreme vertex along the
+    /// axis" this is well posed on flat parts such as the soles.
     Ray {
         axis: Unit<Vector3<f64>>,
-        half_angle_deg: f64,
+        radius: f64,
     },
 }
 
@@ -56,9 +57,9 @@ pub fn virtual_landmarks_detailed(landmarks: &LandmarkSet, surface: &Mesh) -> Ve
     let mid = |a: &str, b: &str| Some(nalgebra::center(&get(a)?, &get(b)?));
     let frame = body_frame(landmarks);
     let mut out = Vec::with_capacity(VIRTUAL_LANDMARK_COUNT);
-    let mut push = |name: String, constructed: Option<(Point3<f64>, Point3<f64>)>, snap: Snap| {
-        // (anchor for the cone, fallback constructed point)
-        if let Some((anchor, fallback)) = constructed {
+    // constructed = (anchor of the snap rule, fallback point, rule)
+    let mut push = |name: String, constructed: Option<(Point3<f64>, Point3<f64>, Snap)>| {
+        if let Some((anchor, fallback, snap)) = constructed {
             let (position, on_surface) = match snap_point(surface, &anchor, &snap) {
                 Some(p) => (p, true),
                 None => (fallback, false),
@@ -70,22 +71,21 @@ pub fn virtual_landmarks_detailed(landmarks: &LandmarkSet, surface: &Mesh) -> Ve
         }
     };
 
-    // Top of the head: where the ray "up" from between the ears leaves the head (within 15°).
-    // Fallback 0.85 head breadths above the tragion midpoint (≈ vertex height on adults).
+    // Top of the head: where the ray "up" from between the ears leaves the head (within a
+    // quarter head breadth). Fallback 0.85 head breadths above the tragion midpoint (≈ vertex
+    // height on adults).
     if let Some((up, _)) = frame {
         let head = (|| {
             let (r, l) = (get("Rt. Tragion")?, get("Lt. Tragion")?);
             let anchor = nalgebra::center(&r, &l);
-            Some((anchor, anchor + up.into_inner() * 0.85 * (l - r).norm()))
-        })();
-        push(
-            format!("{VIRTUAL_PREFIX}top of head"),
-            head,
-            Snap::Ray {
+            let breadth = (l - r).norm();
+            let snap = Snap::Ray {
                 axis: up,
-                half_angle_deg: 15.0,
-            },
-        );
+                radius: 0.25 * breadth,
+            };
+            Some((anchor, anchor + up.into_inner() * 0.85 * breadth, snap))
+        })();
+        push(format!("{VIRTUAL_PREFIX}top of head"), head);
     }
     for (side, pre) in [("right", "Rt."), ("left", "Lt.")] {
         let n = |s: &str| format!("{pre} {s}");
@@ -102,13 +102,12 @@ pub fn virtual_landmarks_detailed(landmarks: &LandmarkSet, surface: &Mesh) -> Ve
             let m = mid(&n(a), &n(b));
             push(
                 format!("{VIRTUAL_PREFIX}{what}, {side}"),
-                m.map(|m| (m, m)),
-                Snap::Nearest,
+                m.map(|m| (m, m, Snap::Nearest)),
             );
         }
         // Sole: where the ray "down" from the centroid of the foot's three landmarks leaves the
-        // foot (within 15°);
-        // fallback 0.4 forefoot breadths below them (the landmarks sit ≈ 3–5 cm above the floor).
+        // foot (within a quarter forefoot breadth); fallback 0.4 forefoot breadths below them
+        // (the landmarks sit ≈ 3–5 cm above the floor).
         if let Some((up, _)) = frame {
             let sole = (|| {
                 let (c, m1, m5) = (
@@ -117,34 +116,29 @@ pub fn virtual_landmarks_detailed(landmarks: &LandmarkSet, surface: &Mesh) -> Ve
                     get(&n("Metatarsal Phal. V"))?,
                 );
                 let anchor = Point3::from((c.coords + m1.coords + m5.coords) / 3.0);
-                Some((anchor, anchor - up.into_inner() * 0.4 * (m1 - m5).norm()))
-            })();
-            push(
-                format!("{VIRTUAL_PREFIX}sole, {side}"),
-                sole,
-                Snap::Ray {
+                let breadth = (m1 - m5).norm();
+                let snap = Snap::Ray {
                     axis: -up,
-                    half_angle_deg: 15.0,
-                },
-            );
+                    radius: 0.25 * breadth,
+                };
+                Some((anchor, anchor - up.into_inner() * 0.4 * breadth, snap))
+            })();
+            push(format!("{VIRTUAL_PREFIX}sole, {side}"), sole);
         }
     }
     // Buttocks: where the ray "backwards" from halfway between the PSIS midpoint and the
-    // crotch leaves the body (within 15°); fallback that halfway point.
+    // crotch leaves the body (within a quarter PSIS distance); fallback that halfway point.
     if let Some((_, forward)) = frame {
         let seat = (|| {
-            let psis = mid("Rt. PSIS", "Lt. PSIS")?;
-            let a = nalgebra::center(&psis, &get("Crotch")?);
-            Some((a, a))
-        })();
-        push(
-            format!("{VIRTUAL_PREFIX}buttocks"),
-            seat,
-            Snap::Ray {
+            let (r, l) = (get("Rt. PSIS")?, get("Lt. PSIS")?);
+            let a = nalgebra::center(&nalgebra::center(&r, &l), &get("Crotch")?);
+            let snap = Snap::Ray {
                 axis: -forward,
-                half_angle_deg: 15.0,
-            },
-        );
+                radius: 0.25 * (l - r).norm(),
+            };
+            Some((a, a, snap))
+        })();
+        push(format!("{VIRTUAL_PREFIX}buttocks"), seat);
     }
     out
 }
@@ -175,17 +169,19 @@ fn snap_point(surface: &Mesh, anchor: &Point3<f64>, snap: &Snap) -> Option<Point
                     .total_cmp(&(*b - anchor).norm_squared())
             })
             .copied(),
-        Snap::Ray {
-            axis,
-            half_angle_deg,
-        } => {
-            let cos = half_angle_deg.to_radians().cos();
+        Snap::Ray { axis, radius } => {
+            let r2_max = radius * radius;
             let mut best: Option<(f64, Point3<f64>)> = None;
             for p in &surface.positions {
                 let d = p - anchor;
                 let along = d.dot(axis);
-                if along > 0.0 && along >= cos * d.norm() && best.is_none_or(|(b, _)| along > b) {
-                    best = Some((along, *p));
+                if along <= 0.0 {
+                    continue;
+                }
+                // Squared distance from the ray line.
+                let off = d.norm_squared() - along * along;
+                if off <= r2_max && best.is_none_or(|(b, _)| off < b) {
+                    best = Some((off, *p));
                 }
             }
             best.map(|(_, p)| p)
