@@ -11,9 +11,9 @@ export interface RbfSettings {
   affine: boolean;
 }
 
-/** The core's defaults (docs/rbf.md): Gaussian c = 0.2 m, multiquadric s = 0.01 m. */
+/** The core's defaults (docs/rbf.md): Gaussian c = 0.1 m, multiquadric s = 0.01 m. */
 export const DEFAULT_KERNEL_PARAM: Record<KernelName, number | null> = {
-  gaussian: 0.2,
+  gaussian: 0.1,
   'thin-plate': null,
   multiquadric: 0.01,
 };
