@@ -28,6 +28,12 @@ const showError = (message: string) => banner.show([message]);
 const templateView = new TemplateView(client, viewer, showError);
 const warpStep = new WarpStep(client, viewer, session, templateView, showError);
 const alignStep = new AlignStep(client, viewer, session, templateView, warpStep, showError);
+// Another template resolution: the warp and the fit were made with the old one.
+templateView.onLoaded(() => {
+  if (!warpStep.ready) return;
+  alignStep.reset();
+  warpStep.reset();
+});
 let lastReadMs = 0;
 let loads = 0;
 
