@@ -36,6 +36,12 @@ mod native {
         /// Make N synthetic subjects (scan, landmarks, ground truth) from MakeHuman data:
         /// `synth --n N --seed S --out DIR`.
         Synth(bodyspace::cli::synth::SynthArgs),
+        /// Build the whole-body and six segment PCA models from fits in template vertex order.
+        BuildModel(bodyspace::cli::build_model::BuildModelArgs),
+        /// Print a fit's whole-body and segment coefficients as JSON.
+        Project(bodyspace::cli::project::ProjectArgs),
+        /// Write the stitched body for given coefficients as PLY (prints seam and measurements).
+        Reconstruct(bodyspace::cli::reconstruct::ReconstructArgs),
     }
 
     pub fn main() {
@@ -44,6 +50,9 @@ mod native {
             Command::Info(args) => bodyspace::cli::info::run(&args),
             Command::Template(args) => bodyspace::cli::template::run(&args),
             Command::Synth(args) => bodyspace::cli::synth::run(&args),
+            Command::BuildModel(args) => bodyspace::cli::build_model::run(&args),
+            Command::Project(args) => bodyspace::cli::project::run(&args),
+            Command::Reconstruct(args) => bodyspace::cli::reconstruct::run(&args),
         };
         if let Err(message) = result {
             eprintln!("bodyspace: {message}");

@@ -1,5 +1,9 @@
 //! The native `bodyspace` command-line program: one module per subcommand.
 
+pub mod build_model;
 pub mod info;
+pub mod model;
+pub mod project;
+pub mod reconstruct;
 pub mod synth;
 pub mod template;

@@ -1,1 +1,38 @@
 //! PCA shape spaces (paper §4): S = S̄ + Φ·B for the whole body and six overlapping segments.
+//!
+//! * [`procrustes_gpa`] — generalised Procrustes analysis (rigid pose removal, optional scale)
+//! * [`gram`] — snapshot PCA through the N×N Gram matrix
+//! * [`model`] — [`ShapeModel`] (one part) and [`BodyModel`] (whole body + six segments)
+//! * [`build`] — [`build_body_model`] from a [`TrainingSet`]
+//! * [`segments`] — segment vertex subsets and normalised blend weights
+//! * [`stitch`] — mixed whole-body/segment reconstruction, the slider fast path, seam quality
+//! * [`project`] — coefficients of a new mesh
+//! * [`metrics`] — compactness, generalization, specificity (Styner 2003)
+//! * [`export`] — eigenvalues, scores and quality curves as CSV
+//! * [`measure`] — stature, girths by plane sections, arm length, inseam
+//! * [`gltf`] — the whole-body model as GLB with modes as morph targets
+//! * [`file`] — the versioned model file format ([`f16`] for the compact basis)
+//! * [`random`] — seeded normal draws
+
+pub mod build;
+pub mod error;
+pub mod export;
+pub mod f16;
+pub mod file;
+pub mod gltf;
+pub mod gram;
+pub mod measure;
+pub mod metrics;
+pub mod model;
+pub mod procrustes_gpa;
+pub mod project;
+pub mod random;
+pub mod segments;
+pub mod stitch;
+
+pub use build::{build_body_model, BuildParams, TrainingSet};
+pub use error::PcaError;
+pub use metrics::{QualityCurves, QualityParams};
+pub use model::{BodyModel, ShapeModel, TemplateIdentity};
+pub use procrustes_gpa::{GpaParams, PoseRemoval};
+pub use stitch::{Coefficients, ModeTarget, SeamReport, StitchPlan};

@@ -1,0 +1,186 @@
+//! `bodyspace build-model --fits DIR --out MODEL [--variance 0.99] [--scale] [--f16] [--csv DIR]
+//! [--gltf FILE.glb]`.
+
+use super::model::{read_fit, template_for_vertex_count, template_identity};
+use crate::pca::export::{eigenvalues_csv, quality_csv, scores_csv};
+use crate::pca::file::{write_model, BasisPrecision};
+use crate::pca::{
+    build_body_model, BuildParams, GpaParams, PoseRemoval, QualityParams, TrainingSet,
+};
+use crate::template::Segment;
+use std::path::PathBuf;
+
+/// Arguments of `bodyspace build-model`.
+#[derive(clap::Args, Debug)]
+pub struct BuildModelArgs {
+    /// Directory of fitted meshes (PLY, OBJ, STL, optionally .gz) in template vertex order; all are used.
+    #[arg(long)]
+    pub fits: PathBuf,
+    /// The model file to write.
+    #[arg(long)]
+    pub out: PathBuf,
+    /// Keep the leading modes explaining this fraction of the variance (never more than N−1).
+    #[arg(long, default_value_t = 0.99)]
+    pub variance: f64,
+    /// Also remove each subject's size (similarity GPA); recorded in the model.
+    #[arg(long)]
+    pub scale: bool,
+    /// Cap on the modes kept per model.
+    #[arg(long)]
+    pub max_modes: Option<usize>,
+    /// Store the basis in half precision (half the file size).
+    #[arg(long)]
+    pub f16: bool,
+    /// Write eigenvalues.csv, scores.csv and quality.csv into this directory.
+    #[arg(long)]
+    pub csv: Option<PathBuf>,
+    /// Also write the whole-body model as binary glTF (GLB) with its modes as morph targets
+    /// (morph weight = slider value in standard deviations).
+    #[arg(long)]
+    pub gltf: Option<PathBuf>,
+    /// Skip generalization and specificity (compactness is always computed).
+    #[arg(long)]
+    pub no_quality: bool,
+    /// Quality curves up to this many modes.
+    #[arg(long, default_value_t = 20)]
+    pub quality_modes: usize,
+    /// Random shapes per mode count for specificity.
+    #[arg(long, default_value_t = 100)]
+    pub specificity_samples: usize,
+}
+
+/// Runs `bodyspace build-model`; the error is the one-line message for stderr.
+pub fn run(args: &BuildModelArgs) -> Result<(), String> {
+    let dir = &args.fits;
+    let mut files: Vec<PathBuf> = std::fs::read_dir(dir)
+        .map_err(|e| format!("{}: {e}", dir.display()))?
+        .filter_map(|e| e.ok().map(|e| e.path()))
+        .filter(|p| {
+            let ext = p
+                .extension()
+                .and_then(|e| e.to_str())
+                .unwrap_or("")
+                .to_ascii_lowercase();
+            let name = p.to_string_lossy().to_ascii_lowercase();
+            ["ply", "obj", "stl"].contains(&ext.as_str())
+                || [".ply.gz", ".obj.gz", ".stl.gz"]
+                    .iter()
+                    .any(|e| name.ends_with(e))
+        })
+        .collect();
+    files.sort();
+    if files.len() < 2 {
+        return Err(format!(
+            "{}: {} PLY/OBJ fits found, a model needs at least 2",
+            dir.display(),
+            files.len()
+        ));
+    }
+    let mut shapes = Vec::with_capacity(files.len());
+    let mut names = Vec::with_capacity(files.len());
+    for f in &files {
+        shapes.push(read_fit(f)?.positions);
+        names.push(
+            f.file_stem()
+                .and_then(|s| s.to_str())
+                .unwrap_or("?")
+                .to_string(),
+        );
+    }
+    let template = template_for_vertex_count(shapes[0].len())
+        .map_err(|e| format!("{}: {e}", files[0].display()))?;
+    let mesh = template.mesh();
+    let set = TrainingSet {
+        template: template_identity(&template),
+        triangles: mesh.triangles.clone(),
+        segment_weights: (0..mesh.vertex_count() as u32)
+            .map(|v| template.segment_weights(v))
+            .collect(),
+        names,
+        shapes,
+    };
+    let params = BuildParams {
+        variance: args.variance,
+        max_modes: args.max_modes,
+        gpa: GpaParams {
+            pose: if args.scale {
+                PoseRemoval::Similarity
+            } else {
+                PoseRemoval::Rigid
+            },
+            ..GpaParams::default()
+        },
+        compute_quality: !args.no_quality,
+        quality: QualityParams {
+            max_modes: args.quality_modes,
+            specificity_samples: args.specificity_samples,
+            ..QualityParams::default()
+        },
+    };
+    let model = build_body_model(&set, &params).map_err(|e| {
+        let index = match &e {
+            crate::pca::PcaError::VertexCountMismatch { subject, .. } => {
+                set.names.iter().position(|n| n == subject)
+            }
+            _ => None,
+        };
+        match index {
+            Some(i) => format!("{}: {e}", files[i].display()),
+            None => e.to_string(),
+        }
+    })?;
+    let precision = if args.f16 {
+        BasisPrecision::F16
+    } else {
+        BasisPrecision::F32
+    };
+    let bytes = write_model(&model, precision);
+    std::fs::write(&args.out, &bytes).map_err(|e| format!("{}: {e}", args.out.display()))?;
+    if let Some(gltf) = &args.gltf {
+        let glb = crate::pca::gltf::model_glb(&model, usize::MAX);
+        std::fs::write(gltf, glb).map_err(|e| format!("{}: {e}", gltf.display()))?;
+    }
+    if let Some(csv) = &args.csv {
+        std::fs::create_dir_all(csv).map_err(|e| format!("{}: {e}", csv.display()))?;
+        for (name, text) in [
+            ("eigenvalues.csv", eigenvalues_csv(&model)),
+            ("scores.csv", scores_csv(&model)),
+            ("quality.csv", quality_csv(&model)),
+        ] {
+            let p = csv.join(name);
+            std::fs::write(&p, text).map_err(|e| format!("{}: {e}", p.display()))?;
+        }
+    }
+    let modes: serde_json::Map<String, serde_json::Value> =
+        std::iter::once(("whole".to_string(), &model.whole))
+            .chain(
+                Segment::ALL
+                    .iter()
+                    .map(|s| (s.name().to_string(), model.segment(*s))),
+            )
+            .map(|(n, m)| {
+                (
+                    n,
+                    serde_json::json!({
+                        "vertices": m.vertex_count(),
+                        "modes": m.mode_count(),
+                        "sd": m.standard_deviations(),
+                        "explained": m.quality.compactness.get(m.mode_count().saturating_sub(1)),
+                    }),
+                )
+            })
+            .collect();
+    let summary = serde_json::json!({
+        "model": args.out.display().to_string(),
+        "bytes": bytes.len(),
+        "subjects": model.subjects.len(),
+        "template": model.template,
+        "pose_removal": model.settings.gpa.pose,
+        "basis": precision,
+        "models": modes,
+        "csv": args.csv.as_ref().map(|d| d.display().to_string()),
+        "gltf": args.gltf.as_ref().map(|d| d.display().to_string()),
+    });
+    println!("{summary}");
+    Ok(())
+}

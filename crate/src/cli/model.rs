@@ -1,0 +1,116 @@
+//! What `build-model`, `project` and `reconstruct` share: the template's identity and measurement
+//! landmarks, loading a model for the embedded template, and reading/writing meshes.
+
+use crate::mesh::Mesh;
+use crate::pca::file::read_model_for;
+use crate::pca::measure::{
+    girth_triangles, measure, MeasureLandmarks, MeasureParams, Measurements,
+};
+use crate::pca::{BodyModel, TemplateIdentity};
+use crate::template::{Resolution, Template};
+use nalgebra::Point3;
+use std::path::Path;
+
+/// Identity of a template at its resolution: CRC-32 of its positions (f64 LE), triangles and
+/// segment weights, so a model refuses a template whose geometry or segments changed.
+pub fn template_identity(template: &Template) -> TemplateIdentity {
+    let mesh = template.mesh();
+    let mut crc = flate2::Crc::new();
+    for p in &mesh.positions {
+        for c in [p.x, p.y, p.z] {
+            crc.update(&c.to_le_bytes());
+        }
+    }
+    for t in &mesh.triangles {
+        for i in t {
+            crc.update(&i.to_le_bytes());
+        }
+    }
+    for v in 0..mesh.vertex_count() as u32 {
+        for w in template.segment_weights(v) {
+            crc.update(&w.to_le_bytes());
+        }
+    }
+    TemplateIdentity {
+        name: "bodyspace-makehuman".into(),
+        hash: format!("{:08x}", crc.sum()),
+        resolution: template.resolution().name().into(),
+        vertex_count: mesh.vertex_count(),
+    }
+}
+
+/// The embedded template at the resolution whose vertex count is `vertex_count`.
+pub fn template_for_vertex_count(vertex_count: usize) -> Result<Template, String> {
+    let base = Template::embedded().map_err(|e| format!("embedded template: {e}"))?;
+    if base.mesh().vertex_count() == vertex_count {
+        return Ok(base);
+    }
+    let fine = base.at_resolution(Resolution::Fine);
+    if fine.mesh().vertex_count() == vertex_count {
+        return Ok(fine);
+    }
+    Err(format!(
+        "{vertex_count} vertices match no template resolution (base {}, fine {}); fits must be in template vertex order",
+        base.mesh().vertex_count(),
+        fine.mesh().vertex_count()
+    ))
+}
+
+/// Reads a model file and checks it was built for the embedded template.
+pub fn load_model(path: &Path) -> Result<(BodyModel, Template), String> {
+    let bytes = std::fs::read(path).map_err(|e| format!("{}: {e}", path.display()))?;
+    let header_model =
+        crate::pca::file::read_model(&bytes).map_err(|e| format!("{}: {e}", path.display()))?;
+    let resolution: Resolution = header_model
+        .template
+        .resolution
+        .parse()
+        .map_err(|e| format!("{}: {e}", path.display()))?;
+    let template = Template::embedded()
+        .map_err(|e| format!("embedded template: {e}"))?
+        .at_resolution(resolution);
+    let model = read_model_for(&bytes, &template_identity(&template))
+        .map_err(|e| format!("{}: {e}", path.display()))?;
+    Ok((model, template))
+}
+
+/// Measurement landmarks of the template ([`MeasureLandmarks::from_named`]).
+pub fn measure_landmarks(template: &Template) -> Result<MeasureLandmarks, String> {
+    MeasureLandmarks::from_named(template.landmark_vertices()).map_err(|e| e.to_string())
+}
+
+/// Measures flat positions on the template's triangles (girths on torso + legs, never arms).
+pub fn measure_body(
+    template: &Template,
+    model: &BodyModel,
+    positions: &[f32],
+) -> Result<Measurements, String> {
+    let sections = girth_triangles(&model.triangles, &model.segment_weights);
+    measure(
+        positions,
+        &model.triangles,
+        &sections,
+        &measure_landmarks(template)?,
+        &MeasureParams::default(),
+    )
+    .map_err(|e| e.to_string())
+}
+
+/// Binary little-endian PLY of flat f32 positions and triangles (`crate::io::write_ply`).
+pub fn write_ply(path: &Path, positions: &[f32], triangles: &[[u32; 3]]) -> Result<(), String> {
+    let mesh = Mesh::new(
+        positions
+            .chunks_exact(3)
+            .map(|p| Point3::new(p[0] as f64, p[1] as f64, p[2] as f64))
+            .collect(),
+        triangles.to_vec(),
+    );
+    std::fs::write(path, crate::io::write_ply(&mesh))
+        .map_err(|e| format!("{}: {e}", path.display()))
+}
+
+/// Reads a fit: any scan format `crate::io::read_scan` reads (PLY, OBJ, STL, gzip).
+pub fn read_fit(path: &Path) -> Result<Mesh, String> {
+    let bytes = std::fs::read(path).map_err(|e| format!("{}: {e}", path.display()))?;
+    crate::io::read_scan(&bytes, &path.display().to_string()).map_err(|e| e.to_string())
+}

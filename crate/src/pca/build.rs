@@ -1,0 +1,179 @@
+//! Building a body model from aligned subjects: GPA, then snapshot PCA of the whole body and of
+//! each segment, then the quality curves.
+//!
+//! Segment models share the whole-body GPA frame rather than running their own GPA: then every
+//! segment reconstruction lives in the same coordinates as the whole body and its neighbours, so
+//! stitching is a plain per-vertex blend with no per-segment pose to undo. The price is that a
+//! segment model keeps the segment's pose relative to the body as variation — which the paper
+//! observes in its own segment modes (§4.2.2: "pose and scale").
+
+use super::error::PcaError;
+use super::gram::{modes_for_variance, snapshot_pca, SnapshotPca};
+use super::metrics::{quality_curves, QualityCurves, QualityParams};
+use super::model::{BodyModel, ShapeModel, TemplateIdentity};
+use super::procrustes_gpa::{generalised_procrustes, GpaParams};
+use super::segments::{segment_subsets, validate_weights};
+use nalgebra::Point3;
+use serde::{Deserialize, Serialize};
+
+/// Parameters of [`build_body_model`]; recorded in the model file.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct BuildParams {
+    /// Keep the leading modes explaining this fraction of the variance; default 0.99 (issue 6).
+    /// Never more than N−1 modes.
+    pub variance: f64,
+    /// Optional hard cap on the modes kept per model; default none.
+    pub max_modes: Option<usize>,
+    /// Pose removal before PCA; default rigid (rotation + translation).
+    pub gpa: GpaParams,
+    /// Compute the quality curves (the expensive part of a build); default true.
+    pub compute_quality: bool,
+    pub quality: QualityParams,
+}
+
+impl Default for BuildParams {
+    fn default() -> Self {
+        Self {
+            variance: 0.99,
+            max_modes: None,
+            gpa: GpaParams::default(),
+            compute_quality: true,
+            quality: QualityParams::default(),
+        }
+    }
+}
+
+/// Aligned subjects in template vertex order plus what the model must remember of the template.
+#[derive(Debug, Clone)]
+pub struct TrainingSet {
+    pub template: TemplateIdentity,
+    pub triangles: Vec<[u32; 3]>,
+    /// One `[f32; 6]` per template vertex, [`crate::template::Segment::ALL`] order.
+    pub segment_weights: Vec<[f32; 6]>,
+    /// Subject names, same order as `shapes`.
+    pub names: Vec<String>,
+    /// N shapes of `template.vertex_count` points.
+    pub shapes: Vec<Vec<Point3<f64>>>,
+}
+
+impl TrainingSet {
+    fn validate(&self) -> Result<(), PcaError> {
+        let v = self.template.vertex_count;
+        if self.shapes.len() < 2 {
+            return Err(PcaError::TooFewSubjects(self.shapes.len()));
+        }
+        for (k, shape) in self.shapes.iter().enumerate() {
+            let name = self
+                .names
+                .get(k)
+                .cloned()
+                .unwrap_or_else(|| format!("#{k}"));
+            if shape.len() != v {
+                return Err(PcaError::VertexCountMismatch {
+                    subject: name,
+                    got: shape.len(),
+                    expected: v,
+                });
+            }
+            if shape
+                .iter()
+                .any(|p| !p.coords.iter().all(|c| c.is_finite()))
+            {
+                return Err(PcaError::NonFinite(name));
+            }
+        }
+        validate_weights(&self.segment_weights, v).map_err(PcaError::BadSegmentWeights)?;
+        if self.triangles.iter().flatten().any(|&i| i as usize >= v) {
+            return Err(PcaError::BadParameter(format!(
+                "a triangle indexes a vertex beyond the template's {v}"
+            )));
+        }
+        Ok(())
+    }
+}
+
+/// Truncates a full snapshot PCA to the kept modes and stores it in f32.
+fn shape_model(
+    pca: &SnapshotPca,
+    vertex_indices: Vec<u32>,
+    params: &BuildParams,
+    quality: QualityCurves,
+) -> ShapeModel {
+    let m = modes_for_variance(&pca.variances, params.variance, params.max_modes);
+    ShapeModel {
+        vertex_indices,
+        mean: pca.mean.iter().map(|&x| x as f32).collect(),
+        basis: pca.modes[..m]
+            .iter()
+            .flat_map(|phi| phi.iter().map(|&x| x as f32))
+            .collect(),
+        variances: pca.variances[..m].to_vec(),
+        all_variances: pca.variances.clone(),
+        scores: pca
+            .scores
+            .iter()
+            .flat_map(|s| s[..m].iter().map(|&x| x as f32))
+            .collect(),
+        quality,
+    }
+}
+
+fn model_of(rows: &[Vec<f64>], vertex_indices: Vec<u32>, params: &BuildParams) -> ShapeModel {
+    let pca = snapshot_pca(rows);
+    let quality = if params.compute_quality {
+        quality_curves(&pca, &params.quality)
+    } else {
+        QualityCurves {
+            compactness: super::metrics::compactness(&pca.variances),
+            ..QualityCurves::default()
+        }
+    };
+    shape_model(&pca, vertex_indices, params, quality)
+}
+
+/// Builds the whole-body model and the six segment models (paper §4, eq. 9) from `set`.
+pub fn build_body_model(set: &TrainingSet, params: &BuildParams) -> Result<BodyModel, PcaError> {
+    if !(params.variance > 0.0 && params.variance <= 1.0) {
+        return Err(PcaError::BadParameter(format!(
+            "variance threshold {} is not in (0, 1]",
+            params.variance
+        )));
+    }
+    set.validate()?;
+    let refs: Vec<&[Point3<f64>]> = set.shapes.iter().map(|s| s.as_slice()).collect();
+    let gpa = generalised_procrustes(&refs, &params.gpa);
+    let rows: Vec<Vec<f64>> = gpa
+        .aligned
+        .iter()
+        .map(|s| s.iter().flat_map(|p| [p.x, p.y, p.z]).collect())
+        .collect();
+    drop(gpa);
+    let whole = model_of(&rows, Vec::new(), params);
+    let segments = segment_subsets(&set.segment_weights)
+        .into_iter()
+        .map(|subset| {
+            let sub_rows: Vec<Vec<f64>> = rows
+                .iter()
+                .map(|r| {
+                    subset
+                        .iter()
+                        .flat_map(|&v| r[3 * v as usize..3 * v as usize + 3].iter().copied())
+                        .collect()
+                })
+                .collect();
+            model_of(&sub_rows, subset, params)
+        })
+        .collect();
+    let names = (0..set.shapes.len())
+        .map(|k| set.names.get(k).cloned().unwrap_or_else(|| format!("#{k}")))
+        .collect();
+    BodyModel::assemble(
+        set.template.clone(),
+        *params,
+        names,
+        set.triangles.clone(),
+        set.segment_weights.clone(),
+        whole,
+        segments,
+    )
+}

@@ -1,0 +1,241 @@
+//! The shape model types: one linear model S = S̄ + Φ·B (paper eq. 9) per body part, and the body
+//! model that holds the whole-body model, the six segment models and what built them.
+
+use super::build::BuildParams;
+use super::error::PcaError;
+use super::metrics::QualityCurves;
+use crate::template::Segment;
+use serde::{Deserialize, Serialize};
+
+/// Which template a model belongs to. A model only makes sense on meshes in this template's vertex
+/// order, so loading checks it.
+#[derive(Debug, Clone, PartialEq, Eq, Serialize, Deserialize)]
+pub struct TemplateIdentity {
+    /// Template name, e.g. `makehuman-base`.
+    pub name: String,
+    /// Content hash of the template mesh (hex), whatever the template module computes.
+    pub hash: String,
+    /// Resolution name (`base`, `fine`, ...).
+    pub resolution: String,
+    /// `#V` of the template at this resolution.
+    pub vertex_count: usize,
+}
+
+impl std::fmt::Display for TemplateIdentity {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(
+            f,
+            "{} ({}, {} vertices, hash {})",
+            self.name, self.resolution, self.vertex_count, self.hash
+        )
+    }
+}
+
+/// One PCA model over `n` vertices (the whole body or one segment's subset), stored in f32 in the
+/// layout the slider loop reads: `basis` is mode-major, mode k at `basis[k·3n .. (k+1)·3n]`, each
+/// mode `[x0, y0, z0, x1, ...]`. Coefficients Bₖ are in model units (metres); a slider value tₖ in
+/// standard deviations is Bₖ = tₖ·√λₖ.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ShapeModel {
+    /// Template vertex index of each model vertex, ascending; empty for the whole body (= all).
+    pub vertex_indices: Vec<u32>,
+    /// S̄ flat, length 3n.
+    pub mean: Vec<f32>,
+    /// Φ mode-major, length M·3n, orthonormal modes.
+    pub basis: Vec<f32>,
+    /// λ₁ ≥ … ≥ λ_M of the kept modes.
+    pub variances: Vec<f64>,
+    /// All non-zero eigenvalues before truncation (at most N−1), for compactness.
+    pub all_variances: Vec<f64>,
+    /// Per-subject coefficients, row-major N × M.
+    pub scores: Vec<f32>,
+    /// Compactness / generalization / specificity.
+    pub quality: QualityCurves,
+}
+
+impl ShapeModel {
+    /// Number of kept modes M.
+    pub fn mode_count(&self) -> usize {
+        self.variances.len()
+    }
+
+    /// Number of vertices n of this model.
+    pub fn vertex_count(&self) -> usize {
+        self.mean.len() / 3
+    }
+
+    /// Mode k (φₖ, length 3n). The caller guarantees k < M.
+    pub fn mode(&self, k: usize) -> &[f32] {
+        let d = self.mean.len();
+        &self.basis[k * d..(k + 1) * d]
+    }
+
+    /// √λₖ for every kept mode.
+    pub fn standard_deviations(&self) -> Vec<f64> {
+        self.variances.iter().map(|v| v.sqrt()).collect()
+    }
+
+    /// Bₖ = tₖ·√λₖ for slider values `sigma` (extra entries beyond M are an error).
+    pub fn coefficients_from_sigma(&self, sigma: &[f64]) -> Result<Vec<f64>, PcaError> {
+        self.check_coefficients(sigma.len())?;
+        Ok(sigma
+            .iter()
+            .zip(&self.variances)
+            .map(|(t, v)| t * v.sqrt())
+            .collect())
+    }
+
+    /// tₖ = Bₖ/√λₖ.
+    pub fn sigma_from_coefficients(&self, coefficients: &[f64]) -> Vec<f64> {
+        coefficients
+            .iter()
+            .zip(&self.variances)
+            .map(|(b, v)| if *v > 0.0 { b / v.sqrt() } else { 0.0 })
+            .collect()
+    }
+
+    pub(crate) fn check_coefficients(&self, len: usize) -> Result<(), PcaError> {
+        if len > self.mode_count() {
+            return Err(PcaError::BadLength {
+                what: "coefficients".into(),
+                expected: self.mode_count(),
+                got: len,
+            });
+        }
+        Ok(())
+    }
+
+    /// S = S̄ + Σₖ Bₖφₖ in f64, flat length 3n; missing trailing coefficients are 0.
+    pub fn reconstruct(&self, coefficients: &[f64]) -> Result<Vec<f64>, PcaError> {
+        self.check_coefficients(coefficients.len())?;
+        let mut out: Vec<f64> = self.mean.iter().map(|&m| m as f64).collect();
+        for (k, &b) in coefficients.iter().enumerate() {
+            if b != 0.0 {
+                for (o, &p) in out.iter_mut().zip(self.mode(k)) {
+                    *o += b * p as f64;
+                }
+            }
+        }
+        Ok(out)
+    }
+
+    /// B = Φᵀ(x − S̄) for a flat shape `x` of length 3n already in the model frame.
+    pub fn project_flat(&self, x: &[f64]) -> Vec<f64> {
+        (0..self.mode_count())
+            .map(|k| {
+                self.mode(k)
+                    .iter()
+                    .zip(x.iter().zip(&self.mean))
+                    .map(|(&p, (&xi, &m))| p as f64 * (xi - m as f64))
+                    .sum()
+            })
+            .collect()
+    }
+
+    /// A random plausible shape: bₖ ~ N(0, λₖ) for every kept mode, reproducible from `seed`.
+    pub fn random_coefficients(&self, seed: u64) -> Vec<f64> {
+        let mut rng = super::random::NormalRng::new(seed);
+        self.variances
+            .iter()
+            .map(|v| rng.next_normal() * v.sqrt())
+            .collect()
+    }
+
+    /// Coefficients of training subject i (row of `scores`).
+    pub fn subject_scores(&self, i: usize) -> Option<&[f32]> {
+        let m = self.mode_count();
+        self.scores.get(i * m..(i + 1) * m)
+    }
+}
+
+/// The whole-body model and the six segment models of paper §4, with everything needed to use
+/// them: template identity, triangles, the segments' blend weights and the build settings.
+#[derive(Debug, Clone, PartialEq)]
+pub struct BodyModel {
+    pub template: TemplateIdentity,
+    pub settings: BuildParams,
+    /// Subject names (file stems) in score order.
+    pub subjects: Vec<String>,
+    /// Template triangles, to write reconstructed bodies.
+    pub triangles: Vec<[u32; 3]>,
+    /// Per-vertex blend weights in [`Segment::ALL`] order; a vertex is in a segment when its
+    /// weight is > 0.
+    pub segment_weights: Vec<[f32; 6]>,
+    /// The whole-body model over all V vertices.
+    pub whole: ShapeModel,
+    /// Six segment models in [`Segment::ALL`] order, sharing the whole body's GPA frame.
+    pub segments: Vec<ShapeModel>,
+    /// Per segment, the normalised blend weight w̃ᵥ,ₛ = wᵥ,ₛ / Σₜ wᵥ,ₜ of each of its vertices.
+    pub(crate) blend: Vec<Vec<f32>>,
+}
+
+impl BodyModel {
+    /// Assembles a model and derives the normalised blend weights; checks that the parts agree.
+    pub fn assemble(
+        template: TemplateIdentity,
+        settings: BuildParams,
+        subjects: Vec<String>,
+        triangles: Vec<[u32; 3]>,
+        segment_weights: Vec<[f32; 6]>,
+        whole: ShapeModel,
+        segments: Vec<ShapeModel>,
+    ) -> Result<Self, PcaError> {
+        let v = template.vertex_count;
+        let bad = |m: String| Err(PcaError::Corrupted(m));
+        if whole.mean.len() != 3 * v || segment_weights.len() != v {
+            return bad(format!(
+                "template has {v} vertices but the whole-body mean has {} and the segment weights {}",
+                whole.mean.len() / 3,
+                segment_weights.len()
+            ));
+        }
+        if segments.len() != Segment::ALL.len() {
+            return bad(format!("{} segment models instead of 6", segments.len()));
+        }
+        if triangles.iter().flatten().any(|&i| i as usize >= v) {
+            return bad("a triangle indexes a vertex beyond the template".into());
+        }
+        let subsets = super::segments::segment_subsets(&segment_weights);
+        for ((s, model), subset) in Segment::ALL.iter().zip(&segments).zip(&subsets) {
+            if model.vertex_indices != *subset || model.mean.len() != 3 * subset.len() {
+                return bad(format!(
+                    "segment {} vertex list does not match its blend weights",
+                    s.name()
+                ));
+            }
+        }
+        for m in std::iter::once(&whole).chain(&segments) {
+            let n = m.mode_count();
+            if m.basis.len() != n * m.mean.len() || m.scores.len() != n * subjects.len() {
+                return bad("a basis or score array does not match its mode count".into());
+            }
+        }
+        let blend = super::segments::normalised_blend(&segment_weights, &subsets);
+        Ok(Self {
+            template,
+            settings,
+            subjects,
+            triangles,
+            segment_weights,
+            whole,
+            segments,
+            blend,
+        })
+    }
+
+    /// The model of one segment.
+    pub fn segment(&self, segment: Segment) -> &ShapeModel {
+        &self.segments[segment.index()]
+    }
+
+    /// Fails with [`PcaError::TemplateMismatch`] unless the model was built for `template`.
+    pub fn check_template(&self, template: &TemplateIdentity) -> Result<(), PcaError> {
+        if self.template != *template {
+            return Err(PcaError::TemplateMismatch {
+                model: self.template.to_string(),
+                expected: template.to_string(),
+            });
+        }
+        Ok(())
+    }
+}

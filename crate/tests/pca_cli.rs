@@ -1,0 +1,168 @@
+//! End-to-end: `bodyspace build-model`, `project` and `reconstruct` on fits made from the embedded
+//! template (scaled in height and girth, randomly posed).
+#![cfg(not(target_arch = "wasm32"))]
+
+use bodyspace::cli::model::write_ply;
+use bodyspace::pca::random::NormalRng;
+use bodyspace::template::Template;
+use nalgebra::{Rotation3, Vector3};
+use std::path::Path;
+use std::process::Command;
+
+fn run(args: &[&str]) -> (bool, serde_json::Value, String) {
+    let out = Command::new(env!("CARGO_BIN_EXE_bodyspace"))
+        .args(args)
+        .output()
+        .unwrap();
+    let stdout = String::from_utf8_lossy(&out.stdout).to_string();
+    let json = serde_json::from_str(&stdout).unwrap_or(serde_json::Value::Null);
+    (
+        out.status.success(),
+        json,
+        String::from_utf8_lossy(&out.stderr).to_string(),
+    )
+}
+
+fn make_fits(dir: &Path, n: usize) -> Vec<Vec<f32>> {
+    let template = Template::embedded().unwrap();
+    let mesh = template.mesh();
+    let mut rng = NormalRng::new(5);
+    (0..n)
+        .map(|i| {
+            let tall = 1.0 + 0.04 * rng.next_normal();
+            let wide = 1.0 + 0.08 * rng.next_normal();
+            let rot = Rotation3::from_euler_angles(
+                0.05 * rng.next_normal(),
+                0.5 * rng.next_normal(),
+                0.0,
+            );
+            let shift = Vector3::new(rng.next_normal(), 0.0, rng.next_normal());
+            let flat: Vec<f32> = mesh
+                .positions
+                .iter()
+                .flat_map(|p| {
+                    let q = rot * nalgebra::Point3::new(p.x * wide, p.y * tall, p.z * wide) + shift;
+                    [q.x as f32, q.y as f32, q.z as f32]
+                })
+                .collect();
+            write_ply(&dir.join(format!("fit{i:02}.ply")), &flat, &mesh.triangles).unwrap();
+            flat
+        })
+        .collect()
+}
+
+#[test]
+fn build_project_reconstruct_round_trip() {
+    let dir = std::env::temp_dir().join(format!("bodyspace-pca-cli-{}", std::process::id()));
+    let fits = dir.join("fits");
+    std::fs::create_dir_all(&fits).unwrap();
+    make_fits(&fits, 6);
+    let model = dir.join("model.bsm");
+    let csv = dir.join("csv");
+    let (ok, summary, err) = run(&[
+        "build-model",
+        "--fits",
+        fits.to_str().unwrap(),
+        "--out",
+        model.to_str().unwrap(),
+        "--variance",
+        "1.0",
+        "--csv",
+        csv.to_str().unwrap(),
+        "--specificity-samples",
+        "5",
+        "--gltf",
+        dir.join("model.glb").to_str().unwrap(),
+    ]);
+    assert!(ok, "{err}");
+    assert_eq!(summary["subjects"], 6);
+    // Two shape parameters (height, girth) vary; everything else is rigid pose, removed by GPA.
+    let modes = summary["models"]["whole"]["modes"].as_u64().unwrap();
+    assert!((2..=5).contains(&modes), "{modes} modes");
+    assert_eq!(&std::fs::read(dir.join("model.glb")).unwrap()[..4], b"glTF");
+    let quality = std::fs::read_to_string(csv.join("quality.csv")).unwrap();
+    assert!(quality.starts_with("model,modes,compactness"));
+
+    let fit = fits.join("fit03.ply");
+    let (ok, projected, err) = run(&[
+        "project",
+        "--model",
+        model.to_str().unwrap(),
+        "--mesh",
+        fit.to_str().unwrap(),
+    ]);
+    assert!(ok, "{err}");
+    // All modes kept: the fit is reproduced to f32 precision (metres).
+    assert!(
+        projected["residual_m"].as_f64().unwrap() < 1e-4,
+        "{projected}"
+    );
+    let coefficients = dir.join("c.json");
+    std::fs::write(&coefficients, projected.to_string()).unwrap();
+
+    let body = dir.join("body.ply");
+    let (ok, rebuilt, err) = run(&[
+        "reconstruct",
+        "--model",
+        model.to_str().unwrap(),
+        "--coefficients",
+        coefficients.to_str().unwrap(),
+        "--out",
+        body.to_str().unwrap(),
+    ]);
+    assert!(ok, "{err}");
+    // Every segment carries the same body's coefficients: the seams close.
+    assert!(
+        rebuilt["seam"]["max_jump"].as_f64().unwrap() < 1e-4,
+        "{rebuilt}"
+    );
+    let stature = rebuilt["measurements"]["stature"].as_f64().unwrap();
+    assert!(stature > 1.0 && stature < 2.5, "stature {stature}");
+    // The template (≈1.67 m) measures ≈0.79 m chest, 0.68 m waist, 0.98 m hip (convex hull);
+    // the fits are scaled by a few per cent.
+    for (girth, low, high) in [("chest", 0.6, 1.0), ("waist", 0.5, 0.9), ("hip", 0.8, 1.2)] {
+        let g = rebuilt["measurements"][girth]["girth"]
+            .as_f64()
+            .unwrap_or(0.0);
+        assert!(g > low && g < high, "{girth} girth {g}");
+    }
+    assert!(body.metadata().unwrap().len() > 100_000);
+
+    let (ok, sigma, err) = run(&[
+        "reconstruct",
+        "--model",
+        model.to_str().unwrap(),
+        "--coefficients",
+        "2",
+        "--segment",
+        "torso=-1",
+        "--sigma",
+        "--out",
+        body.to_str().unwrap(),
+    ]);
+    assert!(ok, "{err}");
+    assert!(sigma["seam"]["max_jump"].as_f64().unwrap() > 1e-3);
+
+    // Damaged inputs: one line on stderr, exit status 2.
+    let bad = dir.join("bad.bsm");
+    std::fs::write(&bad, b"BSPCAMDL\x07\0\0\0").unwrap();
+    let (ok, _, err) = run(&[
+        "project",
+        "--model",
+        bad.to_str().unwrap(),
+        "--mesh",
+        fit.to_str().unwrap(),
+    ]);
+    assert!(!ok && err.contains("version 7"), "{err}");
+    let (ok, _, err) = run(&[
+        "reconstruct",
+        "--model",
+        model.to_str().unwrap(),
+        "--coefficients",
+        "1,x",
+        "--out",
+        body.to_str().unwrap(),
+    ]);
+    assert!(!ok && err.contains("not a number"), "{err}");
+    std::fs::remove_dir_all(&dir).ok();
+}
