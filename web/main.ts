@@ -2,6 +2,7 @@
 import './style.css';
 import { Session } from './app/session';
 import { readFiles } from './app/read-files';
+import { ShapeSpace } from './app/shape-space';
 import { CoreClient } from './client/core-client';
 import { METRES_PER_UNIT, type Units } from './shared/results';
 import { acceptDrops } from './ui/drop-overlay';
@@ -24,6 +25,9 @@ const body = document.body;
 let lastReadMs = 0;
 let loads = 0;
 
+const shapeSpace = new ShapeSpace(client, viewer, banner);
+void shapeSpace.start(location.hash);
+
 acceptDrops((files) => void open(files));
 
 Promise.all([client.call({ type: 'version' }), client.call({ type: 'caesarNames' })])
@@ -39,7 +43,11 @@ Promise.all([client.call({ type: 'version' }), client.call({ type: 'caesarNames'
   });
 
 /** Reads `files` and shows whatever was read; failures leave what was shown before in place. */
-async function open(files: File[]): Promise<void> {
+async function open(all: File[]): Promise<void> {
+  const models = all.filter((f) => ShapeSpace.isModelFile(f.name));
+  if (models.length) await shapeSpace.openModelFiles(models);
+  const files = all.filter((f) => !ShapeSpace.isModelFile(f.name));
+  if (files.length === 0) return;
   body.dataset.busy = 'true';
   const outcome = await readFiles(client, files, (text) => topBar.setStatus(text));
   const scan = outcome.scans.at(-1);
@@ -84,7 +92,7 @@ function refresh(frame: boolean): void {
     },
     frame,
   );
-  emptyHint.hidden = Boolean(scan || set);
+  emptyHint.hidden = Boolean(scan || set) || body.dataset.shapeReady === 'true';
   const summary = session.scanSummary;
   scanPanel.render(
     scan && summary ? { fileName: scan.fileName, summary, units: session.scanUnits, readMs: lastReadMs } : null,

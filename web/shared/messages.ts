@@ -1,5 +1,6 @@
 // Messages between the UI thread and the core worker. No DOM here: shared by both threads.
 import type { ParsedLandmarks, ParsedScan } from './results';
+import type { LoadedModel, ModelCsv, ReconstructedBody, ShapeCoefficients } from './shape-results';
 
 /** Every request the worker understands, without its `id` (the client adds it). */
 export type CoreRequestBody =
@@ -7,7 +8,15 @@ export type CoreRequestBody =
   | { type: 'caesarNames' }
   /** `bytes` is transferred, not copied: the sender's buffer is detached afterwards. */
   | { type: 'parseScan'; bytes: ArrayBuffer; fileName: string }
-  | { type: 'parseLandmarks'; bytes: ArrayBuffer; fileName: string };
+  | { type: 'parseLandmarks'; bytes: ArrayBuffer; fileName: string }
+  /** Shape models: the worker keeps one; a failed load or build leaves the previous one. */
+  | { type: 'loadModel'; bytes: ArrayBuffer; fileName: string }
+  /** `positions`: the subjects' bodies concatenated (template order, metres). */
+  | { type: 'buildModel'; positions: Float32Array; names: string[]; variance: number }
+  | { type: 'reconstruct'; coefficients: ShapeCoefficients }
+  | { type: 'modelCsv'; kind: ModelCsv }
+  | { type: 'modelGlb'; modes: number }
+  | { type: 'modelFile' };
 
 /** A request to the worker; `id` pairs it with its replies. */
 export type CoreRequest = CoreRequestBody & { id: number };
@@ -18,6 +27,12 @@ export interface CoreResults {
   caesarNames: string[];
   parseScan: ParsedScan;
   parseLandmarks: ParsedLandmarks;
+  loadModel: LoadedModel;
+  buildModel: LoadedModel;
+  reconstruct: ReconstructedBody;
+  modelCsv: string;
+  modelGlb: Uint8Array;
+  modelFile: Uint8Array;
 }
 
 /** The result type of a request body. */
