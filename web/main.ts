@@ -60,7 +60,11 @@ async function open(all: File[]): Promise<void> {
   }
   const landmarks = outcome.landmarks.at(-1);
   if (landmarks) session.setLandmarks(landmarks);
-  if (scan || landmarks) refresh(Boolean(scan) || !session.scan);
+  if (scan || landmarks) {
+    // The scan and the shape body would stand in the same place: the scan takes the view.
+    shapeSpace.hide();
+    refresh(Boolean(scan) || !session.scan);
+  }
 
   if (outcome.errors.length > 0) banner.show(outcome.errors);
   else if (scan || landmarks) banner.dismiss();
@@ -92,7 +96,7 @@ function refresh(frame: boolean): void {
     },
     frame,
   );
-  emptyHint.hidden = Boolean(scan || set) || body.dataset.shapeReady === 'true';
+  emptyHint.hidden = Boolean(scan || set) || body.dataset.shapeShown === 'true';
   const summary = session.scanSummary;
   scanPanel.render(
     scan && summary ? { fileName: scan.fileName, summary, units: session.scanUnits, readMs: lastReadMs } : null,

@@ -29,14 +29,15 @@ export class MorphQueue {
       const next = this.latest;
       this.latest = null;
       this.inFlight = true;
+      let body: ReconstructedBody | null = null;
       try {
-        const body = await this.client.call({ type: 'reconstruct', coefficients: next });
-        this.onBody(body, next);
+        body = await this.client.call({ type: 'reconstruct', coefficients: next });
       } catch (error) {
         this.onError(error instanceof Error ? error.message : String(error));
-      } finally {
-        this.inFlight = false;
       }
+      // Not in flight any more while the body is shown, so `idle` tells whether it is the last.
+      this.inFlight = false;
+      if (body) this.onBody(body, next);
     }
   }
 }

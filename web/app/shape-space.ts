@@ -26,6 +26,8 @@ export class ShapeSpace {
   private readonly morph: MorphQueue;
   private readonly page = document.body;
   private bodies = 0;
+  /** Set while a scan is being looked at: the shape body stays out of the view until asked for. */
+  private suppressed = false;
 
   constructor(
     private readonly client: CoreClient,
@@ -68,12 +70,20 @@ export class ShapeSpace {
     else this.redraw(true);
   }
 
+  /** Takes the shape body out of the view (a scan was opened); any shape action brings it back. */
+  hide(): void {
+    this.suppressed = true;
+    this.viewer.removeBody('shape');
+    this.page.dataset.shapeShown = 'false';
+  }
+
   /** Whether `name` is a model file for this panel (dropped with other files). */
   static isModelFile(name: string): boolean {
     return /\.bsm$/i.test(name);
   }
 
   async openModelFiles(files: File[]): Promise<void> {
+    this.suppressed = false;
     const file = files.at(-1);
     if (!file) return;
     const bytes = await file.arrayBuffer();
@@ -132,6 +142,7 @@ export class ShapeSpace {
   }
 
   private setValue(part: PartName, k: number, t: number): void {
+    this.suppressed = false;
     const value = quantiseSigma(t);
     if (part === 'whole') this.coefficients.whole[k] = value;
     else {
@@ -147,17 +158,20 @@ export class ShapeSpace {
   }
 
   private setView(part: PartName): void {
+    this.suppressed = false;
     this.panel.showView(part, this.coefficients);
     this.page.dataset.shapeView = part;
   }
 
   private followWhole(part: SegmentName): void {
+    this.suppressed = false;
     this.coefficients.segments[SEGMENTS.indexOf(part)] = null;
     this.panel.showView(part, this.coefficients);
     this.redraw(false);
   }
 
   private reset(): void {
+    this.suppressed = false;
     if (!this.model) return;
     this.coefficients = { whole: this.coefficients.whole.map(() => 0), segments: SEGMENTS.map(() => null) };
     this.panel.showView(this.panel.currentView, this.coefficients);
@@ -166,6 +180,7 @@ export class ShapeSpace {
 
   /** b ~ N(0, σ²): standard normal σ values (Box–Muller), clipped to the sliders' ±3σ. */
   private random(): void {
+    this.suppressed = false;
     if (!this.model) return;
     const normal = () => Math.sqrt(-2 * Math.log(1 - Math.random())) * Math.cos(2 * Math.PI * Math.random());
     const draw = (n: number) => Array.from({ length: n }, () => quantiseSigma(Math.max(-3, Math.min(3, normal()))));
@@ -189,8 +204,9 @@ export class ShapeSpace {
   private show(body: ReconstructedBody): void {
     if (!this.model) return;
     this.body = body;
-    this.viewer.showBody('shape', { mesh: { positions: body.positions, triangles: this.model.triangles, normals: body.normals }, colour: 0xc8b4a0 }, this.frameNext);
-    this.frameNext = false;
+    if (!this.suppressed) this.viewer.showBody('shape', { mesh: { positions: body.positions, triangles: this.model.triangles, normals: body.normals }, colour: 0xc8b4a0 }, this.frameNext);
+    if (!this.suppressed) this.frameNext = false;
+    this.page.dataset.shapeShown = String(!this.suppressed);
     this.panel.showBody(body, body.positions.length / 3);
     const p = this.page.dataset;
     p.shapeChecksum = positionsChecksum(body.positions);
@@ -199,7 +215,7 @@ export class ShapeSpace {
     p.shapeBodies = String(++this.bodies);
     p.shapeReady = 'true';
     const hint = document.getElementById('empty-hint');
-    if (hint) hint.hidden = true;
+    if (hint && !this.suppressed) hint.hidden = true;
     if (this.morph.idle) p.shapeSettled = 'true';
     this.updateLink();
   }
