@@ -98,3 +98,20 @@ test('a link with bad parameters opens the default state and says what was ignor
   await expect(page.getByTestId('shape-model-name')).toHaveText('models/demo.bsm');
   await expect(page.locator('body')).toHaveAttribute('data-shape-checksum', mean!);
 });
+
+test('fitted meshes dropped in template order build a model in the app; its bodies have no link', async ({ page }) => {
+  await page.goto('/');
+  await ready(page);
+  await page.getByTestId('fits-input').setInputFiles(['public/samples/truth_001.ply.gz', 'public/samples/truth_002.ply.gz']);
+  await expect(page.getByTestId('shape-subjects')).toContainText('2 subjects in this session (0 aligned, 2 dropped');
+  await page.getByTestId('build-variance').fill('100');
+  const bodies = Number(await page.locator('body').getAttribute('data-shape-bodies'));
+  await page.getByTestId('build-model').click();
+  await expect(page.getByTestId('shape-model-name')).toHaveText('model of 2 subjects');
+  await expect(page.locator('body')).not.toHaveAttribute('data-shape-bodies', String(bodies));
+  await ready(page);
+  // Two subjects span one mode.
+  await expect(page.locator('body')).toHaveAttribute('data-shape-modes', '1');
+  await expect(page.getByTestId('shape-link')).toHaveValue('');
+  await expect(page.getByTestId('shape-link-note')).toContainText('has no address');
+});

@@ -45,6 +45,7 @@ export class ShapeSpace {
       onExportBody: (format) => void this.exportBody(format),
       onExportMode: (mode, steps) => void this.exportMode(mode, steps),
       onExportModelGltf: () => void this.exportModelGltf(),
+      onSaveModel: () => void this.saveModel(),
       onCopyLink: () => void this.copyLink(),
       onBuild: (variance) => void this.build(variance),
       onAddFits: (files) => void this.addFits(files),
@@ -280,6 +281,12 @@ export class ShapeSpace {
     download('shape-model.glb', glb, 'model/gltf-binary');
   }
 
+  private async saveModel(): Promise<void> {
+    if (!this.model) return;
+    const bytes = await this.client.call({ type: 'modelFile' });
+    download('shape-model.bsm', bytes);
+  }
+
   private async addFits(files: File[]): Promise<void> {
     const model = this.model;
     const vertexCount = model?.info.template.vertex_count ?? 13380;
@@ -290,8 +297,8 @@ export class ShapeSpace {
 
   private async build(variance: number): Promise<void> {
     const all = subjects.all;
-    if (all.length < 3) {
-      this.panel.showBuildStatus('A model needs at least 3 aligned subjects; add fitted meshes or align scans first.');
+    if (all.length < 2) {
+      this.panel.showBuildStatus('A model needs at least 2 aligned subjects; add fitted meshes or align scans first.');
       return;
     }
     const v = all[0]!.positions.length;

@@ -17,6 +17,7 @@ export interface ShapeActions {
   onExportBody(format: 'ply' | 'obj' | 'glb'): void;
   onExportMode(mode: number, steps: number[]): void;
   onExportModelGltf(): void;
+  onSaveModel(): void;
   onCopyLink(): void;
   onBuild(variance: number): void;
   onAddFits(files: File[]): void;
@@ -105,7 +106,7 @@ export class ShapePanel {
       h('div', { class: 'row' }, button('Copy link', 'copy-link', () => this.actions.onCopyLink()), this.linkField),
       this.linkNote,
       h('h2', {}, 'Models'),
-      h('div', { class: 'row' }, button('Open model…', 'open-model', () => modelInput.click()), modelInput),
+      h('div', { class: 'row' }, button('Open model…', 'open-model', () => modelInput.click()), button('Save model file', 'save-model', () => this.actions.onSaveModel()), modelInput),
       this.subjectsNote,
       h('div', { class: 'row' }, button('Add fitted meshes…', 'add-fits', () => fits.click()), fits),
       h('div', { class: 'row' }, h('label', {}, 'Keep ', variance, ' % variance'), button('Build model', 'build-model', () => this.actions.onBuild(Number(variance.value) / 100))),
