@@ -115,3 +115,31 @@ test('fitted meshes dropped in template order build a model in the app; its bodi
   await expect(page.getByTestId('shape-link')).toHaveValue('');
   await expect(page.getByTestId('shape-link-note')).toContainText('has no address');
 });
+
+test('exports: body PLY/OBJ/glTF, bodies along a mode, the model with morph targets, CSVs', async ({ page }) => {
+  await page.goto('/');
+  await ready(page);
+  const save = async (testid: string) => {
+    const [download] = await Promise.all([page.waitForEvent('download'), page.getByTestId(testid).click()]);
+    const path = await download.path();
+    return { name: download.suggestedFilename(), bytes: readFileSync(path!) };
+  };
+  const ply = await save('export-ply');
+  expect(ply.name).toBe('body.ply');
+  expect(ply.bytes.toString('latin1', 0, 300)).toContain('element vertex 13380');
+  const obj = await save('export-obj');
+  expect(obj.bytes.toString('utf8').split('\n').filter((l) => l.startsWith('v ')).length).toBe(13380);
+  const glb = await save('export-glb');
+  expect(glb.bytes.toString('latin1', 0, 4)).toBe('glTF');
+  const along = await save('export-along');
+  expect(along.name).toBe('mode1.glb');
+  const json = along.bytes.toString('utf8', 20, 20 + along.bytes.readUInt32LE(12));
+  expect((JSON.parse(json) as { meshes: unknown[] }).meshes.length).toBe(5);
+  const model = await save('export-model-gltf');
+  const modelJson = JSON.parse(model.bytes.toString('utf8', 20, 20 + model.bytes.readUInt32LE(12))) as {
+    meshes: { primitives: { targets?: unknown[] }[] }[];
+  };
+  expect(modelJson.meshes[0]!.primitives[0]!.targets!.length).toBe(9);
+  const csv = await save('csv-eigenvalues');
+  expect(csv.bytes.toString('utf8').split('\n')[0]).toBe('model,mode,eigenvalue,sd,explained,cumulative,kept');
+});
