@@ -11,32 +11,9 @@ use crate::template::{Resolution, Template};
 use nalgebra::Point3;
 use std::path::Path;
 
-/// Identity of a template at its resolution: CRC-32 of its positions (f64 LE), triangles and
-/// segment weights, so a model refuses a template whose geometry or segments changed.
+/// Identity of a template at its resolution ([`TemplateIdentity::of_template`]).
 pub fn template_identity(template: &Template) -> TemplateIdentity {
-    let mesh = template.mesh();
-    let mut crc = flate2::Crc::new();
-    for p in &mesh.positions {
-        for c in [p.x, p.y, p.z] {
-            crc.update(&c.to_le_bytes());
-        }
-    }
-    for t in &mesh.triangles {
-        for i in t {
-            crc.update(&i.to_le_bytes());
-        }
-    }
-    for v in 0..mesh.vertex_count() as u32 {
-        for w in template.segment_weights(v) {
-            crc.update(&w.to_le_bytes());
-        }
-    }
-    TemplateIdentity {
-        name: "bodyspace-makehuman".into(),
-        hash: format!("{:08x}", crc.sum()),
-        resolution: template.resolution().name().into(),
-        vertex_count: mesh.vertex_count(),
-    }
+    TemplateIdentity::of_template(template)
 }
 
 /// The embedded template at the resolution whose vertex count is `vertex_count`.

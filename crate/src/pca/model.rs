@@ -21,6 +21,38 @@ pub struct TemplateIdentity {
     pub vertex_count: usize,
 }
 
+impl TemplateIdentity {
+    /// The identity of `template` at its resolution: name `bodyspace-makehuman`, hash = CRC-32
+    /// (hex) of its positions (f64 LE), triangles (u32 LE) and segment weights (f32 LE), so a
+    /// model refuses a template whose geometry or segments changed. The web side must use this
+    /// same function to check models against the embedded template.
+    pub fn of_template(template: &crate::template::Template) -> Self {
+        let mesh = template.mesh();
+        let mut crc = flate2::Crc::new();
+        for p in &mesh.positions {
+            for c in [p.x, p.y, p.z] {
+                crc.update(&c.to_le_bytes());
+            }
+        }
+        for t in &mesh.triangles {
+            for i in t {
+                crc.update(&i.to_le_bytes());
+            }
+        }
+        for v in 0..mesh.vertex_count() as u32 {
+            for w in template.segment_weights(v) {
+                crc.update(&w.to_le_bytes());
+            }
+        }
+        Self {
+            name: "bodyspace-makehuman".into(),
+            hash: format!("{:08x}", crc.sum()),
+            resolution: template.resolution().name().into(),
+            vertex_count: mesh.vertex_count(),
+        }
+    }
+}
+
 impl std::fmt::Display for TemplateIdentity {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         write!(
