@@ -23,35 +23,6 @@ fn js(e: impl std::fmt::Display) -> JsError {
     JsError::new(&e.to_string())
 }
 
-/// Identity of the embedded template at one resolution: CRC-32 of positions (f64 LE), triangles
-/// and segment weights. The same definition as `cli::model::template_identity`, which is
-/// native-only (the CLI module needs clap), so the bindings hold their own copy.
-fn template_identity(template: &Template) -> TemplateIdentity {
-    let mesh = template.mesh();
-    let mut crc = flate2::Crc::new();
-    for p in &mesh.positions {
-        for c in [p.x, p.y, p.z] {
-            crc.update(&c.to_le_bytes());
-        }
-    }
-    for t in &mesh.triangles {
-        for i in t {
-            crc.update(&i.to_le_bytes());
-        }
-    }
-    for v in 0..mesh.vertex_count() as u32 {
-        for w in template.segment_weights(v) {
-            crc.update(&w.to_le_bytes());
-        }
-    }
-    TemplateIdentity {
-        name: "bodyspace-makehuman".into(),
-        hash: format!("{:08x}", crc.sum()),
-        resolution: template.resolution().name().into(),
-        vertex_count: mesh.vertex_count(),
-    }
-}
-
 fn template_at(resolution: Resolution) -> Result<Template, JsError> {
     let base = Template::embedded().map_err(|e| js(format!("embedded template: {e}")))?;
     Ok(if resolution == Resolution::Base {
@@ -277,7 +248,8 @@ pub fn load_shape_model(bytes: &[u8], file_name: &str) -> Result<ShapeSpace, JsE
     let resolution: Resolution = header.template.resolution.parse().map_err(|e| named(&e))?;
     drop(header);
     let template = template_at(resolution)?;
-    let model = read_model_for(bytes, &template_identity(&template)).map_err(|e| named(&e))?;
+    let model =
+        read_model_for(bytes, &TemplateIdentity::of_template(&template)).map_err(|e| named(&e))?;
     ShapeSpace::new(model, &template)
 }
 
@@ -330,7 +302,7 @@ pub fn build_shape_model(
         })
         .collect();
     let set = TrainingSet {
-        template: template_identity(&template),
+        template: TemplateIdentity::of_template(&template),
         triangles: template.mesh().triangles.clone(),
         segment_weights: (0..vertex_count as u32)
             .map(|v| template.segment_weights(v))
