@@ -10,6 +10,11 @@ async function ready(page: Page): Promise<void> {
   await expect(page.locator('body')).toHaveAttribute('data-shape-settled', 'true');
 }
 
+/** The `c=` (camera) part of a link. */
+function camera(url: string): string | undefined {
+  return new URL(url).hash.split('&').find((p) => p.startsWith('c='));
+}
+
 async function readings(page: Page): Promise<string[]> {
   return Promise.all(READINGS.map((id) => page.getByTestId(id).innerText()));
 }
@@ -47,10 +52,19 @@ test('a slider changes the stature; the copied link shows the same body in a new
   await expect(page.getByTestId('shape-segment-state')).toContainText('has its own shape');
   await expect(page.getByTestId('seam-jump')).toHaveText(/mm/);
 
+  // Turn the camera, so the link carries a camera that framing alone would not give.
+  const box = (await page.getByTestId('viewport-canvas').boundingBox())!;
+  await page.mouse.move(box.x + box.width / 2, box.y + box.height / 2);
+  await page.mouse.down();
+  await page.mouse.move(box.x + box.width / 2 + 120, box.y + box.height / 2 + 30, { steps: 5 });
+  await page.mouse.up();
+  const framed = camera(await page.getByTestId('shape-link').inputValue());
+
   await page.getByTestId('copy-link').click();
   const link = await page.getByTestId('shape-link').inputValue();
   expect(link).toContain('#m=models%2Fdemo.bsm');
   expect(link).toContain('s=torso.');
+  expect(camera(link)).not.toBe(framed);
   const checksum = await page.locator('body').getAttribute('data-shape-checksum');
   const values = await readings(page);
 
@@ -62,6 +76,8 @@ test('a slider changes the stature; the copied link shows the same body in a new
   expect(await readings(other)).toEqual(values);
   await expect(other.getByTestId('shape-segment')).toHaveValue('torso');
   await expect(other.getByTestId('shape-slider-1')).toHaveValue('-1.7');
+  // The camera came with the link: the link the new page offers has the same camera part.
+  expect(camera(await other.getByTestId('shape-link').inputValue())).toBe(camera(link));
 });
 
 test('a corrupted model file gives the documented message and the demo model keeps working', async ({ page }) => {

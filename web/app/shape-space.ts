@@ -137,6 +137,8 @@ export class ShapeSpace {
       segments: link.coefficients.segments.map((s, i) => (s ? fit(s, parts[i + 1]!.variances.length) : null)),
     };
     this.panel.showView(link.view, this.coefficients);
+    // The load asked to frame the camera; a link's own camera wins over that.
+    this.frameNext = !link.camera;
     this.redraw(!link.camera);
     if (link.camera) this.viewer.setCameraPose(link.camera);
     this.page.dataset.linkRestored = 'true';
