@@ -37,6 +37,10 @@ test('the demo model opens at its mean with readings', async ({ page }) => {
   expect(stature).toBeLessThan(2.0);
   for (const text of await readings(page)) expect(text).toMatch(/^\d+\.\d cm$/);
   await expect(page.getByTestId('chart-compactness')).toBeVisible();
+  // The paper's coefficient scale and the explained variance on hover.
+  const row = page.getByTestId('shape-slider-0').locator('..');
+  await expect(row).toHaveAttribute('title', /b = t·√λ = 0\.0000 \(√λ = \d+\.\d{4} m\); explains \d+\.\d\d % of the variance/);
+  await expect(page.getByTestId('shape-explained-0')).toHaveText(/^\d+\.\d%$/);
 });
 
 test('a slider changes the stature; the copied link shows the same body in a new page', async ({ page, context }) => {
