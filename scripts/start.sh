@@ -8,5 +8,6 @@ if [ ! -f dist/index.html ] || [ -n "$(find web public vite.config.ts -newer dis
   npx vite build --logLevel warn
 fi
 echo
-echo "BodySpace is being served at http://127.0.0.1:4173/  (Ctrl+C stops it)"
-exec npx vite preview --host 127.0.0.1 --port 4173 --strictPort
+echo "Serving BodySpace; open the Local URL below (Ctrl+C stops it)."
+# Vite takes the next free port when 4173 is busy and prints the URL it serves.
+exec npx vite preview --host 127.0.0.1 --port 4173

@@ -256,28 +256,36 @@ fn broken_files_are_rejected() {
 fn virtual_landmarks_sit_where_their_rules_say() {
     let t = base();
     let v = t.virtual_landmark_vertices().unwrap();
-    let names: Vec<&str> = v.iter().map(|(n, _)| n.as_str()).collect();
-    assert_eq!(names, bodyspace::template::VIRTUAL_LANDMARKS);
-    let p = |name: &str| t.mesh().positions[v.iter().find(|(n, _)| n == name).unwrap().1 as usize];
+    assert_eq!(v.len(), bodyspace::landmarks::VIRTUAL_LANDMARK_COUNT);
+    let p = |name: &str| {
+        let (_, vertex) = v
+            .iter()
+            .find(|(n, _)| n == name)
+            .unwrap_or_else(|| panic!("no virtual landmark {name}"));
+        t.mesh().positions[*vertex as usize]
+    };
     let stature = t
         .mesh()
         .positions
         .iter()
         .map(|p| p.y)
         .fold(f64::MIN, f64::max);
-    assert!(stature - p("Virtual Head Top").y < 0.005);
-    for side in ["Lt.", "Rt."] {
-        assert!(p(&format!("{side} Virtual Sole")).y < 0.01);
-        let sign = if side == "Lt." { 1.0 } else { -1.0 };
-        for limb in ["Upper Arm", "Forearm", "Thigh", "Shank", "Sole"] {
-            assert!(
-                p(&format!("{side} Virtual {limb}")).x * sign > 0.05,
-                "{side} {limb}"
-            );
+    assert!(stature - p("virtual: top of head").y < 0.01);
+    for (side, sign) in [("left", 1.0), ("right", -1.0)] {
+        assert!(p(&format!("virtual: sole, {side}")).y < 0.02);
+        for limb in [
+            "mid upper arm",
+            "mid forearm",
+            "mid-thigh",
+            "mid-shank",
+            "sole",
+        ] {
+            let x = p(&format!("virtual: {limb}, {side}")).x;
+            assert!(x * sign > 0.05, "{limb}, {side} at x = {x}");
         }
     }
-    let belly = p("Virtual Belly");
-    assert!(belly.x.abs() < 0.03 && belly.z > 0.05, "belly at {belly}");
+    let seat = p("virtual: buttocks");
+    assert!(seat.x.abs() < 0.03 && seat.z < -0.03, "buttocks at {seat}");
     // The same rules run on the fine template give the same points (base vertices come first
     // and new vertices lie between them).
     let f = t.at_resolution(Resolution::Fine);

@@ -1,1 +1,24 @@
 //! Fine alignment (paper §3.2): per-vertex affine transforms minimising E = a·E_d + b·E_s.
+//!
+//! * [`ScanIndex`] (`scan_index.rs`) — closest points on the scan, built once per scan.
+//! * [`surface`] — normals, edges, one-rings, boundary flags, closest point on a triangle.
+//! * [`energy`] — E_d, E_s (paper eq. 6–8) and their analytic gradient.
+//! * [`lbfgs`] — allocation-free L-BFGS with exact line search on the quadratic inner problem.
+//! * [`fine_align()`] (`fine_align.rs`) — the outer loop: find correspondences, minimise, repeat.
+//! * [`report`] — the paper's Table 1 statistics, per-vertex distances, time-to-RMS curve.
+//! * [`FineAlignParams`] (`params.rs`), [`AlignError`] (`error.rs`).
+
+pub mod energy;
+pub mod error;
+pub mod fine_align;
+pub mod lbfgs;
+pub mod params;
+pub mod report;
+pub mod scan_index;
+pub mod surface;
+
+pub use error::AlignError;
+pub use fine_align::{fine_align, FineAlignResult, Progress};
+pub use params::{CorrespondenceMode, FineAlignParams};
+pub use report::{AlignReport, CurvePoint, DistanceStats};
+pub use scan_index::{Match, MatchQuery, ScanIndex};

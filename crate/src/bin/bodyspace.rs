@@ -28,6 +28,9 @@ mod native {
 
     #[derive(Subcommand)]
     enum Command {
+        /// Align the template onto a scan: `--rough-only` runs the RBF warp (paper §3.1) and
+        /// writes the warped template (template vertex order, scan frame) plus a JSON report.
+        Align(bodyspace::cli::align::AlignArgs),
         /// Print vertex/triangle counts, bounding box, units, holes, components (and landmarks) as JSON.
         Info(bodyspace::cli::info::InfoArgs),
         /// The generic template: export it (`--resolution base|fine --export DIR`) or rebuild it
@@ -47,6 +50,7 @@ mod native {
     pub fn main() {
         let cli = Cli::parse();
         let result = match cli.command {
+            Command::Align(args) => bodyspace::cli::align::run(&args),
             Command::Info(args) => bodyspace::cli::info::run(&args),
             Command::Template(args) => bodyspace::cli::template::run(&args),
             Command::Synth(args) => bodyspace::cli::synth::run(&args),

@@ -90,6 +90,23 @@ pub fn run(args: &BuildModelArgs) -> Result<(), String> {
     let template = template_for_vertex_count(shapes[0].len())
         .map_err(|e| format!("{}: {e}", files[0].display()))?;
     let mesh = template.mesh();
+    // Fits come in their scans' frames (CAESAR: z up, any origin). A rigid fit of each onto the
+    // template puts the model in the template's frame (y up, facing +z), so the mean body
+    // stands upright in the app; GPA then removes the remaining pose differences.
+    for (shape, file) in shapes.iter_mut().zip(&files) {
+        if shape.len() != mesh.vertex_count() {
+            return Err(format!(
+                "{}: {} vertices, but the template has {} (fits must be in template vertex order)",
+                file.display(),
+                shape.len(),
+                mesh.vertex_count()
+            ));
+        }
+        let pose = crate::pca::procrustes_gpa::rigid_align(shape, &mesh.positions, false);
+        for p in shape.iter_mut() {
+            *p = pose.apply(p);
+        }
+    }
     let set = TrainingSet {
         template: template_identity(&template),
         triangles: mesh.triangles.clone(),

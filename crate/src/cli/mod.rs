@@ -1,5 +1,7 @@
 //! The native `bodyspace` command-line program: one module per subcommand.
 
+pub mod align;
+pub mod align_fine;
 pub mod build_model;
 pub mod info;
 pub mod model;

@@ -87,7 +87,18 @@ pub fn write_ply(path: &Path, positions: &[f32], triangles: &[[u32; 3]]) -> Resu
 }
 
 /// Reads a fit: any scan format `crate::io::read_scan` reads (PLY, OBJ, STL, gzip).
+/// Reads a fitted mesh (template vertex order) and returns it in metres: fits are written in
+/// their scan's units, which are millimetres for CAESAR-like data.
 pub fn read_fit(path: &Path) -> Result<Mesh, String> {
     let bytes = std::fs::read(path).map_err(|e| format!("{}: {e}", path.display()))?;
-    crate::io::read_scan(&bytes, &path.display().to_string()).map_err(|e| e.to_string())
+    let mesh =
+        crate::io::read_scan(&bytes, &path.display().to_string()).map_err(|e| e.to_string())?;
+    let extent =
+        crate::mesh::summary::bounding_box(&mesh.positions).map_or(0.0, |(lo, hi)| (hi - lo).max());
+    let scale = crate::mesh::units::detect_units(extent).scale_to_metres();
+    Ok(if scale == 1.0 {
+        mesh
+    } else {
+        mesh.scaled(scale)
+    })
 }

@@ -4,8 +4,13 @@ pub mod caesar;
 pub mod names;
 pub mod report;
 pub mod set;
+pub mod virtual_landmarks;
 
 pub use caesar::{CaesarLandmark, CAESAR_LANDMARKS, CAESAR_LANDMARK_COUNT};
 pub use names::canonical_name;
 pub use report::{report, LandmarkReport};
 pub use set::{Landmark, LandmarkSet};
+pub use virtual_landmarks::{
+    virtual_landmarks, virtual_landmarks_detailed, VirtualLandmark, VIRTUAL_LANDMARK_COUNT,
+    VIRTUAL_PREFIX,
+};

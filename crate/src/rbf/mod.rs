@@ -1,1 +1,34 @@
-//! RBF rough deformation (paper §3.1): landmark pairs fit one RBF network per coordinate, which warps the template.
+//! RBF rough deformation (paper §3.1): landmark pairs fit one RBF network per coordinate, which
+//! warps the template onto the scan.
+//!
+//! * [`kernel`] — Φ: thin-plate, multiquadric, Gaussian (eq. 3–5).
+//! * [`fit`] — the network f(p_i) = q_i (eq. 1–2) with optional affine term, LU solve,
+//!   conditioning checks.
+//! * [`evaluate`] — the warp loop: the network at every template vertex, vectorised.
+//! * [`checks`] — input checks naming the offending landmarks; [`fast_math`] — exp/ln for the loop.
+//! * [`procrustes`] — similarity pre-alignment so the scan's frame and units do not matter.
+//! * [`virtual_landmarks`] — the 12 automatically made landmarks (n = 73 + 12 = 85).
+//! * [`warp`] — `rbf_warp`: Procrustes, fit, warp every template vertex.
+//! * [`params`], [`error`] — the params struct with its documented defaults, the error enum.
+
+pub mod checks;
+pub mod error;
+pub mod evaluate;
+pub mod fast_math;
+pub mod fit;
+pub mod kernel;
+pub mod params;
+pub mod procrustes;
+pub mod warp;
+
+pub use error::RbfError;
+pub use fit::{fit, RbfNetwork};
+pub use kernel::Kernel;
+pub use params::RbfParams;
+pub use procrustes::{similarity, Similarity};
+// The virtual landmarks live with the other landmarks; re-exported here, where the RBF uses them.
+pub use crate::landmarks::virtual_landmarks;
+pub use crate::landmarks::virtual_landmarks::{
+    virtual_landmarks_detailed, VirtualLandmark, VIRTUAL_LANDMARK_COUNT,
+};
+pub use warp::{rbf_warp, rbf_warp_mesh, LandmarkResidual, RbfWarp};

@@ -7,7 +7,6 @@
 //! * [`makehuman`]: reader of the MakeHuman base mesh (CC0 data) into the template frame.
 //! * [`frame`]: the template frame transform (metres, y up, feet on y = 0, facing +z).
 //! * [`build`]: the tool that made the stored template (landmark rules, segments, flags).
-//! * [`virtual_landmarks`]: the 12 virtual landmarks made from the 73 and the surface.
 //! * [`topology`]: edges, neighbours, normals, signed volume, edge distance.
 //! * [`segment`]: the six segments; [`error`]: the error enum `TemplateError`.
 
@@ -22,7 +21,6 @@ pub mod segment;
 pub mod store;
 pub mod subdivide;
 pub mod topology;
-pub mod virtual_landmarks;
 
 pub use error::TemplateError;
 pub use flags::RegionFlags;
@@ -32,4 +30,3 @@ pub use model::Template;
 pub use resolution::Resolution;
 pub use segment::Segment;
 pub use subdivide::Subdivision;
-pub use virtual_landmarks::{virtual_landmarks, VIRTUAL_LANDMARKS};

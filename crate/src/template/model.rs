@@ -2,6 +2,7 @@
 
 use crate::landmarks::{Landmark, LandmarkSet};
 use crate::mesh::Mesh;
+use nalgebra::Point3;
 
 use super::error::TemplateError;
 use super::flags::RegionFlags;
@@ -172,10 +173,22 @@ impl Template {
         }
     }
 
-    /// The 12 virtual landmarks (name, vertex) made by the rules of
-    /// [`super::virtual_landmarks`] on this template's surface.
+    /// The 12 virtual landmarks (name, vertex), made by the rules of
+    /// [`crate::landmarks::virtual_landmarks`] on this template's surface (the same rules run on
+    /// every scan), each taken to the template vertex nearest the point the rule gives.
     pub fn virtual_landmark_vertices(&self) -> Result<Vec<(String, u32)>, TemplateError> {
-        super::virtual_landmarks::virtual_landmark_vertices(&self.landmark_positions(), &self.mesh)
+        let made = crate::landmarks::virtual_landmarks(&self.landmark_positions(), &self.mesh);
+        if made.len() != crate::landmarks::VIRTUAL_LANDMARK_COUNT {
+            return Err(TemplateError::Format(format!(
+                "the template's landmarks make {} of the {} virtual landmarks",
+                made.len(),
+                crate::landmarks::VIRTUAL_LANDMARK_COUNT
+            )));
+        }
+        Ok(made
+            .into_iter()
+            .map(|l| (l.name, nearest_vertex(&self.mesh.positions, &l.position)))
+            .collect())
     }
 
     /// Blend weights of the six segments (in [`Segment::ALL`] order) at `vertex`; they sum to 1.
@@ -223,4 +236,16 @@ impl Template {
     pub fn header(&self) -> &store::StoredHeader {
         &self.header
     }
+}
+
+/// Index of the vertex of `positions` nearest to `q` (positions is non-empty for a template).
+fn nearest_vertex(positions: &[Point3<f64>], q: &Point3<f64>) -> u32 {
+    let mut best = (f64::INFINITY, 0u32);
+    for (i, p) in positions.iter().enumerate() {
+        let d = (p - q).norm_squared();
+        if d < best.0 {
+            best = (d, i as u32);
+        }
+    }
+    best.1
 }

@@ -1,0 +1,73 @@
+//! Errors of fine alignment: every one names the input and what to do about it.
+
+use thiserror::Error;
+
+/// Why [`crate::align::fine_align`] or [`crate::align::ScanIndex::new`] refused to run.
+#[derive(Debug, Error, Clone, PartialEq)]
+pub enum AlignError {
+    /// The scan has no triangles (a point cloud): normals, holes and closest points on the
+    /// surface all need a triangulated scan.
+    #[error("scan has {vertices} vertices but no triangles; fine alignment needs a triangulated scan (mesh it first)")]
+    ScanHasNoTriangles {
+        /// Number of scan vertices.
+        vertices: usize,
+    },
+    /// A triangle indexes a vertex that does not exist.
+    #[error(
+        "{what}: triangle {triangle} uses vertex {index} but there are only {vertices} vertices"
+    )]
+    IndexOutOfRange {
+        /// "scan" or "template".
+        what: &'static str,
+        /// Triangle number.
+        triangle: usize,
+        /// The bad index.
+        index: u32,
+        /// Number of vertices.
+        vertices: usize,
+    },
+    /// A coordinate is NaN or infinite.
+    #[error("{what}: vertex {vertex} has a non-finite coordinate; fix or drop it before aligning")]
+    NonFinite {
+        /// "scan" or "template".
+        what: &'static str,
+        /// Vertex number.
+        vertex: usize,
+    },
+    /// The data weights do not match the template.
+    #[error("data weights: got {got} weights for a template of {expected} vertices (one weight per template vertex)")]
+    WeightCount {
+        /// Number of weights supplied.
+        got: usize,
+        /// Number of template vertices.
+        expected: usize,
+    },
+    /// A data weight is negative or not finite.
+    #[error("data weights: weight {value} at vertex {vertex} must be finite and ≥ 0")]
+    BadWeight {
+        /// Vertex number.
+        vertex: usize,
+        /// The bad weight.
+        value: f64,
+    },
+    /// A parameter is outside its meaningful range.
+    #[error("fine alignment parameter {name} = {value}: {reason}")]
+    BadParameter {
+        /// Parameter name as in [`crate::align::FineAlignParams`].
+        name: &'static str,
+        /// The value given.
+        value: f64,
+        /// What range is allowed.
+        reason: &'static str,
+    },
+    /// The template has no vertices or no triangles.
+    #[error(
+        "template is empty ({vertices} vertices, {triangles} triangles); load a template first"
+    )]
+    EmptyTemplate {
+        /// Number of template vertices.
+        vertices: usize,
+        /// Number of template triangles.
+        triangles: usize,
+    },
+}

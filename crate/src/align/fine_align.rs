@@ -1,0 +1,307 @@
+//! The outer loop of fine alignment (paper §3.2): find closest points, minimise
+//! E = a·E_d + b·E_s with L-BFGS for a few iterations, find closest points again, until E stops
+//! falling.
+//!
+//! Schedule: round r finds correspondences from the current surface (positions T_i ṽ_i and their
+//! vertex normals), switches off the data term of vertices without a compatible match, on a hole
+//! rim or too far (paper §3.2.1), then runs `iterations_per_round` L-BFGS iterations warm-started
+//! from the current transforms, with E_s weighted by b·max(1, initial_stiffness·decay^r). It stops
+//! after a round that lowered E by less than `relative_tolerance`·E or moved the vertices by less
+//! than `displacement_tolerance` RMS (once annealing is over), after
+//! `max_iterations` iterations in total, or when `on_progress` returns `Break`.
+
+use super::energy::{
+    identity_transforms, transformed, AlignEnergy, BlockPreconditioner, EnergyTerms,
+};
+use super::error::AlignError;
+use super::lbfgs::{Lbfgs, Objective, Step};
+use super::params::FineAlignParams;
+use super::report::{
+    scan_to_template_distances, template_to_scan_distances, AlignReport, CurvePoint, DistanceStats,
+};
+use super::scan_index::{validate_mesh, MatchQuery, ScanIndex};
+use super::surface::{unique_edges, vertex_normals_into};
+use nalgebra::{Point3, Vector3};
+use std::ops::ControlFlow;
+
+/// Sent after every L-BFGS iteration.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Progress {
+    /// Iterations done so far (1-based after the first).
+    pub iteration: usize,
+    /// Correspondence round (0-based).
+    pub round: usize,
+    /// The minimised objective E (with this round's weights).
+    pub energy: f64,
+    /// E_d = Σ w_i dist² (m²) over vertices with a data term this round (paper eq. 6).
+    pub data_error: f64,
+    /// E_s = Σ_edges ‖T_i − T_j‖²_F (paper eq. 7).
+    pub smoothness_error: f64,
+    /// RMS distance (m) of matched template vertices to their closest scan points.
+    pub rms: f64,
+    /// Template vertices with a data term this round.
+    pub matched: usize,
+    /// Milliseconds since the start.
+    pub elapsed_ms: f64,
+}
+
+/// The aligned template and its report.
+#[derive(Debug, Clone, PartialEq)]
+pub struct FineAlignResult {
+    /// Fitted template positions: same vertices, same order as the input (metres).
+    pub positions: Vec<Point3<f64>>,
+    /// Statistics, curve and per-vertex distances.
+    pub report: AlignReport,
+}
+
+/// Milliseconds on a monotonic-enough clock (`Instant` does not exist on wasm32-unknown-unknown).
+fn now_ms() -> f64 {
+    #[cfg(target_arch = "wasm32")]
+    {
+        js_sys::Date::now()
+    }
+    #[cfg(not(target_arch = "wasm32"))]
+    {
+        use std::sync::OnceLock;
+        use std::time::Instant;
+        static START: OnceLock<Instant> = OnceLock::new();
+        START.get_or_init(Instant::now).elapsed().as_secs_f64() * 1e3
+    }
+}
+
+/// The energy of one round plus its preconditioner, remembering the terms of the last evaluation.
+struct RoundObjective<'a> {
+    energy: AlignEnergy<'a>,
+    preconditioner: &'a BlockPreconditioner,
+    last: EnergyTerms,
+}
+
+impl Objective for RoundObjective<'_> {
+    fn value_and_gradient(&mut self, x: &[f64], grad: &mut [f64]) -> f64 {
+        self.last = self.energy.evaluate(x, grad);
+        self.last.total
+    }
+    fn curvature(&self, d: &[f64]) -> Option<f64> {
+        Some(self.energy.curvature(d))
+    }
+    fn precondition(&self, q: &mut [f64]) -> bool {
+        self.preconditioner.apply(q);
+        true
+    }
+}
+
+/// Fits the (RBF-warped) template to the scan by per-vertex affine transforms T_i minimising
+/// E = a·κ·Σ w_i dist²(T_i v_i, Γ) + b·Σ_edges ‖T_i − T_j‖²_F (paper eq. 6–8), κ = (h̄/h_ref)².
+///
+/// * `template_positions`: `#V` (metres, in the scan's frame); `triangles`: `#F` template faces.
+/// * `scan`: the scan's [`ScanIndex`], built once per scan.
+/// * `weights`: `#V` data weights w_i ≥ 0 (1 normally, 0.1 hands and ears, 0 unseen regions).
+/// * `on_progress`: called after every iteration; `Break` cancels, and the result is then the
+///   last accepted iterate with `report.cancelled = true`.
+///
+/// Returns the fitted positions (same order) and the report. Vertices are centred on the template
+/// centroid before building ṽ_i, so E_s does not depend on where the scan's origin is.
+pub fn fine_align(
+    template_positions: &[Point3<f64>],
+    triangles: &[[u32; 3]],
+    scan: &ScanIndex,
+    weights: &[f64],
+    params: &FineAlignParams,
+    on_progress: &mut dyn FnMut(&Progress) -> ControlFlow<()>,
+) -> Result<FineAlignResult, AlignError> {
+    let start = now_ms();
+    params.validate()?;
+    let n = template_positions.len();
+    if n == 0 || triangles.is_empty() {
+        return Err(AlignError::EmptyTemplate {
+            vertices: n,
+            triangles: triangles.len(),
+        });
+    }
+    validate_mesh("template", template_positions, triangles)?;
+    if weights.len() != n {
+        return Err(AlignError::WeightCount {
+            got: weights.len(),
+            expected: n,
+        });
+    }
+    if let Some(vertex) = weights.iter().position(|w| !(w.is_finite() && *w >= 0.0)) {
+        return Err(AlignError::BadWeight {
+            vertex,
+            value: weights[vertex],
+        });
+    }
+
+    let centroid = template_positions
+        .iter()
+        .fold(Vector3::zeros(), |acc, p| acc + p.coords)
+        / n as f64;
+    let vertices: Vec<[f64; 4]> = template_positions
+        .iter()
+        .map(|p| {
+            let c = p.coords - centroid;
+            [c.x, c.y, c.z, 1.0]
+        })
+        .collect();
+    let edges = unique_edges(triangles);
+    let mut degrees = vec![0u32; n];
+    let mut edge_length_sum = 0.0;
+    for &[i, j] in &edges {
+        degrees[i as usize] += 1;
+        degrees[j as usize] += 1;
+        edge_length_sum += (template_positions[i as usize] - template_positions[j as usize]).norm();
+    }
+    let mean_edge = edge_length_sum / edges.len().max(1) as f64;
+    let kappa = (mean_edge / params.reference_edge_length).powi(2);
+    let data_scale = params.a * kappa;
+
+    let query = MatchQuery {
+        mode: params.correspondence,
+        min_cos: params
+            .normal_compatibility
+            .then(|| params.max_normal_angle_deg.to_radians().cos()),
+        candidates: params.candidates,
+    };
+
+    let mut optimizer = Lbfgs::new(identity_transforms(n), params.lbfgs_memory);
+    let mut positions = template_positions.to_vec();
+    let mut normals = vec![Vector3::zeros(); n];
+    let mut targets = vec![Point3::origin(); n];
+    let mut coefficients = vec![0.0; n];
+    let mut preconditioner = BlockPreconditioner::default();
+    let mut curve = Vec::new();
+    let (mut iteration, mut rounds) = (0usize, 0usize);
+    let (mut cancelled, mut converged) = (false, false);
+    let mut last_stiffness = f64::NAN;
+
+    'rounds: while iteration < params.max_iterations {
+        let round = rounds;
+        rounds += 1;
+        let mut moved_sq = 0.0;
+        for (i, v) in vertices.iter().enumerate() {
+            let p = transformed(optimizer.x(), v, i) + centroid;
+            moved_sq += (p - positions[i]).norm_squared();
+            positions[i] = p;
+        }
+        if round > 0
+            && last_stiffness <= 1.0
+            && (moved_sq / n as f64).sqrt() < params.displacement_tolerance
+        {
+            converged = true;
+            break;
+        }
+        vertex_normals_into(&positions, triangles, &mut normals);
+        for i in 0..n {
+            coefficients[i] = 0.0;
+            if weights[i] <= 0.0 {
+                continue;
+            }
+            let normal = (normals[i] != Vector3::zeros()).then_some(&normals[i]);
+            let Some(m) = scan.closest(&positions[i], normal, &query) else {
+                continue;
+            };
+            if (params.skip_boundary_matches && m.on_boundary)
+                || (m.point - positions[i]).norm() > params.max_match_distance
+            {
+                continue;
+            }
+            targets[i] = m.point - centroid;
+            coefficients[i] = data_scale * weights[i];
+        }
+        let stiffness =
+            (params.initial_stiffness * params.stiffness_decay.powi(round as i32)).max(1.0);
+        let energy = AlignEnergy {
+            vertices: &vertices,
+            edges: &edges,
+            targets: &targets,
+            data_coefficients: &coefficients,
+            smoothness_coefficient: params.b * stiffness,
+        };
+        preconditioner.update(&energy, &degrees);
+        let mut objective = RoundObjective {
+            energy,
+            preconditioner: &preconditioner,
+            last: EnergyTerms::default(),
+        };
+        let round_start = optimizer.restart(&mut objective, stiffness != last_stiffness);
+        last_stiffness = stiffness;
+        if curve.is_empty() {
+            curve.push(curve_point(0, now_ms() - start, &objective.last));
+        }
+        for _ in 0..params.iterations_per_round {
+            if iteration >= params.max_iterations {
+                break 'rounds;
+            }
+            if optimizer.step(&mut objective) == Step::Stalled {
+                break;
+            }
+            iteration += 1;
+            let t = &objective.last;
+            let point = curve_point(iteration, now_ms() - start, t);
+            curve.push(point);
+            let progress = Progress {
+                iteration,
+                round,
+                energy: t.total,
+                data_error: t.data_weighted / data_scale,
+                smoothness_error: t.smoothness,
+                rms: point.rms,
+                matched: t.matched,
+                elapsed_ms: point.elapsed_ms,
+            };
+            if on_progress(&progress).is_break() {
+                cancelled = true;
+                break 'rounds;
+            }
+        }
+        let drop = round_start - optimizer.value();
+        if stiffness <= 1.0 && drop <= params.relative_tolerance * round_start.abs() {
+            converged = true;
+            break;
+        }
+    }
+
+    for (i, v) in vertices.iter().enumerate() {
+        positions[i] = transformed(optimizer.x(), v, i) + centroid;
+    }
+    let elapsed_ms = now_ms() - start;
+    let per_vertex_distance = template_to_scan_distances(&positions, triangles, scan);
+    let scan_to_template =
+        DistanceStats::of(scan_to_template_distances(&positions, triangles, scan)?);
+    let template_to_scan = DistanceStats::of(
+        per_vertex_distance
+            .iter()
+            .zip(weights)
+            .filter(|(_, w)| **w > 0.0)
+            .map(|(d, _)| *d),
+    );
+    Ok(FineAlignResult {
+        positions,
+        report: AlignReport {
+            template_vertices: n,
+            scan_vertices: scan.vertex_count(),
+            scan_to_template,
+            template_to_scan,
+            iterations: iteration,
+            rounds,
+            elapsed_ms,
+            cancelled,
+            converged,
+            curve,
+            per_vertex_distance,
+        },
+    })
+}
+
+fn curve_point(iteration: usize, elapsed_ms: f64, t: &EnergyTerms) -> CurvePoint {
+    CurvePoint {
+        iteration,
+        elapsed_ms,
+        energy: t.total,
+        rms: if t.matched > 0 {
+            (t.matched_sq_sum / t.matched as f64).sqrt()
+        } else {
+            0.0
+        },
+    }
+}

@@ -1,0 +1,154 @@
+//! Parameters of fine alignment, with the paper's values as defaults.
+
+use super::error::AlignError;
+use serde::{Deserialize, Serialize};
+
+/// How the closest point on the scan is found for a template vertex.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum CorrespondenceMode {
+    /// The nearest compatible scan *vertex* (k-d tree, `kiddo`) — what the paper does with ANN.
+    NearestVertex,
+    /// The nearest compatible scan vertex, then the closest point on the triangles around it:
+    /// point-on-surface accuracy for the price of a k-d tree query (the default; see
+    /// docs/fine-alignment.md for the measurements).
+    VertexOneRing,
+    /// The exact closest point on any scan triangle (BVH, `parry3d-f64`); when its triangle's
+    /// normal is incompatible, falls back to [`CorrespondenceMode::VertexOneRing`].
+    ClosestOnTriangle,
+}
+
+/// Parameters of [`crate::align::fine_align`]. Lengths are in metres.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(default)]
+pub struct FineAlignParams {
+    /// Weight `a` of the data error E_d (paper eq. 8, Fig. 9: 0.96).
+    pub a: f64,
+    /// Weight `b` of the smoothness error E_s (paper eq. 8, Fig. 9: 0.04).
+    pub b: f64,
+    /// Mean template edge length (m) at which `a`, `b` mean exactly what they mean in the paper;
+    /// E_d is scaled by (h̄ / reference_edge_length)² so the balance carries across resolutions
+    /// (docs/fine-alignment.md derives it). Default 3.7 mm, the paper's 328K-triangle template.
+    pub reference_edge_length: f64,
+    /// Limit on L-BFGS iterations over all rounds (each reports progress once).
+    pub max_iterations: usize,
+    /// L-BFGS iterations between two correspondence searches.
+    pub iterations_per_round: usize,
+    /// Stop when a round lowers E by less than this fraction of E.
+    pub relative_tolerance: f64,
+    /// Stop when the RMS displacement of the template vertices over one round falls below this
+    /// (metres): the surface has stopped moving even if E still creeps down by sliding.
+    pub displacement_tolerance: f64,
+    /// L-BFGS memory m (pairs of correction vectors kept).
+    pub lbfgs_memory: usize,
+    /// How correspondences are searched.
+    pub correspondence: CorrespondenceMode,
+    /// Reject a match whose scan normal is more than `max_normal_angle_deg` from the template
+    /// vertex normal (paper §3.2.1, "to avoid the two legs get bridged").
+    pub normal_compatibility: bool,
+    /// Largest angle (degrees) between template and scan normals of a match.
+    pub max_normal_angle_deg: f64,
+    /// How many nearest scan vertices are tried, nearest first, for a compatible normal.
+    pub candidates: usize,
+    /// A vertex whose match lies on a hole rim gets no data term that round (paper §3.2.1).
+    pub skip_boundary_matches: bool,
+    /// Matches farther than this (m) are ignored that round; `f64::INFINITY` keeps all.
+    pub max_match_distance: f64,
+    /// Stiffness annealing: E_s is weighted by b·s_r in round r, with
+    /// s_r = max(1, initial_stiffness·stiffness_decay^r); 1.0 switches annealing off.
+    pub initial_stiffness: f64,
+    /// Factor by which the stiffness multiplier shrinks per round (0 < decay ≤ 1).
+    pub stiffness_decay: f64,
+}
+
+impl Default for FineAlignParams {
+    fn default() -> Self {
+        Self {
+            a: 0.96,
+            b: 0.04,
+            reference_edge_length: 0.0037,
+            max_iterations: 200,
+            iterations_per_round: 10,
+            relative_tolerance: 1e-4,
+            displacement_tolerance: 1e-4,
+            lbfgs_memory: 7,
+            correspondence: CorrespondenceMode::VertexOneRing,
+            normal_compatibility: true,
+            max_normal_angle_deg: 60.0,
+            candidates: 8,
+            skip_boundary_matches: true,
+            max_match_distance: f64::INFINITY,
+            initial_stiffness: 1.0,
+            stiffness_decay: 0.5,
+        }
+    }
+}
+
+impl FineAlignParams {
+    /// Checks every parameter's range; the first bad one is reported.
+    pub fn validate(&self) -> Result<(), AlignError> {
+        let bad = |name, value: f64, reason| AlignError::BadParameter {
+            name,
+            value,
+            reason,
+        };
+        if !(self.a.is_finite() && self.a > 0.0) {
+            return Err(bad("a", self.a, "must be finite and > 0"));
+        }
+        if !(self.b.is_finite() && self.b > 0.0) {
+            return Err(bad("b", self.b, "must be finite and > 0"));
+        }
+        if !(self.reference_edge_length.is_finite() && self.reference_edge_length > 0.0) {
+            let v = self.reference_edge_length;
+            return Err(bad(
+                "reference_edge_length",
+                v,
+                "must be finite and > 0 (metres)",
+            ));
+        }
+        if self.iterations_per_round == 0 {
+            return Err(bad("iterations_per_round", 0.0, "must be ≥ 1"));
+        }
+        if self.lbfgs_memory == 0 || self.lbfgs_memory > 64 {
+            let v = self.lbfgs_memory as f64;
+            return Err(bad("lbfgs_memory", v, "must be in 1..=64"));
+        }
+        if !(self.relative_tolerance.is_finite() && self.relative_tolerance >= 0.0) {
+            let v = self.relative_tolerance;
+            return Err(bad("relative_tolerance", v, "must be finite and ≥ 0"));
+        }
+        if !(self.displacement_tolerance.is_finite() && self.displacement_tolerance >= 0.0) {
+            let v = self.displacement_tolerance;
+            return Err(bad(
+                "displacement_tolerance",
+                v,
+                "must be finite and ≥ 0 (metres)",
+            ));
+        }
+        if !(0.0..=180.0).contains(&self.max_normal_angle_deg) {
+            let v = self.max_normal_angle_deg;
+            return Err(bad("max_normal_angle_deg", v, "must be in 0..=180 degrees"));
+        }
+        if self.candidates == 0 || self.candidates > 256 {
+            let v = self.candidates as f64;
+            return Err(bad("candidates", v, "must be in 1..=256"));
+        }
+        if self.max_match_distance.is_nan() || self.max_match_distance <= 0.0 {
+            let v = self.max_match_distance;
+            return Err(bad(
+                "max_match_distance",
+                v,
+                "must be > 0 (metres) or infinity",
+            ));
+        }
+        if !(self.initial_stiffness.is_finite() && self.initial_stiffness >= 1.0) {
+            let v = self.initial_stiffness;
+            return Err(bad("initial_stiffness", v, "must be finite and ≥ 1"));
+        }
+        if !(self.stiffness_decay > 0.0 && self.stiffness_decay <= 1.0) {
+            let v = self.stiffness_decay;
+            return Err(bad("stiffness_decay", v, "must be in (0, 1]"));
+        }
+        Ok(())
+    }
+}

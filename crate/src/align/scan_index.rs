@@ -1,0 +1,297 @@
+//! The spatial index over a scan, built once per scan and queried every correspondence round.
+
+use super::error::AlignError;
+use super::params::CorrespondenceMode;
+use super::surface::{
+    boundary_vertices, closest_point_on_triangle, face_normals, vertex_normals, OneRings,
+};
+use crate::mesh::Mesh;
+use kiddo::{ImmutableKdTree, SquaredEuclidean};
+use nalgebra::{Point3, Vector3};
+use parry3d_f64::query::PointQueryWithLocation;
+use parry3d_f64::shape::TriMesh;
+use std::num::NonZero;
+use std::sync::OnceLock;
+
+/// A closest point on the scan for one template vertex.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Match {
+    /// The point on the scan (vertex or point on a triangle), metres.
+    pub point: Point3<f64>,
+    /// The scan's unit normal there (vertex normal or face normal).
+    pub normal: Vector3<f64>,
+    /// Whether the match lies on a hole rim (boundary vertex, or triangle touching one).
+    pub on_boundary: bool,
+}
+
+/// How one query is answered.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct MatchQuery {
+    /// Search strategy.
+    pub mode: CorrespondenceMode,
+    /// Minimum cosine between query normal and scan normal; `None` accepts any normal.
+    pub min_cos: Option<f64>,
+    /// Nearest scan vertices tried for a compatible normal.
+    pub candidates: usize,
+}
+
+/// A scan prepared for closest-point queries: a k-d tree over its vertices (`kiddo`), vertex and
+/// face normals, one-rings, boundary flags, and — built on first use — a BVH over its triangles
+/// (`parry3d-f64`). Build it once per scan; [`crate::align::fine_align`] only reads it.
+pub struct ScanIndex {
+    positions: Vec<Point3<f64>>,
+    triangles: Vec<[u32; 3]>,
+    vertex_normals: Vec<Vector3<f64>>,
+    face_normals: Vec<Vector3<f64>>,
+    boundary_vertex: Vec<bool>,
+    boundary_triangle: Vec<bool>,
+    rings: OneRings,
+    tree: ImmutableKdTree<f64, 3>,
+    /// Tree item → scan vertex: only vertices used by a triangle are indexed, so stray points
+    /// (unreferenced vertices, common in raw scans) are never matched.
+    tree_vertex: Vec<u32>,
+    bvh: OnceLock<Option<TriMesh>>,
+}
+
+impl std::fmt::Debug for ScanIndex {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("ScanIndex")
+            .field("vertices", &self.positions.len())
+            .field("triangles", &self.triangles.len())
+            .finish()
+    }
+}
+
+/// Checks a mesh's indices and coordinates; `what` names it in the error.
+pub(crate) fn validate_mesh(
+    what: &'static str,
+    positions: &[Point3<f64>],
+    triangles: &[[u32; 3]],
+) -> Result<(), AlignError> {
+    if let Some(vertex) = positions
+        .iter()
+        .position(|p| !p.coords.iter().all(|c| c.is_finite()))
+    {
+        return Err(AlignError::NonFinite { what, vertex });
+    }
+    for (triangle, t) in triangles.iter().enumerate() {
+        if let Some(&index) = t.iter().find(|&&i| i as usize >= positions.len()) {
+            return Err(AlignError::IndexOutOfRange {
+                what,
+                triangle,
+                index,
+                vertices: positions.len(),
+            });
+        }
+    }
+    Ok(())
+}
+
+impl ScanIndex {
+    /// Indexes `scan` (metres). Fails on a point cloud, bad indices or non-finite coordinates.
+    pub fn new(scan: &Mesh) -> Result<Self, AlignError> {
+        Self::from_parts("scan", &scan.positions, &scan.triangles)
+    }
+
+    /// Indexes any triangle mesh (also used on the fitted template for scan-to-template distances).
+    pub(crate) fn from_parts(
+        what: &'static str,
+        positions: &[Point3<f64>],
+        triangles: &[[u32; 3]],
+    ) -> Result<Self, AlignError> {
+        if triangles.is_empty() {
+            return Err(AlignError::ScanHasNoTriangles {
+                vertices: positions.len(),
+            });
+        }
+        validate_mesh(what, positions, triangles)?;
+        let mut used = vec![false; positions.len()];
+        triangles
+            .iter()
+            .flatten()
+            .for_each(|&v| used[v as usize] = true);
+        let tree_vertex: Vec<u32> = (0..positions.len() as u32)
+            .filter(|&v| used[v as usize])
+            .collect();
+        let coords: Vec<[f64; 3]> = tree_vertex
+            .iter()
+            .map(|&v| {
+                let p = &positions[v as usize];
+                [p.x, p.y, p.z]
+            })
+            .collect();
+        let tree = ImmutableKdTree::new_from_slice(&coords).map_err(|_| {
+            AlignError::ScanHasNoTriangles {
+                vertices: positions.len(),
+            }
+        })?;
+        let boundary_vertex = boundary_vertices(positions.len(), triangles);
+        let boundary_triangle = triangles
+            .iter()
+            .map(|t| t.iter().any(|&v| boundary_vertex[v as usize]))
+            .collect();
+        Ok(Self {
+            positions: positions.to_vec(),
+            triangles: triangles.to_vec(),
+            vertex_normals: vertex_normals(positions, triangles),
+            face_normals: face_normals(positions, triangles),
+            boundary_vertex,
+            boundary_triangle,
+            rings: OneRings::new(positions.len(), triangles),
+            tree,
+            tree_vertex,
+            bvh: OnceLock::new(),
+        })
+    }
+
+    /// Number of scan vertices.
+    pub fn vertex_count(&self) -> usize {
+        self.positions.len()
+    }
+
+    /// Scan vertex positions (metres).
+    pub fn positions(&self) -> &[Point3<f64>] {
+        &self.positions
+    }
+
+    /// Scan vertices used by at least one triangle (the points that are matched and measured).
+    pub fn surface_vertices(&self) -> impl Iterator<Item = &Point3<f64>> + '_ {
+        self.tree_vertex
+            .iter()
+            .map(|&v| &self.positions[v as usize])
+    }
+
+    /// Number of scan vertices used by at least one triangle.
+    pub fn surface_vertex_count(&self) -> usize {
+        self.tree_vertex.len()
+    }
+
+    /// Per-vertex boundary flags (`true` on hole rims and open borders).
+    pub fn boundary_vertices(&self) -> &[bool] {
+        &self.boundary_vertex
+    }
+
+    /// Builds the triangle BVH now (otherwise it is built by the first
+    /// [`CorrespondenceMode::ClosestOnTriangle`] query).
+    pub fn prepare_triangle_bvh(&self) {
+        let _ = self.bvh();
+    }
+
+    fn bvh(&self) -> Option<&TriMesh> {
+        self.bvh
+            .get_or_init(|| {
+                let vertices = self
+                    .positions
+                    .iter()
+                    .map(|p| parry3d_f64::math::Vector::new(p.x, p.y, p.z))
+                    .collect();
+                TriMesh::new(vertices, self.triangles.clone()).ok()
+            })
+            .as_ref()
+    }
+
+    fn compatible(min_cos: Option<f64>, query: Option<&Vector3<f64>>, n: &Vector3<f64>) -> bool {
+        match (min_cos, query) {
+            (Some(c), Some(q)) => q.dot(n) >= c,
+            _ => true,
+        }
+    }
+
+    /// The closest compatible point on the scan to `p`, whose own unit normal is `normal` (used
+    /// only when `query.min_cos` is set). `None` when no candidate has a compatible normal.
+    pub fn closest(
+        &self,
+        p: &Point3<f64>,
+        normal: Option<&Vector3<f64>>,
+        query: &MatchQuery,
+    ) -> Option<Match> {
+        match query.mode {
+            CorrespondenceMode::NearestVertex => {
+                let v = self.nearest_compatible_vertex(p, normal, query)?;
+                Some(Match {
+                    point: self.positions[v],
+                    normal: self.vertex_normals[v],
+                    on_boundary: self.boundary_vertex[v],
+                })
+            }
+            CorrespondenceMode::VertexOneRing => self.one_ring_match(p, normal, query),
+            CorrespondenceMode::ClosestOnTriangle => {
+                let exact = self.bvh().and_then(|mesh| {
+                    let q = parry3d_f64::math::Vector::new(p.x, p.y, p.z);
+                    let (proj, (tri, _)) = mesh.project_local_point_and_get_location(q, false);
+                    let tri = tri as usize;
+                    let n = self.face_normals.get(tri)?;
+                    Self::compatible(query.min_cos, normal, n).then(|| Match {
+                        point: Point3::new(proj.point.x, proj.point.y, proj.point.z),
+                        normal: *n,
+                        on_boundary: self.boundary_triangle[tri],
+                    })
+                });
+                exact.or_else(|| self.one_ring_match(p, normal, query))
+            }
+        }
+    }
+
+    fn nearest_compatible_vertex(
+        &self,
+        p: &Point3<f64>,
+        normal: Option<&Vector3<f64>>,
+        query: &MatchQuery,
+    ) -> Option<usize> {
+        let k = NonZero::new(query.candidates.min(self.tree_vertex.len()))?;
+        let q = [p.x, p.y, p.z];
+        // The nearest vertex is compatible almost everywhere; only where it is not (legs, folds)
+        // is the k-nearest query (which allocates its result) needed.
+        let hit = self
+            .tree
+            .query(&q)
+            .nearest_one::<SquaredEuclidean<f64>>()
+            .execute();
+        let nearest = self.tree_vertex[hit.item as usize] as usize;
+        if Self::compatible(query.min_cos, normal, &self.vertex_normals[nearest]) {
+            return Some(nearest);
+        }
+        let hits = self
+            .tree
+            .query(&q)
+            .nearest_n::<SquaredEuclidean<f64>>(k)
+            .execute();
+        hits.iter()
+            .map(|h| self.tree_vertex[h.item as usize] as usize)
+            .find(|&v| Self::compatible(query.min_cos, normal, &self.vertex_normals[v]))
+    }
+
+    fn one_ring_match(
+        &self,
+        p: &Point3<f64>,
+        normal: Option<&Vector3<f64>>,
+        query: &MatchQuery,
+    ) -> Option<Match> {
+        let v = self.nearest_compatible_vertex(p, normal, query)?;
+        let mut best = Match {
+            point: self.positions[v],
+            normal: self.vertex_normals[v],
+            on_boundary: self.boundary_vertex[v],
+        };
+        let mut best_d2 = (best.point - p).norm_squared();
+        for &f in self.rings.triangles_of(v) {
+            let f = f as usize;
+            let n = &self.face_normals[f];
+            if !Self::compatible(query.min_cos, normal, n) {
+                continue;
+            }
+            let [a, b, c] = self.triangles[f].map(|i| self.positions[i as usize]);
+            let x = closest_point_on_triangle(p, &a, &b, &c);
+            let d2 = (x - p).norm_squared();
+            if d2 < best_d2 {
+                best_d2 = d2;
+                best = Match {
+                    point: x,
+                    normal: *n,
+                    on_boundary: self.boundary_triangle[f],
+                };
+            }
+        }
+        Some(best)
+    }
+}

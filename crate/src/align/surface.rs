@@ -1,0 +1,228 @@
+//! Per-mesh geometry the aligner needs: normals, unique edges, one-rings and boundary flags.
+
+use nalgebra::{Point3, Vector3};
+
+/// Area-weighted vertex normals (unit length; zero for isolated or degenerate vertices).
+///
+/// `positions`: `#V`; `triangles`: `#F`, counter-clockwise seen from outside. Each triangle adds
+/// its unnormalised cross product (twice its area times its normal) to its three corners.
+pub fn vertex_normals(positions: &[Point3<f64>], triangles: &[[u32; 3]]) -> Vec<Vector3<f64>> {
+    let mut normals = vec![Vector3::zeros(); positions.len()];
+    vertex_normals_into(positions, triangles, &mut normals);
+    normals
+}
+
+/// [`vertex_normals`] into a caller-owned buffer of length `#V` (no allocation per round).
+pub fn vertex_normals_into(
+    positions: &[Point3<f64>],
+    triangles: &[[u32; 3]],
+    normals: &mut [Vector3<f64>],
+) {
+    normals.iter_mut().for_each(|n| *n = Vector3::zeros());
+    for t in triangles {
+        let [a, b, c] = t.map(|i| i as usize);
+        let n = (positions[b] - positions[a]).cross(&(positions[c] - positions[a]));
+        normals[a] += n;
+        normals[b] += n;
+        normals[c] += n;
+    }
+    for n in normals.iter_mut() {
+        let len = n.norm();
+        *n = if len > 0.0 {
+            *n / len
+        } else {
+            Vector3::zeros()
+        };
+    }
+}
+
+/// Unit face normals, `#F` (zero for degenerate triangles).
+pub fn face_normals(positions: &[Point3<f64>], triangles: &[[u32; 3]]) -> Vec<Vector3<f64>> {
+    triangles
+        .iter()
+        .map(|t| {
+            let [a, b, c] = t.map(|i| i as usize);
+            let n = (positions[b] - positions[a]).cross(&(positions[c] - positions[a]));
+            let len = n.norm();
+            if len > 0.0 {
+                n / len
+            } else {
+                Vector3::zeros()
+            }
+        })
+        .collect()
+}
+
+/// Each undirected edge once, as `(i, j)` with `i < j`, sorted; plus how many triangles use it.
+pub fn edges_with_use_count(triangles: &[[u32; 3]]) -> Vec<([u32; 2], u32)> {
+    let mut directed: Vec<[u32; 2]> = Vec::with_capacity(triangles.len() * 3);
+    for t in triangles {
+        for k in 0..3 {
+            let (i, j) = (t[k], t[(k + 1) % 3]);
+            if i != j {
+                directed.push([i.min(j), i.max(j)]);
+            }
+        }
+    }
+    directed.sort_unstable();
+    let mut out: Vec<([u32; 2], u32)> = Vec::with_capacity(directed.len() / 2 + 1);
+    for e in directed {
+        match out.last_mut() {
+            Some((last, count)) if *last == e => *count += 1,
+            _ => out.push((e, 1)),
+        }
+    }
+    out
+}
+
+/// Unique undirected edges `(i, j)`, `i < j` — the pairs summed over in E_s (paper eq. 7).
+pub fn unique_edges(triangles: &[[u32; 3]]) -> Vec<[u32; 2]> {
+    edges_with_use_count(triangles)
+        .into_iter()
+        .map(|(e, _)| e)
+        .collect()
+}
+
+/// `#V` flags: a vertex is on a boundary (hole rim or open border) when one of its edges is used
+/// by exactly one triangle.
+pub fn boundary_vertices(vertex_count: usize, triangles: &[[u32; 3]]) -> Vec<bool> {
+    let mut flags = vec![false; vertex_count];
+    for ([i, j], count) in edges_with_use_count(triangles) {
+        if count == 1 {
+            flags[i as usize] = true;
+            flags[j as usize] = true;
+        }
+    }
+    flags
+}
+
+/// Vertex → incident triangles in compressed rows: triangles of vertex `v` are
+/// `indices[offsets[v]..offsets[v + 1]]`.
+#[derive(Debug, Clone)]
+pub struct OneRings {
+    /// `#V + 1` row starts.
+    pub offsets: Vec<u32>,
+    /// Triangle indices, `3·#F` in total.
+    pub indices: Vec<u32>,
+}
+
+impl OneRings {
+    /// Builds the vertex → triangle table.
+    pub fn new(vertex_count: usize, triangles: &[[u32; 3]]) -> Self {
+        let mut offsets = vec![0u32; vertex_count + 1];
+        for t in triangles {
+            for &v in t {
+                offsets[v as usize + 1] += 1;
+            }
+        }
+        for v in 0..vertex_count {
+            offsets[v + 1] += offsets[v];
+        }
+        let mut fill = offsets.clone();
+        let mut indices = vec![0u32; triangles.len() * 3];
+        for (f, t) in triangles.iter().enumerate() {
+            for &v in t {
+                indices[fill[v as usize] as usize] = f as u32;
+                fill[v as usize] += 1;
+            }
+        }
+        Self { offsets, indices }
+    }
+
+    /// Triangles incident to vertex `v`.
+    pub fn triangles_of(&self, v: usize) -> &[u32] {
+        &self.indices[self.offsets[v] as usize..self.offsets[v + 1] as usize]
+    }
+}
+
+/// Closest point to `p` on triangle `(a, b, c)` (Ericson, *Real-Time Collision Detection* §5.1.5).
+pub fn closest_point_on_triangle(
+    p: &Point3<f64>,
+    a: &Point3<f64>,
+    b: &Point3<f64>,
+    c: &Point3<f64>,
+) -> Point3<f64> {
+    let ab = b - a;
+    let ac = c - a;
+    let ap = p - a;
+    let d1 = ab.dot(&ap);
+    let d2 = ac.dot(&ap);
+    if d1 <= 0.0 && d2 <= 0.0 {
+        return *a;
+    }
+    let bp = p - b;
+    let d3 = ab.dot(&bp);
+    let d4 = ac.dot(&bp);
+    if d3 >= 0.0 && d4 <= d3 {
+        return *b;
+    }
+    let vc = d1 * d4 - d3 * d2;
+    if vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0 {
+        let v = d1 / (d1 - d3);
+        return a + ab * v;
+    }
+    let cp = p - c;
+    let d5 = ab.dot(&cp);
+    let d6 = ac.dot(&cp);
+    if d6 >= 0.0 && d5 <= d6 {
+        return *c;
+    }
+    let vb = d5 * d2 - d1 * d6;
+    if vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0 {
+        let w = d2 / (d2 - d6);
+        return a + ac * w;
+    }
+    let va = d3 * d6 - d5 * d4;
+    if va <= 0.0 && (d4 - d3) >= 0.0 && (d5 - d6) >= 0.0 {
+        let w = (d4 - d3) / ((d4 - d3) + (d5 - d6));
+        return b + (c - b) * w;
+    }
+    let denom = va + vb + vc;
+    if denom.abs() < f64::MIN_POSITIVE {
+        return *a;
+    }
+    let v = vb / denom;
+    let w = vc / denom;
+    a + ab * v + ac * w
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn quad() -> (Vec<Point3<f64>>, Vec<[u32; 3]>) {
+        let p = vec![
+            Point3::new(0.0, 0.0, 0.0),
+            Point3::new(1.0, 0.0, 0.0),
+            Point3::new(1.0, 1.0, 0.0),
+            Point3::new(0.0, 1.0, 0.0),
+        ];
+        (p, vec![[0, 1, 2], [0, 2, 3]])
+    }
+
+    #[test]
+    fn quad_has_five_edges_all_vertices_on_boundary_and_up_normals() {
+        let (p, t) = quad();
+        assert_eq!(unique_edges(&t).len(), 5);
+        assert!(boundary_vertices(4, &t).iter().all(|&b| b));
+        for n in vertex_normals(&p, &t) {
+            assert!((n - Vector3::z()).norm() < 1e-12);
+        }
+        let rings = OneRings::new(4, &t);
+        assert_eq!(rings.triangles_of(0), &[0, 1]);
+        assert_eq!(rings.triangles_of(1), &[0]);
+    }
+
+    #[test]
+    fn closest_point_on_triangle_regions() {
+        let a = Point3::new(0.0, 0.0, 0.0);
+        let b = Point3::new(1.0, 0.0, 0.0);
+        let c = Point3::new(0.0, 1.0, 0.0);
+        let inside = closest_point_on_triangle(&Point3::new(0.2, 0.3, 5.0), &a, &b, &c);
+        assert!((inside - Point3::new(0.2, 0.3, 0.0)).norm() < 1e-12);
+        let vertex = closest_point_on_triangle(&Point3::new(-1.0, -1.0, 1.0), &a, &b, &c);
+        assert!((vertex - a).norm() < 1e-12);
+        let edge = closest_point_on_triangle(&Point3::new(1.0, 1.0, 0.0), &a, &b, &c);
+        assert!((edge - Point3::new(0.5, 0.5, 0.0)).norm() < 1e-12);
+    }
+}

@@ -1,0 +1,177 @@
+//! `bodyspace align` without `--rough-only`: RBF warp (paper §3.1), then fine alignment (§3.2).
+
+use std::ops::ControlFlow;
+use std::path::Path;
+use std::time::Instant;
+
+use nalgebra::Point3;
+use serde_json::{json, Value};
+
+use super::align::{load, rough, rough_params, AlignArgs};
+use crate::align::{fine_align, AlignReport, DistanceStats, FineAlignParams, ScanIndex};
+use crate::io::{read_scan, write_ply};
+use crate::mesh::units::detect_units;
+use crate::mesh::Mesh;
+use crate::template::Template;
+
+/// Data weight of hands and ears (paper §3.2.1); unseen regions (inner mouth) get 0.
+const HAND_EAR_WEIGHT: f64 = 0.1;
+
+/// Per-vertex data weights from the template's region flags.
+pub fn data_weights(template: &Template) -> Vec<f64> {
+    (0..template.mesh().positions.len() as u32)
+        .map(|v| {
+            let flags = template.flags(v);
+            if flags.unseen() {
+                0.0
+            } else if flags.hand() || flags.ear() {
+                HAND_EAR_WEIGHT
+            } else {
+                1.0
+            }
+        })
+        .collect()
+}
+
+fn stats_mm(s: &DistanceStats, to_mm: f64) -> Value {
+    json!({
+        "count": s.count,
+        "mean_mm": s.mean * to_mm,
+        "std_dev_mm": s.std_dev * to_mm,
+        "rms_mm": s.rms * to_mm,
+        "max_abs_mm": s.max_abs * to_mm,
+    })
+}
+
+fn fine_report(r: &AlignReport, to_mm: f64) -> Value {
+    json!({
+        "template_vertices": r.template_vertices,
+        "scan_vertices": r.scan_vertices,
+        "scan_to_template": stats_mm(&r.scan_to_template, to_mm),
+        "template_to_scan": stats_mm(&r.template_to_scan, to_mm),
+        "iterations": r.iterations,
+        "rounds": r.rounds,
+        "converged": r.converged,
+        "cancelled": r.cancelled,
+        "elapsed_ms": r.elapsed_ms,
+        "curve": r.curve.iter().map(|p| json!({
+            "iteration": p.iteration,
+            "elapsed_ms": p.elapsed_ms,
+            "energy": p.energy,
+            "rms_mm": p.rms * to_mm,
+        })).collect::<Vec<_>>(),
+    })
+}
+
+/// Mean and RMS distance (m) of fitted vertices to their true positions.
+fn correspondence_error(fitted: &[Point3<f64>], truth: &[Point3<f64>]) -> (f64, f64) {
+    let n = fitted.len().min(truth.len()).max(1) as f64;
+    let d: Vec<f64> = fitted
+        .iter()
+        .zip(truth)
+        .map(|(a, b)| (a - b).norm())
+        .collect();
+    (
+        d.iter().sum::<f64>() / n,
+        (d.iter().map(|x| x * x).sum::<f64>() / n).sqrt(),
+    )
+}
+
+fn read_truth(path: &Path, expected: usize, to_metres: f64) -> Result<Vec<Point3<f64>>, String> {
+    let name = path.display().to_string();
+    let bytes = std::fs::read(path).map_err(|e| format!("{name}: cannot read the file: {e}"))?;
+    let mesh = read_scan(&bytes, &name).map_err(|e| e.to_string())?;
+    if mesh.positions.len() != expected {
+        return Err(format!(
+            "{name}: {} vertices but the template has {expected}; ground truth must be in template vertex order at the same resolution",
+            mesh.positions.len()
+        ));
+    }
+    Ok(mesh.positions.iter().map(|p| p * to_metres).collect())
+}
+
+/// Runs the whole pipeline, writes the fitted template (scan units) and prints the report.
+pub fn run_full(args: &AlignArgs) -> Result<(), String> {
+    let rbf_params = rough_params(args)?;
+    let params = FineAlignParams {
+        a: args.a,
+        b: args.b,
+        max_iterations: args.max_iterations,
+        ..FineAlignParams::default()
+    };
+    params.validate().map_err(|e| e.to_string())?;
+    let inputs = load(args)?;
+    let started = Instant::now();
+    let warp = rough(&inputs, &rbf_params)?;
+    let rough_ms = started.elapsed().as_secs_f64() * 1e3;
+
+    let extent = bounding_extent(&inputs.scan.positions);
+    let units = detect_units(extent);
+    let to_m = units.scale_to_metres();
+    let scan_m = Mesh::new(
+        inputs.scan.positions.iter().map(|p| p * to_m).collect(),
+        inputs.scan.triangles.clone(),
+    );
+    let warped_m: Vec<Point3<f64>> = warp.positions.iter().map(|p| p * to_m).collect();
+    let triangles = &inputs.template.mesh().triangles;
+    let weights = data_weights(&inputs.template);
+
+    let index_start = Instant::now();
+    let index = ScanIndex::new(&scan_m).map_err(|e| format!("{}: {e}", args.scan.display()))?;
+    let index_ms = index_start.elapsed().as_secs_f64() * 1e3;
+    let result = fine_align(&warped_m, triangles, &index, &weights, &params, &mut |_| {
+        ControlFlow::Continue(())
+    })
+    .map_err(|e| format!("fine alignment: {e}"))?;
+    let total_ms = started.elapsed().as_secs_f64() * 1e3;
+
+    let fitted = Mesh::new(
+        result.positions.iter().map(|p| p / to_m).collect(),
+        triangles.clone(),
+    );
+    let out = args.out.display().to_string();
+    std::fs::write(&args.out, write_ply(&fitted))
+        .map_err(|e| format!("{out}: cannot write the fitted template: {e}"))?;
+
+    let mut report = json!({
+        "step": "rough+fine",
+        "out": out,
+        "units": units.name(),
+        "template_resolution": inputs.template.resolution().name(),
+        "landmarks_used": warp.used.len(),
+        "a": params.a,
+        "b": params.b,
+        "rough_ms": rough_ms,
+        "scan_index_ms": index_ms,
+        "total_ms": total_ms,
+        "fine": fine_report(&result.report, 1e3),
+    });
+    if let Some(truth) = &args.truth {
+        let truth = read_truth(truth, result.positions.len(), to_m)?;
+        let (rough_mean, rough_rms) = correspondence_error(&warped_m, &truth);
+        let (mean, rms) = correspondence_error(&result.positions, &truth);
+        report["correspondence_error"] = json!({
+            "rough_mean_mm": rough_mean * 1e3,
+            "rough_rms_mm": rough_rms * 1e3,
+            "mean_mm": mean * 1e3,
+            "rms_mm": rms * 1e3,
+        });
+    }
+    let text = serde_json::to_string_pretty(&report).map_err(|e| e.to_string())?;
+    if let Some(path) = &args.report {
+        std::fs::write(path, &text)
+            .map_err(|e| format!("{}: cannot write the report: {e}", path.display()))?;
+    }
+    println!("{text}");
+    Ok(())
+}
+
+fn bounding_extent(points: &[Point3<f64>]) -> f64 {
+    let mut lo = Point3::new(f64::INFINITY, f64::INFINITY, f64::INFINITY);
+    let mut hi = Point3::new(f64::NEG_INFINITY, f64::NEG_INFINITY, f64::NEG_INFINITY);
+    for p in points {
+        lo = lo.inf(p);
+        hi = hi.sup(p);
+    }
+    (hi - lo).max().max(0.0)
+}
