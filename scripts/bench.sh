@@ -32,3 +32,6 @@ echo
 echo "== native"
 cargo run --quiet --release --manifest-path bench/native/Cargo.toml --target-dir crate/target -- \
   "$work/torus-300k.ply" "$runs"
+echo
+echo "== shape model (public/models/demo.bsm), stitched reconstruction in the worker"
+node bench/shape-bench.mjs "http://127.0.0.1:$port/" "${SHAPE_RUNS:-30}"

@@ -5,6 +5,7 @@ import { Session } from './app/session';
 import { TemplateView } from './app/template-view';
 import { WarpStep } from './app/warp-step';
 import { readFiles } from './app/read-files';
+import { ShapeSpace } from './app/shape-space';
 import { CoreClient } from './client/core-client';
 import { METRES_PER_UNIT, type Units } from './shared/results';
 import { acceptDrops } from './ui/drop-overlay';
@@ -37,6 +38,9 @@ templateView.onLoaded(() => {
 let lastReadMs = 0;
 let loads = 0;
 
+const shapeSpace = new ShapeSpace(client, viewer, banner);
+void shapeSpace.start(location.hash);
+
 acceptDrops((files) => void open(files));
 
 Promise.all([client.call({ type: 'version' }), client.call({ type: 'caesarNames' })])
@@ -53,7 +57,11 @@ Promise.all([client.call({ type: 'version' }), client.call({ type: 'caesarNames'
   });
 
 /** Reads `files` and shows whatever was read; failures leave what was shown before in place. */
-async function open(files: File[]): Promise<void> {
+async function open(all: File[]): Promise<void> {
+  const models = all.filter((f) => ShapeSpace.isModelFile(f.name));
+  if (models.length) await shapeSpace.openModelFiles(models);
+  const files = all.filter((f) => !ShapeSpace.isModelFile(f.name));
+  if (files.length === 0) return;
   body.dataset.busy = 'true';
   const outcome = await readFiles(client, files, (text) => topBar.setStatus(text));
   const scan = outcome.scans.at(-1);
@@ -70,6 +78,8 @@ async function open(files: File[]): Promise<void> {
     // Before the refresh, so the camera frames the new data, not the template beside it.
     alignStep.reset();
     warpStep.reset();
+    // The scan and the shape body would stand in the same place: the scan takes the view.
+    shapeSpace.hide();
     refresh(Boolean(scan) || !session.scan);
   }
 
@@ -105,7 +115,7 @@ function refresh(frame: boolean): void {
     },
     frame,
   );
-  emptyHint.hidden = Boolean(scan || set);
+  emptyHint.hidden = Boolean(scan || set) || body.dataset.shapeShown === 'true';
   const summary = session.scanSummary;
   scanPanel.render(
     scan && summary ? { fileName: scan.fileName, summary, units: session.scanUnits, readMs: lastReadMs } : null,

@@ -15,6 +15,8 @@ use nalgebra::Vector3;
 use serde::Serialize;
 use wasm_bindgen::prelude::*;
 
+mod model;
+
 use crate::io::{read_landmarks, read_scan};
 use crate::landmarks::report::{report, LandmarkReport};
 use crate::landmarks::CAESAR_LANDMARKS;

@@ -2,6 +2,7 @@
 import type { AlignProgress, AlignResult, FineSettings, RbfSettings, ScanInput, WarpResult } from './align-types';
 import type { ParsedLandmarks, ParsedScan } from './results';
 import type { TemplateData, TemplateResolution } from './template-data';
+import type { LoadedModel, ModelCsv, ReconstructedBody, ShapeCoefficients } from './shape-results';
 
 /** Every request the worker understands, without its `id` (the client adds it). */
 export type CoreRequestBody =
@@ -14,7 +15,15 @@ export type CoreRequestBody =
   | { type: 'rbfWarp'; scan: ScanInput; settings: RbfSettings }
   /** RBF warp then fine alignment; replies with `alignProgress` and `alignRound` events. */
   | { type: 'align'; scan: ScanInput; rbf: RbfSettings; fine: FineSettings }
-  | { type: 'exportMesh'; positions: Float32Array; triangles: Uint32Array; format: 'ply' | 'obj' };
+  | { type: 'exportMesh'; positions: Float32Array; triangles: Uint32Array; format: 'ply' | 'obj' }
+  /** Shape models: the worker keeps one; a failed load or build leaves the previous one. */
+  | { type: 'loadModel'; bytes: ArrayBuffer; fileName: string }
+  /** `positions`: the subjects' bodies concatenated (template order, metres). */
+  | { type: 'buildModel'; positions: Float32Array; names: string[]; variance: number }
+  | { type: 'reconstruct'; coefficients: ShapeCoefficients }
+  | { type: 'modelCsv'; kind: ModelCsv }
+  | { type: 'modelGlb'; modes: number }
+  | { type: 'modelFile' };
 
 /** A request to the worker; `id` pairs it with its replies. */
 export type CoreRequest = CoreRequestBody & { id: number };
@@ -29,6 +38,12 @@ export interface CoreResults {
   rbfWarp: WarpResult;
   align: AlignResult;
   exportMesh: Uint8Array;
+  loadModel: LoadedModel;
+  buildModel: LoadedModel;
+  reconstruct: ReconstructedBody;
+  modelCsv: string;
+  modelGlb: Uint8Array;
+  modelFile: Uint8Array;
 }
 
 /** The result type of a request body. */

@@ -86,6 +86,25 @@ export class Viewer {
     if (!box.isEmpty()) this.aimAt(box);
   }
 
+  /** Camera position and orbit target (metres), for links. */
+  cameraPose(): { position: [number, number, number]; target: [number, number, number] } {
+    const p = this.camera.position;
+    const t = this.controls.target;
+    return { position: [p.x, p.y, p.z], target: [t.x, t.y, t.z] };
+  }
+
+  /** Puts the camera where `cameraPose` said it was. */
+  setCameraPose(pose: { position: [number, number, number]; target: [number, number, number] }): void {
+    this.controls.target.set(...pose.target);
+    this.camera.position.set(...pose.position);
+    const distance = this.camera.position.distanceTo(this.controls.target) || 1;
+    this.camera.near = distance / 100;
+    this.camera.far = distance * 100;
+    this.camera.updateProjectionMatrix();
+    this.controls.update();
+    this.requestRender();
+  }
+
   private aimAt(box: THREE.Box3): void {
     const sphere = box.getBoundingSphere(new THREE.Sphere());
     const radius = Math.max(sphere.radius, 0.05);

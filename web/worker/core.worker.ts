@@ -5,6 +5,7 @@ import type { CoreReply, CoreRequest } from '../shared/messages';
 import type { MeshSummary, ParsedLandmarks, ParsedScan } from '../shared/results';
 import { runAlign, runExport, runRbfWarp } from './align-handlers';
 import { templateData, templateTransfer } from './template-handlers';
+import * as models from './model-handlers';
 
 const ready = init();
 
@@ -87,6 +88,38 @@ self.onmessage = async (event: MessageEvent<CoreRequest>) => {
       case 'exportMesh': {
         const bytes = runExport(request.positions, request.triangles, request.format);
         post({ id: request.id, type: 'result', result: bytes }, [bytes.buffer]);
+        break;
+      }
+      case 'loadModel': {
+        post({ id: request.id, type: 'progress', fraction: 0, label: `Reading ${request.fileName}` });
+        const loaded = models.loadModel(request.bytes, request.fileName);
+        post({ id: request.id, type: 'result', result: loaded }, [loaded.triangles.buffer]);
+        break;
+      }
+      case 'buildModel': {
+        const n = request.names.length;
+        post({ id: request.id, type: 'progress', fraction: 0.05, label: `Building a model of ${n} subjects (PCA and quality curves)` });
+        const built = models.buildModel(request.positions, request.names, request.variance);
+        post({ id: request.id, type: 'progress', fraction: 1, label: 'Model built' });
+        post({ id: request.id, type: 'result', result: built }, [built.triangles.buffer]);
+        break;
+      }
+      case 'reconstruct': {
+        const body = models.reconstruct(request.coefficients);
+        post({ id: request.id, type: 'result', result: body }, [body.positions.buffer, body.normals.buffer]);
+        break;
+      }
+      case 'modelCsv':
+        post({ id: request.id, type: 'result', result: models.modelCsv(request.kind) });
+        break;
+      case 'modelGlb': {
+        const glb = models.modelGlb(request.modes);
+        post({ id: request.id, type: 'result', result: glb }, [glb.buffer]);
+        break;
+      }
+      case 'modelFile': {
+        const file = models.modelFile();
+        post({ id: request.id, type: 'result', result: file }, [file.buffer]);
         break;
       }
     }

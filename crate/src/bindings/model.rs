@@ -1,0 +1,320 @@
+//! Shape models for JavaScript: load a model file (or build one from fits), reconstruct stitched
+//! bodies from slider values in σ units, measure them, and export CSV / GLB / the model file.
+//!
+//! A [`ShapeSpace`] lives in the worker for as long as the model is shown; every call copies its
+//! result out of WASM memory.
+
+use js_sys::{Float32Array, Uint32Array, Uint8Array};
+use nalgebra::Point3;
+use serde::Serialize;
+use wasm_bindgen::prelude::*;
+
+use crate::pca::export::{eigenvalues_csv, quality_csv, scores_csv};
+use crate::pca::file::{read_model, read_model_for, write_model, BasisPrecision};
+use crate::pca::gltf::model_glb;
+use crate::pca::measure::{girth_triangles, measure, MeasureLandmarks, MeasureParams};
+use crate::pca::{
+    build_body_model, BodyModel, BuildParams, Coefficients, QualityCurves, ShapeModel,
+    TemplateIdentity, TrainingSet,
+};
+use crate::template::{Resolution, Segment, Template};
+
+fn js(e: impl std::fmt::Display) -> JsError {
+    JsError::new(&e.to_string())
+}
+
+fn template_at(resolution: Resolution) -> Result<Template, JsError> {
+    let base = Template::embedded().map_err(|e| js(format!("embedded template: {e}")))?;
+    Ok(if resolution == Resolution::Base {
+        base
+    } else {
+        base.at_resolution(resolution)
+    })
+}
+
+/// One part's facts for charts and sliders (JSON of `ShapeSpace::info_json`).
+#[derive(Serialize)]
+struct PartInfo<'a> {
+    name: &'a str,
+    vertex_count: usize,
+    /// Kept modes' variances λₖ (m²).
+    variances: &'a [f64],
+    /// All non-zero variances, for the explained fraction.
+    all_variances: &'a [f64],
+    quality: &'a QualityCurves,
+}
+
+fn part<'a>(name: &'a str, m: &'a ShapeModel) -> PartInfo<'a> {
+    PartInfo {
+        name,
+        vertex_count: m.vertex_count(),
+        variances: &m.variances,
+        all_variances: &m.all_variances,
+        quality: &m.quality,
+    }
+}
+
+#[derive(Serialize)]
+struct ModelInfo<'a> {
+    template: &'a TemplateIdentity,
+    settings: &'a BuildParams,
+    subjects: &'a [String],
+    triangle_count: usize,
+    /// Whole body first, then the six segments in `Segment::ALL` order.
+    parts: Vec<PartInfo<'a>>,
+}
+
+/// A loaded shape model with the template data its measurements need.
+#[wasm_bindgen]
+pub struct ShapeSpace {
+    model: BodyModel,
+    landmarks: MeasureLandmarks,
+    sections: Vec<u32>,
+    positions: Vec<f32>,
+}
+
+impl ShapeSpace {
+    fn new(model: BodyModel, template: &Template) -> Result<ShapeSpace, JsError> {
+        let landmarks = MeasureLandmarks::from_named(template.landmark_vertices()).map_err(js)?;
+        let sections = girth_triangles(&model.triangles, &model.segment_weights);
+        let positions = vec![0.0; 3 * model.template.vertex_count];
+        Ok(ShapeSpace {
+            model,
+            landmarks,
+            sections,
+            positions,
+        })
+    }
+
+    /// σ-unit values to model coefficients; `segment_counts[s] < 0` means "not overridden".
+    fn coefficients(
+        &self,
+        whole_sigma: &[f64],
+        segment_sigma: &[f64],
+        segment_counts: &[i32],
+    ) -> Result<Coefficients, JsError> {
+        if segment_counts.len() != 6 {
+            return Err(js("segment_counts must hold one entry per segment (6)"));
+        }
+        if whole_sigma
+            .iter()
+            .chain(segment_sigma)
+            .any(|x| !x.is_finite())
+        {
+            return Err(js("coefficients must be finite numbers"));
+        }
+        let mut c = Coefficients {
+            whole: self
+                .model
+                .whole
+                .coefficients_from_sigma(whole_sigma)
+                .map_err(|e| js(format!("whole body: {e}")))?,
+            ..Coefficients::default()
+        };
+        let mut at = 0usize;
+        for (s, &n) in Segment::ALL.iter().zip(segment_counts) {
+            if n < 0 {
+                continue;
+            }
+            let n = n as usize;
+            let values = segment_sigma
+                .get(at..at + n)
+                .ok_or_else(|| js("segment coefficients are shorter than their counts say"))?;
+            at += n;
+            c.segments[s.index()] = Some(
+                self.model
+                    .segment(*s)
+                    .coefficients_from_sigma(values)
+                    .map_err(|e| js(format!("segment {}: {e}", s.name())))?,
+            );
+        }
+        Ok(c)
+    }
+}
+
+#[wasm_bindgen]
+impl ShapeSpace {
+    /// Vertex count `#V` of the model's template resolution.
+    #[wasm_bindgen(getter, js_name = vertexCount)]
+    pub fn vertex_count(&self) -> u32 {
+        self.model.template.vertex_count as u32
+    }
+
+    /// `#F·3` triangle vertex indices (copied out).
+    pub fn triangles(&self) -> Uint32Array {
+        let flat: Vec<u32> = self.model.triangles.iter().flatten().copied().collect();
+        Uint32Array::from(flat.as_slice())
+    }
+
+    /// Template identity, settings, subjects and per-part variances and quality curves, as JSON.
+    #[wasm_bindgen(js_name = infoJson)]
+    pub fn info_json(&self) -> Result<String, JsError> {
+        let mut parts = vec![part("whole", &self.model.whole)];
+        for s in Segment::ALL {
+            parts.push(part(s.name(), self.model.segment(s)));
+        }
+        let info = ModelInfo {
+            template: &self.model.template,
+            settings: &self.model.settings,
+            subjects: &self.model.subjects,
+            triangle_count: self.model.triangles.len(),
+            parts,
+        };
+        serde_json::to_string(&info).map_err(js)
+    }
+
+    /// Reconstructs the stitched body: whole-body values in σ units (shorter = trailing zeros),
+    /// `segment_sigma` the overridden segments' σ values concatenated in segment order, and
+    /// `segment_counts` (6 entries) how many belong to each (negative: not overridden).
+    /// Returns the `#V·3` positions in metres (copied out); the body is kept for `measureJson`.
+    pub fn reconstruct(
+        &mut self,
+        whole_sigma: &[f64],
+        segment_sigma: &[f64],
+        segment_counts: &[i32],
+    ) -> Result<Float32Array, JsError> {
+        let c = self.coefficients(whole_sigma, segment_sigma, segment_counts)?;
+        self.model
+            .reconstruct_into(&c, &mut self.positions)
+            .map_err(js)?;
+        Ok(Float32Array::from(self.positions.as_slice()))
+    }
+
+    /// Seam quality of the same coefficients as `reconstruct`, as JSON
+    /// `{max_jump, segments: [a, b] | null, vertex}` (metres).
+    #[wasm_bindgen(js_name = seamJson)]
+    pub fn seam_json(
+        &self,
+        whole_sigma: &[f64],
+        segment_sigma: &[f64],
+        segment_counts: &[i32],
+    ) -> Result<String, JsError> {
+        let c = self.coefficients(whole_sigma, segment_sigma, segment_counts)?;
+        let seam = self.model.seam_report(&c).map_err(js)?;
+        serde_json::to_string(&seam).map_err(js)
+    }
+
+    /// Measurements of the last reconstructed body as JSON (metres; girths may be `null`).
+    #[wasm_bindgen(js_name = measureJson)]
+    pub fn measure_json(&self) -> Result<String, JsError> {
+        let m = measure(
+            &self.positions,
+            &self.model.triangles,
+            &self.sections,
+            &self.landmarks,
+            &MeasureParams::default(),
+        )
+        .map_err(js)?;
+        serde_json::to_string(&m).map_err(js)
+    }
+
+    /// `eigenvalues.csv` of all seven models.
+    #[wasm_bindgen(js_name = eigenvaluesCsv)]
+    pub fn eigenvalues_csv(&self) -> String {
+        eigenvalues_csv(&self.model)
+    }
+
+    /// `scores.csv` (long format) of all seven models.
+    #[wasm_bindgen(js_name = scoresCsv)]
+    pub fn scores_csv(&self) -> String {
+        scores_csv(&self.model)
+    }
+
+    /// `quality.csv` of all seven models.
+    #[wasm_bindgen(js_name = qualityCsv)]
+    pub fn quality_csv(&self) -> String {
+        quality_csv(&self.model)
+    }
+
+    /// The whole-body model as GLB: mean base mesh, the first `modes` modes at +1σ as morph targets.
+    #[wasm_bindgen(js_name = modelGlb)]
+    pub fn model_glb(&self, modes: u32) -> Uint8Array {
+        Uint8Array::from(model_glb(&self.model, modes as usize).as_slice())
+    }
+
+    /// The model as a version-1 model file (f32 basis).
+    #[wasm_bindgen(js_name = fileBytes)]
+    pub fn file_bytes(&self) -> Uint8Array {
+        Uint8Array::from(write_model(&self.model, BasisPrecision::F32).as_slice())
+    }
+}
+
+/// Reads a model file and checks it against the embedded template at the model's resolution.
+/// Errors are the core's documented messages prefixed by `file_name`.
+#[wasm_bindgen(js_name = loadShapeModel)]
+pub fn load_shape_model(bytes: &[u8], file_name: &str) -> Result<ShapeSpace, JsError> {
+    let named = |e: &dyn std::fmt::Display| js(format!("{file_name}: {e}"));
+    let header = read_model(bytes).map_err(|e| named(&e))?;
+    let resolution: Resolution = header.template.resolution.parse().map_err(|e| named(&e))?;
+    drop(header);
+    let template = template_at(resolution)?;
+    let model =
+        read_model_for(bytes, &TemplateIdentity::of_template(&template)).map_err(|e| named(&e))?;
+    ShapeSpace::new(model, &template)
+}
+
+/// Builds a model from `count` fits in template vertex order (`positions` = count·#V·3, metres),
+/// keeping modes up to `variance` (0 < variance ≤ 1). `names_json` is a JSON array of names.
+#[wasm_bindgen(js_name = buildShapeModel)]
+pub fn build_shape_model(
+    positions: &[f32],
+    count: u32,
+    names_json: &str,
+    variance: f64,
+    compute_quality: bool,
+) -> Result<ShapeSpace, JsError> {
+    let count = count as usize;
+    if count < 2 {
+        return Err(js("a shape model needs at least 2 aligned subjects"));
+    }
+    if !(variance > 0.0 && variance <= 1.0) {
+        return Err(js("the variance to keep must be in (0, 1]"));
+    }
+    if positions.len() % (3 * count) != 0 {
+        return Err(js("the subjects' positions do not split into equal bodies"));
+    }
+    let vertex_count = positions.len() / (3 * count);
+    let base = Template::embedded().map_err(|e| js(format!("embedded template: {e}")))?;
+    let template = if base.mesh().vertex_count() == vertex_count {
+        base
+    } else {
+        let fine = base.at_resolution(Resolution::Fine);
+        if fine.mesh().vertex_count() != vertex_count {
+            return Err(js(format!(
+                "{vertex_count} vertices per subject match no template resolution (base {}, fine {}); fitted meshes must be in template vertex order",
+                base.mesh().vertex_count(),
+                fine.mesh().vertex_count()
+            )));
+        }
+        fine
+    };
+    let names: Vec<String> = serde_json::from_str(names_json)
+        .map_err(|e| js(format!("subject names are not a JSON list: {e}")))?;
+    if names.len() != count {
+        return Err(js("one name per subject is needed"));
+    }
+    let shapes = positions
+        .chunks_exact(3 * vertex_count)
+        .map(|body| {
+            body.chunks_exact(3)
+                .map(|p| Point3::new(p[0] as f64, p[1] as f64, p[2] as f64))
+                .collect()
+        })
+        .collect();
+    let set = TrainingSet {
+        template: TemplateIdentity::of_template(&template),
+        triangles: template.mesh().triangles.clone(),
+        segment_weights: (0..vertex_count as u32)
+            .map(|v| template.segment_weights(v))
+            .collect(),
+        names,
+        shapes,
+    };
+    let params = BuildParams {
+        variance,
+        compute_quality,
+        ..BuildParams::default()
+    };
+    let model = build_body_model(&set, &params).map_err(js)?;
+    ShapeSpace::new(model, &template)
+}

@@ -1,0 +1,329 @@
+// The shape-space workflow: loads the demo model (or the one a link names), keeps the slider
+// values, morphs through the MorphQueue, and runs exports, CSV, links and in-app model builds.
+import type { CoreClient } from '../client/core-client';
+import { objText, plyBytes, positionsChecksum } from '../shared/mesh-export';
+import { decodeShapeLink, encodeShapeLink, isShareableModel, quantiseSigma, type ShapeLink } from '../shared/shape-link';
+import { SEGMENTS, type LoadedModel, type ModelCsv, type ReconstructedBody, type SegmentName, type ShapeCoefficients } from '../shared/shape-results';
+import { download } from '../ui/download';
+import type { ErrorBanner } from '../ui/error-banner';
+import { ShapePanel, type PartName } from '../ui/shape-panel';
+import { bodiesGlb } from '../view/gltf-export';
+import type { Viewer } from '../view/viewer';
+import { MorphQueue } from './morph-queue';
+import { readFits } from './read-fits';
+import { subjects } from './subjects';
+
+/** Where the app finds its embedded model, relative to the page. */
+export const DEMO_MODEL = 'models/demo.bsm';
+
+export class ShapeSpace {
+  private model: LoadedModel | null = null;
+  /** Same-origin path or https URL of the model, `null` when dropped or built here. */
+  private source: string | null = null;
+  private coefficients: ShapeCoefficients = { whole: [], segments: SEGMENTS.map(() => null) };
+  private body: ReconstructedBody | null = null;
+  private readonly panel: ShapePanel;
+  private readonly morph: MorphQueue;
+  private readonly page = document.body;
+  private bodies = 0;
+  /** Set while a scan is being looked at: the shape body stays out of the view until asked for. */
+  private suppressed = false;
+
+  constructor(
+    private readonly client: CoreClient,
+    private readonly viewer: Viewer,
+    private readonly banner: ErrorBanner,
+  ) {
+    this.morph = new MorphQueue(client, (body) => this.show(body), (message) => this.banner.show([message]));
+    this.panel = new ShapePanel({
+      onSlider: (part, k, t) => this.setValue(part, k, t),
+      onView: (part) => this.setView(part),
+      onReset: () => this.reset(),
+      onRandom: () => this.random(),
+      onFollowWhole: (part) => this.followWhole(part),
+      onCsv: (kind) => void this.csv(kind),
+      onExportBody: (format) => void this.exportBody(format),
+      onExportMode: (mode, steps) => void this.exportMode(mode, steps),
+      onExportModelGltf: () => void this.exportModelGltf(),
+      onSaveModel: () => void this.saveModel(),
+      onCopyLink: () => void this.copyLink(),
+      onBuild: (variance) => void this.build(variance),
+      onAddFits: (files) => void this.addFits(files),
+      onOpenModel: (files) => void this.openModelFiles(files),
+    });
+    subjects.subscribe((all) => {
+      const dropped = all.filter((s) => s.source === 'dropped').length;
+      this.panel.showSubjects(all.length - dropped, dropped);
+    });
+  }
+
+  /** Opens the model and body a link names, else the demo model at its mean. */
+  async start(hash: string): Promise<void> {
+    const decoded = decodeShapeLink(hash);
+    if (decoded && decoded.problems.length) {
+      this.banner.show([`The link was ignored and the app opened in its default state: ${decoded.problems.join('; ')}.`]);
+      this.page.dataset.linkIgnored = 'true';
+    }
+    const link = decoded?.link ?? null;
+    const loaded = await this.fetchModel(link?.model ?? DEMO_MODEL);
+    if (!loaded && link && link.model !== DEMO_MODEL) await this.fetchModel(DEMO_MODEL);
+    if (link && loaded) this.restore(link);
+    else this.redraw(true);
+  }
+
+  /** Takes the shape body out of the view (a scan was opened); any shape action brings it back. */
+  hide(): void {
+    this.suppressed = true;
+    this.viewer.removeBody('shape');
+    this.page.dataset.shapeShown = 'false';
+  }
+
+  /** Whether `name` is a model file for this panel (dropped with other files). */
+  static isModelFile(name: string): boolean {
+    return /\.bsm$/i.test(name);
+  }
+
+  async openModelFiles(files: File[]): Promise<void> {
+    this.suppressed = false;
+    const file = files.at(-1);
+    if (!file) return;
+    const bytes = await file.arrayBuffer();
+    await this.load(bytes, file.name, null);
+  }
+
+  private async fetchModel(location: string): Promise<boolean> {
+    try {
+      const response = await fetch(location);
+      if (!response.ok) throw new Error(`${location}: the server answered ${response.status} ${response.statusText}`);
+      return await this.load(await response.arrayBuffer(), location, location);
+    } catch (error) {
+      this.banner.show([`The shape model could not be loaded: ${error instanceof Error ? error.message : String(error)}`]);
+      return false;
+    }
+  }
+
+  /** Loads a model; on failure the banner shows the core's message and the old model stays. */
+  private async load(bytes: ArrayBuffer, fileName: string, source: string | null): Promise<boolean> {
+    this.page.dataset.shapeBusy = 'true';
+    try {
+      const loaded = await this.client.call({ type: 'loadModel', bytes, fileName }, { transfer: [bytes] });
+      this.adopt(loaded, source, fileName);
+      this.redraw(true);
+      return true;
+    } catch (error) {
+      this.banner.show([error instanceof Error ? error.message : String(error)]);
+      this.page.dataset.shapeLoadFailed = String(Number(this.page.dataset.shapeLoadFailed ?? '0') + 1);
+      return false;
+    } finally {
+      this.page.dataset.shapeBusy = 'false';
+    }
+  }
+
+  private adopt(loaded: LoadedModel, source: string | null, label: string): void {
+    this.model = loaded;
+    this.source = source;
+    this.coefficients = { whole: loaded.info.parts[0]!.variances.map(() => 0), segments: SEGMENTS.map(() => null) };
+    this.panel.showModel(label, loaded.info.parts, loaded.info.subjects.length);
+    this.panel.showView('whole', this.coefficients);
+    this.page.dataset.shapeModel = label;
+    this.page.dataset.shapeModes = String(loaded.info.parts[0]!.variances.length);
+  }
+
+  private restore(link: ShapeLink): void {
+    const parts = this.model!.info.parts;
+    const fit = (values: number[], n: number) => Array.from({ length: n }, (_, k) => quantiseSigma(values[k] ?? 0));
+    this.coefficients = {
+      whole: fit(link.coefficients.whole, parts[0]!.variances.length),
+      segments: link.coefficients.segments.map((s, i) => (s ? fit(s, parts[i + 1]!.variances.length) : null)),
+    };
+    this.panel.showView(link.view, this.coefficients);
+    // The load asked to frame the camera; a link's own camera wins over that.
+    this.frameNext = !link.camera;
+    this.redraw(!link.camera);
+    if (link.camera) this.viewer.setCameraPose(link.camera);
+    this.page.dataset.linkRestored = 'true';
+  }
+
+  private setValue(part: PartName, k: number, t: number): void {
+    this.suppressed = false;
+    const value = quantiseSigma(t);
+    if (part === 'whole') this.coefficients.whole[k] = value;
+    else {
+      const i = SEGMENTS.indexOf(part);
+      const n = this.model!.info.parts[i + 1]!.variances.length;
+      const own = this.coefficients.segments[i] ?? Array.from({ length: n }, () => 0);
+      own[k] = value;
+      const wasFollowing = !this.coefficients.segments[i];
+      this.coefficients.segments[i] = own;
+      if (wasFollowing) this.panel.showView(part, this.coefficients);
+    }
+    this.redraw(false);
+  }
+
+  private setView(part: PartName): void {
+    this.suppressed = false;
+    this.panel.showView(part, this.coefficients);
+    this.page.dataset.shapeView = part;
+  }
+
+  private followWhole(part: SegmentName): void {
+    this.suppressed = false;
+    this.coefficients.segments[SEGMENTS.indexOf(part)] = null;
+    this.panel.showView(part, this.coefficients);
+    this.redraw(false);
+  }
+
+  private reset(): void {
+    this.suppressed = false;
+    if (!this.model) return;
+    this.coefficients = { whole: this.coefficients.whole.map(() => 0), segments: SEGMENTS.map(() => null) };
+    this.panel.showView(this.panel.currentView, this.coefficients);
+    this.redraw(false);
+  }
+
+  /** b ~ N(0, σ²): standard normal σ values (Box–Muller), clipped to the sliders' ±3σ. */
+  private random(): void {
+    this.suppressed = false;
+    if (!this.model) return;
+    const normal = () => Math.sqrt(-2 * Math.log(1 - Math.random())) * Math.cos(2 * Math.PI * Math.random());
+    const draw = (n: number) => Array.from({ length: n }, () => quantiseSigma(Math.max(-3, Math.min(3, normal()))));
+    this.coefficients = {
+      whole: draw(this.coefficients.whole.length),
+      segments: this.coefficients.segments.map((s) => (s ? draw(s.length) : null)),
+    };
+    this.panel.showView(this.panel.currentView, this.coefficients);
+    this.redraw(false);
+  }
+
+  private frameNext = false;
+
+  private redraw(frame: boolean): void {
+    if (!this.model) return;
+    this.frameNext ||= frame;
+    this.page.dataset.shapeSettled = 'false';
+    this.morph.request(this.coefficients);
+  }
+
+  private show(body: ReconstructedBody): void {
+    if (!this.model) return;
+    this.body = body;
+    if (!this.suppressed) this.viewer.showBody('shape', { mesh: { positions: body.positions, triangles: this.model.triangles, normals: body.normals }, colour: 0xc8b4a0 }, this.frameNext);
+    if (!this.suppressed) this.frameNext = false;
+    this.page.dataset.shapeShown = String(!this.suppressed);
+    this.panel.showBody(body, body.positions.length / 3);
+    const p = this.page.dataset;
+    p.shapeChecksum = positionsChecksum(body.positions);
+    p.shapeStature = body.measurements.stature.toFixed(5);
+    p.shapeReconstructMs = body.reconstructMs.toFixed(3);
+    p.shapeBodies = String(++this.bodies);
+    p.shapeReady = 'true';
+    const hint = document.getElementById('empty-hint');
+    if (hint && !this.suppressed) hint.hidden = true;
+    if (this.morph.idle) p.shapeSettled = 'true';
+    this.updateLink();
+  }
+
+  private updateLink(): void {
+    if (!this.model) return;
+    if (!this.source || !isShareableModel(this.source)) {
+      this.panel.showLink('', 'This model was opened from a local file or built in this session: it has no address, so a link could not show it to anyone else. Put the model file on a web server (https) to share bodies of it.');
+      this.page.dataset.shapeLink = '';
+      return;
+    }
+    const hash = encodeShapeLink({ model: this.source, coefficients: this.coefficients, view: this.panel.currentView, camera: this.viewer.cameraPose() });
+    const url = `${location.origin}${location.pathname}${hash}`;
+    this.panel.showLink(url, 'The link holds the model location, every coefficient (0.001σ steps), the segment view and the camera.');
+    this.page.dataset.shapeLink = url;
+  }
+
+  private async copyLink(): Promise<void> {
+    this.updateLink();
+    const url = this.page.dataset.shapeLink;
+    if (!url) return;
+    history.replaceState(null, '', url);
+    try {
+      await navigator.clipboard.writeText(url);
+    } catch {
+      // No clipboard permission (e.g. headless): the text field holds the link to copy by hand.
+    }
+  }
+
+  private async csv(kind: ModelCsv): Promise<void> {
+    const text = await this.client.call({ type: 'modelCsv', kind });
+    download(`${kind}.csv`, text, 'text/csv');
+  }
+
+  private async exportBody(format: 'ply' | 'obj' | 'glb'): Promise<void> {
+    const body = this.body;
+    const model = this.model;
+    if (!body || !model) return;
+    const comment = `BodySpace body of ${this.page.dataset.shapeModel ?? 'a shape model'}`;
+    if (format === 'ply') download('body.ply', plyBytes(body.positions, model.triangles, comment));
+    else if (format === 'obj') download('body.obj', objText(body.positions, model.triangles, comment), 'text/plain');
+    else download('body.glb', await bodiesGlb([{ name: 'body', positions: body.positions, normals: body.normals, triangles: model.triangles }]), 'model/gltf-binary');
+  }
+
+  /** One GLB with a body per σ step along whole-body mode `mode` (other values as they are). */
+  private async exportMode(mode: number, steps: number[]): Promise<void> {
+    const model = this.model;
+    if (!model || steps.length === 0) return;
+    const bodies = [];
+    for (const t of steps) {
+      const c = structuredClone(this.coefficients);
+      c.whole[mode] = t;
+      const body = await this.client.call({ type: 'reconstruct', coefficients: c });
+      bodies.push({ name: `mode${mode + 1}_${t >= 0 ? '+' : ''}${t}sd`, positions: body.positions, normals: body.normals, triangles: model.triangles });
+    }
+    download(`mode${mode + 1}.glb`, await bodiesGlb(bodies, 0.7), 'model/gltf-binary');
+  }
+
+  private async exportModelGltf(): Promise<void> {
+    if (!this.model) return;
+    const glb = await this.client.call({ type: 'modelGlb', modes: this.model.info.parts[0]!.variances.length });
+    download('shape-model.glb', glb, 'model/gltf-binary');
+  }
+
+  private async saveModel(): Promise<void> {
+    if (!this.model) return;
+    const bytes = await this.client.call({ type: 'modelFile' });
+    download('shape-model.bsm', bytes);
+  }
+
+  private async addFits(files: File[]): Promise<void> {
+    const model = this.model;
+    const vertexCount = model?.info.template.vertex_count ?? 13380;
+    const resolution = model?.info.template.resolution ?? 'base';
+    const errors = await readFits(this.client, subjects, files, vertexCount, resolution);
+    if (errors.length) this.banner.show(errors);
+  }
+
+  private async build(variance: number): Promise<void> {
+    const all = subjects.all;
+    if (all.length < 2) {
+      this.panel.showBuildStatus('A model needs at least 2 aligned subjects; add fitted meshes or align scans first.');
+      return;
+    }
+    const v = all[0]!.positions.length;
+    if (all.some((s) => s.positions.length !== v)) {
+      this.panel.showBuildStatus('The subjects are at different template resolutions; a model needs one.');
+      return;
+    }
+    const positions = new Float32Array(v * all.length);
+    all.forEach((s, i) => positions.set(s.positions, i * v));
+    this.page.dataset.shapeBuilding = 'true';
+    try {
+      const built = await this.client.call(
+        { type: 'buildModel', positions, names: all.map((s) => s.name), variance },
+        { transfer: [positions.buffer], onProgress: (f, label) => this.panel.showBuildStatus(`${label} (${Math.round(f * 100)} %)`) },
+      );
+      this.adopt(built, null, built.fileName);
+      this.panel.showBuildStatus(`Built from ${all.length} subjects.`);
+      this.redraw(true);
+    } catch (error) {
+      this.panel.showBuildStatus('');
+      this.banner.show([error instanceof Error ? error.message : String(error)]);
+    } finally {
+      this.page.dataset.shapeBuilding = 'false';
+    }
+  }
+}

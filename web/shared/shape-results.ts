@@ -1,0 +1,81 @@
+// What the worker returns about shape models. No DOM: shared by both threads.
+
+/** Segment names in the core's order (`template::Segment::ALL`). */
+export const SEGMENTS = ['head', 'left_arm', 'right_arm', 'torso', 'left_leg', 'right_leg'] as const;
+export type SegmentName = (typeof SEGMENTS)[number];
+
+/** Quality curves of one part (Styner 2003), index m−1 for m modes. */
+export interface QualityCurves {
+  compactness: number[];
+  generalization: number[];
+  generalization_sd: number[];
+  specificity: number[];
+  specificity_sd: number[];
+}
+
+/** One part of the model: `whole` or a segment. Variances in m². */
+export interface ModelPart {
+  name: 'whole' | SegmentName;
+  vertex_count: number;
+  variances: number[];
+  all_variances: number[];
+  quality: QualityCurves;
+}
+
+export interface ModelInfo {
+  template: { name: string; hash: string; resolution: string; vertex_count: number };
+  settings: { variance: number; max_modes: number | null; gpa: { pose: string } };
+  subjects: string[];
+  triangle_count: number;
+  /** Whole body first, then the segments in `SEGMENTS` order. */
+  parts: ModelPart[];
+}
+
+/** A model now held by the worker. */
+export interface LoadedModel {
+  info: ModelInfo;
+  triangles: Uint32Array;
+  fileName: string;
+}
+
+/** Slider values in σ units; `segments[s] === null`: that segment follows the whole body. */
+export interface ShapeCoefficients {
+  whole: number[];
+  segments: (number[] | null)[];
+}
+
+export interface Girth {
+  girth: number;
+  loop_length: number;
+  height: number;
+}
+
+/** Metres; girths are `null` when no closed section exists. */
+export interface Measurements {
+  stature: number;
+  chest: Girth | null;
+  waist: Girth | null;
+  hip: Girth | null;
+  arm_length: number;
+  inseam: number;
+}
+
+export interface SeamReport {
+  max_jump: number;
+  segments: [string, string] | null;
+  vertex: number | null;
+}
+
+/** A reconstructed body with its readings and what it cost in the worker. */
+export interface ReconstructedBody {
+  positions: Float32Array;
+  normals: Float32Array;
+  measurements: Measurements;
+  seam: SeamReport;
+  /** Core reconstruction (stitched) in the worker, ms. */
+  reconstructMs: number;
+  /** Measurements + seam report, ms. */
+  measureMs: number;
+}
+
+export type ModelCsv = 'eigenvalues' | 'scores' | 'quality';

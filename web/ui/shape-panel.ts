@@ -1,0 +1,210 @@
+// The "Shape space" panel: segment picker, one σ slider per mode of the part in view, reset and
+// random, live measurements, seam quality and timing, quality charts, CSV, exports, link, build.
+import type { ModelCsv, ModelPart, ReconstructedBody, SegmentName, ShapeCoefficients } from '../shared/shape-results';
+import { SEGMENTS } from '../shared/shape-results';
+import { byId, h } from './dom';
+import { qualityCharts } from './quality-charts';
+
+export type PartName = 'whole' | SegmentName;
+
+export interface ShapeActions {
+  onSlider(part: PartName, mode: number, sigma: number): void;
+  onView(part: PartName): void;
+  onReset(): void;
+  onRandom(): void;
+  onFollowWhole(part: SegmentName): void;
+  onCsv(kind: ModelCsv): void;
+  onExportBody(format: 'ply' | 'obj' | 'glb'): void;
+  onExportMode(mode: number, steps: number[]): void;
+  onExportModelGltf(): void;
+  onSaveModel(): void;
+  onCopyLink(): void;
+  onBuild(variance: number): void;
+  onAddFits(files: File[]): void;
+  onOpenModel(files: File[]): void;
+}
+
+const LABELS: Record<PartName, string> = {
+  whole: 'Whole body',
+  head: 'Head',
+  left_arm: 'Left arm',
+  right_arm: 'Right arm',
+  torso: 'Torso',
+  left_leg: 'Left leg',
+  right_leg: 'Right leg',
+};
+
+const cm = (m: number | undefined | null) => (m == null ? '—' : `${(m * 100).toFixed(1)} cm`);
+
+export class ShapePanel {
+  private readonly root = byId('shape-panel');
+  private readonly head = h('div', { class: 'shape-head' });
+  private readonly sliders = h('div', { class: 'shape-sliders', 'data-testid': 'shape-sliders' });
+  private readonly readings = h('dl', { class: 'facts', 'data-testid': 'shape-readings' });
+  private readonly charts = h('div', {});
+  private readonly linkField = h('input', { type: 'text', readonly: '', class: 'shape-link', 'data-testid': 'shape-link', 'aria-label': 'Link to this body' });
+  private readonly linkNote = h('p', { class: 'note', 'data-testid': 'shape-link-note' });
+  private readonly subjectsNote = h('p', { class: 'note', 'data-testid': 'shape-subjects' }, 'No aligned subjects yet.');
+  private readonly buildStatus = h('p', { class: 'note', 'data-testid': 'shape-build-status' });
+  private readonly picker = h('select', { 'data-testid': 'shape-segment', 'aria-label': 'Part of the body' });
+  private readonly inputs: HTMLInputElement[] = [];
+  private parts: ModelPart[] = [];
+  private view: PartName = 'whole';
+
+  constructor(private readonly actions: ShapeActions) {
+    for (const part of ['whole', ...SEGMENTS] as PartName[]) this.picker.append(h('option', { value: part }, LABELS[part]));
+    this.picker.addEventListener('change', () => actions.onView(this.picker.value as PartName));
+    this.root.replaceChildren(
+      h('h2', {}, 'Shape space'),
+      this.head,
+      h('p', { class: 'placeholder', 'data-testid': 'shape-empty' }, 'Loading the demo model…'),
+    );
+  }
+
+  /** Lays the panel out for a model; `label` names it, `shareable` says whether links work. */
+  showModel(label: string, parts: ModelPart[], subjects: number): void {
+    this.parts = parts;
+    this.head.replaceChildren(
+      h('div', { class: 'file-name', 'data-testid': 'shape-model-name' }, label),
+      h('p', { class: 'note' }, `${subjects} subjects; ${parts[0]?.variances.length ?? 0} whole-body modes kept.`),
+    );
+    const button = (text: string, testid: string, run: () => void) => {
+      const b = h('button', { class: 'button', type: 'button', 'data-testid': testid }, text);
+      b.addEventListener('click', run);
+      return b;
+    };
+    const modeSelect = h('select', { 'data-testid': 'export-mode', 'aria-label': 'Mode to export' });
+    parts[0]?.variances.forEach((_, k) => modeSelect.append(h('option', { value: String(k) }, `Mode ${k + 1}`)));
+    const steps = h('input', { type: 'text', value: '-3,-1.5,0,1.5,3', 'data-testid': 'export-steps', 'aria-label': 'σ steps', class: 'small-input' });
+    const variance = h('input', { type: 'number', min: '50', max: '100', step: '0.5', value: '99', 'data-testid': 'build-variance', class: 'small-input', 'aria-label': 'Variance to keep (%)' });
+    const fits = h('input', { type: 'file', multiple: '', hidden: '', accept: '.ply,.obj,.gz', 'data-testid': 'fits-input' });
+    fits.addEventListener('change', () => {
+      this.actions.onAddFits([...(fits.files ?? [])]);
+      fits.value = '';
+    });
+    const modelInput = h('input', { type: 'file', hidden: '', accept: '.bsm', 'data-testid': 'model-input' });
+    modelInput.addEventListener('change', () => {
+      this.actions.onOpenModel([...(modelInput.files ?? [])]);
+      modelInput.value = '';
+    });
+    this.root.replaceChildren(
+      h('h2', {}, 'Shape space'),
+      this.head,
+      h('div', { class: 'row' }, this.picker),
+      h('div', { class: 'row' }, button('Reset to mean', 'shape-reset', () => this.actions.onReset()), button('Random body', 'shape-random', () => this.actions.onRandom())),
+      this.sliders,
+      h('h2', {}, 'Measurements'),
+      this.readings,
+      h('h2', {}, 'Quality of this part'),
+      this.charts,
+      h('div', { class: 'row' }, button('Eigenvalues CSV', 'csv-eigenvalues', () => this.actions.onCsv('eigenvalues')), button('Scores CSV', 'csv-scores', () => this.actions.onCsv('scores')), button('Quality CSV', 'csv-quality', () => this.actions.onCsv('quality'))),
+      h('h2', {}, 'Export'),
+      h('div', { class: 'row' }, button('Body PLY', 'export-ply', () => this.actions.onExportBody('ply')), button('OBJ', 'export-obj', () => this.actions.onExportBody('obj')), button('glTF', 'export-glb', () => this.actions.onExportBody('glb'))),
+      h('div', { class: 'row' }, modeSelect, steps, button('Along mode (glTF)', 'export-along', () => this.actions.onExportMode(Number(modeSelect.value), parseSteps(steps.value)))),
+      h('div', { class: 'row' }, button('Model as glTF morph targets', 'export-model-gltf', () => this.actions.onExportModelGltf())),
+      h('h2', {}, 'Link'),
+      h('div', { class: 'row' }, button('Copy link', 'copy-link', () => this.actions.onCopyLink()), this.linkField),
+      this.linkNote,
+      h('h2', {}, 'Models'),
+      h('div', { class: 'row' }, button('Open model…', 'open-model', () => modelInput.click()), button('Save model file', 'save-model', () => this.actions.onSaveModel()), modelInput),
+      this.subjectsNote,
+      h('div', { class: 'row' }, button('Add fitted meshes…', 'add-fits', () => fits.click()), fits),
+      h('div', { class: 'row' }, h('label', {}, 'Keep ', variance, ' % variance'), button('Build model', 'build-model', () => this.actions.onBuild(Number(variance.value) / 100))),
+      this.buildStatus,
+    );
+  }
+
+  /** Shows the sliders of `view` at `values` (σ), noting whether a segment has its own shape. */
+  showView(view: PartName, coefficients: ShapeCoefficients): void {
+    this.view = view;
+    this.picker.value = view;
+    const index = view === 'whole' ? 0 : SEGMENTS.indexOf(view) + 1;
+    const part = this.parts[index];
+    this.inputs.length = 0;
+    if (!part) return;
+    const own = view === 'whole' ? coefficients.whole : coefficients.segments[index - 1];
+    const total = part.all_variances.reduce((a, b) => a + b, 0) || 1;
+    const rows: HTMLElement[] = [];
+    if (view !== 'whole') {
+      const follow = h('button', { class: 'button', type: 'button', 'data-testid': 'shape-follow-whole' }, 'Follow whole body');
+      follow.addEventListener('click', () => this.actions.onFollowWhole(view));
+      rows.push(
+        h('p', { class: 'note', 'data-testid': 'shape-segment-state' }, own ? `${LABELS[view]} has its own shape, stitched into the body.` : `${LABELS[view]} follows the whole body; moving a slider gives it its own shape (starting from its mean).`),
+        follow,
+      );
+    }
+    part.variances.forEach((lambda, k) => {
+      const sd = Math.sqrt(lambda);
+      const t = own?.[k] ?? 0;
+      const input = h('input', { type: 'range', min: '-3', max: '3', step: '0.01', value: String(t), 'data-testid': `shape-slider-${k}`, 'aria-label': `Mode ${k + 1} (σ)` });
+      const value = h('span', { class: 'slider-value', 'data-testid': `shape-slider-value-${k}` }, formatSigma(t));
+      const row = h(
+        'div',
+        { class: 'slider-row' },
+        h('span', { class: 'slider-label' }, `${k + 1}`),
+        input,
+        value,
+        h('span', { class: 'slider-explained', 'data-testid': `shape-explained-${k}` }, `${((100 * lambda) / total).toFixed(1)}%`),
+      );
+      const title = (x: number) => `Mode ${k + 1}: t = ${x.toFixed(2)}σ, b = t·√λ = ${(x * sd).toFixed(4)} (√λ = ${sd.toFixed(4)} m); explains ${((100 * lambda) / total).toFixed(2)} % of the variance`;
+      row.title = title(t);
+      input.addEventListener('input', () => {
+        const x = Number(input.value);
+        value.textContent = formatSigma(x);
+        row.title = title(x);
+        this.actions.onSlider(view, k, x);
+      });
+      this.inputs.push(input);
+      rows.push(row);
+    });
+    this.sliders.replaceChildren(...rows);
+    this.charts.replaceChildren(qualityCharts(part.quality));
+  }
+
+  get currentView(): PartName {
+    return this.view;
+  }
+
+  /** Readings of the body on screen. */
+  showBody(body: ReconstructedBody, vertexCount: number): void {
+    const m = body.measurements;
+    const fact = (label: string, testid: string, value: string) => [h('dt', {}, label), h('dd', { 'data-testid': testid }, value)];
+    const seam = body.seam.segments && body.seam.max_jump > 0 ? `${(body.seam.max_jump * 1000).toFixed(2)} mm (${body.seam.segments.join(' / ')})` : '0 mm';
+    this.readings.replaceChildren(
+      ...fact('Stature', 'measure-stature', cm(m.stature)),
+      ...fact('Chest girth', 'measure-chest', cm(m.chest?.girth)),
+      ...fact('Waist girth', 'measure-waist', cm(m.waist?.girth)),
+      ...fact('Hip girth', 'measure-hip', cm(m.hip?.girth)),
+      ...fact('Arm length', 'measure-arm', cm(m.arm_length)),
+      ...fact('Inseam', 'measure-inseam', cm(m.inseam)),
+      ...fact('Largest seam jump', 'seam-jump', seam),
+      ...fact('Reconstruction', 'reconstruct-ms', `${body.reconstructMs.toFixed(2)} ms`),
+      ...fact('Measuring', 'measure-ms', `${body.measureMs.toFixed(1)} ms`),
+      ...fact('Vertices', 'shape-vertices', String(vertexCount)),
+    );
+  }
+
+  showLink(text: string, note: string): void {
+    this.linkField.value = text;
+    this.linkNote.textContent = note;
+  }
+
+  showSubjects(aligned: number, dropped: number): void {
+    this.subjectsNote.textContent = `${aligned + dropped} subjects in this session (${aligned} aligned, ${dropped} dropped fitted meshes).`;
+  }
+
+  showBuildStatus(text: string): void {
+    this.buildStatus.textContent = text;
+  }
+}
+
+function formatSigma(t: number): string {
+  return `${t >= 0 ? '+' : ''}${t.toFixed(2)}σ`;
+}
+
+function parseSteps(text: string): number[] {
+  return text
+    .split(',')
+    .map((s) => Number(s.trim()))
+    .filter((x) => Number.isFinite(x) && Math.abs(x) <= 10);
+}
