@@ -49,7 +49,8 @@ Promise.all([client.call({ type: 'version' }), client.call({ type: 'caesarNames'
     landmarksPanel.render(null);
     topBar.setStatus(`Core ${version} ready. Drop a scan and its landmarks anywhere on the page.`);
     body.dataset.coreReady = 'true';
-    return templateView.load('base', true);
+    // A shared link brings its own camera: the template must not re-frame over it.
+    return templateView.load('base', !location.hash);
   })
   .catch((error: Error) => {
     topBar.setStatus('The core did not start.');

@@ -207,7 +207,10 @@ export class ShapeSpace {
   private show(body: ReconstructedBody): void {
     if (!this.model) return;
     this.body = body;
-    if (!this.suppressed) this.viewer.showBody('shape', { mesh: { positions: body.positions, triangles: this.model.triangles, normals: body.normals }, colour: 0xc8b4a0 }, this.frameNext);
+    if (!this.suppressed) {
+      const mesh = { positions: body.positions, triangles: this.model.triangles, normals: body.normals };
+      this.viewer.showBody('shape', { mesh, colour: 0xc8b4a0, transform: standBeside(body.positions) }, this.frameNext);
+    }
     if (!this.suppressed) this.frameNext = false;
     this.page.dataset.shapeShown = String(!this.suppressed);
     this.panel.showBody(body, body.positions.length / 3);
@@ -326,4 +329,15 @@ export class ShapeSpace {
       this.page.dataset.shapeBuilding = 'false';
     }
   }
+}
+
+/** Model bodies are centred on their centroid (GPA): shown standing on the floor, 1 m to the
+ * template's side, so the template and the model body are both in view (display only). */
+const SHAPE_BODY_SIDE_OFFSET_M = 1.0;
+
+function standBeside(positions: Float32Array): number[] {
+  let minY = Infinity;
+  for (let i = 1; i < positions.length; i += 3) minY = Math.min(minY, positions[i]!);
+  if (!Number.isFinite(minY)) minY = 0;
+  return [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, SHAPE_BODY_SIDE_OFFSET_M, -minY, 0, 1];
 }

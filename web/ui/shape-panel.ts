@@ -99,7 +99,7 @@ export class ShapePanel {
       this.charts,
       h('div', { class: 'row' }, button('Eigenvalues CSV', 'csv-eigenvalues', () => this.actions.onCsv('eigenvalues')), button('Scores CSV', 'csv-scores', () => this.actions.onCsv('scores')), button('Quality CSV', 'csv-quality', () => this.actions.onCsv('quality'))),
       h('h2', {}, 'Export'),
-      h('div', { class: 'row' }, button('Body PLY', 'export-ply', () => this.actions.onExportBody('ply')), button('OBJ', 'export-obj', () => this.actions.onExportBody('obj')), button('glTF', 'export-glb', () => this.actions.onExportBody('glb'))),
+      h('div', { class: 'row' }, button('Body PLY', 'shape-export-ply', () => this.actions.onExportBody('ply')), button('OBJ', 'shape-export-obj', () => this.actions.onExportBody('obj')), button('glTF', 'shape-export-glb', () => this.actions.onExportBody('glb'))),
       h('div', { class: 'row' }, modeSelect, steps, button('Along mode (glTF)', 'export-along', () => this.actions.onExportMode(Number(modeSelect.value), parseSteps(steps.value)))),
       h('div', { class: 'row' }, button('Model as glTF morph targets', 'export-model-gltf', () => this.actions.onExportModelGltf())),
       h('h2', {}, 'Link'),
