@@ -59,6 +59,12 @@ pub struct FineAlignParams {
     pub initial_stiffness: f64,
     /// Factor by which the stiffness multiplier shrinks per round (0 < decay ≤ 1).
     pub stiffness_decay: f64,
+    /// Weight of the landmark anchors of [`crate::align::fine_align_anchored`] relative to the
+    /// data weight 1 of a vertex: an anchored vertex is also pulled towards its landmark by
+    /// a·κ·landmark_weight·‖T_i v_i − L_i‖² (an addition to the paper, which drops the markers
+    /// after the RBF warp; docs/fine-alignment.md measures it). 0 switches anchoring off; plain
+    /// [`crate::align::fine_align`] has no anchors and ignores it.
+    pub landmark_weight: f64,
 }
 
 impl Default for FineAlignParams {
@@ -80,6 +86,7 @@ impl Default for FineAlignParams {
             max_match_distance: f64::INFINITY,
             initial_stiffness: 1.0,
             stiffness_decay: 0.5,
+            landmark_weight: 0.0,
         }
     }
 }
@@ -148,6 +155,10 @@ impl FineAlignParams {
         if !(self.stiffness_decay > 0.0 && self.stiffness_decay <= 1.0) {
             let v = self.stiffness_decay;
             return Err(bad("stiffness_decay", v, "must be in (0, 1]"));
+        }
+        if !(self.landmark_weight.is_finite() && self.landmark_weight >= 0.0) {
+            let v = self.landmark_weight;
+            return Err(bad("landmark_weight", v, "must be finite and ≥ 0"));
         }
         Ok(())
     }

@@ -61,6 +61,10 @@ pub struct AlignArgs {
     /// Limit on fine-alignment L-BFGS iterations.
     #[arg(long, default_value_t = 200)]
     pub max_iterations: usize,
+    /// Weight of the landmark anchors in fine alignment (0 = off, the paper; see
+    /// docs/fine-alignment.md). Default: FineAlignParams::default().landmark_weight.
+    #[arg(long)]
+    pub landmark_weight: Option<f64>,
     /// Also write the JSON report to this file.
     #[arg(long)]
     pub report: Option<PathBuf>,
