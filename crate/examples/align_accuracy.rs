@@ -2,7 +2,7 @@
 //! synthetic subjects with ground truth (`bodyspace synth`).
 //!
 //! `cargo run --release --example align_accuracy -- DIR [--n N] [--kernel K] [--kernel-param P]
-//!  [--a A] [--b B] [--max-iterations N] [--iterations-per-round N] [--anneal INIT:DECAY]
+//!  [--lambda L] [--a A] [--b B] [--max-iterations N] [--iterations-per-round N] [--anneal INIT:DECAY]
 //!  [--relative-tolerance T] [--displacement-tolerance M] [--landmark-weight W] [--quiet]
 //!  [--export DIR]`
 //!
@@ -64,6 +64,7 @@ fn parse() -> Result<Options, String> {
             "--n" => options.n = num()? as usize,
             "--kernel" => kernel_name = Some(value.clone()),
             "--kernel-param" => kernel_param = Some(num()?),
+            "--lambda" => options.rbf.lambda = num()?,
             "--a" => options.fine.a = num()?,
             "--b" => options.fine.b = num()?,
             "--max-iterations" => options.fine.max_iterations = num()? as usize,

@@ -33,8 +33,9 @@ pub struct AlignArgs {
     /// Where to write the warped template (PLY, template vertex order, scan frame and units).
     #[arg(long)]
     pub out: PathBuf,
-    /// Radial basis function: gaussian, thin-plate or multiquadric.
-    #[arg(long, default_value = "gaussian")]
+    /// Radial basis function: thin-plate (default, measured best; docs/rbf.md), gaussian or
+    /// multiquadric.
+    #[arg(long, default_value = "thin-plate")]
     pub kernel: String,
     /// Kernel parameter in template metres: Gaussian width c or multiquadric stiffness s
     /// (default 0.1 for c, 0.01 for s; see docs/rbf.md).
