@@ -54,10 +54,12 @@ pub struct FineAlignParams {
     pub skip_boundary_matches: bool,
     /// Matches farther than this (m) are ignored that round; `f64::INFINITY` keeps all.
     pub max_match_distance: f64,
-    /// Stiffness annealing: E_s is weighted by b·s_r in round r, with
-    /// s_r = max(1, initial_stiffness·stiffness_decay^r); 1.0 switches annealing off.
+    /// Stiffness annealing (Amberg et al. 2007 style; not in the paper): E_s is weighted by b·s_r
+    /// in round r, with s_r = max(1, initial_stiffness·stiffness_decay^r); 1.0 switches annealing
+    /// off. Default 100 with decay 0.7 (13 stiff rounds ending at the paper's b): measured on 10
+    /// synthetic subjects it lowers the scan→template RMS 1.65 → 1.43 mm (docs/fine-alignment.md).
     pub initial_stiffness: f64,
-    /// Factor by which the stiffness multiplier shrinks per round (0 < decay ≤ 1).
+    /// Factor by which the stiffness multiplier shrinks per round (0 < decay ≤ 1). Default 0.7.
     pub stiffness_decay: f64,
     /// Weight of the landmark anchors of [`crate::align::fine_align_anchored`] relative to the
     /// data weight 1 of a vertex: an anchored vertex is also pulled towards its landmark by
@@ -84,8 +86,8 @@ impl Default for FineAlignParams {
             candidates: 8,
             skip_boundary_matches: true,
             max_match_distance: f64::INFINITY,
-            initial_stiffness: 1.0,
-            stiffness_decay: 0.5,
+            initial_stiffness: 100.0,
+            stiffness_decay: 0.7,
             landmark_weight: 0.0,
         }
     }
