@@ -32,3 +32,6 @@ echo
 echo "== native"
 cargo run --quiet --release --manifest-path bench/native/Cargo.toml --target-dir crate/target -- \
   "$work/torus-300k.ply" "$runs"
+echo
+echo "== alignment vs trimesh nricp_amberg"
+bash scripts/bench-align.sh
