@@ -35,3 +35,5 @@ cargo run --quiet --release --manifest-path bench/native/Cargo.toml --target-dir
 echo
 echo "== shape model (public/models/demo.bsm), stitched reconstruction in the worker"
 node bench/shape-bench.mjs "http://127.0.0.1:$port/" "${SHAPE_RUNS:-30}"
+echo "== alignment vs trimesh nricp_amberg"
+bash scripts/bench-align.sh

@@ -124,7 +124,14 @@ fn zero_weights_leave_vertices_to_smoothness() {
         .iter()
         .map(|p| if p.z > 0.1 { 0.0 } else { 1.0 })
         .collect();
-    let params = FineAlignParams::default();
+    // Smoothness needs many iterations to carry the scaling into a data-free cap; the default
+    // early stop (right after annealing) leaves it ≈ 9 mm short, so this test runs to the
+    // paper's iteration budget to check the treatment itself.
+    let params = FineAlignParams {
+        iterations_per_round: 10,
+        displacement_tolerance: 1e-4,
+        ..FineAlignParams::default()
+    };
     let result = fine_align(
         &template.positions,
         &template.triangles,

@@ -38,9 +38,12 @@ fn holes_do_not_pull_vertices_in() {
 
     let on = run(&template, &scan, &FineAlignParams::default());
     let z_on = on.positions[pole].z;
+    // Over the hole only smoothness acts: the pole must neither be pulled in towards the rim
+    // nor pushed out past the template's start (0.16); how close to the sphere's 0.15 it gets
+    // depends on the stiffness schedule (annealing keeps it a little higher).
     assert!(
-        (z_on - 0.15).abs() < 0.005,
-        "pole over the hole at z = {z_on}, expected ≈ 0.15"
+        (0.145..0.1601).contains(&z_on),
+        "pole over the hole at z = {z_on}, expected ≈ 0.15–0.16"
     );
 
     let off = run(

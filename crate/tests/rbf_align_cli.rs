@@ -69,7 +69,7 @@ fn rough_only_writes_the_warped_template_and_a_report() {
     let report: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
     assert_eq!(report["landmarks_used"], 72 + 12);
     assert_eq!(report["skipped"], serde_json::json!(["Rt. Dactylion"]));
-    assert_eq!(report["kernel"], "gaussian");
+    assert_eq!(report["kernel"], "thin-plate");
     let after = report["max_residual_after"].as_f64().unwrap();
     assert!(after < 1e-8 * 2000.0, "landmark residual {after} mm");
     assert!(report["max_residual_before"].as_f64().unwrap() > 20.0);
@@ -96,7 +96,10 @@ fn bad_arguments_exit_2_with_one_line() {
     write_subject(&dir, &[]);
     for (args, needle) in [
         (&["--kernel", "cubic"][..], "unknown kernel"),
-        (&["--kernel-param=-1"][..], "Gaussian width"),
+        (
+            &["--kernel=gaussian", "--kernel-param=-1"][..],
+            "Gaussian width",
+        ),
         (&["--resolution", "huge"][..], "--resolution"),
     ] {
         let out = align(&dir, args);

@@ -11,7 +11,10 @@ export interface RbfSettings {
   affine: boolean;
 }
 
-/** The core's defaults (docs/rbf.md): Gaussian c = 0.1 m, multiquadric s = 0.01 m. */
+/** The core's kernel parameters (docs/rbf.md): Gaussian c = 0.1 m, multiquadric s = 0.01 m. */
+/** The core's default kernel, chosen by measurement after the full pipeline (docs/rbf.md). */
+export const DEFAULT_KERNEL: KernelName = 'thin-plate';
+
 export const DEFAULT_KERNEL_PARAM: Record<KernelName, number | null> = {
   gaussian: 0.1,
   'thin-plate': null,

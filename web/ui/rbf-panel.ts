@@ -1,6 +1,6 @@
 // The RBF warp step (paper §3.1): kernel, its parameter, λ, affine term; what is shown; and the
 // landmark residuals before (after Procrustes) and after the warp, in millimetres.
-import { DEFAULT_KERNEL_PARAM, type KernelName, type RbfSettings, type WarpReport } from '../shared/align-types';
+import { DEFAULT_KERNEL, DEFAULT_KERNEL_PARAM, type KernelName, type RbfSettings, type WarpReport } from '../shared/align-types';
 import { byId, h } from './dom';
 import { checkbox } from './template-panel';
 
@@ -24,7 +24,7 @@ const KERNELS: { name: KernelName; label: string; param: string | null }[] = [
 
 export class RbfPanel {
   private readonly root = byId('rbf-panel');
-  private settings: RbfSettings = { kernel: 'gaussian', param: DEFAULT_KERNEL_PARAM.gaussian, lambda: 0, affine: true };
+  private settings: RbfSettings = { kernel: DEFAULT_KERNEL, param: DEFAULT_KERNEL_PARAM[DEFAULT_KERNEL], lambda: 0, affine: true };
   private readonly shown = { scan: true, template: false, warped: true };
 
   constructor(private readonly controls: RbfControls) {

@@ -51,6 +51,18 @@ pub enum AlignError {
         value: f64,
     },
     /// A parameter is outside its meaningful range.
+    /// A landmark anchor names a template vertex that does not exist or a non-finite target.
+    #[error("landmark anchor {anchor}: vertex {vertex} with target {target:?} is not a finite point on a template of {vertices} vertices")]
+    BadAnchor {
+        /// Position of the anchor in the list.
+        anchor: usize,
+        /// The template vertex it names.
+        vertex: u32,
+        /// Its target (m).
+        target: [f64; 3],
+        /// Template vertex count.
+        vertices: usize,
+    },
     #[error("fine alignment parameter {name} = {value}: {reason}")]
     BadParameter {
         /// Parameter name as in [`crate::align::FineAlignParams`].

@@ -109,11 +109,12 @@ pub fn fine_align(
     params: &FineAlignParams,
     on_progress: &mut dyn FnMut(&Progress) -> ControlFlow<()>,
 ) -> Result<FineAlignResult, AlignError> {
-    fine_align_observed(
+    fine_align_general(
         template_positions,
         triangles,
         scan,
         weights,
+        &[],
         params,
         on_progress,
         &mut |_, _| {},
@@ -128,6 +129,58 @@ pub fn fine_align_observed(
     triangles: &[[u32; 3]],
     scan: &ScanIndex,
     weights: &[f64],
+    params: &FineAlignParams,
+    on_progress: &mut dyn FnMut(&Progress) -> ControlFlow<()>,
+    on_round: &mut dyn FnMut(usize, &[Point3<f64>]),
+) -> Result<FineAlignResult, AlignError> {
+    fine_align_general(
+        template_positions,
+        triangles,
+        scan,
+        weights,
+        &[],
+        params,
+        on_progress,
+        on_round,
+    )
+}
+
+/// [`fine_align`] with landmark anchors: `anchors[k] = (vertex, target)` adds
+/// a·κ·`params.landmark_weight`·‖T_i v_i − target‖² for that vertex (metres, scan frame; usually
+/// the scan landmark the RBF warp interpolated). The anchor is folded into the vertex's data term
+/// (α‖x − c‖² + β‖x − L‖² = (α+β)‖x − (αc+βL)/(α+β)‖² + const), so the reported E_d and RMS of
+/// anchored vertices are to that blended target. With `landmark_weight` 0 or no anchors this is
+/// exactly [`fine_align`].
+pub fn fine_align_anchored(
+    template_positions: &[Point3<f64>],
+    triangles: &[[u32; 3]],
+    scan: &ScanIndex,
+    weights: &[f64],
+    anchors: &[(u32, Point3<f64>)],
+    params: &FineAlignParams,
+    on_progress: &mut dyn FnMut(&Progress) -> ControlFlow<()>,
+) -> Result<FineAlignResult, AlignError> {
+    fine_align_general(
+        template_positions,
+        triangles,
+        scan,
+        weights,
+        anchors,
+        params,
+        on_progress,
+        &mut |_, _| {},
+    )
+}
+
+/// The one implementation behind [`fine_align`], [`fine_align_observed`] and
+/// [`fine_align_anchored`]: anchors and a per-round observer together.
+#[allow(clippy::too_many_arguments)]
+pub fn fine_align_general(
+    template_positions: &[Point3<f64>],
+    triangles: &[[u32; 3]],
+    scan: &ScanIndex,
+    weights: &[f64],
+    anchors: &[(u32, Point3<f64>)],
     params: &FineAlignParams,
     on_progress: &mut dyn FnMut(&Progress) -> ControlFlow<()>,
     on_round: &mut dyn FnMut(usize, &[Point3<f64>]),
@@ -153,6 +206,17 @@ pub fn fine_align_observed(
             vertex,
             value: weights[vertex],
         });
+    }
+
+    for (anchor, (vertex, target)) in anchors.iter().enumerate() {
+        if *vertex as usize >= n || !target.coords.iter().all(|c| c.is_finite()) {
+            return Err(AlignError::BadAnchor {
+                anchor,
+                vertex: *vertex,
+                target: [target.x, target.y, target.z],
+                vertices: n,
+            });
+        }
     }
 
     let centroid = template_positions
@@ -231,6 +295,17 @@ pub fn fine_align_observed(
             }
             targets[i] = m.point - centroid;
             coefficients[i] = data_scale * weights[i];
+        }
+        let anchor_coefficient = data_scale * params.landmark_weight;
+        if anchor_coefficient > 0.0 {
+            for (i, target) in anchors {
+                let i = *i as usize;
+                let (alpha, beta) = (coefficients[i], anchor_coefficient);
+                let blended = (targets[i].coords * alpha + (target.coords - centroid) * beta)
+                    / (alpha + beta);
+                targets[i] = Point3::from(blended);
+                coefficients[i] = alpha + beta;
+            }
         }
         let stiffness =
             (params.initial_stiffness * params.stiffness_decay.powi(round as i32)).max(1.0);

@@ -18,7 +18,10 @@ pub mod scan_index;
 pub mod surface;
 
 pub use error::AlignError;
-pub use fine_align::{fine_align, fine_align_observed, FineAlignResult, Progress};
+pub use fine_align::{
+    fine_align, fine_align_anchored, fine_align_general, fine_align_observed, FineAlignResult,
+    Progress,
+};
 pub use params::{CorrespondenceMode, FineAlignParams};
 pub use report::{AlignReport, CurvePoint, DistanceStats};
 pub use scan_index::{Match, MatchQuery, ScanIndex};

@@ -33,8 +33,9 @@ pub struct AlignArgs {
     /// Where to write the warped template (PLY, template vertex order, scan frame and units).
     #[arg(long)]
     pub out: PathBuf,
-    /// Radial basis function: gaussian, thin-plate or multiquadric.
-    #[arg(long, default_value = "gaussian")]
+    /// Radial basis function: thin-plate (default, measured best; docs/rbf.md), gaussian or
+    /// multiquadric.
+    #[arg(long, default_value = "thin-plate")]
     pub kernel: String,
     /// Kernel parameter in template metres: Gaussian width c or multiquadric stiffness s
     /// (default 0.1 for c, 0.01 for s; see docs/rbf.md).
@@ -61,6 +62,10 @@ pub struct AlignArgs {
     /// Limit on fine-alignment L-BFGS iterations.
     #[arg(long, default_value_t = 200)]
     pub max_iterations: usize,
+    /// Weight of the landmark anchors in fine alignment (0 = off, the paper; see
+    /// docs/fine-alignment.md). Default: FineAlignParams::default().landmark_weight.
+    #[arg(long)]
+    pub landmark_weight: Option<f64>,
     /// Also write the JSON report to this file.
     #[arg(long)]
     pub report: Option<PathBuf>,

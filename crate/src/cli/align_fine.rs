@@ -8,7 +8,7 @@ use nalgebra::Point3;
 use serde_json::{json, Value};
 
 use super::align::{load, rough, rough_params, AlignArgs};
-use crate::align::{fine_align, AlignReport, DistanceStats, FineAlignParams, ScanIndex};
+use crate::align::{fine_align_anchored, AlignReport, DistanceStats, FineAlignParams, ScanIndex};
 use crate::io::{read_scan, write_ply};
 use crate::mesh::units::detect_units;
 use crate::mesh::Mesh;
@@ -30,6 +30,23 @@ pub fn data_weights(template: &Template) -> Vec<f64> {
                 1.0
             }
         })
+        .collect()
+}
+
+/// Landmark anchors for [`crate::align::fine_align_anchored`]: each landmark vertex of the
+/// template (the 73 and the virtual ones) whose landmark the RBF warp used, held at its warped
+/// position — where the warp's exact interpolation put it, on the scan landmark.
+pub fn landmark_anchors(
+    template: &Template,
+    warped: &[Point3<f64>],
+    used: &[String],
+) -> Vec<(u32, Point3<f64>)> {
+    let mut named: Vec<(String, u32)> = template.landmark_vertices().to_vec();
+    named.extend(template.virtual_landmark_vertices().unwrap_or_default());
+    named
+        .into_iter()
+        .filter(|(name, v)| used.iter().any(|u| u == name) && (*v as usize) < warped.len())
+        .map(|(_, v)| (v, warped[v as usize]))
         .collect()
 }
 
@@ -99,6 +116,10 @@ pub fn run_full(args: &AlignArgs) -> Result<(), String> {
         max_iterations: args.max_iterations,
         ..FineAlignParams::default()
     };
+    let params = FineAlignParams {
+        landmark_weight: args.landmark_weight.unwrap_or(params.landmark_weight),
+        ..params
+    };
     params.validate().map_err(|e| e.to_string())?;
     let inputs = load(args)?;
     let started = Instant::now();
@@ -119,9 +140,16 @@ pub fn run_full(args: &AlignArgs) -> Result<(), String> {
     let index_start = Instant::now();
     let index = ScanIndex::new(&scan_m).map_err(|e| format!("{}: {e}", args.scan.display()))?;
     let index_ms = index_start.elapsed().as_secs_f64() * 1e3;
-    let result = fine_align(&warped_m, triangles, &index, &weights, &params, &mut |_| {
-        ControlFlow::Continue(())
-    })
+    let anchors = landmark_anchors(&inputs.template, &warped_m, &warp.used);
+    let result = fine_align_anchored(
+        &warped_m,
+        triangles,
+        &index,
+        &weights,
+        &anchors,
+        &params,
+        &mut |_| ControlFlow::Continue(()),
+    )
     .map_err(|e| format!("fine alignment: {e}"))?;
     let total_ms = started.elapsed().as_secs_f64() * 1e3;
 
@@ -141,6 +169,8 @@ pub fn run_full(args: &AlignArgs) -> Result<(), String> {
         "landmarks_used": warp.used.len(),
         "a": params.a,
         "b": params.b,
+        "landmark_weight": params.landmark_weight,
+        "anchors": anchors.len(),
         "rough_ms": rough_ms,
         "scan_index_ms": index_ms,
         "total_ms": total_ms,

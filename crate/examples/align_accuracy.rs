@@ -1,0 +1,316 @@
+//! Accuracy benchmark of the whole alignment (RBF warp, paper §3.1, then fine alignment, §3.2) on
+//! synthetic subjects with ground truth (`bodyspace synth`).
+//!
+//! `cargo run --release --example align_accuracy -- DIR [--n N] [--kernel K] [--kernel-param P]
+//!  [--lambda L] [--a A] [--b B] [--max-iterations N] [--iterations-per-round N] [--anneal INIT:DECAY]
+//!  [--relative-tolerance T] [--displacement-tolerance M] [--landmark-weight W] [--quiet]
+//!  [--export DIR]`
+//!
+//! DIR holds `scan_XXX.ply`, `landmarks_XXX.lnd` and `truth_XXX.ply` (the `base` template's
+//! vertices on the subject, scan frame and units). Prints per subject and the mean: scan→template
+//! RMS, mean correspondence error (fitted vertex vs truth) after the RBF warp and after fine
+//! alignment, the same per segment (each vertex counted in its dominant segment), iterations and
+//! times. Unset options keep the library defaults. `--export DIR` also writes each subject's
+//! RBF-warped template (`warped_XXX.ply`, metres) and landmark anchors (`anchors_XXX.json`) so
+//! the peer (`bench/peer/nricp.py`) starts from the same place.
+
+#[cfg(not(target_arch = "wasm32"))]
+mod native {
+    use bodyspace::align::{fine_align_anchored, FineAlignParams, ScanIndex};
+    use bodyspace::cli::align_fine::{data_weights, landmark_anchors};
+    use bodyspace::io::{read_landmarks, read_scan, write_ply};
+    use bodyspace::mesh::units::detect_units;
+    use bodyspace::mesh::Mesh;
+    use bodyspace::rbf::{rbf_warp_mesh, Kernel, RbfParams};
+    use bodyspace::template::{Resolution, Segment, Template};
+    use nalgebra::Point3;
+    use std::ops::ControlFlow;
+    use std::path::{Path, PathBuf};
+    use std::time::Instant;
+
+    struct Options {
+        dir: PathBuf,
+        n: usize,
+        rbf: RbfParams,
+        fine: FineAlignParams,
+        quiet: bool,
+        export: Option<PathBuf>,
+    }
+
+    fn parse() -> Result<Options, String> {
+        let mut args = std::env::args().skip(1);
+        let dir = PathBuf::from(args.next().ok_or("usage: align_accuracy DIR [options]")?);
+        let mut options = Options {
+            dir,
+            n: 10,
+            rbf: RbfParams::default(),
+            fine: FineAlignParams::default(),
+            quiet: false,
+            export: None,
+        };
+        let mut kernel_name: Option<String> = None;
+        let mut kernel_param: Option<f64> = None;
+        while let Some(flag) = args.next() {
+            if flag == "--quiet" {
+                options.quiet = true;
+                continue;
+            }
+            let value = args.next().ok_or(format!("{flag}: missing value"))?;
+            let num = || -> Result<f64, String> {
+                value
+                    .parse::<f64>()
+                    .map_err(|e| format!("{flag} {value}: {e}"))
+            };
+            match flag.as_str() {
+                "--export" => options.export = Some(PathBuf::from(&value)),
+                "--n" => options.n = num()? as usize,
+                "--kernel" => kernel_name = Some(value.clone()),
+                "--kernel-param" => kernel_param = Some(num()?),
+                "--lambda" => options.rbf.lambda = num()?,
+                "--a" => options.fine.a = num()?,
+                "--b" => options.fine.b = num()?,
+                "--max-iterations" => options.fine.max_iterations = num()? as usize,
+                "--iterations-per-round" => options.fine.iterations_per_round = num()? as usize,
+                "--relative-tolerance" => options.fine.relative_tolerance = num()?,
+                "--displacement-tolerance" => options.fine.displacement_tolerance = num()?,
+                "--landmark-weight" => options.fine.landmark_weight = num()?,
+                "--anneal" => {
+                    let (init, decay) = value.split_once(':').ok_or("--anneal INIT:DECAY")?;
+                    options.fine.initial_stiffness = init.parse().map_err(|_| "--anneal INIT")?;
+                    options.fine.stiffness_decay = decay.parse().map_err(|_| "--anneal DECAY")?;
+                }
+                _ => return Err(format!("unknown option {flag}")),
+            }
+        }
+        if kernel_name.is_some() || kernel_param.is_some() {
+            let name = kernel_name.unwrap_or_else(|| options.rbf.kernel.name().to_string());
+            options.rbf.kernel =
+                Kernel::from_name(&name, kernel_param).ok_or(format!("unknown kernel {name}"))?;
+        }
+        Ok(options)
+    }
+
+    fn read_mesh(path: &Path) -> Result<Mesh, String> {
+        let name = path.display().to_string();
+        let bytes = std::fs::read(path).map_err(|e| format!("{name}: {e}"))?;
+        read_scan(&bytes, &name).map_err(|e| e.to_string())
+    }
+
+    /// One subject's figures; lengths in mm, times in ms.
+    #[derive(Default, Clone)]
+    struct Row {
+        scan_vertices: usize,
+        rms: f64,
+        rough_error: f64,
+        fine_error: f64,
+        segments: [f64; 6],
+        iterations: usize,
+        rough_ms: f64,
+        index_ms: f64,
+        fine_ms: f64,
+    }
+
+    fn run_subject(options: &Options, template: &Template, id: usize) -> Result<Row, String> {
+        let file = |stem: &str, ext: &str| options.dir.join(format!("{stem}_{id:03}.{ext}"));
+        let scan = read_mesh(&file("scan", "ply"))?;
+        let truth = read_mesh(&file("truth", "ply"))?;
+        let lnd = file("landmarks", "lnd");
+        let bytes = std::fs::read(&lnd).map_err(|e| format!("{}: {e}", lnd.display()))?;
+        let scan_landmarks =
+            read_landmarks(&bytes, &lnd.display().to_string()).map_err(|e| e.to_string())?;
+
+        let started = Instant::now();
+        let warp = rbf_warp_mesh(
+            template.mesh(),
+            &template.landmark_positions(),
+            &scan,
+            &scan_landmarks,
+            &options.rbf,
+        )
+        .map_err(|e| e.to_string())?;
+        let rough_ms = started.elapsed().as_secs_f64() * 1e3;
+
+        let extent = (0..3)
+            .map(|k| {
+                let (lo, hi) = scan
+                    .positions
+                    .iter()
+                    .fold((f64::MAX, f64::MIN), |(l, h), p| (l.min(p[k]), h.max(p[k])));
+                hi - lo
+            })
+            .fold(0.0, f64::max);
+        let to_m = detect_units(extent).scale_to_metres();
+        let scan_m = Mesh::new(
+            scan.positions.iter().map(|p| p * to_m).collect(),
+            scan.triangles.clone(),
+        );
+        let warped: Vec<Point3<f64>> = warp.positions.iter().map(|p| p * to_m).collect();
+        let truth: Vec<Point3<f64>> = truth.positions.iter().map(|p| p * to_m).collect();
+
+        let index_start = Instant::now();
+        let index = ScanIndex::new(&scan_m).map_err(|e| e.to_string())?;
+        let index_ms = index_start.elapsed().as_secs_f64() * 1e3;
+        let anchors = landmark_anchors(template, &warped, &warp.used);
+        if let Some(dir) = &options.export {
+            export_start(dir, id, &warped, template, &anchors)?;
+        }
+        let result = fine_align_anchored(
+            &warped,
+            &template.mesh().triangles,
+            &index,
+            &data_weights(template),
+            &anchors,
+            &options.fine,
+            &mut |_| ControlFlow::Continue(()),
+        )
+        .map_err(|e| e.to_string())?;
+
+        let mean_error = |fitted: &[Point3<f64>]| {
+            fitted
+                .iter()
+                .zip(&truth)
+                .map(|(a, b)| (a - b).norm())
+                .sum::<f64>()
+                / fitted.len() as f64
+                * 1e3
+        };
+        let mut sums = [0.0; 6];
+        let mut counts = [0usize; 6];
+        for (v, (a, b)) in result.positions.iter().zip(&truth).enumerate() {
+            let w = template.segment_weights(v as u32);
+            let dominant = (0..6).max_by(|&i, &j| w[i].total_cmp(&w[j])).unwrap_or(3);
+            sums[dominant] += (a - b).norm() * 1e3;
+            counts[dominant] += 1;
+        }
+        let mut segments = [0.0; 6];
+        for s in 0..6 {
+            segments[s] = sums[s] / counts[s].max(1) as f64;
+        }
+        Ok(Row {
+            scan_vertices: scan.positions.len(),
+            rms: result.report.scan_to_template.rms * 1e3,
+            rough_error: mean_error(&warped),
+            fine_error: mean_error(&result.positions),
+            segments,
+            iterations: result.report.iterations,
+            rough_ms,
+            index_ms,
+            fine_ms: result.report.elapsed_ms,
+        })
+    }
+
+    /// For the peer (bench/peer/nricp.py): the RBF-warped template (PLY, metres) and the landmark
+    /// anchors (template vertex, target in metres) of subject `id`.
+    fn export_start(
+        dir: &Path,
+        id: usize,
+        warped: &[Point3<f64>],
+        template: &Template,
+        anchors: &[(u32, Point3<f64>)],
+    ) -> Result<(), String> {
+        let mesh = Mesh::new(warped.to_vec(), template.mesh().triangles.clone());
+        let ply = dir.join(format!("warped_{id:03}.ply"));
+        std::fs::write(&ply, write_ply(&mesh)).map_err(|e| format!("{}: {e}", ply.display()))?;
+        let json = serde_json::json!({
+            "vertices": anchors.iter().map(|(v, _)| *v).collect::<Vec<_>>(),
+            "targets": anchors.iter().map(|(_, p)| [p.x, p.y, p.z]).collect::<Vec<_>>(),
+        });
+        let path = dir.join(format!("anchors_{id:03}.json"));
+        std::fs::write(&path, json.to_string()).map_err(|e| format!("{}: {e}", path.display()))
+    }
+
+    fn print_row(label: &str, r: &Row) {
+        println!(
+            "{label:>7} {:>7} {:>7.3} {:>7.2} {:>7.2} | {} | {:>5} {:>6.0} {:>6.0} {:>7.0}",
+            r.scan_vertices,
+            r.rms,
+            r.rough_error,
+            r.fine_error,
+            r.segments
+                .iter()
+                .map(|e| format!("{e:>6.2}"))
+                .collect::<Vec<_>>()
+                .join(" "),
+            r.iterations,
+            r.rough_ms,
+            r.index_ms,
+            r.fine_ms,
+        );
+    }
+
+    pub fn main() {
+        let options = match parse() {
+            Ok(o) => o,
+            Err(e) => {
+                eprintln!("{e}");
+                std::process::exit(2);
+            }
+        };
+        let template = match Template::embedded() {
+            Ok(t) => t.at_resolution(Resolution::Base),
+            Err(e) => {
+                eprintln!("embedded template: {e}");
+                std::process::exit(2);
+            }
+        };
+        let names: Vec<&str> = Segment::ALL.iter().map(|s| s.name()).collect();
+        println!(
+        "rbf {:?}; fine a={} b={} max_it={} it/round={} anneal={}:{} rel_tol={} disp_tol={} landmark_weight={}",
+        options.rbf.kernel,
+        options.fine.a,
+        options.fine.b,
+        options.fine.max_iterations,
+        options.fine.iterations_per_round,
+        options.fine.initial_stiffness,
+        options.fine.stiffness_decay,
+        options.fine.relative_tolerance,
+        options.fine.displacement_tolerance,
+        options.fine.landmark_weight,
+    );
+        println!(
+        "subject   scanV  RMS_mm  rbf_mm fine_mm | mean correspondence error after fine per segment (mm): {} | iters rbf_ms idx_ms fine_ms",
+        names.join(" ")
+    );
+        let mut rows = Vec::new();
+        for id in 1..=options.n {
+            match run_subject(&options, &template, id) {
+                Ok(row) => {
+                    if !options.quiet {
+                        print_row(&format!("{id:03}"), &row);
+                    }
+                    rows.push(row);
+                }
+                Err(e) => {
+                    eprintln!("subject {id:03}: {e}");
+                    std::process::exit(1);
+                }
+            }
+        }
+        let k = rows.len().max(1) as f64;
+        let mut mean = Row::default();
+        for r in &rows {
+            mean.scan_vertices += r.scan_vertices / rows.len().max(1);
+            mean.rms += r.rms / k;
+            mean.rough_error += r.rough_error / k;
+            mean.fine_error += r.fine_error / k;
+            for s in 0..6 {
+                mean.segments[s] += r.segments[s] / k;
+            }
+            mean.iterations += r.iterations;
+            mean.rough_ms += r.rough_ms / k;
+            mean.index_ms += r.index_ms / k;
+            mean.fine_ms += r.fine_ms / k;
+        }
+        mean.iterations /= rows.len().max(1);
+        print_row("mean", &mean);
+    }
+}
+
+#[cfg(not(target_arch = "wasm32"))]
+fn main() {
+    native::main()
+}
+
+/// The benchmark reads files and uses the native CLI helpers; nothing to run on wasm32.
+#[cfg(target_arch = "wasm32")]
+fn main() {}

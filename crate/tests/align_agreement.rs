@@ -1,0 +1,25 @@
+//! The native half of the native-vs-WASM agreement check of fine alignment: the same case and
+//! the same tolerance band as `align_wasm.rs` (run in a browser by scripts/test-wasm.sh).
+#![cfg(not(target_arch = "wasm32"))]
+
+mod align_support;
+
+use bodyspace::align::{fine_align, FineAlignParams, ScanIndex};
+use std::ops::ControlFlow;
+
+#[test]
+fn fine_align_lands_on_the_known_sphere_natively() {
+    let (scan, template) = align_support::agreement_case();
+    let index = ScanIndex::new(&scan).unwrap();
+    let weights = vec![1.0; template.positions.len()];
+    let result = fine_align(
+        &template.positions,
+        &template.triangles,
+        &index,
+        &weights,
+        &FineAlignParams::default(),
+        &mut |_| ControlFlow::Continue(()),
+    )
+    .unwrap();
+    align_support::check_agreement(&result.positions, result.report.scan_to_template.rms);
+}
