@@ -16,6 +16,7 @@ pub mod params;
 pub mod report;
 pub mod scan_index;
 pub mod surface;
+pub mod weights;
 
 pub use error::AlignError;
 pub use fine_align::{
@@ -25,3 +26,4 @@ pub use fine_align::{
 pub use params::{CorrespondenceMode, FineAlignParams};
 pub use report::{AlignReport, CurvePoint, DistanceStats};
 pub use scan_index::{Match, MatchQuery, ScanIndex};
+pub use weights::{data_weights, HAND_EAR_WEIGHT};

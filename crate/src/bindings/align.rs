@@ -11,16 +11,13 @@ use serde_json::json;
 use wasm_bindgen::prelude::*;
 
 use super::template::TemplateHandle;
-use crate::align::{fine_align_observed, AlignReport, DistanceStats, FineAlignParams, ScanIndex};
+use crate::align::{
+    data_weights, fine_align_observed, AlignReport, DistanceStats, FineAlignParams, ScanIndex,
+};
 use crate::landmarks::{Landmark, LandmarkSet};
 use crate::mesh::normals::vertex_normals;
 use crate::mesh::Mesh;
 use crate::rbf::{rbf_warp_mesh, Kernel, RbfParams, RbfWarp};
-use crate::template::Template;
-
-/// Data weight of hands and ears (paper §3.2.1); unseen regions (inner mouth) get 0. The same
-/// rule as the CLI's `data_weights`, which is native-only.
-const HAND_EAR_WEIGHT: f64 = 0.1;
 
 /// RBF settings from the page (JSON): kernel name, its parameter (c or s, metres), λ, affine.
 #[derive(Deserialize)]
@@ -379,21 +376,6 @@ fn fine_report(r: &AlignReport) -> serde_json::Value {
         "cancelled": r.cancelled,
         "elapsed_ms": r.elapsed_ms,
     })
-}
-
-fn data_weights(template: &Template) -> Vec<f64> {
-    (0..template.mesh().positions.len() as u32)
-        .map(|v| {
-            let flags = template.flags(v);
-            if flags.unseen() {
-                0.0
-            } else if flags.hand() || flags.ear() {
-                HAND_EAR_WEIGHT
-            } else {
-                1.0
-            }
-        })
-        .collect()
 }
 
 fn flat_normals(mesh: &Mesh) -> Vec<f32> {

@@ -14,24 +14,7 @@ use crate::mesh::units::detect_units;
 use crate::mesh::Mesh;
 use crate::template::Template;
 
-/// Data weight of hands and ears (paper §3.2.1); unseen regions (inner mouth) get 0.
-const HAND_EAR_WEIGHT: f64 = 0.1;
-
-/// Per-vertex data weights from the template's region flags.
-pub fn data_weights(template: &Template) -> Vec<f64> {
-    (0..template.mesh().positions.len() as u32)
-        .map(|v| {
-            let flags = template.flags(v);
-            if flags.unseen() {
-                0.0
-            } else if flags.hand() || flags.ear() {
-                HAND_EAR_WEIGHT
-            } else {
-                1.0
-            }
-        })
-        .collect()
-}
+pub use crate::align::data_weights;
 
 /// Landmark anchors for [`crate::align::fine_align_anchored`]: each landmark vertex of the
 /// template (the 73 and the virtual ones) whose landmark the RBF warp used, held at its warped
