@@ -30,7 +30,7 @@ echo "== peer (trimesh.registration.nricp_amberg, default steps, same start and 
 
 echo
 echo "== fine alignment: ours vs peer, mean over $n subjects"
-read -r _ _ ours_rms _ ours_corr _ < <(grep '^ *mean' "$work/ours.txt")
+read -r _ _ ours_rms _ _ _ ours_corr _ < <(grep '^ *mean' "$work/ours.txt")
 ours_ms="$(grep '^ *mean' "$work/ours.txt" | awk '{print $(NF-2) + $(NF-1) + $NF}')"
 read -r _ peer_rms peer_corr peer_s < <(grep '^ *mean' "$work/peer.txt")
 printf '%-32s %14s %22s %12s\n' "method" "scan→tmpl RMS" "correspondence (mean)" "time"

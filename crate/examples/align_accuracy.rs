@@ -3,7 +3,8 @@
 //!
 //! `cargo run --release --example align_accuracy -- DIR [--n N] [--kernel K] [--kernel-param P]
 //!  [--lambda L] [--a A] [--b B] [--max-iterations N] [--iterations-per-round N] [--anneal INIT:DECAY]
-//!  [--relative-tolerance T] [--displacement-tolerance M] [--landmark-weight W] [--quiet]
+//!  [--relative-tolerance T] [--displacement-tolerance M] [--landmark-weight W] [--scan-term W]
+//!  [--scan-term-samples N] [--scan-term-from STIFFNESS] [--scan-term-max-distance M] [--quiet]
 //!  [--export DIR]`
 //!
 //! DIR holds `scan_XXX.ply`, `landmarks_XXX.lnd` and `truth_XXX.ply` (the `base` template's
@@ -16,7 +17,9 @@
 
 #[cfg(not(target_arch = "wasm32"))]
 mod native {
-    use bodyspace::align::{fine_align_anchored, FineAlignParams, ScanIndex};
+    use bodyspace::align::{
+        fine_align_anchored, scan_to_template_distances, DistanceStats, FineAlignParams, ScanIndex,
+    };
     use bodyspace::cli::align_fine::{data_weights, landmark_anchors};
     use bodyspace::io::{read_landmarks, read_scan, write_ply};
     use bodyspace::mesh::units::detect_units;
@@ -74,6 +77,10 @@ mod native {
                 "--relative-tolerance" => options.fine.relative_tolerance = num()?,
                 "--displacement-tolerance" => options.fine.displacement_tolerance = num()?,
                 "--landmark-weight" => options.fine.landmark_weight = num()?,
+                "--scan-term" => options.fine.scan_term_weight = num()?,
+                "--scan-term-samples" => options.fine.scan_term_samples = num()? as usize,
+                "--scan-term-from" => options.fine.scan_term_from_stiffness = num()?,
+                "--scan-term-max-distance" => options.fine.scan_term_max_distance = num()?,
                 "--anneal" => {
                     let (init, decay) = value.split_once(':').ok_or("--anneal INIT:DECAY")?;
                     options.fine.initial_stiffness = init.parse().map_err(|_| "--anneal INIT")?;
@@ -101,6 +108,8 @@ mod native {
     struct Row {
         scan_vertices: usize,
         rms: f64,
+        signed: f64,
+        truth_rms: f64,
         rough_error: f64,
         fine_error: f64,
         segments: [f64; 6],
@@ -186,9 +195,15 @@ mod native {
         for s in 0..6 {
             segments[s] = sums[s] / counts[s].max(1) as f64;
         }
+        let truth_stats = DistanceStats::of(
+            scan_to_template_distances(&truth, &template.mesh().triangles, &index)
+                .map_err(|e| e.to_string())?,
+        );
         Ok(Row {
             scan_vertices: scan.positions.len(),
             rms: result.report.scan_to_template.rms * 1e3,
+            signed: result.report.scan_to_template.mean * 1e3,
+            truth_rms: truth_stats.rms * 1e3,
             rough_error: mean_error(&warped),
             fine_error: mean_error(&result.positions),
             segments,
@@ -221,9 +236,11 @@ mod native {
 
     fn print_row(label: &str, r: &Row) {
         println!(
-            "{label:>7} {:>7} {:>7.3} {:>7.2} {:>7.2} | {} | {:>5} {:>6.0} {:>6.0} {:>7.0}",
+            "{label:>7} {:>7} {:>7.3} {:>6.3} {:>6.3} {:>7.2} {:>7.2} | {} | {:>5} {:>6.0} {:>6.0} {:>7.0}",
             r.scan_vertices,
             r.rms,
+            r.signed,
+            r.truth_rms,
             r.rough_error,
             r.fine_error,
             r.segments
@@ -255,7 +272,7 @@ mod native {
         };
         let names: Vec<&str> = Segment::ALL.iter().map(|s| s.name()).collect();
         println!(
-        "rbf {:?}; fine a={} b={} max_it={} it/round={} anneal={}:{} rel_tol={} disp_tol={} landmark_weight={}",
+        "rbf {:?}; fine a={} b={} max_it={} it/round={} anneal={}:{} rel_tol={} disp_tol={} landmark_weight={} scan_term={}x{}@{}<{}",
         options.rbf.kernel,
         options.fine.a,
         options.fine.b,
@@ -266,9 +283,13 @@ mod native {
         options.fine.relative_tolerance,
         options.fine.displacement_tolerance,
         options.fine.landmark_weight,
+        options.fine.scan_term_weight,
+        options.fine.scan_term_samples,
+        options.fine.scan_term_from_stiffness,
+        options.fine.scan_term_max_distance,
     );
         println!(
-        "subject   scanV  RMS_mm  rbf_mm fine_mm | mean correspondence error after fine per segment (mm): {} | iters rbf_ms idx_ms fine_ms",
+        "subject   scanV  RMS_mm signed truthRMS rbf_mm fine_mm | mean correspondence error after fine per segment (mm): {} | iters rbf_ms idx_ms fine_ms",
         names.join(" ")
     );
         let mut rows = Vec::new();
@@ -291,6 +312,8 @@ mod native {
         for r in &rows {
             mean.scan_vertices += r.scan_vertices / rows.len().max(1);
             mean.rms += r.rms / k;
+            mean.signed += r.signed / k;
+            mean.truth_rms += r.truth_rms / k;
             mean.rough_error += r.rough_error / k;
             mean.fine_error += r.fine_error / k;
             for s in 0..6 {

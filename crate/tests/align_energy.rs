@@ -4,6 +4,7 @@ mod align_support;
 
 use align_support::{uv_sphere, Rng};
 use bodyspace::align::energy::{AlignEnergy, DOF};
+use bodyspace::align::scan_term::ScanSample;
 use bodyspace::align::surface::unique_edges;
 use nalgebra::Point3;
 
@@ -31,12 +32,35 @@ fn gradient_and_curvature_match_finite_differences() {
             }
         })
         .collect();
+    // Scan-to-template samples on random triangles (one on a vertex, λ = (1, 0, 0)).
+    let samples: Vec<ScanSample> = mesh
+        .triangles
+        .iter()
+        .step_by(3)
+        .enumerate()
+        .map(|(k, t)| {
+            let (u, v) = (rng.next_f64(), rng.next_f64());
+            let barycentric = if k == 0 {
+                [1.0, 0.0, 0.0]
+            } else {
+                [0.5 * u, 0.5 * v, 1.0 - 0.5 * u - 0.5 * v]
+            };
+            ScanSample {
+                corners: *t,
+                barycentric,
+                target: Point3::new(rng.symmetric(), rng.symmetric(), rng.symmetric()) * 0.3,
+                coefficient: 0.2 + rng.next_f64(),
+            }
+        })
+        .collect();
+    assert!(samples.len() > 5);
     let energy = AlignEnergy {
         vertices: &vertices,
         edges: &edges,
         targets: &targets,
         data_coefficients: &coefficients,
         smoothness_coefficient: 0.37,
+        scan_samples: &samples,
     };
     let x: Vec<f64> = (0..DOF * n).map(|_| rng.symmetric()).collect();
     let mut grad = vec![0.0; DOF * n];

@@ -13,6 +13,7 @@
 //! The three rows of every T_i never interact (the Hessian is the same 4V×4V matrix per row), which
 //! is what makes the per-vertex 4×4 block preconditioner in [`BlockPreconditioner`] exact per block.
 
+use super::scan_term::ScanSample;
 use nalgebra::Point3;
 
 /// Number of unknowns per template vertex.
@@ -27,6 +28,9 @@ pub struct EnergyTerms {
     pub data_weighted: f64,
     /// E_s = Σ_edges ‖T_i − T_j‖²_F (paper eq. 7, unweighted).
     pub smoothness: f64,
+    /// Σ γ_s ‖x_s − p_s‖², the scan-to-template term as weighted inside the objective
+    /// (0 when it is switched off; see `scan_term.rs`).
+    pub scan_weighted: f64,
     /// Σ d_i² over vertices with α_i > 0 (unweighted squared distances to their matches).
     pub matched_sq_sum: f64,
     /// Number of vertices with α_i > 0.
@@ -46,6 +50,9 @@ pub struct AlignEnergy<'a> {
     pub data_coefficients: &'a [f64],
     /// β = b·s.
     pub smoothness_coefficient: f64,
+    /// Scan points pulling the template surface (the optional scan-to-template term); empty
+    /// for the paper's energy.
+    pub scan_samples: &'a [ScanSample],
 }
 
 /// Position T_i ṽ_i of vertex `i` under transforms `x`.
@@ -93,6 +100,25 @@ impl AlignEnergy<'_> {
                 }
             }
         }
+        for sample in self.scan_samples {
+            let r = self.sample_point(x, sample) - sample.target;
+            let gamma = sample.coefficient;
+            terms.scan_weighted += gamma * r.norm_squared();
+            for (&m, &lambda) in sample.corners.iter().zip(&sample.barycentric) {
+                if lambda == 0.0 {
+                    continue;
+                }
+                let m = m as usize;
+                let v = &self.vertices[m];
+                let g = &mut grad[DOF * m..DOF * m + DOF];
+                for row in 0..3 {
+                    let s = 2.0 * gamma * lambda * r[row];
+                    for c in 0..4 {
+                        g[4 * row + c] += s * v[c];
+                    }
+                }
+            }
+        }
         let beta = self.smoothness_coefficient;
         for &[i, j] in self.edges {
             let (i, j) = (DOF * i as usize, DOF * j as usize);
@@ -105,8 +131,21 @@ impl AlignEnergy<'_> {
             }
             terms.smoothness += sq;
         }
-        terms.total = terms.data_weighted + beta * terms.smoothness;
+        terms.total = terms.data_weighted + terms.scan_weighted + beta * terms.smoothness;
         terms
+    }
+
+    /// x_s = Σ_m λ_m T_m ṽ_m, the template point a scan sample pulls (centred frame).
+    #[inline]
+    fn sample_point(&self, x: &[f64], sample: &ScanSample) -> Point3<f64> {
+        let mut p = nalgebra::Vector3::zeros();
+        for (&m, &lambda) in sample.corners.iter().zip(&sample.barycentric) {
+            if lambda != 0.0 {
+                let m = m as usize;
+                p += transformed(x, &self.vertices[m], m).coords * lambda;
+            }
+        }
+        Point3::from(p)
     }
 
     /// dᵀHd, the exact second derivative of E along `d` (E is quadratic in x).
@@ -117,6 +156,9 @@ impl AlignEnergy<'_> {
             if alpha > 0.0 {
                 data += alpha * transformed_direction(d, v, i);
             }
+        }
+        for sample in self.scan_samples {
+            data += sample.coefficient * self.sample_point(d, sample).coords.norm_squared();
         }
         let mut smooth = 0.0;
         for &[i, j] in self.edges {
@@ -138,13 +180,15 @@ fn transformed_direction(d: &[f64], v: &[f64; 4], i: usize) -> f64 {
 
 /// Inverse of the per-vertex diagonal blocks of the Hessian, used as L-BFGS's initial matrix H₀.
 ///
-/// Block of vertex i (the same for each of its three rows): B_i = 2 α_i ṽ_i ṽ_iᵀ + 2 β deg_i I₄.
+/// Block of vertex i (the same for each of its three rows): B_i = 2 α'_i ṽ_i ṽ_iᵀ + 2 β deg_i I₄,
+/// with α'_i = α_i + Σ_s γ_s λ_{s,i}² (every scan-to-template sample adds a multiple of ṽ_i ṽ_iᵀ).
 /// By Sherman–Morrison, B_i⁻¹ q = (q − α_i ṽ_i (ṽ_i·q) / (β deg_i + α_i ‖ṽ_i‖²)) / (2 β deg_i).
 #[derive(Debug, Clone, Default)]
 pub struct BlockPreconditioner {
     /// Per vertex: (1 / (2 β deg_i), α_i / (β deg_i + α_i ‖ṽ_i‖²)).
     factors: Vec<[f64; 2]>,
     vertices: Vec<[f64; 4]>,
+    alphas: Vec<f64>,
 }
 
 impl BlockPreconditioner {
@@ -153,10 +197,19 @@ impl BlockPreconditioner {
         self.vertices.clear();
         self.vertices.extend_from_slice(energy.vertices);
         self.factors.clear();
+        self.alphas.clear();
+        self.alphas
+            .extend(energy.data_coefficients.iter().map(|a| a.max(0.0)));
+        for sample in energy.scan_samples {
+            for (&m, &lambda) in sample.corners.iter().zip(&sample.barycentric) {
+                self.alphas[m as usize] += sample.coefficient * lambda * lambda;
+            }
+        }
         let beta = energy.smoothness_coefficient;
+        let alphas = &self.alphas;
         self.factors
             .extend(energy.vertices.iter().enumerate().map(|(i, v)| {
-                let alpha = energy.data_coefficients[i].max(0.0);
+                let alpha = alphas[i];
                 // An isolated vertex without data has a zero block; a tiny floor keeps it finite.
                 let bd = (beta * f64::from(degrees[i])).max(1e-12);
                 let vv = v.iter().map(|c| c * c).sum::<f64>();

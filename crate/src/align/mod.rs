@@ -3,6 +3,7 @@
 //! * [`ScanIndex`] (`scan_index.rs`) — closest points on the scan, built once per scan.
 //! * [`surface`] — normals, edges, one-rings, boundary flags, closest point on a triangle.
 //! * [`energy`] — E_d, E_s (paper eq. 6–8) and their analytic gradient.
+//! * [`scan_term`] — the optional scan-to-template term E_r (not in the paper).
 //! * [`lbfgs`] — allocation-free L-BFGS with exact line search on the quadratic inner problem.
 //! * [`fine_align()`] (`fine_align.rs`) — the outer loop: find correspondences, minimise, repeat.
 //! * [`report`] — the paper's Table 1 statistics, per-vertex distances, time-to-RMS curve.
@@ -15,6 +16,7 @@ pub mod lbfgs;
 pub mod params;
 pub mod report;
 pub mod scan_index;
+pub mod scan_term;
 pub mod surface;
 pub mod weights;
 
@@ -24,6 +26,8 @@ pub use fine_align::{
     Progress,
 };
 pub use params::{CorrespondenceMode, FineAlignParams};
-pub use report::{AlignReport, CurvePoint, DistanceStats};
-pub use scan_index::{Match, MatchQuery, ScanIndex};
+pub use report::{
+    scan_to_template_distances, template_to_scan_distances, AlignReport, CurvePoint, DistanceStats,
+};
+pub use scan_index::{FaceMatch, Match, MatchQuery, ScanIndex};
 pub use weights::{data_weights, HAND_EAR_WEIGHT};

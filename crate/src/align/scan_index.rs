@@ -3,7 +3,8 @@
 use super::error::AlignError;
 use super::params::CorrespondenceMode;
 use super::surface::{
-    boundary_vertices, closest_point_on_triangle, face_normals, vertex_normals, OneRings,
+    barycentric, boundary_vertices, closest_point_on_triangle, face_normals, vertex_normals,
+    OneRings,
 };
 use crate::mesh::Mesh;
 use kiddo::{ImmutableKdTree, SquaredEuclidean};
@@ -21,6 +22,22 @@ pub struct Match {
     /// The scan's unit normal there (vertex normal or face normal).
     pub normal: Vector3<f64>,
     /// Whether the match lies on a hole rim (boundary vertex, or triangle touching one).
+    pub on_boundary: bool,
+}
+
+/// A closest point on a mesh expressed by the triangle corners it interpolates, so an energy can
+/// follow the point as the corners move (used on the fitted template by the scan-to-template term).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct FaceMatch {
+    /// Corner vertices of the triangle the point lies on (a vertex match repeats its vertex).
+    pub corners: [u32; 3],
+    /// Barycentric coordinates of the point in `corners`, summing to 1.
+    pub barycentric: [f64; 3],
+    /// The point, metres.
+    pub point: Point3<f64>,
+    /// The mesh's unit normal there.
+    pub normal: Vector3<f64>,
+    /// Whether the point lies on a hole rim (boundary vertex, or triangle touching one).
     pub on_boundary: bool,
 }
 
@@ -144,6 +161,29 @@ impl ScanIndex {
         })
     }
 
+    /// Moves the indexed mesh's vertices to `positions` (same count, same triangles), keeping
+    /// its topology (one-rings, boundary flags): the k-d tree and normals are rebuilt. Used on the
+    /// template, whose surface moves every round while its connectivity does not.
+    pub(crate) fn move_vertices(&mut self, positions: &[Point3<f64>]) {
+        debug_assert_eq!(positions.len(), self.positions.len());
+        self.positions.clear();
+        self.positions.extend_from_slice(positions);
+        let coords: Vec<[f64; 3]> = self
+            .tree_vertex
+            .iter()
+            .map(|&v| {
+                let p = &positions[v as usize];
+                [p.x, p.y, p.z]
+            })
+            .collect();
+        if let Ok(tree) = ImmutableKdTree::new_from_slice(&coords) {
+            self.tree = tree;
+        }
+        self.vertex_normals = vertex_normals(positions, &self.triangles);
+        self.face_normals = face_normals(positions, &self.triangles);
+        self.bvh = OnceLock::new();
+    }
+
     /// Number of scan vertices.
     pub fn vertex_count(&self) -> usize {
         self.positions.len()
@@ -230,6 +270,58 @@ impl ScanIndex {
                 exact.or_else(|| self.one_ring_match(p, normal, query))
             }
         }
+    }
+
+    /// The closest compatible point to `p` on the triangles around its nearest compatible vertex
+    /// (the [`CorrespondenceMode::VertexOneRing`] search), with its triangle and barycentric
+    /// coordinates. `None` when no candidate has a compatible normal.
+    pub fn closest_face(
+        &self,
+        p: &Point3<f64>,
+        normal: Option<&Vector3<f64>>,
+        query: &MatchQuery,
+    ) -> Option<FaceMatch> {
+        let v = self.nearest_compatible_vertex(p, normal, query)?;
+        let mut best = FaceMatch {
+            corners: [v as u32; 3],
+            barycentric: [1.0, 0.0, 0.0],
+            point: self.positions[v],
+            normal: self.vertex_normals[v],
+            on_boundary: self.boundary_vertex[v],
+        };
+        let mut best_d2 = (best.point - p).norm_squared();
+        for &f in self.rings.triangles_of(v) {
+            let f = f as usize;
+            let n = &self.face_normals[f];
+            if !Self::compatible(query.min_cos, normal, n) {
+                continue;
+            }
+            let corners = self.triangles[f];
+            let [a, b, c] = corners.map(|i| self.positions[i as usize]);
+            let x = closest_point_on_triangle(p, &a, &b, &c);
+            let d2 = (x - p).norm_squared();
+            if d2 < best_d2 {
+                best_d2 = d2;
+                best = FaceMatch {
+                    corners,
+                    barycentric: barycentric(&x, &a, &b, &c),
+                    point: x,
+                    normal: *n,
+                    on_boundary: self.boundary_triangle[f],
+                };
+            }
+        }
+        Some(best)
+    }
+
+    /// Unit normal of scan vertex `v`.
+    pub fn vertex_normal(&self, v: usize) -> &Vector3<f64> {
+        &self.vertex_normals[v]
+    }
+
+    /// Indices of the scan vertices used by at least one triangle, in order.
+    pub fn surface_vertex_indices(&self) -> &[u32] {
+        &self.tree_vertex
     }
 
     fn nearest_compatible_vertex(

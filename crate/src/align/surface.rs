@@ -186,6 +186,26 @@ pub fn closest_point_on_triangle(
     a + ab * v + ac * w
 }
 
+/// Barycentric coordinates (λ_a, λ_b, λ_c), summing to 1, of a point `x` on (or projected onto the
+/// plane of) triangle `(a, b, c)`; a degenerate triangle gives (1, 0, 0).
+pub fn barycentric(
+    x: &Point3<f64>,
+    a: &Point3<f64>,
+    b: &Point3<f64>,
+    c: &Point3<f64>,
+) -> [f64; 3] {
+    let (v0, v1, v2) = (b - a, c - a, x - a);
+    let (d00, d01, d11) = (v0.dot(&v0), v0.dot(&v1), v1.dot(&v1));
+    let (d20, d21) = (v2.dot(&v0), v2.dot(&v1));
+    let denom = d00 * d11 - d01 * d01;
+    if denom.abs() <= f64::EPSILON * d00 * d11 || denom == 0.0 {
+        return [1.0, 0.0, 0.0];
+    }
+    let v = (d11 * d20 - d01 * d21) / denom;
+    let w = (d00 * d21 - d01 * d20) / denom;
+    [1.0 - v - w, v, w]
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -198,6 +218,21 @@ mod tests {
             Point3::new(0.0, 1.0, 0.0),
         ];
         (p, vec![[0, 1, 2], [0, 2, 3]])
+    }
+
+    #[test]
+    fn barycentric_reproduces_the_point() {
+        let (a, b, c) = (
+            Point3::new(0.0, 0.0, 0.0),
+            Point3::new(2.0, 0.0, 0.0),
+            Point3::new(0.0, 1.0, 1.0),
+        );
+        let x = Point3::from(a.coords * 0.2 + b.coords * 0.3 + c.coords * 0.5);
+        let l = barycentric(&x, &a, &b, &c);
+        for (got, want) in l.iter().zip([0.2, 0.3, 0.5]) {
+            assert!((got - want).abs() < 1e-12, "{l:?}");
+        }
+        assert_eq!(barycentric(&x, &a, &a, &a), [1.0, 0.0, 0.0]);
     }
 
     #[test]

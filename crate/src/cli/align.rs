@@ -66,6 +66,11 @@ pub struct AlignArgs {
     /// docs/fine-alignment.md). Default: FineAlignParams::default().landmark_weight.
     #[arg(long)]
     pub landmark_weight: Option<f64>,
+    /// Weight of the scan-to-template term in fine alignment (scan points pull the template's
+    /// triangles; 0 = off, the paper's energy; see docs/fine-alignment.md). Default:
+    /// FineAlignParams::default().scan_term_weight.
+    #[arg(long)]
+    pub scan_term_weight: Option<f64>,
     /// Also write the JSON report to this file.
     #[arg(long)]
     pub report: Option<PathBuf>,

@@ -101,6 +101,7 @@ pub fn run_full(args: &AlignArgs) -> Result<(), String> {
     };
     let params = FineAlignParams {
         landmark_weight: args.landmark_weight.unwrap_or(params.landmark_weight),
+        scan_term_weight: args.scan_term_weight.unwrap_or(params.scan_term_weight),
         ..params
     };
     params.validate().map_err(|e| e.to_string())?;
@@ -153,6 +154,7 @@ pub fn run_full(args: &AlignArgs) -> Result<(), String> {
         "a": params.a,
         "b": params.b,
         "landmark_weight": params.landmark_weight,
+        "scan_term_weight": params.scan_term_weight,
         "anchors": anchors.len(),
         "rough_ms": rough_ms,
         "scan_index_ms": index_ms,
