@@ -15,7 +15,7 @@ echo "== lint"
 cargo fmt --manifest-path crate/Cargo.toml --check
 cargo clippy --manifest-path crate/Cargo.toml --all-targets -- -D warnings
 cargo clippy --manifest-path crate/Cargo.toml --lib --target wasm32-unknown-unknown -- -D warnings
-npx tsc --noEmit -p tsconfig.json
+npm run --silent typecheck
 
 echo "== rust tests"
 cargo test --manifest-path crate/Cargo.toml

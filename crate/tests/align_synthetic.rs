@@ -74,7 +74,10 @@ fn synthetic_subjects_meet_the_accuracy_goals() {
             result.report.iterations
         );
         assert!(rms_mm <= 1.3, "subject {index}: RMS {rms_mm} mm");
-        assert!(fine_mm < rough_mm, "subject {index}: {rough_mm} → {fine_mm}");
+        assert!(
+            fine_mm < rough_mm,
+            "subject {index}: {rough_mm} → {fine_mm}"
+        );
         rough_sum += rough_mm;
         fine_sum += fine_mm;
     }
@@ -82,5 +85,8 @@ fn synthetic_subjects_meet_the_accuracy_goals() {
         rough_sum / subjects.len() as f64,
         fine_sum / subjects.len() as f64,
     );
-    assert!(fine <= 6.0, "mean correspondence error {fine} mm (RBF alone {rough} mm)");
+    assert!(
+        fine <= 6.0,
+        "mean correspondence error {fine} mm (RBF alone {rough} mm)"
+    );
 }

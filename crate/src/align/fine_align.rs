@@ -325,8 +325,9 @@ pub fn fine_align_general(
                     index.move_vertices(&positions);
                     index
                 }
-                None => template_index
-                    .insert(ScanIndex::from_parts("template", &positions, triangles)?),
+                None => {
+                    template_index.insert(ScanIndex::from_parts("template", &positions, triangles)?)
+                }
             };
             let settings = ScanTermSettings {
                 query,

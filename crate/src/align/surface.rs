@@ -188,12 +188,7 @@ pub fn closest_point_on_triangle(
 
 /// Barycentric coordinates (λ_a, λ_b, λ_c), summing to 1, of a point `x` on (or projected onto the
 /// plane of) triangle `(a, b, c)`; a degenerate triangle gives (1, 0, 0).
-pub fn barycentric(
-    x: &Point3<f64>,
-    a: &Point3<f64>,
-    b: &Point3<f64>,
-    c: &Point3<f64>,
-) -> [f64; 3] {
+pub fn barycentric(x: &Point3<f64>, a: &Point3<f64>, b: &Point3<f64>, c: &Point3<f64>) -> [f64; 3] {
     let (v0, v1, v2) = (b - a, c - a, x - a);
     let (d00, d01, d11) = (v0.dot(&v0), v0.dot(&v1), v1.dot(&v1));
     let (d20, d21) = (v2.dot(&v0), v2.dot(&v1));
