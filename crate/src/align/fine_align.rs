@@ -55,7 +55,7 @@ pub struct FineAlignResult {
 }
 
 /// Milliseconds on a monotonic-enough clock (`Instant` does not exist on wasm32-unknown-unknown).
-fn now_ms() -> f64 {
+pub(crate) fn now_ms() -> f64 {
     #[cfg(target_arch = "wasm32")]
     {
         js_sys::Date::now()
