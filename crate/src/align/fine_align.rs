@@ -279,23 +279,23 @@ pub fn fine_align_general(
         }
         on_round(round, &positions);
         vertex_normals_into(&positions, triangles, &mut normals);
-        for i in 0..n {
-            coefficients[i] = 0.0;
+        for_each_vertex(&mut targets, &mut coefficients, |i, target, coefficient| {
+            *coefficient = 0.0;
             if weights[i] <= 0.0 {
-                continue;
+                return;
             }
             let normal = (normals[i] != Vector3::zeros()).then_some(&normals[i]);
             let Some(m) = scan.closest(&positions[i], normal, &query) else {
-                continue;
+                return;
             };
             if (params.skip_boundary_matches && m.on_boundary)
                 || (m.point - positions[i]).norm() > params.max_match_distance
             {
-                continue;
+                return;
             }
-            targets[i] = m.point - centroid;
-            coefficients[i] = data_scale * weights[i];
-        }
+            *target = m.point - centroid;
+            *coefficient = data_scale * weights[i];
+        });
         let anchor_coefficient = data_scale * params.landmark_weight;
         if anchor_coefficient > 0.0 {
             for (i, target) in anchors {
@@ -390,6 +390,32 @@ pub fn fine_align_general(
             per_vertex_distance,
         },
     })
+}
+
+/// Calls `f(i, &mut targets[i], &mut coefficients[i])` for every template vertex: on native
+/// builds on all cores (rayon), on wasm32 in order. Each call writes only its own vertex, so the
+/// result does not depend on the number of threads.
+#[cfg(not(target_arch = "wasm32"))]
+fn for_each_vertex<F>(targets: &mut [Point3<f64>], coefficients: &mut [f64], f: F)
+where
+    F: Fn(usize, &mut Point3<f64>, &mut f64) + Sync,
+{
+    use rayon::prelude::*;
+    targets
+        .par_iter_mut()
+        .zip(coefficients.par_iter_mut())
+        .enumerate()
+        .for_each(|(i, (t, c))| f(i, t, c));
+}
+
+#[cfg(target_arch = "wasm32")]
+fn for_each_vertex<F>(targets: &mut [Point3<f64>], coefficients: &mut [f64], f: F)
+where
+    F: Fn(usize, &mut Point3<f64>, &mut f64),
+{
+    for (i, (t, c)) in targets.iter_mut().zip(coefficients.iter_mut()).enumerate() {
+        f(i, t, c);
+    }
 }
 
 fn curve_point(iteration: usize, elapsed_ms: f64, t: &EnergyTerms) -> CurvePoint {
