@@ -256,7 +256,8 @@ pub fn fine_align_general(
     let mut targets = vec![Point3::origin(); n];
     let mut coefficients = vec![0.0; n];
     let mut preconditioner = BlockPreconditioner::default();
-    let mut curve = Vec::new();
+    // Reserved so that recording the curve never allocates inside the iteration loop.
+    let mut curve = Vec::with_capacity(params.max_iterations.min(1 << 16) + 1);
     let (mut iteration, mut rounds) = (0usize, 0usize);
     let (mut cancelled, mut converged) = (false, false);
     let mut last_stiffness = f64::NAN;
