@@ -39,6 +39,10 @@ impl Stage {
     }
 }
 
+/// `on_round(stage, round, positions)` of [`coarse_to_fine_align`]: the surface at the fine
+/// resolution at the start of every round.
+pub type StagedRoundObserver<'a> = dyn FnMut(Stage, usize, &[Point3<f64>]) + 'a;
+
 /// The two schedules of [`coarse_to_fine_align`].
 #[derive(Debug, Clone, PartialEq)]
 pub struct CoarseToFineParams {
@@ -120,7 +124,7 @@ pub fn coarse_to_fine_align(
     anchors: &[(u32, Point3<f64>)],
     params: &CoarseToFineParams,
     on_progress: &mut dyn FnMut(Stage, &Progress) -> ControlFlow<()>,
-    on_round: &mut dyn FnMut(Stage, usize, &[Point3<f64>]),
+    on_round: &mut StagedRoundObserver<'_>,
 ) -> Result<CoarseToFineResult, AlignError> {
     let start = now_ms();
     let base_count = base_positions.len();

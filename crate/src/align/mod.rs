@@ -22,7 +22,8 @@ pub mod surface;
 pub mod weights;
 
 pub use coarse_to_fine::{
-    coarse_to_fine_align, CoarseToFineParams, CoarseToFineResult, Stage, FINE_STAGE_ITERATIONS,
+    coarse_to_fine_align, CoarseToFineParams, CoarseToFineResult, Stage, StagedRoundObserver,
+    FINE_STAGE_ITERATIONS,
 };
 pub use error::AlignError;
 pub use fine_align::{
