@@ -122,9 +122,9 @@ pub fn run_full(args: &AlignArgs) -> Result<(), String> {
     let inputs = load(args)?;
     let refinement = inputs.template.refinement();
     // Coarse to fine warps and fits the base template first; its vertices come first at fine.
-    let warped_template = inputs.template.at_resolution(Resolution::Base);
+    let base_template = inputs.template.at_resolution(Resolution::Base);
     let warped_template = if refinement.is_some() {
-        &warped_template
+        &base_template
     } else {
         &inputs.template
     };
@@ -147,7 +147,6 @@ pub fn run_full(args: &AlignArgs) -> Result<(), String> {
     let index = ScanIndex::new(&scan_m).map_err(|e| format!("{}: {e}", args.scan.display()))?;
     let index_ms = index_start.elapsed().as_secs_f64() * 1e3;
     let anchors = landmark_anchors(warped_template, &warped_m, &warp.used);
-    let go = |_: &_| ControlFlow::Continue(());
     let fitted = match refinement {
         None => {
             let result = fine_align_anchored(
@@ -157,7 +156,7 @@ pub fn run_full(args: &AlignArgs) -> Result<(), String> {
                 &weights,
                 &anchors,
                 &params,
-                &mut |p| go(p),
+                &mut |_| ControlFlow::Continue(()),
             )
             .map_err(|e| format!("fine alignment: {e}"))?;
             Fitted {
@@ -185,7 +184,7 @@ pub fn run_full(args: &AlignArgs) -> Result<(), String> {
                 &weights,
                 &anchors,
                 &c2f,
-                &mut |_, p| go(p),
+                &mut |_, _| ControlFlow::Continue(()),
                 &mut |_, _, _| {},
             )
             .map_err(|e| format!("fine alignment: {e}"))?;
