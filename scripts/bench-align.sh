@@ -31,7 +31,7 @@ echo "== peer (trimesh.registration.nricp_amberg, default steps, same start and 
 echo
 echo "== fine alignment: ours vs peer, mean over $n subjects"
 read -r _ _ ours_rms _ _ _ ours_corr _ < <(grep '^ *mean' "$work/ours.txt")
-ours_ms="$(grep '^ *mean' "$work/ours.txt" | awk '{print $(NF-2) + $(NF-1) + $NF}')"
+ours_ms="$(grep '^ *mean' "$work/ours.txt" | awk '{print $(NF-3) + $(NF-2) + $(NF-1) + $NF}')"
 read -r _ peer_rms peer_corr peer_s < <(grep '^ *mean' "$work/peer.txt")
 printf '%-32s %14s %22s %12s\n' "method" "scan→tmpl RMS" "correspondence (mean)" "time"
 printf '%-32s %11.3f mm %19.2f mm %10.2f s\n' "bodyspace (RBF + fine)" "$ours_rms" "$ours_corr" "$(awk "BEGIN{print $ours_ms/1000}")"

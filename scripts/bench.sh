@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Benchmark: parse a 300,000-triangle binary PLY (i) in the real core worker inside Chromium,
-# through the built app, and (ii) natively. Builds release artefacts first. Prints tables.
+# through the built app, and (ii) natively; the shape model; alignment against the peer; and
+# alignment of a ≈ 201K-vertex scan in the browser worker at base and fine
+# (scripts/bench-align-browser.sh). Builds release artefacts first. Prints tables.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 export PATH="$HOME/.cargo/bin:$PATH"
@@ -37,3 +39,6 @@ echo "== shape model (public/models/demo.bsm), stitched reconstruction in the wo
 node bench/shape-bench.mjs "http://127.0.0.1:$port/" "${SHAPE_RUNS:-30}"
 echo "== alignment vs trimesh nricp_amberg"
 bash scripts/bench-align.sh
+echo
+echo "== alignment in the browser worker (≈ 201K-vertex synthetic subject, base and fine)"
+bash scripts/bench-align-browser.sh

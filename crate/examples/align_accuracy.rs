@@ -5,7 +5,9 @@
 //!  [--lambda L] [--a A] [--b B] [--max-iterations N] [--iterations-per-round N] [--anneal INIT:DECAY]
 //!  [--relative-tolerance T] [--displacement-tolerance M] [--landmark-weight W] [--scan-term W]
 //!  [--scan-term-samples N] [--scan-term-from STIFFNESS] [--scan-term-max-distance M] [--quiet]
-//!  [--export DIR]`
+//!  [--export DIR] [--first K] [--resolution fine [--fine-max-iterations N]
+//!  [--fine-iterations-per-round N] [--fine-anneal INIT:DECAY] [--fine-displacement-tolerance M]
+//!  [--fine-memory M]]`
 //!
 //! DIR holds `scan_XXX.ply`, `landmarks_XXX.lnd` and `truth_XXX.ply` (the `base` template's
 //! vertices on the subject, scan frame and units). Prints per subject and the mean: scan→template
@@ -13,12 +15,17 @@
 //! alignment, the same per segment (each vertex counted in its dominant segment), iterations and
 //! times. Unset options keep the library defaults. `--export DIR` also writes each subject's
 //! RBF-warped template (`warped_XXX.ply`, metres) and landmark anchors (`anchors_XXX.json`) so
-//! the peer (`bench/peer/nricp.py`) starts from the same place.
+//! the peer (`bench/peer/nricp.py`) starts from the same place. `--resolution fine` aligns the
+//! `fine` template coarse to fine (`coarse_to_fine_align`; the options set its base stage, the
+//! `--fine-*` ones its fine stage) and measures the correspondence error on the base vertices,
+//! which come first; the RMS column is then the fine fit's, and the times are base stage +
+//! subdivision (`idx_ms` stays the scan index) and fine stage. `--first K` starts at subject K.
 
 #[cfg(not(target_arch = "wasm32"))]
 mod native {
     use bodyspace::align::{
-        fine_align_anchored, scan_to_template_distances, DistanceStats, FineAlignParams, ScanIndex,
+        coarse_to_fine_align, fine_align_anchored, scan_to_template_distances, CoarseToFineParams,
+        DistanceStats, FineAlignParams, ScanIndex,
     };
     use bodyspace::cli::align_fine::{data_weights, landmark_anchors};
     use bodyspace::io::{read_landmarks, read_scan, write_ply};
@@ -36,6 +43,9 @@ mod native {
         n: usize,
         rbf: RbfParams,
         fine: FineAlignParams,
+        /// `Some` at `--resolution fine`: the fine stage of coarse-to-fine alignment.
+        fine_stage: Option<FineAlignParams>,
+        first: usize,
         quiet: bool,
         export: Option<PathBuf>,
     }
@@ -48,6 +58,8 @@ mod native {
             n: 10,
             rbf: RbfParams::default(),
             fine: FineAlignParams::default(),
+            fine_stage: None,
+            first: 1,
             quiet: false,
             export: None,
         };
@@ -66,6 +78,31 @@ mod native {
             };
             match flag.as_str() {
                 "--export" => options.export = Some(PathBuf::from(&value)),
+                "--first" => options.first = num()? as usize,
+                "--resolution" => match value.as_str() {
+                    "base" => options.fine_stage = None,
+                    "fine" => options.fine_stage = Some(CoarseToFineParams::default().fine),
+                    _ => return Err(format!("--resolution {value}: base or fine")),
+                },
+                "--fine-max-iterations" => {
+                    fine_stage(&mut options.fine_stage, &flag)?.max_iterations = num()? as usize
+                }
+                "--fine-iterations-per-round" => {
+                    fine_stage(&mut options.fine_stage, &flag)?.iterations_per_round =
+                        num()? as usize
+                }
+                "--fine-displacement-tolerance" => {
+                    fine_stage(&mut options.fine_stage, &flag)?.displacement_tolerance = num()?
+                }
+                "--fine-memory" => {
+                    fine_stage(&mut options.fine_stage, &flag)?.lbfgs_memory = num()? as usize
+                }
+                "--fine-anneal" => {
+                    let (init, decay) = value.split_once(':').ok_or("--fine-anneal INIT:DECAY")?;
+                    let fine = fine_stage(&mut options.fine_stage, &flag)?;
+                    fine.initial_stiffness = init.parse().map_err(|_| "--fine-anneal INIT")?;
+                    fine.stiffness_decay = decay.parse().map_err(|_| "--fine-anneal DECAY")?;
+                }
                 "--n" => options.n = num()? as usize,
                 "--kernel" => kernel_name = Some(value.clone()),
                 "--kernel-param" => kernel_param = Some(num()?),
@@ -97,6 +134,16 @@ mod native {
         Ok(options)
     }
 
+    /// The fine stage's parameters, which exist only after `--resolution fine`.
+    fn fine_stage<'a>(
+        stage: &'a mut Option<FineAlignParams>,
+        flag: &str,
+    ) -> Result<&'a mut FineAlignParams, String> {
+        stage
+            .as_mut()
+            .ok_or(format!("{flag}: needs --resolution fine first"))
+    }
+
     fn read_mesh(path: &Path) -> Result<Mesh, String> {
         let name = path.display().to_string();
         let bytes = std::fs::read(path).map_err(|e| format!("{name}: {e}"))?;
@@ -117,9 +164,18 @@ mod native {
         rough_ms: f64,
         index_ms: f64,
         fine_ms: f64,
+        /// Coarse to fine: the fine stage alone (included in `fine_ms`).
+        fine_stage_ms: f64,
     }
 
-    fn run_subject(options: &Options, template: &Template, id: usize) -> Result<Row, String> {
+    /// Subject `id`: `template` is the base template (warped and fitted first); `fine`, with
+    /// `--resolution fine`, the fine one it is carried to.
+    fn run_subject(
+        options: &Options,
+        template: &Template,
+        fine: Option<&Template>,
+        id: usize,
+    ) -> Result<Row, String> {
         let file = |stem: &str, ext: &str| options.dir.join(format!("{stem}_{id:03}.{ext}"));
         let scan = read_mesh(&file("scan", "ply"))?;
         let truth = read_mesh(&file("truth", "ply"))?;
@@ -163,16 +219,44 @@ mod native {
         if let Some(dir) = &options.export {
             export_start(dir, id, &warped, template, &anchors)?;
         }
-        let result = fine_align_anchored(
-            &warped,
-            &template.mesh().triangles,
-            &index,
-            &data_weights(template),
-            &anchors,
-            &options.fine,
-            &mut |_| ControlFlow::Continue(()),
-        )
-        .map_err(|e| e.to_string())?;
+        let (positions, report, fine_stage_ms) = match (fine, &options.fine_stage) {
+            (Some(fine), Some(stage)) => {
+                let refinement = fine
+                    .refinement()
+                    .ok_or("the fine template has no operator")?;
+                let params = CoarseToFineParams {
+                    base: options.fine.clone(),
+                    fine: stage.clone(),
+                };
+                let result = coarse_to_fine_align(
+                    &warped,
+                    &template.mesh().triangles,
+                    refinement,
+                    &index,
+                    &data_weights(fine),
+                    &anchors,
+                    &params,
+                    &mut |_, _| ControlFlow::Continue(()),
+                    &mut |_, _, _| {},
+                )
+                .map_err(|e| e.to_string())?;
+                let stage_ms = result.report.elapsed_ms - result.base.elapsed_ms;
+                (result.positions, result.report, stage_ms)
+            }
+            _ => {
+                let result = fine_align_anchored(
+                    &warped,
+                    &template.mesh().triangles,
+                    &index,
+                    &data_weights(template),
+                    &anchors,
+                    &options.fine,
+                    &mut |_| ControlFlow::Continue(()),
+                )
+                .map_err(|e| e.to_string())?;
+                (result.positions, result.report, 0.0)
+            }
+        };
 
         let mean_error = |fitted: &[Point3<f64>]| {
             fitted
@@ -180,12 +264,12 @@ mod native {
                 .zip(&truth)
                 .map(|(a, b)| (a - b).norm())
                 .sum::<f64>()
-                / fitted.len() as f64
+                / fitted.len().min(truth.len()) as f64
                 * 1e3
         };
         let mut sums = [0.0; 6];
         let mut counts = [0usize; 6];
-        for (v, (a, b)) in result.positions.iter().zip(&truth).enumerate() {
+        for (v, (a, b)) in positions.iter().zip(&truth).enumerate() {
             let w = template.segment_weights(v as u32);
             let dominant = (0..6).max_by(|&i, &j| w[i].total_cmp(&w[j])).unwrap_or(3);
             sums[dominant] += (a - b).norm() * 1e3;
@@ -201,16 +285,17 @@ mod native {
         );
         Ok(Row {
             scan_vertices: scan.positions.len(),
-            rms: result.report.scan_to_template.rms * 1e3,
-            signed: result.report.scan_to_template.mean * 1e3,
+            rms: report.scan_to_template.rms * 1e3,
+            signed: report.scan_to_template.mean * 1e3,
             truth_rms: truth_stats.rms * 1e3,
             rough_error: mean_error(&warped),
-            fine_error: mean_error(&result.positions),
+            fine_error: mean_error(&positions),
             segments,
-            iterations: result.report.iterations,
+            iterations: report.iterations,
             rough_ms,
             index_ms,
-            fine_ms: result.report.elapsed_ms,
+            fine_ms: report.elapsed_ms,
+            fine_stage_ms,
         })
     }
 
@@ -236,7 +321,7 @@ mod native {
 
     fn print_row(label: &str, r: &Row) {
         println!(
-            "{label:>7} {:>7} {:>7.3} {:>6.3} {:>6.3} {:>7.2} {:>7.2} | {} | {:>5} {:>6.0} {:>6.0} {:>7.0}",
+            "{label:>7} {:>7} {:>7.3} {:>6.3} {:>6.3} {:>7.2} {:>7.2} | {} | {:>5} {:>6.0} {:>6.0} {:>7.0} {:>8.0}",
             r.scan_vertices,
             r.rms,
             r.signed,
@@ -252,6 +337,7 @@ mod native {
             r.rough_ms,
             r.index_ms,
             r.fine_ms,
+            r.fine_stage_ms,
         );
     }
 
@@ -289,12 +375,27 @@ mod native {
         options.fine.scan_term_max_distance,
     );
         println!(
-        "subject   scanV  RMS_mm signed truthRMS rbf_mm fine_mm | mean correspondence error after fine per segment (mm): {} | iters rbf_ms idx_ms fine_ms",
+        "subject   scanV  RMS_mm signed truthRMS rbf_mm fine_mm | mean correspondence error after fine per segment (mm): {} | iters rbf_ms idx_ms fine_ms stage_ms",
         names.join(" ")
     );
         let mut rows = Vec::new();
-        for id in 1..=options.n {
-            match run_subject(&options, &template, id) {
+        let fine = options
+            .fine_stage
+            .as_ref()
+            .map(|_| template.at_resolution(Resolution::Fine));
+        if let Some(stage) = &options.fine_stage {
+            println!(
+                "coarse to fine, fine stage: max_it={} it/round={} anneal={}:{} disp_tol={} memory={}",
+                stage.max_iterations,
+                stage.iterations_per_round,
+                stage.initial_stiffness,
+                stage.stiffness_decay,
+                stage.displacement_tolerance,
+                stage.lbfgs_memory,
+            );
+        }
+        for id in options.first..options.first + options.n {
+            match run_subject(&options, &template, fine.as_ref(), id) {
                 Ok(row) => {
                     if !options.quiet {
                         print_row(&format!("{id:03}"), &row);
@@ -323,6 +424,7 @@ mod native {
             mean.rough_ms += r.rough_ms / k;
             mean.index_ms += r.index_ms / k;
             mean.fine_ms += r.fine_ms / k;
+            mean.fine_stage_ms += r.fine_stage_ms / k;
         }
         mean.iterations /= rows.len().max(1);
         print_row("mean", &mean);

@@ -1,7 +1,7 @@
 //! `bodyspace align` end to end (RBF warp, then fine alignment) on the embedded template deformed
 //! by a known smooth map, with ground truth.
 
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 use std::process::Command;
 
 use bodyspace::io::write_ply;
@@ -19,9 +19,10 @@ fn subject(p: &Point3<f64>) -> Point3<f64> {
     ) + Vector3::new(0.05, 0.0, -0.03)
 }
 
-#[test]
-fn full_align_fits_the_scan_and_keeps_correspondences() {
-    let dir = std::env::temp_dir().join(format!("bodyspace-align-full-{}", std::process::id()));
+/// Writes the subject (the embedded base template deformed by [`subject`]: scan, landmarks CSV,
+/// ground truth) into a fresh directory named after `name`.
+fn write_subject(name: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("bodyspace-{name}-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     let template = Template::embedded().unwrap();
     let truth: Vec<_> = template.mesh().positions.iter().map(subject).collect();
@@ -38,8 +39,12 @@ fn full_align_fits_the_scan_and_keeps_correspondences() {
         csv += &format!("\"{}\",{},{},{}\n", l.name, q.x, q.y, q.z);
     }
     std::fs::write(dir.join("landmarks.csv"), csv).unwrap();
-    let report: PathBuf = dir.join("report.json");
+    dir
+}
 
+/// Runs `bodyspace align` on the subject in `dir` with `extra` arguments; returns the report.
+fn align(dir: &Path, extra: &[&str]) -> serde_json::Value {
+    let report = dir.join("report.json");
     let out = Command::new(env!("CARGO_BIN_EXE_bodyspace"))
         .arg("align")
         .arg("--scan")
@@ -48,7 +53,7 @@ fn full_align_fits_the_scan_and_keeps_correspondences() {
         .arg(dir.join("landmarks.csv"))
         .arg("--truth")
         .arg(dir.join("truth.ply"))
-        .args(["--max-iterations", "40"])
+        .args(extra)
         .arg("--out")
         .arg(dir.join("fit.ply"))
         .arg("--report")
@@ -60,7 +65,14 @@ fn full_align_fits_the_scan_and_keeps_correspondences() {
         "{}",
         String::from_utf8_lossy(&out.stderr)
     );
-    let r: serde_json::Value = serde_json::from_slice(&std::fs::read(&report).unwrap()).unwrap();
+    serde_json::from_slice(&std::fs::read(&report).unwrap()).unwrap()
+}
+
+#[test]
+fn full_align_fits_the_scan_and_keeps_correspondences() {
+    let dir = write_subject("align-full");
+    let template = Template::embedded().unwrap();
+    let r = align(&dir, &["--max-iterations", "40"]);
     let fine = &r["fine"];
     assert_eq!(
         fine["template_vertices"].as_u64().unwrap() as usize,
@@ -81,5 +93,48 @@ fn full_align_fits_the_scan_and_keeps_correspondences() {
     );
     let fitted = std::fs::read(dir.join("fit.ply")).unwrap();
     assert!(fitted.starts_with(b"ply"));
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn fine_resolution_aligns_coarse_to_fine_in_fine_template_order() {
+    let dir = write_subject("align-fine");
+    let r = align(
+        &dir,
+        &[
+            "--resolution",
+            "fine",
+            "--max-iterations",
+            "20",
+            "--fine-iterations",
+            "2",
+        ],
+    );
+    assert_eq!(r["template_resolution"], "fine");
+    assert_eq!(r["coarse_to_fine"], true);
+    let fine = &r["fine"];
+    assert_eq!(fine["template_vertices"], 214_050);
+    let stages = &fine["stages"];
+    let base_iterations = stages["base"]["iterations"].as_u64().unwrap();
+    assert!((1..=20).contains(&base_iterations));
+    assert!((1..=2).contains(&stages["fine_iterations"].as_u64().unwrap()));
+    assert_eq!(
+        fine["iterations"].as_u64().unwrap(),
+        base_iterations + stages["fine_iterations"].as_u64().unwrap()
+    );
+    let (base_rms, fine_rms) = (
+        stages["base"]["scan_to_template"]["rms_mm"]
+            .as_f64()
+            .unwrap(),
+        fine["scan_to_template"]["rms_mm"].as_f64().unwrap(),
+    );
+    assert!(fine_rms <= base_rms + 0.01, "{base_rms} → {fine_rms} mm");
+    // The ground truth has the base vertices, which come first at fine.
+    let ce = &r["correspondence_error"];
+    assert_eq!(ce["vertices"], 13_380);
+    assert!(ce["mean_mm"].as_f64().unwrap() < ce["rough_mean_mm"].as_f64().unwrap() + 0.5);
+    let fitted = std::fs::read(dir.join("fit.ply")).unwrap();
+    let fitted = bodyspace::io::read_scan(&fitted, "fit.ply").unwrap();
+    assert_eq!(fitted.positions.len(), 214_050);
     let _ = std::fs::remove_dir_all(&dir);
 }

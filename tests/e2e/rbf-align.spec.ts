@@ -55,6 +55,30 @@ test('Align fits the template and shows the RMS, the heat map and keeps the subj
   await expect(page.locator('body')).toHaveAttribute('data-subjects', '1');
 });
 
+test('Align on the fine template goes coarse to fine and returns the fine template', async ({ page }) => {
+  test.setTimeout(300_000);
+  await page.goto('./');
+  await expect(page.locator('body')).toHaveAttribute('data-template-ready', 'true', { timeout: 60_000 });
+  await page.getByTestId('template-resolution').selectOption('fine');
+  await expect(page.locator('body')).toHaveAttribute('data-template-resolution', 'fine', { timeout: 120_000 });
+  await expect(page.locator('body')).toHaveAttribute('data-template-ready', 'true', { timeout: 120_000 });
+  const triangles = Number((await page.getByTestId('template-triangles').textContent())!.replace(/,/g, ''));
+  await dropFiles(page, sampleSubject());
+  await waitForLoads(page, 1);
+  await expect(page.locator('body')).toHaveAttribute('data-rbf-state', 'done', { timeout: 120_000 });
+  await expect(page.getByTestId('align-resolution')).toHaveAttribute('data-resolution', 'fine');
+  await page.getByTestId('align-run').click();
+  await expect(page.locator('body')).toHaveAttribute('data-align-state', 'done', { timeout: 240_000 });
+  await expect(page.locator('body')).toHaveAttribute('data-align-template-vertices', '214050');
+  await expect(page.locator('body')).toHaveAttribute('data-align-stage', 'fine');
+  await expect(page.getByTestId('align-iterations')).toContainText(/\d+ base \+ \d+ fine/);
+  const rms = Number(await page.getByTestId('align-rms').getAttribute('data-rms-mm'));
+  expect(rms).toBeGreaterThan(0);
+  expect(rms).toBeLessThan(5);
+  await expect(page.locator('#viewport')).toHaveAttribute('data-fitted-triangles', String(triangles));
+  await expect(page.locator('#viewport')).toHaveAttribute('data-fitted-coloured', 'true');
+});
+
 test('Cancel keeps the last good state, flagged with its iteration, and the scan stays loaded', async ({ page }) => {
   test.setTimeout(300_000);
   await openWithSample(page);

@@ -22,6 +22,7 @@ export class AlignStep {
   private latest: { positions: Float32Array; iteration: number } | null = null;
   private iteration = 0;
   private running = false;
+  private drawScheduled = false;
   private kept = false;
   private legendMaxMm = 10;
 
@@ -38,6 +39,7 @@ export class AlignStep {
       onCancel: () => this.cancel(),
       onExport: (format) => void this.export(format),
       onKeep: () => this.keep(),
+      resolution: () => this.template.resolution,
     });
     warp.onTransform((transform) => this.viewer.showBody('fitted', { transform }));
   }
@@ -61,7 +63,7 @@ export class AlignStep {
     this.kept = false;
     this.iteration = 0;
     this.panel.chart.clear();
-    this.panel.render({ state: 'running', iteration: 0, maxIterations: 200, rmsMm: null });
+    this.panel.render({ state: 'running', iteration: 0, maxIterations: 200, rmsMm: null, stage: 'base' });
     this.warp.show('scan', true);
     const triangles = template.triangles;
     const onEvent = (event: CoreEvent) => {
@@ -69,17 +71,26 @@ export class AlignStep {
         this.iteration = event.iteration;
         document.body.dataset.alignIteration = String(event.iteration);
         this.panel.chart.add({ iteration: event.iteration, energy: event.energy, rmsMm: event.rmsMetres * 1e3 });
-        this.panel.render({ state: 'running', iteration: event.iteration, maxIterations: event.maxIterations, rmsMm: event.rmsMetres * 1e3 });
+        this.panel.render({
+          state: 'running',
+          iteration: event.iteration,
+          maxIterations: event.maxIterations,
+          rmsMm: event.rmsMetres * 1e3,
+          stage: event.stage,
+        });
+        document.body.dataset.alignStage = event.stage;
       } else {
         this.latest = { positions: event.positions, iteration: event.iteration };
-        this.showFitted({ positions: event.positions, triangles }, null);
+        this.showLatestSoon(triangles);
       }
     };
     try {
+      const posted = performance.now();
       const result = await this.client.call(
         { type: 'align', scan: input, rbf: this.warp.panel.current, fine: {} },
         { transfer: scanTransfer(input), onEvent },
       );
+      recordTimings(result, performance.now() - posted);
       this.result = result;
       const distancesMm = Float32Array.from(result.distances, (d) => d * 1e3);
       this.legendMaxMm = legendMax(distancesMm);
@@ -101,6 +112,20 @@ export class AlignStep {
 
   cancel(): void {
     if (this.running) this.client.cancel();
+  }
+
+  /**
+   * Draws the newest round at the next frame. Rounds can come faster than a frame of a large
+   * template is built and drawn (a fine template without a GPU takes ~1 s): only the newest is
+   * drawn, so the page never falls behind the worker.
+   */
+  private showLatestSoon(triangles: Uint32Array): void {
+    if (this.drawScheduled) return;
+    this.drawScheduled = true;
+    requestAnimationFrame(() => {
+      this.drawScheduled = false;
+      if (this.running && this.latest) this.showFitted({ positions: this.latest.positions, triangles }, null);
+    });
   }
 
   private showCancelled(): void {
@@ -153,6 +178,22 @@ export class AlignStep {
     document.body.dataset.subjects = String(subjects.all.length);
     this.panel.render({ state: 'done', report: this.result.report, legendMaxMm: this.legendMaxMm, kept: true });
   }
+}
+
+/** The run's times on the page, for benchmarks (bench/align-bench.mjs) and tests to read. */
+function recordTimings(result: AlignResult, roundTripMs: number): void {
+  const data = document.body.dataset;
+  const report = result.report;
+  const stages = report.fine.stages;
+  data.alignRoundTripMs = roundTripMs.toFixed(1);
+  data.alignWorkerMs = result.workerMs.toFixed(1);
+  data.alignTotalMs = report.total_ms.toFixed(1);
+  data.alignRoughMs = report.rough_ms.toFixed(1);
+  data.alignIndexMs = report.index_ms.toFixed(1);
+  data.alignFineMs = report.fine.elapsed_ms.toFixed(1);
+  data.alignBaseStageMs = (stages ? stages.base.elapsed_ms : report.fine.elapsed_ms).toFixed(1);
+  data.alignIterations = String(report.fine.iterations);
+  data.alignTemplateVertices = String(report.fine.template_vertices);
 }
 
 /** The heat scale's top: the 98th percentile (a few outliers must not wash out the rest), ≥ 1 mm. */

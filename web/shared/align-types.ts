@@ -21,12 +21,23 @@ export const DEFAULT_KERNEL_PARAM: Record<KernelName, number | null> = {
   multiquadric: 0.01,
 };
 
-/** Fine-alignment settings; absent fields keep the core's defaults (a = 0.96, b = 0.04). */
+/**
+ * Fine-alignment settings; absent fields keep the core's defaults (a = 0.96, b = 0.04).
+ * `max_iterations` limits the (base) fit; `fine_iterations` the fine stage of a fine template.
+ */
 export interface FineSettings {
   a?: number;
   b?: number;
   max_iterations?: number;
+  fine_iterations?: number;
 }
+
+/**
+ * A fine template is aligned coarse to fine: the base template is fitted first ('base'), carried
+ * to fine by the subdivision operator and fitted briefly there ('fine'). A base template has only
+ * the 'base' stage.
+ */
+export type AlignStage = 'base' | 'fine';
 
 /** The scan and its landmarks as the core needs them, all in metres. */
 export interface ScanInput {
@@ -82,21 +93,32 @@ export interface DistanceStatsMm {
   max_abs_mm: number;
 }
 
+/** What one fine alignment reports (for coarse to fine: the whole run, or its base stage). */
+export interface FineReport {
+  template_vertices: number;
+  scan_vertices: number;
+  scan_to_template: DistanceStatsMm;
+  template_to_scan: DistanceStatsMm;
+  iterations: number;
+  rounds: number;
+  converged: boolean;
+  cancelled: boolean;
+  elapsed_ms: number;
+}
+
 export interface AlignReport {
   warp: WarpReport;
   rough_ms: number;
   index_ms: number;
   total_ms: number;
-  fine: {
-    template_vertices: number;
-    scan_vertices: number;
-    scan_to_template: DistanceStatsMm;
-    template_to_scan: DistanceStatsMm;
-    iterations: number;
-    rounds: number;
-    converged: boolean;
-    cancelled: boolean;
-    elapsed_ms: number;
+  fine: FineReport & {
+    /** Coarse to fine only: the base stage, the subdivision and the fine stage's iterations. */
+    stages?: {
+      base: FineReport;
+      subdivide_ms: number;
+      fine_iterations: number;
+      fine_max_iterations: number;
+    };
   };
 }
 
@@ -106,6 +128,8 @@ export interface AlignResult {
   normals: Float32Array;
   distances: Float32Array;
   report: AlignReport;
+  /** The whole core call in the worker: inputs in, alignment, outputs copied out. */
+  workerMs: number;
 }
 
 /** Sent after every L-BFGS iteration. */
@@ -117,5 +141,7 @@ export interface AlignProgress {
   smoothnessError: number;
   rmsMetres: number;
   elapsedMs: number;
+  stage: AlignStage;
+  /** The most iterations this run can take (both stages of coarse to fine). */
   maxIterations: number;
 }

@@ -1,6 +1,7 @@
 // The Align step (paper §3.1 + §3.2): Align / Cancel, progress, the live E/RMS chart, and the
 // result — the paper's Table 1 numbers, the heat-map legend, export and "keep as aligned subject".
-import type { AlignReport } from '../shared/align-types';
+import type { AlignReport, AlignStage } from '../shared/align-types';
+import type { TemplateResolution } from '../shared/template-data';
 import { byId, h } from './dom';
 import { EnergyChart } from './energy-chart';
 import { formatCount } from './format';
@@ -11,12 +12,14 @@ export interface AlignControls {
   onCancel: () => void;
   onExport: (format: 'ply' | 'obj') => void;
   onKeep: () => void;
+  /** The template resolution Align will fit (chosen in the Template panel). */
+  resolution: () => TemplateResolution;
 }
 
 export type AlignView =
   | { state: 'unavailable' }
   | { state: 'idle' }
-  | { state: 'running'; iteration: number; maxIterations: number; rmsMm: number | null }
+  | { state: 'running'; iteration: number; maxIterations: number; rmsMm: number | null; stage: AlignStage }
   | { state: 'cancelled'; iteration: number; hasPositions: boolean }
   | { state: 'error'; message: string }
   | { state: 'done'; report: AlignReport; legendMaxMm: number; kept: boolean };
@@ -39,7 +42,7 @@ export class AlignPanel {
       this.live.bar.max = view.maxIterations;
       this.live.bar.value = view.iteration;
       this.live.bar.dataset.iteration = String(view.iteration);
-      this.live.status.textContent = statusText(view.iteration, view.maxIterations, view.rmsMm);
+      this.live.status.textContent = statusText(view);
       return;
     }
     this.live = null;
@@ -52,7 +55,7 @@ export class AlignPanel {
     align.disabled = running;
     const cancel = button('align-cancel', 'Cancel', 'button', () => this.controls.onCancel());
     cancel.hidden = !running;
-    const parts: (HTMLElement | string)[] = [title, h('div', { class: 'actions' }, align, cancel)];
+    const parts: (HTMLElement | string)[] = [title, resolutionNote(this.controls.resolution()), h('div', { class: 'actions' }, align, cancel)];
     if (view.state === 'running') {
       const bar = h('progress', {
         'data-testid': 'align-progress',
@@ -60,7 +63,7 @@ export class AlignPanel {
         value: String(view.iteration),
         'data-iteration': String(view.iteration),
       });
-      const status = h('p', { class: 'note', 'data-testid': 'align-status' }, statusText(view.iteration, view.maxIterations, view.rmsMm));
+      const status = h('p', { class: 'note', 'data-testid': 'align-status' }, statusText(view));
       this.live = { bar, status };
       parts.push(bar, status);
     }
@@ -103,7 +106,7 @@ export class AlignPanel {
         h('dt', {}, 'Template → scan RMS'),
         h('dd', { 'data-testid': 'align-t2s-rms' }, `${mm(t.rms_mm)} mm`),
         h('dt', {}, 'Iterations'),
-        h('dd', { 'data-testid': 'align-iterations' }, `${r.fine.iterations} (${r.fine.rounds} rounds${r.fine.converged ? ', converged' : ''})`),
+        h('dd', { 'data-testid': 'align-iterations' }, iterationsText(r)),
         h('dt', {}, 'Time'),
         h('dd', { 'data-testid': 'align-time' }, `${(r.total_ms / 1000).toFixed(2)} s`),
       ),
@@ -120,9 +123,25 @@ export class AlignPanel {
   }
 }
 
-function statusText(iteration: number, maxIterations: number, rmsMm: number | null): string {
-  const rms = rmsMm === null ? '' : `, RMS ${rmsMm.toFixed(2)} mm`;
-  return iteration === 0 ? 'RBF warp and scan index…' : `Iteration ${iteration} of at most ${maxIterations}${rms}`;
+function statusText(view: { iteration: number; maxIterations: number; rmsMm: number | null; stage: AlignStage }): string {
+  const rms = view.rmsMm === null ? '' : `, RMS ${view.rmsMm.toFixed(2)} mm`;
+  const stage = view.stage === 'fine' ? ' (fine stage)' : '';
+  return view.iteration === 0 ? 'RBF warp and scan index…' : `Iteration ${view.iteration} of at most ${view.maxIterations}${stage}${rms}`;
+}
+
+/** Which template Align fits, and how: a fine template goes coarse to fine. */
+function resolutionNote(resolution: TemplateResolution): HTMLElement {
+  const how =
+    resolution === 'fine'
+      ? 'fine template: the base template is fitted first, carried to fine by subdivision, then fitted briefly at fine'
+      : 'base template';
+  return h('p', { class: 'note', 'data-testid': 'align-resolution', 'data-resolution': resolution }, `Fits the ${how} (resolution in the Template panel).`);
+}
+
+function iterationsText(r: AlignReport): string {
+  const stages = r.fine.stages;
+  const detail = stages ? `${stages.base.iterations} base + ${stages.fine_iterations} fine, ` : '';
+  return `${r.fine.iterations} (${detail}${r.fine.rounds} rounds${r.fine.converged ? ', converged' : ''})`;
 }
 
 function button(testid: string, label: string, cls: string, onClick: () => void): HTMLButtonElement {

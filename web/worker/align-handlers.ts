@@ -2,12 +2,9 @@
 // the template's positions after every round (transferred), so a terminated worker loses nothing
 // the page has not already got.
 import { alignScan, exportMesh, rbfWarp } from '../pkg/bodyspace.js';
-import type { AlignResult, FineSettings, RbfSettings, ScanInput, WarpReport, WarpResult } from '../shared/align-types';
+import type { AlignResult, AlignStage, FineSettings, RbfSettings, ScanInput, WarpReport, WarpResult } from '../shared/align-types';
 import type { CoreEvent } from '../shared/messages';
 import { templateHandle } from './template-handlers';
-
-/** Default iteration limit of the core (`FineAlignParams::default().max_iterations`). */
-const CORE_MAX_ITERATIONS = 200;
 
 export function runRbfWarp(scan: ScanInput, settings: RbfSettings): WarpResult {
   const t0 = performance.now();
@@ -37,7 +34,6 @@ export function runAlign(
   fine: FineSettings,
   emit: (event: CoreEvent, transfer?: Transferable[]) => void,
 ): AlignResult {
-  const maxIterations = fine.max_iterations ?? CORE_MAX_ITERATIONS;
   let lastIteration = 0;
   const onProgress = (
     iteration: number,
@@ -47,14 +43,17 @@ export function runAlign(
     smoothnessError: number,
     rmsMetres: number,
     elapsedMs: number,
+    stage: AlignStage,
+    maxIterations: number,
   ): boolean => {
     lastIteration = iteration;
-    emit({ kind: 'alignProgress', iteration, round, energy, dataError, smoothnessError, rmsMetres, elapsedMs, maxIterations });
+    emit({ kind: 'alignProgress', iteration, round, energy, dataError, smoothnessError, rmsMetres, elapsedMs, stage, maxIterations });
     return true;
   };
   const onRound = (round: number, positions: Float32Array): void => {
     emit({ kind: 'alignRound', round, iteration: lastIteration, positions }, [positions.buffer]);
   };
+  const t0 = performance.now();
   const outcome = alignScan(
     templateHandle(scan.resolution),
     scan.positions,
@@ -72,6 +71,7 @@ export function runAlign(
       normals: outcome.normals(),
       distances: outcome.distances(),
       report: JSON.parse(outcome.reportJson()) as AlignResult['report'],
+      workerMs: performance.now() - t0,
     };
   } finally {
     outcome.free();

@@ -82,4 +82,14 @@ pub enum AlignError {
         /// Number of template triangles.
         triangles: usize,
     },
+    /// The subdivision operator of coarse-to-fine alignment was made for another base mesh.
+    #[error("coarse to fine: the base template has {base_vertices} vertices but the subdivision operator maps {operator_base_vertices} base vertices to {operator_fine_vertices}; use the operator of the same template")]
+    Refinement {
+        /// Vertices of the base template given.
+        base_vertices: usize,
+        /// Base vertices the operator expects.
+        operator_base_vertices: usize,
+        /// Fine vertices the operator makes.
+        operator_fine_vertices: usize,
+    },
 }

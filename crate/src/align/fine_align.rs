@@ -56,7 +56,7 @@ pub struct FineAlignResult {
 }
 
 /// Milliseconds on a monotonic-enough clock (`Instant` does not exist on wasm32-unknown-unknown).
-fn now_ms() -> f64 {
+pub(crate) fn now_ms() -> f64 {
     #[cfg(target_arch = "wasm32")]
     {
         js_sys::Date::now()
@@ -257,7 +257,8 @@ pub fn fine_align_general(
     let mut targets = vec![Point3::origin(); n];
     let mut coefficients = vec![0.0; n];
     let mut preconditioner = BlockPreconditioner::default();
-    let mut curve = Vec::new();
+    // Reserved so that recording the curve never allocates inside the iteration loop.
+    let mut curve = Vec::with_capacity(params.max_iterations.min(1 << 16) + 1);
     let (mut iteration, mut rounds) = (0usize, 0usize);
     let (mut cancelled, mut converged) = (false, false);
     let mut last_stiffness = f64::NAN;
@@ -288,23 +289,23 @@ pub fn fine_align_general(
         }
         on_round(round, &positions);
         vertex_normals_into(&positions, triangles, &mut normals);
-        for i in 0..n {
-            coefficients[i] = 0.0;
+        for_each_vertex(&mut targets, &mut coefficients, |i, target, coefficient| {
+            *coefficient = 0.0;
             if weights[i] <= 0.0 {
-                continue;
+                return;
             }
             let normal = (normals[i] != Vector3::zeros()).then_some(&normals[i]);
             let Some(m) = scan.closest(&positions[i], normal, &query) else {
-                continue;
+                return;
             };
             if (params.skip_boundary_matches && m.on_boundary)
                 || (m.point - positions[i]).norm() > params.max_match_distance
             {
-                continue;
+                return;
             }
-            targets[i] = m.point - centroid;
-            coefficients[i] = data_scale * weights[i];
-        }
+            *target = m.point - centroid;
+            *coefficient = data_scale * weights[i];
+        });
         let anchor_coefficient = data_scale * params.landmark_weight;
         if anchor_coefficient > 0.0 {
             for (i, target) in anchors {
@@ -427,6 +428,32 @@ pub fn fine_align_general(
             per_vertex_distance,
         },
     })
+}
+
+/// Calls `f(i, &mut targets[i], &mut coefficients[i])` for every template vertex: on native
+/// builds on all cores (rayon), on wasm32 in order. Each call writes only its own vertex, so the
+/// result does not depend on the number of threads.
+#[cfg(not(target_arch = "wasm32"))]
+fn for_each_vertex<F>(targets: &mut [Point3<f64>], coefficients: &mut [f64], f: F)
+where
+    F: Fn(usize, &mut Point3<f64>, &mut f64) + Sync,
+{
+    use rayon::prelude::*;
+    targets
+        .par_iter_mut()
+        .zip(coefficients.par_iter_mut())
+        .enumerate()
+        .for_each(|(i, (t, c))| f(i, t, c));
+}
+
+#[cfg(target_arch = "wasm32")]
+fn for_each_vertex<F>(targets: &mut [Point3<f64>], coefficients: &mut [f64], f: F)
+where
+    F: Fn(usize, &mut Point3<f64>, &mut f64),
+{
+    for (i, (t, c)) in targets.iter_mut().zip(coefficients.iter_mut()).enumerate() {
+        f(i, t, c);
+    }
 }
 
 fn curve_point(iteration: usize, elapsed_ms: f64, t: &EnergyTerms) -> CurvePoint {

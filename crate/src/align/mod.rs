@@ -6,9 +6,12 @@
 //! * [`scan_term`] — the optional scan-to-template term E_r (not in the paper).
 //! * [`lbfgs`] — allocation-free L-BFGS with exact line search on the quadratic inner problem.
 //! * [`fine_align()`] (`fine_align.rs`) — the outer loop: find correspondences, minimise, repeat.
+//! * [`coarse_to_fine_align`] (`coarse_to_fine.rs`) — the `fine` template: base fit, carried to
+//!   fine by the subdivision operator, then a short fine-level alignment.
 //! * [`report`] — the paper's Table 1 statistics, per-vertex distances, time-to-RMS curve.
 //! * [`FineAlignParams`] (`params.rs`), [`AlignError`] (`error.rs`).
 
+pub mod coarse_to_fine;
 pub mod energy;
 pub mod error;
 pub mod fine_align;
@@ -20,6 +23,10 @@ pub mod scan_term;
 pub mod surface;
 pub mod weights;
 
+pub use coarse_to_fine::{
+    coarse_to_fine_align, CoarseToFineParams, CoarseToFineResult, Stage, StagedRoundObserver,
+    FINE_STAGE_ITERATIONS,
+};
 pub use error::AlignError;
 pub use fine_align::{
     fine_align, fine_align_anchored, fine_align_general, fine_align_observed, FineAlignResult,

@@ -62,7 +62,8 @@ pub struct ScanTermSettings<'a> {
 
 /// Finds this round's samples: for each scan vertex in `sample_vertices`, the closest compatible
 /// point on the current template (`template`, indexed from the current positions). Clears and
-/// fills `out`; returns the number kept.
+/// fills `out` in the order of `sample_vertices` (natively the search runs on all cores; the
+/// result does not depend on their number); returns the number kept.
 pub fn find_scan_samples(
     scan: &ScanIndex,
     sample_vertices: &[u32],
@@ -70,35 +71,44 @@ pub fn find_scan_samples(
     settings: &ScanTermSettings<'_>,
     out: &mut Vec<ScanSample>,
 ) -> usize {
-    out.clear();
-    let positions = scan.positions();
-    for &s in sample_vertices {
-        let s = s as usize;
-        let p = positions[s];
-        let Some(m) = template.closest_face(&p, Some(scan.vertex_normal(s)), &settings.query)
-        else {
-            continue;
-        };
-        if m.on_boundary || (m.point - p).norm() > settings.max_distance {
-            continue;
-        }
-        let mut weight = f64::INFINITY;
-        for (corner, lambda) in m.corners.iter().zip(m.barycentric) {
-            if lambda > 0.0 {
-                weight = weight.min(settings.weights[*corner as usize]);
-            }
-        }
-        if !(weight.is_finite() && weight > 0.0) {
-            continue;
-        }
-        out.push(ScanSample {
-            corners: m.corners,
-            barycentric: m.barycentric,
-            target: p - settings.centroid,
-            coefficient: settings.coefficient * weight,
-        });
+    let find = |&s: &u32| sample_of(scan, s as usize, template, settings);
+    #[cfg(not(target_arch = "wasm32"))]
+    {
+        use rayon::prelude::*;
+        *out = sample_vertices.par_iter().filter_map(find).collect();
+    }
+    #[cfg(target_arch = "wasm32")]
+    {
+        out.clear();
+        out.extend(sample_vertices.iter().filter_map(find));
     }
     out.len()
+}
+
+/// The sample of scan vertex `s`, or `None` when the treatments drop it this round.
+fn sample_of(
+    scan: &ScanIndex,
+    s: usize,
+    template: &ScanIndex,
+    settings: &ScanTermSettings<'_>,
+) -> Option<ScanSample> {
+    let p = scan.positions()[s];
+    let m = template.closest_face(&p, Some(scan.vertex_normal(s)), &settings.query)?;
+    if m.on_boundary || (m.point - p).norm() > settings.max_distance {
+        return None;
+    }
+    let mut weight = f64::INFINITY;
+    for (corner, lambda) in m.corners.iter().zip(m.barycentric) {
+        if lambda > 0.0 {
+            weight = weight.min(settings.weights[*corner as usize]);
+        }
+    }
+    (weight.is_finite() && weight > 0.0).then(|| ScanSample {
+        corners: m.corners,
+        barycentric: m.barycentric,
+        target: p - settings.centroid,
+        coefficient: settings.coefficient * weight,
+    })
 }
 
 #[cfg(test)]

@@ -12,12 +12,14 @@ use wasm_bindgen::prelude::*;
 
 use super::template::TemplateHandle;
 use crate::align::{
-    data_weights, fine_align_observed, AlignReport, DistanceStats, FineAlignParams, ScanIndex,
+    coarse_to_fine_align, data_weights, fine_align_observed, AlignReport, CoarseToFineParams,
+    DistanceStats, FineAlignParams, Progress, ScanIndex, Stage,
 };
 use crate::landmarks::{Landmark, LandmarkSet};
 use crate::mesh::normals::vertex_normals;
 use crate::mesh::Mesh;
 use crate::rbf::{rbf_warp_mesh, Kernel, RbfParams, RbfWarp};
+use crate::template::Template;
 
 /// RBF settings from the page (JSON): kernel name, its parameter (c or s, metres), λ, affine.
 #[derive(Deserialize)]
@@ -29,11 +31,13 @@ struct RbfSettings {
 }
 
 /// Fine-alignment settings from the page (JSON); absent fields keep the core's defaults.
+/// `max_iterations` limits the (base) fit; `fine_iterations` the fine stage of a `fine` template.
 #[derive(Deserialize, Default)]
 struct FineSettings {
     a: Option<f64>,
     b: Option<f64>,
     max_iterations: Option<usize>,
+    fine_iterations: Option<usize>,
 }
 
 #[derive(Serialize)]
@@ -83,7 +87,7 @@ pub fn rbf_warp_js(
     let params = rbf_params(settings)?;
     let scan = scan_mesh(scan_positions, scan_triangles)?;
     let landmarks = scan_landmarks(landmark_names, landmark_positions)?;
-    let warp = warp(template, &scan, &landmarks, &params)?;
+    let warp = warp(&template.template, &scan, &landmarks, &params)?;
     let mesh = Mesh::new(
         warp.positions.clone(),
         template.template.mesh().triangles.clone(),
@@ -127,9 +131,12 @@ impl AlignOutcome {
 }
 
 /// RBF warp then fine alignment (paper §3.1 + §3.2). Same inputs as `rbfWarp`, plus fine
-/// settings JSON `{a?, b?, max_iterations?}`, `on_progress(iteration, round, E, E_d, E_s,
-/// rmsMetres, elapsedMs)` after every L-BFGS iteration and `on_round(round, positions)` with
-/// the current template positions (`Float32Array`, metres) at the start of every round.
+/// settings JSON `{a?, b?, max_iterations?, fine_iterations?}`, `on_progress(iteration, round, E,
+/// E_d, E_s, rmsMetres, elapsedMs, stage, maxIterations)` after every L-BFGS iteration and
+/// `on_round(round, positions)` with the current template positions (`Float32Array`, metres,
+/// the handle's resolution) at the start of every round. A `fine` template is aligned coarse to
+/// fine (the base template warped and fitted, carried to fine, fitted briefly there): `stage` is
+/// "base" or "fine", and iterations count on across the two stages.
 #[wasm_bindgen(js_name = alignScan)]
 #[allow(clippy::too_many_arguments)]
 pub fn align_scan(
@@ -144,17 +151,33 @@ pub fn align_scan(
     on_round: &Function,
 ) -> Result<AlignOutcome, JsError> {
     let params = rbf_params(rbf_settings)?;
-    let fine = fine_params(fine_settings)?;
+    let (fine, fine_iterations) = fine_params(fine_settings)?;
     let scan = scan_mesh(scan_positions, scan_triangles)?;
     let landmarks = scan_landmarks(landmark_names, landmark_positions)?;
+    // Coarse to fine warps the base template; its vertices come first at fine.
+    let warped = template.base.as_ref().unwrap_or(&template.template);
     let t0 = js_sys::Date::now();
-    let warp = warp(template, &scan, &landmarks, &params)?;
+    let warp = warp(warped, &scan, &landmarks, &params)?;
     let t1 = js_sys::Date::now();
     let index = ScanIndex::new(&scan).map_err(|e| JsError::new(&format!("scan: {e}")))?;
     let t2 = js_sys::Date::now();
     let triangles = &template.template.mesh().triangles;
     let weights = data_weights(&template.template);
-    let mut progress = |p: &crate::align::Progress| {
+    let mut c2f = CoarseToFineParams {
+        base: fine.clone(),
+        ..CoarseToFineParams::default()
+    };
+    c2f.fine = FineAlignParams {
+        a: fine.a,
+        b: fine.b,
+        max_iterations: fine_iterations.unwrap_or(c2f.fine.max_iterations),
+        ..c2f.fine
+    };
+    let max_iterations = match template.template.refinement() {
+        Some(_) => c2f.max_iterations(),
+        None => fine.max_iterations,
+    };
+    let mut progress = |stage: Stage, p: &Progress| {
         let args = js_sys::Array::of4(
             &JsValue::from(p.iteration as u32),
             &JsValue::from(p.round as u32),
@@ -164,6 +187,8 @@ pub fn align_scan(
         args.push(&JsValue::from(p.smoothness_error));
         args.push(&JsValue::from(p.rms));
         args.push(&JsValue::from(p.elapsed_ms));
+        args.push(&JsValue::from(stage.name()));
+        args.push(&JsValue::from(max_iterations as u32));
         match on_progress.apply(&JsValue::NULL, &args) {
             Ok(v) if v.is_falsy() && !v.is_undefined() => ControlFlow::Break(()),
             _ => ControlFlow::Continue(()),
@@ -180,34 +205,57 @@ pub fn align_scan(
             &Float32Array::from(flat.as_slice()),
         );
     };
-    let result = fine_align_observed(
-        &warp.positions,
-        triangles,
-        &index,
-        &weights,
-        &fine,
-        &mut progress,
-        &mut round,
-    )
-    .map_err(|e| JsError::new(&format!("fine alignment: {e}")))?;
+    let (positions, fine_report_json, per_vertex_distance) = match template.template.refinement() {
+        None => {
+            let result = fine_align_observed(
+                &warp.positions,
+                triangles,
+                &index,
+                &weights,
+                &fine,
+                &mut |p| progress(Stage::Base, p),
+                &mut round,
+            )
+            .map_err(|e| JsError::new(&format!("fine alignment: {e}")))?;
+            let report = fine_report(&result.report);
+            (result.positions, report, result.report.per_vertex_distance)
+        }
+        Some(refinement) => {
+            let result = coarse_to_fine_align(
+                &warp.positions,
+                &warped.mesh().triangles,
+                refinement,
+                &index,
+                &weights,
+                &[],
+                &c2f,
+                &mut progress,
+                &mut |_, r, positions| round(r, positions),
+            )
+            .map_err(|e| JsError::new(&format!("fine alignment: {e}")))?;
+            let mut report = fine_report(&result.report);
+            report["stages"] = json!({
+                "base": fine_report(&result.base),
+                "subdivide_ms": result.subdivide_ms,
+                "fine_iterations": result.report.iterations - result.base.iterations,
+                "fine_max_iterations": c2f.fine.max_iterations,
+            });
+            (result.positions, report, result.report.per_vertex_distance)
+        }
+    };
     let t3 = js_sys::Date::now();
-    let mesh = Mesh::new(result.positions, triangles.clone());
+    let mesh = Mesh::new(positions, triangles.clone());
     let report = json!({
         "warp": warp_report(&warp, &params),
         "rough_ms": t1 - t0,
         "index_ms": t2 - t1,
-        "fine": fine_report(&result.report),
+        "fine": fine_report_json,
         "total_ms": t3 - t0,
     });
     Ok(AlignOutcome {
         positions: mesh.flat_positions_f32(),
         normals: flat_normals(&mesh),
-        distances: result
-            .report
-            .per_vertex_distance
-            .iter()
-            .map(|d| *d as f32)
-            .collect(),
+        distances: per_vertex_distance.iter().map(|d| *d as f32).collect(),
         report: report.to_string(),
     })
 }
@@ -238,7 +286,8 @@ fn rbf_params(settings: &str) -> Result<RbfParams, JsError> {
     })
 }
 
-fn fine_params(settings: &str) -> Result<FineAlignParams, JsError> {
+/// The (base) fit's parameters and the fine stage's iteration limit, if given.
+fn fine_params(settings: &str) -> Result<(FineAlignParams, Option<usize>), JsError> {
     let s: FineSettings = serde_json::from_str(settings)
         .map_err(|e| JsError::new(&format!("alignment settings: {e}")))?;
     let defaults = FineAlignParams::default();
@@ -251,7 +300,7 @@ fn fine_params(settings: &str) -> Result<FineAlignParams, JsError> {
     params
         .validate()
         .map_err(|e| JsError::new(&e.to_string()))?;
-    Ok(params)
+    Ok((params, s.fine_iterations))
 }
 
 /// The scan as a mesh in metres, with its sizes and indices checked.
@@ -307,14 +356,14 @@ fn scan_landmarks(names: &str, positions: &[f64]) -> Result<LandmarkSet, JsError
 }
 
 fn warp(
-    template: &TemplateHandle,
+    template: &Template,
     scan: &Mesh,
     landmarks: &LandmarkSet,
     params: &RbfParams,
 ) -> Result<RbfWarp, JsError> {
     rbf_warp_mesh(
-        template.template.mesh(),
-        &template.template.landmark_positions(),
+        template.mesh(),
+        &template.landmark_positions(),
         scan,
         landmarks,
         params,

@@ -17,6 +17,8 @@ use crate::template::{Resolution, Template};
 #[wasm_bindgen]
 pub struct TemplateHandle {
     pub(super) template: Template,
+    /// At `fine`: the base template, which coarse-to-fine alignment warps and fits first.
+    pub(super) base: Option<Template>,
     normals: Vec<Vector3<f64>>,
     /// The 12 virtual landmarks made by the RBF's own rule on the template surface (the same
     /// points `rbf_warp_mesh` pairs with the scan's), for display.
@@ -33,8 +35,11 @@ pub fn load_template(resolution: &str) -> Result<TemplateHandle, JsError> {
         .at_resolution(resolution);
     let virtual_landmarks = virtual_landmarks(&template.landmark_positions(), template.mesh());
     let normals = vertex_normals(template.mesh());
+    let base = (template.resolution() != Resolution::Base)
+        .then(|| template.at_resolution(Resolution::Base));
     Ok(TemplateHandle {
         template,
+        base,
         normals,
         virtual_landmarks,
     })

@@ -50,7 +50,9 @@ pub struct AlignArgs {
     /// Leave out the 12 virtual landmarks.
     #[arg(long)]
     pub no_virtual: bool,
-    /// Template resolution: base or fine.
+    /// Template resolution: base or fine. Fine is aligned coarse to fine: the base template is
+    /// warped and fitted, carried to fine by the subdivision operator, then fitted briefly at
+    /// fine (docs/fine-alignment.md).
     #[arg(long, default_value = "base")]
     pub resolution: String,
     /// Weight a of the data error in fine alignment (paper Fig. 9: 0.96).
@@ -59,9 +61,13 @@ pub struct AlignArgs {
     /// Weight b of the smoothness error in fine alignment (paper Fig. 9: 0.04).
     #[arg(long, default_value_t = 0.04)]
     pub b: f64,
-    /// Limit on fine-alignment L-BFGS iterations.
+    /// Limit on fine-alignment L-BFGS iterations (at `fine`: of the base stage).
     #[arg(long, default_value_t = 200)]
     pub max_iterations: usize,
+    /// At `fine`: limit on the iterations of the fine stage after the base fit.
+    /// Default: CoarseToFineParams::default().fine.max_iterations.
+    #[arg(long)]
+    pub fine_iterations: Option<usize>,
     /// Weight of the landmark anchors in fine alignment (0 = off, the paper; see
     /// docs/fine-alignment.md). Default: FineAlignParams::default().landmark_weight.
     #[arg(long)]
@@ -75,7 +81,8 @@ pub struct AlignArgs {
     #[arg(long)]
     pub report: Option<PathBuf>,
     /// Ground truth for a synthetic subject: PLY whose vertex i is template (base) vertex i on
-    /// the subject, scan frame and units; adds the mean correspondence error to the report.
+    /// the subject, scan frame and units; adds the mean correspondence error to the report (at
+    /// `fine`, over the base vertices, which come first).
     #[arg(long)]
     pub truth: Option<PathBuf>,
 }
@@ -95,7 +102,7 @@ pub fn run(args: &AlignArgs) -> Result<(), String> {
     let params = rough_params(args)?;
     let inputs = load(args)?;
     let started = Instant::now();
-    let warp = rough(&inputs, &params)?;
+    let warp = rough(&inputs.template, &inputs, &params)?;
     let seconds = started.elapsed().as_secs_f64();
     let fitted = Mesh::new(
         warp.positions.clone(),
@@ -160,11 +167,12 @@ pub fn load(args: &AlignArgs) -> Result<Inputs, String> {
     })
 }
 
-/// The rough step: the template warped onto the scan by its landmarks (paper §3.1).
-pub fn rough(inputs: &Inputs, params: &RbfParams) -> Result<RbfWarp, String> {
+/// The rough step: `template` (the inputs' template, or its base for coarse-to-fine alignment)
+/// warped onto the scan by its landmarks (paper §3.1).
+pub fn rough(template: &Template, inputs: &Inputs, params: &RbfParams) -> Result<RbfWarp, String> {
     rbf_warp_mesh(
-        inputs.template.mesh(),
-        &inputs.template.landmark_positions(),
+        template.mesh(),
+        &template.landmark_positions(),
         &inputs.scan,
         &inputs.scan_landmarks,
         params,

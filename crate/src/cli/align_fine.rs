@@ -8,11 +8,14 @@ use nalgebra::Point3;
 use serde_json::{json, Value};
 
 use super::align::{load, rough, rough_params, AlignArgs};
-use crate::align::{fine_align_anchored, AlignReport, DistanceStats, FineAlignParams, ScanIndex};
+use crate::align::{
+    coarse_to_fine_align, fine_align_anchored, AlignReport, CoarseToFineParams, DistanceStats,
+    FineAlignParams, ScanIndex,
+};
 use crate::io::{read_scan, write_ply};
 use crate::mesh::units::detect_units;
 use crate::mesh::Mesh;
-use crate::template::Template;
+use crate::template::{Resolution, Template};
 
 pub use crate::align::data_weights;
 
@@ -63,7 +66,8 @@ fn fine_report(r: &AlignReport, to_mm: f64) -> Value {
     })
 }
 
-/// Mean and RMS distance (m) of fitted vertices to their true positions.
+/// Mean and RMS distance (m) of fitted vertices to their true positions, over the vertices both
+/// have (the base vertices when one side is at fine).
 fn correspondence_error(fitted: &[Point3<f64>], truth: &[Point3<f64>]) -> (f64, f64) {
     let n = fitted.len().min(truth.len()).max(1) as f64;
     let d: Vec<f64> = fitted
@@ -77,20 +81,31 @@ fn correspondence_error(fitted: &[Point3<f64>], truth: &[Point3<f64>]) -> (f64, 
     )
 }
 
-fn read_truth(path: &Path, expected: usize, to_metres: f64) -> Result<Vec<Point3<f64>>, String> {
+/// Ground truth in metres; `expected` lists the vertex counts accepted (the base vertices, which
+/// come first at every resolution, or all template vertices).
+fn read_truth(path: &Path, expected: &[usize], to_metres: f64) -> Result<Vec<Point3<f64>>, String> {
     let name = path.display().to_string();
     let bytes = std::fs::read(path).map_err(|e| format!("{name}: cannot read the file: {e}"))?;
     let mesh = read_scan(&bytes, &name).map_err(|e| e.to_string())?;
-    if mesh.positions.len() != expected {
+    if !expected.contains(&mesh.positions.len()) {
         return Err(format!(
-            "{name}: {} vertices but the template has {expected}; ground truth must be in template vertex order at the same resolution",
-            mesh.positions.len()
+            "{name}: {} vertices but the template has {} ({} at base); ground truth must be in template vertex order",
+            mesh.positions.len(),
+            expected[expected.len() - 1],
+            expected[0],
         ));
     }
     Ok(mesh.positions.iter().map(|p| p * to_metres).collect())
 }
 
-/// Runs the whole pipeline, writes the fitted template (scan units) and prints the report.
+/// The fitted template (metres, template order) and the JSON of the fine step.
+struct Fitted {
+    positions: Vec<Point3<f64>>,
+    report: Value,
+}
+
+/// Runs the whole pipeline, writes the fitted template (scan units) and prints the report. At
+/// `fine` the template is aligned coarse to fine ([`coarse_to_fine_align`]).
 pub fn run_full(args: &AlignArgs) -> Result<(), String> {
     let rbf_params = rough_params(args)?;
     let params = FineAlignParams {
@@ -106,8 +121,16 @@ pub fn run_full(args: &AlignArgs) -> Result<(), String> {
     };
     params.validate().map_err(|e| e.to_string())?;
     let inputs = load(args)?;
+    let refinement = inputs.template.refinement();
+    // Coarse to fine warps and fits the base template first; its vertices come first at fine.
+    let base_template = inputs.template.at_resolution(Resolution::Base);
+    let warped_template = if refinement.is_some() {
+        &base_template
+    } else {
+        &inputs.template
+    };
     let started = Instant::now();
-    let warp = rough(&inputs, &rbf_params)?;
+    let warp = rough(warped_template, &inputs, &rbf_params)?;
     let rough_ms = started.elapsed().as_secs_f64() * 1e3;
 
     let extent = bounding_extent(&inputs.scan.positions);
@@ -124,25 +147,72 @@ pub fn run_full(args: &AlignArgs) -> Result<(), String> {
     let index_start = Instant::now();
     let index = ScanIndex::new(&scan_m).map_err(|e| format!("{}: {e}", args.scan.display()))?;
     let index_ms = index_start.elapsed().as_secs_f64() * 1e3;
-    let anchors = landmark_anchors(&inputs.template, &warped_m, &warp.used);
-    let result = fine_align_anchored(
-        &warped_m,
-        triangles,
-        &index,
-        &weights,
-        &anchors,
-        &params,
-        &mut |_| ControlFlow::Continue(()),
-    )
-    .map_err(|e| format!("fine alignment: {e}"))?;
+    let anchors = landmark_anchors(warped_template, &warped_m, &warp.used);
+    let fitted = match refinement {
+        None => {
+            let result = fine_align_anchored(
+                &warped_m,
+                triangles,
+                &index,
+                &weights,
+                &anchors,
+                &params,
+                &mut |_| ControlFlow::Continue(()),
+            )
+            .map_err(|e| format!("fine alignment: {e}"))?;
+            Fitted {
+                report: fine_report(&result.report, 1e3),
+                positions: result.positions,
+            }
+        }
+        Some(refinement) => {
+            let mut c2f = CoarseToFineParams {
+                base: params.clone(),
+                ..CoarseToFineParams::default()
+            };
+            c2f.fine = FineAlignParams {
+                a: params.a,
+                b: params.b,
+                landmark_weight: params.landmark_weight,
+                max_iterations: args.fine_iterations.unwrap_or(c2f.fine.max_iterations),
+                ..c2f.fine
+            };
+            let result = coarse_to_fine_align(
+                &warped_m,
+                &warped_template.mesh().triangles,
+                refinement,
+                &index,
+                &weights,
+                &anchors,
+                &c2f,
+                &mut |_, _| ControlFlow::Continue(()),
+                &mut |_, _, _| {},
+            )
+            .map_err(|e| format!("fine alignment: {e}"))?;
+            let mut report = fine_report(&result.report, 1e3);
+            report["stages"] = json!({
+                "base": fine_report(&result.base, 1e3),
+                "subdivide_ms": result.subdivide_ms,
+                "fine_iterations": result.report.iterations - result.base.iterations,
+                "fine_max_iterations": c2f.fine.max_iterations,
+            });
+            report["stages"]["base"]
+                .as_object_mut()
+                .map(|o| o.remove("curve"));
+            Fitted {
+                report,
+                positions: result.positions,
+            }
+        }
+    };
     let total_ms = started.elapsed().as_secs_f64() * 1e3;
 
-    let fitted = Mesh::new(
-        result.positions.iter().map(|p| p / to_m).collect(),
+    let mesh = Mesh::new(
+        fitted.positions.iter().map(|p| p / to_m).collect(),
         triangles.clone(),
     );
     let out = args.out.display().to_string();
-    std::fs::write(&args.out, write_ply(&fitted))
+    std::fs::write(&args.out, write_ply(&mesh))
         .map_err(|e| format!("{out}: cannot write the fitted template: {e}"))?;
 
     let mut report = json!({
@@ -150,6 +220,7 @@ pub fn run_full(args: &AlignArgs) -> Result<(), String> {
         "out": out,
         "units": units.name(),
         "template_resolution": inputs.template.resolution().name(),
+        "coarse_to_fine": refinement.is_some(),
         "landmarks_used": warp.used.len(),
         "a": params.a,
         "b": params.b,
@@ -159,13 +230,18 @@ pub fn run_full(args: &AlignArgs) -> Result<(), String> {
         "rough_ms": rough_ms,
         "scan_index_ms": index_ms,
         "total_ms": total_ms,
-        "fine": fine_report(&result.report, 1e3),
+        "fine": fitted.report,
     });
     if let Some(truth) = &args.truth {
-        let truth = read_truth(truth, result.positions.len(), to_m)?;
+        let truth = read_truth(
+            truth,
+            &[inputs.template.base_vertex_count(), fitted.positions.len()],
+            to_m,
+        )?;
         let (rough_mean, rough_rms) = correspondence_error(&warped_m, &truth);
-        let (mean, rms) = correspondence_error(&result.positions, &truth);
+        let (mean, rms) = correspondence_error(&fitted.positions, &truth);
         report["correspondence_error"] = json!({
+            "vertices": truth.len(),
             "rough_mean_mm": rough_mean * 1e3,
             "rough_rms_mm": rough_rms * 1e3,
             "mean_mm": mean * 1e3,

@@ -30,8 +30,9 @@ pub struct Template {
     /// MakeHuman vertex index of each base vertex.
     makehuman_vertex: Vec<u32>,
     base_triangles: Vec<[u32; 3]>,
-    /// Fine resolution only: per vertex, the base vertices and weights it was made from.
-    stencils: Option<Vec<Vec<(u32, f64)>>>,
+    /// Fine resolution only: the operator that made this mesh from the base (stencils per
+    /// vertex, fine triangles).
+    refinement: Option<Subdivision>,
     band_width: f64,
     header: store::StoredHeader,
 }
@@ -57,7 +58,7 @@ impl Template {
             segment_weights: s.segment_weights,
             flags: s.flags,
             makehuman_vertex: s.provenance,
-            stencils: None,
+            refinement: None,
             band_width: s.header.band_width,
             header: s.header,
         }
@@ -84,6 +85,13 @@ impl Template {
             &self.base_triangles,
             resolution.levels(),
         )
+    }
+
+    /// The operator `S` that made this template's mesh from its base (`fine = S · base`), kept
+    /// from [`Template::at_resolution`] so it is not rebuilt; `None` at `base`. Its first
+    /// [`Template::base_vertex_count`] vertices are the base vertices.
+    pub fn refinement(&self) -> Option<&Subdivision> {
+        self.refinement.as_ref()
     }
 
     /// This template at `resolution`. Fine: subdivided mesh (base vertices first with the same
@@ -125,7 +133,7 @@ impl Template {
             })
             .collect();
         Template {
-            mesh: Mesh::new(positions, sub.triangles),
+            mesh: Mesh::new(positions, sub.triangles.clone()),
             resolution,
             landmarks: self.landmarks.clone(),
             segment_weights,
@@ -133,7 +141,7 @@ impl Template {
             base_vertex_count: self.base_vertex_count,
             makehuman_vertex: self.makehuman_vertex.clone(),
             base_triangles: self.base_triangles.clone(),
-            stencils: Some(sub.stencils),
+            refinement: Some(sub),
             band_width: self.band_width,
             header: self.header.clone(),
         }
@@ -226,8 +234,8 @@ impl Template {
     /// The base-template vertices and weights `vertex` was made from (itself with weight 1 for
     /// base vertices).
     pub fn provenance(&self, vertex: u32) -> Vec<(u32, f64)> {
-        match &self.stencils {
-            Some(s) => s[vertex as usize].clone(),
+        match &self.refinement {
+            Some(s) => s.stencils[vertex as usize].clone(),
             None => vec![(vertex, 1.0)],
         }
     }
