@@ -7,6 +7,7 @@
 //! * [`segments`] — segment vertex subsets and normalised blend weights
 //! * [`stitch`] — mixed whole-body/segment reconstruction, the slider fast path, seam quality
 //! * [`morph`] — the body on screen: held coefficients and positions, slider moves as rank-1 updates
+//! * [`subdivide`] — a model mapped exactly to the template's finer resolution (S̄_fine = S·S̄, φ_fine = S·φ)
 //! * [`project`] — coefficients of a new mesh
 //! * [`metrics`] — compactness, generalization, specificity (Styner 2003)
 //! * [`export`] — eigenvalues, scores and quality curves as CSV
@@ -31,6 +32,7 @@ pub mod project;
 pub mod random;
 pub mod segments;
 pub mod stitch;
+pub mod subdivide;
 
 pub use build::{build_body_model, BuildParams, TrainingSet};
 pub use error::PcaError;
