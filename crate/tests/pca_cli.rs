@@ -112,6 +112,22 @@ fn build_project_reconstruct_round_trip() {
     ]);
     assert!(!ok && err.contains("--modes"), "{err}");
 
+    // The model file as GLB: whole body + six segments, one mesh each.
+    let glb = dir.join("parts.glb");
+    let (ok, exported, err) = run(&[
+        "export-gltf",
+        "--model",
+        model.to_str().unwrap(),
+        "--out",
+        glb.to_str().unwrap(),
+    ]);
+    assert!(ok, "{err}");
+    assert_eq!(exported["meshes"].as_array().unwrap().len(), 7);
+    assert_eq!(exported["meshes"][4]["name"], "torso");
+    let bytes = std::fs::read(&glb).unwrap();
+    assert_eq!(&bytes[..4], b"glTF");
+    assert_eq!(exported["bytes"], bytes.len());
+
     let fit = fits.join("fit03.ply");
     let (ok, projected, err) = run(&[
         "project",
