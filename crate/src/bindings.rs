@@ -17,6 +17,8 @@ use wasm_bindgen::prelude::*;
 
 mod model;
 
+pub use model::{build_shape_model, load_shape_model, ShapeSpace};
+
 use crate::io::{read_landmarks, read_scan};
 use crate::landmarks::report::{report, LandmarkReport};
 use crate::landmarks::CAESAR_LANDMARKS;

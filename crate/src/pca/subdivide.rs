@@ -9,7 +9,7 @@
 //! projecting meshes (project on the base model).
 //!
 //! Segments. A fine vertex belongs to segment s when its (interpolated) template blend weight is
-//! > 0, which is when at least one base vertex of its stencil is in the segment. Near the
+//! positive, which is when at least one base vertex of its stencil is in the segment. Near the
 //! segment's border some stencil vertices are not, and the segment model has no values there,
 //! so the segment's rows of S are restricted to its own base vertices and renormalised to sum
 //! to 1 (still an affine combination, so a point of the surface patch). The fine body is then
