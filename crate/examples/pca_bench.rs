@@ -14,7 +14,7 @@
 //! 3. A real build at `base` resolution from SUBJECTS (default 100) posed, scaled copies of the
 //!    template: GPA + 7 snapshot PCAs + quality curves, and the model file sizes (f32 / f16).
 
-use bodyspace::mesh::normals::vertex_normals_flat;
+use bodyspace::mesh::normals::NormalTopology;
 use bodyspace::pca::file::{read_model_for, write_model, BasisPrecision};
 use bodyspace::pca::measure::{girth_triangles, measure, MeasureLandmarks, MeasureParams};
 use bodyspace::pca::random::NormalRng;
@@ -198,8 +198,9 @@ fn demo_fine_bench(base_template: &Template, fine_template: &Template) {
     );
     let positions = morph.positions().to_vec();
     let mut normals = vec![0.0f32; positions.len()];
+    let topology = NormalTopology::new(&fine.triangles, v).expect("fine triangles");
     let (normals_ms, normals_min) = stats_ms(
-        || vertex_normals_flat(&positions, &fine.triangles, &mut normals),
+        || topology.vertex_normals_into(&positions, &mut normals),
         21,
     );
     let (copy_ms, copy_min) = stats_ms(|| drop(std::hint::black_box(positions.to_vec())), 21);

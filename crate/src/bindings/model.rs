@@ -12,7 +12,7 @@ use nalgebra::Point3;
 use serde::Serialize;
 use wasm_bindgen::prelude::*;
 
-use crate::mesh::normals::vertex_normals_flat;
+use crate::mesh::normals::NormalTopology;
 use crate::pca::export::{eigenvalues_csv, quality_csv, scores_csv};
 use crate::pca::file::{read_model, read_model_for, write_model, BasisPrecision};
 use crate::pca::gltf::{model_glb, parts_glb};
@@ -28,6 +28,12 @@ use super::template::TemplateHandle;
 
 fn js(e: impl std::fmt::Display) -> JsError {
     JsError::new(&e.to_string())
+}
+
+/// The checked triangles of `model` for its vertex normals.
+fn topology_of(model: &BodyModel) -> Result<NormalTopology, JsError> {
+    NormalTopology::new(&model.triangles, model.template.vertex_count)
+        .ok_or_else(|| js("a triangle of the model indexes a vertex beyond its template"))
 }
 
 fn template_at(resolution: Resolution) -> Result<Template, JsError> {
@@ -84,6 +90,8 @@ pub struct ShapeSpace {
     morph: Morph,
     landmarks: MeasureLandmarks,
     sections: Vec<u32>,
+    /// Triangles of the body shown, checked once, and its normals.
+    topology: NormalTopology,
     normals: Vec<f32>,
 }
 
@@ -92,6 +100,7 @@ impl ShapeSpace {
         let landmarks = MeasureLandmarks::from_named(template.landmark_vertices()).map_err(js)?;
         let sections = girth_triangles(&model.triangles, &model.segment_weights);
         let morph = Morph::new(&model, &Coefficients::default()).map_err(js)?;
+        let topology = topology_of(&model)?;
         Ok(ShapeSpace {
             model,
             fine: None,
@@ -99,6 +108,7 @@ impl ShapeSpace {
             morph,
             landmarks,
             sections,
+            topology,
             normals: Vec::new(),
         })
     }
@@ -230,6 +240,7 @@ impl ShapeSpace {
             let coefficients = self.morph.coefficients().clone();
             self.at_fine = at_fine;
             self.morph = Morph::new(self.shown(), &coefficients).map_err(js)?;
+            self.topology = topology_of(self.shown())?;
         }
         Ok(())
     }
@@ -271,11 +282,8 @@ impl ShapeSpace {
     pub fn normals(&mut self) -> Float32Array {
         let positions = self.morph.positions();
         self.normals.resize(positions.len(), 0.0);
-        let triangles = match (&self.fine, self.at_fine) {
-            (Some(fine), true) => &fine.triangles,
-            _ => &self.model.triangles,
-        };
-        vertex_normals_flat(positions, triangles, &mut self.normals);
+        self.topology
+            .vertex_normals_into(positions, &mut self.normals);
         Float32Array::from(self.normals.as_slice())
     }
 
