@@ -1,6 +1,8 @@
 //! Slider-path and build benchmarks of the PCA core (native). Prints figures; asserts nothing.
 //!
-//!   cargo run --release --example pca_bench [-- SUBJECTS]
+//!   cargo run --release --example pca_bench [-- SUBJECTS | morph]
+//!
+//! `morph` runs part 2 only (what `npm run bench` prints).
 //!
 //! 1. Reconstruction for sliders at the `fine` template's size and at 650K vertices (issue 6's
 //!    figure): 20 whole-body modes + 20 modes in each of the six segments, stitched; full
@@ -321,12 +323,14 @@ fn build_bench(subjects: usize) {
 }
 
 fn main() {
-    let subjects = std::env::args()
-        .nth(1)
-        .and_then(|a| a.parse().ok())
-        .unwrap_or(100);
+    let arg = std::env::args().nth(1);
     let base = Template::embedded().expect("embedded template");
     let fine = base.at_resolution(Resolution::Fine);
+    if arg.as_deref() == Some("morph") {
+        demo_fine_bench(&base, &fine);
+        return;
+    }
+    let subjects = arg.and_then(|a| a.parse().ok()).unwrap_or(100);
     let weights: Vec<[f32; 6]> = (0..fine.mesh().vertex_count() as u32)
         .map(|v| fine.segment_weights(v))
         .collect();
