@@ -1,7 +1,7 @@
 // The shape-space workflow: loads the demo model (or the one a link names), keeps the slider
 // values, morphs through the MorphQueue, and runs exports, CSV, links and in-app model builds.
 import type { CoreClient } from '../client/core-client';
-import { objText, plyBytes, positionsChecksum } from '../shared/mesh-export';
+import { positionsChecksum } from '../shared/mesh-export';
 import { decodeShapeLink, encodeShapeLink, isShareableModel, quantiseSigma, type ShapeLink } from '../shared/shape-link';
 import {
   SEGMENTS,
@@ -14,12 +14,12 @@ import {
   type ShownResolution,
 } from '../shared/shape-results';
 import type { TemplateResolution } from '../shared/template-data';
-import { download } from '../ui/download';
 import type { ErrorBanner } from '../ui/error-banner';
 import { ShapePanel, type PartName } from '../ui/shape-panel';
-import { bodiesGlb } from '../view/gltf-export';
 import type { Viewer } from '../view/viewer';
 import { MorphQueue } from './morph-queue';
+import * as shapeExports from './shape-exports';
+import type { BodyFormat } from './shape-exports';
 import { readFits } from './read-fits';
 import { subjects } from './subjects';
 
@@ -330,46 +330,26 @@ export class ShapeSpace {
   }
 
   private async csv(kind: ModelCsv): Promise<void> {
-    const text = await this.client.call({ type: 'modelCsv', kind });
-    download(`${kind}.csv`, text, 'text/csv');
+    await shapeExports.csv(this.client, kind);
   }
 
-  private async exportBody(format: 'ply' | 'obj' | 'glb'): Promise<void> {
-    const body = this.body;
-    const triangles = this.triangles;
-    if (!body || !triangles) return;
-    const comment = `BodySpace body of ${this.page.dataset.shapeModel ?? 'a shape model'} (${this.resolution})`;
-    if (format === 'ply') download('body.ply', plyBytes(body.positions, triangles, comment));
-    else if (format === 'obj') download('body.obj', objText(body.positions, triangles, comment), 'text/plain');
-    else download('body.glb', await bodiesGlb([{ name: 'body', positions: body.positions, normals: body.normals, triangles }]), 'model/gltf-binary');
+  private async exportBody(format: BodyFormat): Promise<void> {
+    if (!this.body || !this.triangles) return;
+    const label = `${this.page.dataset.shapeModel ?? 'a shape model'} (${this.resolution})`;
+    await shapeExports.body(this.body, this.triangles, format, label);
   }
 
-  /** One GLB with a body per σ step along whole-body mode `mode` (other values as they are). */
   private async exportMode(mode: number, steps: number[]): Promise<void> {
-    const triangles = this.triangles;
-    if (!this.model || !triangles || steps.length === 0) return;
-    const bodies = [];
-    for (const t of steps) {
-      const c = structuredClone(this.coefficients);
-      c.whole[mode] = t;
-      const body = await this.client.call({ type: 'reconstruct', coefficients: c });
-      bodies.push({ name: `mode${mode + 1}_${t >= 0 ? '+' : ''}${t}sd`, positions: body.positions, normals: body.normals, triangles });
-    }
-    download(`mode${mode + 1}.glb`, await bodiesGlb(bodies, 0.7), 'model/gltf-binary');
+    if (!this.model || !this.triangles) return;
+    await shapeExports.alongMode(this.client, this.coefficients, this.triangles, mode, steps);
   }
 
-  /** The model as GLB with its modes as morph targets: the whole body, or all seven models. */
   private async exportModelGltf(parts: ModelGlbParts): Promise<void> {
-    if (!this.model) return;
-    const modes = Math.max(...this.model.info.parts.map((p) => p.variances.length));
-    const glb = await this.client.call({ type: 'modelGlb', modes, parts });
-    download(parts === 'all' ? 'shape-model-segments.glb' : 'shape-model.glb', glb, 'model/gltf-binary');
+    if (this.model) await shapeExports.modelGlb(this.client, this.model, parts);
   }
 
   private async saveModel(): Promise<void> {
-    if (!this.model) return;
-    const bytes = await this.client.call({ type: 'modelFile' });
-    download('shape-model.bsm', bytes);
+    if (this.model) await shapeExports.modelFile(this.client);
   }
 
   private async addFits(files: File[]): Promise<void> {

@@ -1,4 +1,4 @@
-//! Shape models for JavaScript: load a model file (or build one from fits), morph the stitched
+//! Shape models for JavaScript: load a model file (`model_build.rs` builds one from fits), morph the stitched
 //! body shown as sliders move, measure it, and export CSV / GLB / the model file.
 //!
 //! A [`ShapeSpace`] lives in the worker for as long as the model is shown. It holds the loaded
@@ -8,7 +8,6 @@
 //! out is a copy of WASM memory.
 
 use js_sys::{Float32Array, Function, Uint32Array, Uint8Array};
-use nalgebra::Point3;
 use serde::Serialize;
 use wasm_bindgen::prelude::*;
 
@@ -19,14 +18,14 @@ use crate::pca::gltf::{model_glb, parts_glb};
 use crate::pca::measure::{girth_triangles, measure, MeasureLandmarks, MeasureParams};
 use crate::pca::subdivide::{subdivide_model, FineTemplate};
 use crate::pca::{
-    build_body_model, BodyModel, BuildParams, Coefficients, Morph, QualityCurves, SeamReport,
-    ShapeModel, TemplateIdentity, TrainingSet,
+    BodyModel, BuildParams, Coefficients, Morph, QualityCurves, SeamReport, ShapeModel,
+    TemplateIdentity,
 };
 use crate::template::{Resolution, Segment, Template};
 
 use super::template::TemplateHandle;
 
-fn js(e: impl std::fmt::Display) -> JsError {
+pub(super) fn js(e: impl std::fmt::Display) -> JsError {
     JsError::new(&e.to_string())
 }
 
@@ -96,7 +95,7 @@ pub struct ShapeSpace {
 }
 
 impl ShapeSpace {
-    fn new(model: BodyModel, template: &Template) -> Result<ShapeSpace, JsError> {
+    pub(super) fn new(model: BodyModel, template: &Template) -> Result<ShapeSpace, JsError> {
         let landmarks = MeasureLandmarks::from_named(template.landmark_vertices()).map_err(js)?;
         let sections = girth_triangles(&model.triangles, &model.segment_weights);
         let morph = Morph::new(&model, &Coefficients::default()).map_err(js)?;
@@ -386,71 +385,5 @@ pub fn load_shape_model(bytes: &[u8], file_name: &str) -> Result<ShapeSpace, JsE
     let template = template_at(resolution)?;
     let model =
         read_model_for(bytes, &TemplateIdentity::of_template(&template)).map_err(|e| named(&e))?;
-    ShapeSpace::new(model, &template)
-}
-
-/// Builds a model from `count` fits in template vertex order (`positions` = count·#V·3, metres),
-/// keeping modes up to `variance` (0 < variance ≤ 1). `names_json` is a JSON array of names.
-#[wasm_bindgen(js_name = buildShapeModel)]
-pub fn build_shape_model(
-    positions: &[f32],
-    count: u32,
-    names_json: &str,
-    variance: f64,
-    compute_quality: bool,
-) -> Result<ShapeSpace, JsError> {
-    let count = count as usize;
-    if count < 2 {
-        return Err(js("a shape model needs at least 2 aligned subjects"));
-    }
-    if !(variance > 0.0 && variance <= 1.0) {
-        return Err(js("the variance to keep must be in (0, 1]"));
-    }
-    if positions.len() % (3 * count) != 0 {
-        return Err(js("the subjects' positions do not split into equal bodies"));
-    }
-    let vertex_count = positions.len() / (3 * count);
-    let base = Template::embedded().map_err(|e| js(format!("embedded template: {e}")))?;
-    let template = if base.mesh().vertex_count() == vertex_count {
-        base
-    } else {
-        let fine = base.at_resolution(Resolution::Fine);
-        if fine.mesh().vertex_count() != vertex_count {
-            return Err(js(format!(
-                "{vertex_count} vertices per subject match no template resolution (base {}, fine {}); fitted meshes must be in template vertex order",
-                base.mesh().vertex_count(),
-                fine.mesh().vertex_count()
-            )));
-        }
-        fine
-    };
-    let names: Vec<String> = serde_json::from_str(names_json)
-        .map_err(|e| js(format!("subject names are not a JSON list: {e}")))?;
-    if names.len() != count {
-        return Err(js("one name per subject is needed"));
-    }
-    let shapes = positions
-        .chunks_exact(3 * vertex_count)
-        .map(|body| {
-            body.chunks_exact(3)
-                .map(|p| Point3::new(p[0] as f64, p[1] as f64, p[2] as f64))
-                .collect()
-        })
-        .collect();
-    let set = TrainingSet {
-        template: TemplateIdentity::of_template(&template),
-        triangles: template.mesh().triangles.clone(),
-        segment_weights: (0..vertex_count as u32)
-            .map(|v| template.segment_weights(v))
-            .collect(),
-        names,
-        shapes,
-    };
-    let params = BuildParams {
-        variance,
-        compute_quality,
-        ..BuildParams::default()
-    };
-    let model = build_body_model(&set, &params).map_err(js)?;
     ShapeSpace::new(model, &template)
 }
