@@ -1,19 +1,25 @@
 #!/usr/bin/env bash
-# Benchmark: parse a 300,000-triangle binary PLY (i) in the real core worker inside Chromium,
-# through the built app, and (ii) natively; the shape model; alignment against the peer; and
-# alignment of a ≈ 201K-vertex scan in the browser worker at base and fine
-# (scripts/bench-align-browser.sh). Builds release artefacts first. Prints tables.
+# Benchmarks; builds release artefacts first and prints tables (figures in docs/benchmarks.md).
+#   parse  a 300,000-triangle binary PLY (i) in the real core worker inside Chromium, through the
+#          built app, and (ii) natively
+#   shape  morphing the demo shape model at base and fine, six segments stitched: slider moves
+#          (rank-1 updates), full rebuilds and the round trip to the vertex buffers, in the
+#          worker inside Chromium and natively (crate/examples/pca_bench.rs morph)
+#   align  alignment vs trimesh nricp_amberg (scripts/bench-align.sh), and of a ≈ 201K-vertex
+#          scan in the browser worker at base and fine (scripts/bench-align-browser.sh)
+# BENCH_PARTS picks some (default: "parse shape align"); RUNS / SHAPE_RUNS set the repetitions.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 export PATH="$HOME/.cargo/bin:$PATH"
+parts="${BENCH_PARTS:-parse shape align}"
 runs="${RUNS:-7}"
 port="${BENCH_PORT:-4179}"
 work="$(mktemp -d)"
 trap 'kill "${server:-0}" 2>/dev/null || true; rm -rf "$work"' EXIT
+wants() { [[ " $parts " == *" $1 "* ]]; }
 
 bash scripts/build-wasm.sh
 npx vite build --logLevel warn
-node bench/make-ply.mjs "$work/torus-300k.ply"
 
 # node directly (not npx), so that $! is the server itself and the trap stops it.
 node node_modules/vite/bin/vite.js preview --host 127.0.0.1 --port "$port" --strictPort >"$work/server.log" 2>&1 &
@@ -26,19 +32,32 @@ done
 echo
 echo "== machine"
 lscpu | grep -E '^(Model name|CPU\(s\)|Thread|Core|Socket)' || true
-echo "nproc: $(nproc)"
-echo
-echo "== browser"
-node bench/browser-bench.mjs "http://127.0.0.1:$port/" "$work/torus-300k.ply" "$runs"
-echo
-echo "== native"
-cargo run --quiet --release --manifest-path bench/native/Cargo.toml --target-dir crate/target -- \
-  "$work/torus-300k.ply" "$runs"
-echo
-echo "== shape model (public/models/demo.bsm), stitched reconstruction in the worker"
-node bench/shape-bench.mjs "http://127.0.0.1:$port/" "${SHAPE_RUNS:-30}"
-echo "== alignment vs trimesh nricp_amberg"
-bash scripts/bench-align.sh
-echo
-echo "== alignment in the browser worker (≈ 201K-vertex synthetic subject, base and fine)"
-bash scripts/bench-align-browser.sh
+echo "nproc: $(nproc); load average: $(cut -d' ' -f1-3 /proc/loadavg)"
+
+if wants parse; then
+  node bench/make-ply.mjs "$work/torus-300k.ply"
+  echo
+  echo "== parse: browser"
+  node bench/browser-bench.mjs "http://127.0.0.1:$port/" "$work/torus-300k.ply" "$runs"
+  echo
+  echo "== parse: native"
+  cargo run --quiet --release --manifest-path bench/native/Cargo.toml --target-dir crate/target -- \
+    "$work/torus-300k.ply" "$runs"
+fi
+if wants shape; then
+  echo
+  echo "== shape model (public/models/demo.bsm): morphing in the worker (WASM in Chromium)"
+  node bench/shape-bench.mjs "http://127.0.0.1:$port/" "${SHAPE_RUNS:-30}"
+  echo
+  echo "== shape model: morphing natively (release)"
+  cargo run --quiet --release --manifest-path crate/Cargo.toml --example pca_bench -- morph
+fi
+echo "load average after: $(cut -d' ' -f1-3 /proc/loadavg)"
+if wants align; then
+  echo
+  echo "== alignment vs trimesh nricp_amberg"
+  bash scripts/bench-align.sh
+  echo
+  echo "== alignment in the browser worker (≈ 201K-vertex synthetic subject, base and fine)"
+  bash scripts/bench-align-browser.sh
+fi

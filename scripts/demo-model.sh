@@ -30,5 +30,6 @@ ls "$WORK"/synth/scan_*.ply | sed 's/.*scan_\(.*\)\.ply/\1/' |
 
 echo "demo-model: building the shape model"
 mkdir -p public/models
-"$BIN" build-model --fits "$WORK/fits" --out public/models/demo.bsm --f16 --csv "$WORK/csv"
+# 20 modes in every model (the sliders' budget of issue 6), whatever variance they explain.
+"$BIN" build-model --fits "$WORK/fits" --out public/models/demo.bsm --f16 --modes 20 --csv "$WORK/csv"
 ls -la public/models/demo.bsm

@@ -1,20 +1,30 @@
 //! Slider-path and build benchmarks of the PCA core (native). Prints figures; asserts nothing.
 //!
-//!   cargo run --release --example pca_bench [-- SUBJECTS]
+//!   cargo run --release --example pca_bench [-- SUBJECTS | morph]
+//!
+//! `morph` runs part 2 only (what `npm run bench` prints).
 //!
 //! 1. Reconstruction for sliders at the `fine` template's size and at 650K vertices (issue 6's
 //!    figure): 20 whole-body modes + 20 modes in each of the six segments, stitched; full
 //!    `reconstruct_into` and one-slider `apply_delta`. The basis content does not matter for
 //!    speed, so it is seeded noise over the template's real segment weights.
-//! 2. A real build at `base` resolution from SUBJECTS (default 100) posed, scaled copies of the
+//! 2. The app's morphing path on the shipped demo model (`public/models/demo.bsm`, 20 modes in
+//!    each of the seven models) mapped to `fine`, all six segments overridden and stitched: one
+//!    slider move (`Morph::update`, a compensated rank-1 update), a full rebuild, and what the
+//!    app's worker does around them (vertex normals at fine, measurements and seam report on the
+//!    base vertices, copying the positions out). Median and min over the runs.
+//! 3. A real build at `base` resolution from SUBJECTS (default 100) posed, scaled copies of the
 //!    template: GPA + 7 snapshot PCAs + quality curves, and the model file sizes (f32 / f16).
 
-use bodyspace::pca::file::{write_model, BasisPrecision};
+use bodyspace::mesh::normals::NormalTopology;
+use bodyspace::pca::file::{read_model_for, write_model, BasisPrecision};
+use bodyspace::pca::measure::{girth_triangles, measure, MeasureLandmarks, MeasureParams};
 use bodyspace::pca::random::NormalRng;
 use bodyspace::pca::segments::segment_subsets;
+use bodyspace::pca::subdivide::{subdivide_model, FineTemplate};
 use bodyspace::pca::{
-    build_body_model, BodyModel, BuildParams, Coefficients, ModeTarget, QualityCurves, ShapeModel,
-    TemplateIdentity, TrainingSet,
+    build_body_model, BodyModel, BuildParams, Coefficients, ModeTarget, Morph, QualityCurves,
+    ShapeModel, TemplateIdentity, TrainingSet,
 };
 use bodyspace::template::{Resolution, Segment, Template};
 use nalgebra::{Point3, Rotation3, Vector3};
@@ -120,6 +130,126 @@ fn slider_bench(label: &str, weights: Vec<[f32; 6]>) {
     println!("  apply_delta, one torso slider:                 {t_delta_torso:7.2} ms");
 }
 
+/// (median, min) in ms of `runs` calls of `f`.
+fn stats_ms(mut f: impl FnMut(), runs: usize) -> (f64, f64) {
+    let mut times: Vec<f64> = (0..runs)
+        .map(|_| {
+            let t = Instant::now();
+            f();
+            t.elapsed().as_secs_f64() * 1e3
+        })
+        .collect();
+    times.sort_by(f64::total_cmp);
+    (times[runs / 2], times[0])
+}
+
+fn demo_fine_bench(base_template: &Template, fine_template: &Template) {
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/../public/models/demo.bsm");
+    let Ok(bytes) = std::fs::read(path) else {
+        println!("demo model: {path} not found, skipped");
+        return;
+    };
+    let base = read_model_for(&bytes, &TemplateIdentity::of_template(base_template))
+        .expect("the demo model fits the embedded template");
+    let t = Instant::now();
+    let target = FineTemplate::of_templates(base_template, fine_template).expect("fine template");
+    let fine = subdivide_model(&base, &target, &mut |_| {}).expect("maps to fine");
+    let map_s = t.elapsed().as_secs_f64();
+    let modes: Vec<usize> = std::iter::once(&fine.whole)
+        .chain(&fine.segments)
+        .map(|m| m.mode_count())
+        .collect();
+    let sigma = |m: &ShapeModel, seed: u64| {
+        let mut rng = NormalRng::new(seed);
+        m.standard_deviations()
+            .iter()
+            .map(|sd| 0.5 * sd * rng.next_normal())
+            .collect::<Vec<f64>>()
+    };
+    let mut c = Coefficients {
+        whole: sigma(&fine.whole, 1),
+        segments: std::array::from_fn(|s| Some(sigma(&fine.segments[s], 2 + s as u64))),
+    };
+    let mut morph = Morph::new(&fine, &c).expect("morph");
+    let v = fine.template.vertex_count;
+    println!(
+        "demo model at fine: V = {v}, modes whole/segments {modes:?}, all six segments overridden; mapped from base in {map_s:.2} s"
+    );
+    let (rebuild, rebuild_min) = stats_ms(|| drop(morph.rebuild(&fine, &c)), 21);
+    let mut rng = NormalRng::new(3);
+    let mut move_one = |part: usize| {
+        let values = if part == 0 {
+            &mut c.whole
+        } else {
+            c.segments[part - 1].as_mut().expect("overridden")
+        };
+        let k = (rng.next_normal().abs() * 5.0) as usize % values.len();
+        values[k] += 0.01 * rng.next_normal();
+        let update = morph.update(&fine, &c).expect("update");
+        assert!(!update.rebuilt);
+    };
+    let (whole_move, whole_min) = stats_ms(|| move_one(0), 201);
+    let (torso_move, torso_min) = stats_ms(|| move_one(1 + Segment::Torso.index()), 201);
+    let mut part = 0;
+    let (any_move, any_min) = stats_ms(
+        || {
+            part = (part + 1) % 7;
+            move_one(part)
+        },
+        701,
+    );
+    let positions = morph.positions().to_vec();
+    let mut normals = vec![0.0f32; positions.len()];
+    let topology = NormalTopology::new(&fine.triangles, v).expect("fine triangles");
+    let (normals_ms, normals_min) = stats_ms(
+        || topology.vertex_normals_into(&positions, &mut normals),
+        21,
+    );
+    let (copy_ms, copy_min) = stats_ms(|| drop(std::hint::black_box(positions.to_vec())), 21);
+    let vb = base.template.vertex_count;
+    let landmarks =
+        MeasureLandmarks::from_named(base_template.landmark_vertices()).expect("landmarks");
+    let sections = girth_triangles(&base.triangles, &base.segment_weights);
+    let (measure_ms, measure_min) = stats_ms(
+        || {
+            drop(measure(
+                &positions[..3 * vb],
+                &base.triangles,
+                &sections,
+                &landmarks,
+                &MeasureParams::default(),
+            ))
+        },
+        21,
+    );
+    let (seam_ms, seam_min) = stats_ms(|| drop(base.seam_report(&c)), 21);
+    println!("  (ms)                                             median      min");
+    for (label, median, min) in [
+        (
+            "slider move, whole body under overrides",
+            whole_move,
+            whole_min,
+        ),
+        ("slider move, torso", torso_move, torso_min),
+        (
+            "slider move, any of the 7 models in turn",
+            any_move,
+            any_min,
+        ),
+        (
+            "full rebuild (7 × 20 modes, stitched)",
+            rebuild,
+            rebuild_min,
+        ),
+        ("vertex normals at fine (f32)", normals_ms, normals_min),
+        ("copy of the positions (3V f32)", copy_ms, copy_min),
+        ("measurements on the base vertices", measure_ms, measure_min),
+        ("seam report on the base model", seam_ms, seam_min),
+    ] {
+        println!("  {label:<46} {median:8.3} {min:8.3}");
+    }
+}
+
 fn build_bench(subjects: usize) {
     let template = Template::embedded().expect("embedded template");
     let mesh = template.mesh();
@@ -193,15 +323,18 @@ fn build_bench(subjects: usize) {
 }
 
 fn main() {
-    let subjects = std::env::args()
-        .nth(1)
-        .and_then(|a| a.parse().ok())
-        .unwrap_or(100);
+    let arg = std::env::args().nth(1);
     let base = Template::embedded().expect("embedded template");
     let fine = base.at_resolution(Resolution::Fine);
+    if arg.as_deref() == Some("morph") {
+        demo_fine_bench(&base, &fine);
+        return;
+    }
+    let subjects = arg.and_then(|a| a.parse().ok()).unwrap_or(100);
     let weights: Vec<[f32; 6]> = (0..fine.mesh().vertex_count() as u32)
         .map(|v| fine.segment_weights(v))
         .collect();
+    demo_fine_bench(&base, &fine);
     slider_bench("fine", weights.clone());
     // Issue 6 states ~650K vertices for `fine`; the real template is smaller, so also time a
     // 650K body with the fine template's weights repeated (same overlap fraction).

@@ -16,6 +16,10 @@ use serde::Serialize;
 use wasm_bindgen::prelude::*;
 
 mod model;
+mod model_build;
+
+pub use model::{load_shape_model, ShapeSpace};
+pub use model_build::build_shape_model;
 
 use crate::io::{read_landmarks, read_scan};
 use crate::landmarks::report::{report, LandmarkReport};

@@ -83,6 +83,51 @@ fn build_project_reconstruct_round_trip() {
     let quality = std::fs::read_to_string(csv.join("quality.csv")).unwrap();
     assert!(quality.starts_with("model,modes,compactness"));
 
+    // A fixed mode count overrides the variance cut in every model and is recorded.
+    let fixed = dir.join("fixed.bsm");
+    let (ok, summary, err) = run(&[
+        "build-model",
+        "--fits",
+        fits.to_str().unwrap(),
+        "--out",
+        fixed.to_str().unwrap(),
+        "--modes",
+        "1",
+        "--no-quality",
+    ]);
+    assert!(ok, "{err}");
+    for part in ["whole", "head", "left_arm", "torso", "right_leg"] {
+        assert_eq!(summary["models"][part]["modes"], 1, "{part}: {summary}");
+    }
+    let header = bodyspace::pca::file::read_model(&std::fs::read(&fixed).unwrap()).unwrap();
+    assert_eq!(header.settings.modes, Some(1));
+    let (ok, _, err) = run(&[
+        "build-model",
+        "--fits",
+        fits.to_str().unwrap(),
+        "--out",
+        fixed.to_str().unwrap(),
+        "--modes",
+        "0",
+    ]);
+    assert!(!ok && err.contains("--modes"), "{err}");
+
+    // The model file as GLB: whole body + six segments, one mesh each.
+    let glb = dir.join("parts.glb");
+    let (ok, exported, err) = run(&[
+        "export-gltf",
+        "--model",
+        model.to_str().unwrap(),
+        "--out",
+        glb.to_str().unwrap(),
+    ]);
+    assert!(ok, "{err}");
+    assert_eq!(exported["meshes"].as_array().unwrap().len(), 7);
+    assert_eq!(exported["meshes"][4]["name"], "torso");
+    let bytes = std::fs::read(&glb).unwrap();
+    assert_eq!(&bytes[..4], b"glTF");
+    assert_eq!(exported["bytes"], bytes.len());
+
     let fit = fits.join("fit03.ply");
     let (ok, projected, err) = run(&[
         "project",

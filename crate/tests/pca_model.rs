@@ -166,3 +166,36 @@ fn generalization_in_coefficient_space_matches_rebuilding_each_model() {
         );
     }
 }
+
+#[test]
+fn a_fixed_mode_count_overrides_the_variance_cut_and_is_recorded() {
+    let set = pca_support::training_set(10, 4);
+    let params = |modes| BuildParams {
+        modes: Some(modes),
+        compute_quality: false,
+        ..BuildParams::default()
+    };
+    // The subjects vary in 4 shape parameters plus noise, so 99 % keeps at most 4 modes; a fixed
+    // count keeps exactly 6 in every model, and never more than the N − 1 = 9 that exist.
+    let six = build_body_model(&set, &params(6)).unwrap();
+    for m in std::iter::once(&six.whole).chain(&six.segments) {
+        assert_eq!(m.mode_count(), 6.min(m.all_variances.len()));
+        check_orthonormal(m);
+    }
+    assert_eq!(six.whole.mode_count(), 6);
+    let many = build_body_model(&set, &params(50)).unwrap();
+    for m in std::iter::once(&many.whole).chain(&many.segments) {
+        assert_eq!(m.mode_count(), m.all_variances.len());
+        assert!(m.mode_count() <= 9);
+    }
+    // Recorded in the settings, and in the file.
+    let bytes = bodyspace::pca::file::write_model(&six, bodyspace::pca::file::BasisPrecision::F32);
+    let read = bodyspace::pca::file::read_model(&bytes).unwrap();
+    assert_eq!(read.settings.modes, Some(6));
+    assert!(build_body_model(&set, &params(0)).is_err());
+    // Settings written before the field existed read as "no fixed count".
+    let mut json = serde_json::to_value(BuildParams::default()).unwrap();
+    json.as_object_mut().unwrap().remove("modes");
+    let old: BuildParams = serde_json::from_value(json).unwrap();
+    assert_eq!(old.modes, None);
+}

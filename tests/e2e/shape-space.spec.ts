@@ -163,6 +163,57 @@ test('exports: body PLY/OBJ/glTF, bodies along a mode, the model with morph targ
   const modes = Number(await page.locator('body').getAttribute('data-shape-modes'));
   expect(modes).toBeGreaterThan(1);
   expect(modelJson.meshes[0]!.primitives[0]!.targets!.length).toBe(modes);
+  // The segment models too: seven meshes, each with its own modes as morph targets.
+  const parts = await save('export-model-parts-gltf');
+  expect(parts.name).toBe('shape-model-segments.glb');
+  expect(parts.bytes.toString('latin1', 0, 4)).toBe('glTF');
+  const partsJson = JSON.parse(parts.bytes.toString('utf8', 20, 20 + parts.bytes.readUInt32LE(12))) as {
+    meshes: { name: string; primitives: { targets?: unknown[] }[] }[];
+  };
+  expect(partsJson.meshes.map((m) => m.name)).toEqual(['whole', 'head', 'left_arm', 'right_arm', 'torso', 'left_leg', 'right_leg']);
+  for (const mesh of partsJson.meshes) expect(mesh.primitives[0]!.targets!.length).toBeGreaterThan(0);
   const csv = await save('csv-eigenvalues');
   expect(csv.bytes.toString('utf8').split('\n')[0]).toBe('model,mode,eigenvalue,sd,explained,cumulative,kept');
+});
+
+test('at fine the 214,050-vertex body follows whole-body and segment sliders by rank-1 updates', async ({ page }) => {
+  await page.goto('/');
+  await ready(page);
+  const body = page.locator('body');
+  await page.getByTestId('shape-resolution').selectOption('fine');
+  await expect(body).toHaveAttribute('data-shape-resolution', 'fine');
+  await expect(body).toHaveAttribute('data-shape-vertices', '214050');
+  await ready(page);
+  // The mesh in the scene has the fine template's vertices.
+  await expect(page.locator('#viewport')).toHaveAttribute('data-shape-vertices', '214050');
+  await expect(page.getByTestId('shape-vertices')).toHaveText('214050');
+  await expect(page.getByTestId('shape-resolution-note')).toContainText('Measurements are taken on the base vertices');
+
+  // A whole-body slider: one rank-1 update in the worker, a new stature.
+  const stature = await page.getByTestId('measure-stature').innerText();
+  await slide(page, 0, 2.5);
+  await expect(page.getByTestId('measure-stature')).not.toHaveText(stature);
+  await expect(body).toHaveAttribute('data-shape-rebuilt', 'false');
+  await expect(body).toHaveAttribute('data-shape-deltas', '1');
+
+  // A segment slider: its first move gives the head its own coefficients (a rebuild, the blend
+  // changes); the next one is a rank-1 update again, and the top of the head moves the stature.
+  await page.getByTestId('shape-segment').selectOption('head');
+  await slide(page, 1, -1.7);
+  await expect(body).toHaveAttribute('data-shape-rebuilt', 'true');
+  const before = { stature: await body.getAttribute('data-shape-stature'), checksum: await body.getAttribute('data-shape-checksum') };
+  await slide(page, 0, 2.8);
+  await expect(body).toHaveAttribute('data-shape-rebuilt', 'false');
+  await expect(body).toHaveAttribute('data-shape-deltas', '1');
+  await expect(body).not.toHaveAttribute('data-shape-checksum', before.checksum!);
+  await expect(body).not.toHaveAttribute('data-shape-stature', before.stature!);
+  await expect(page.getByTestId('measure-stature')).toHaveText(/^\d+\.\d cm$/);
+  await expect(page.locator('#viewport')).toHaveAttribute('data-shape-vertices', '214050');
+
+  // Back to base: the same coefficients, the same readings (measured on the base vertices).
+  const readingsAtFine = await readings(page);
+  await page.getByTestId('shape-resolution').selectOption('base');
+  await expect(body).toHaveAttribute('data-shape-vertices', '13380');
+  await ready(page);
+  expect(await readings(page)).toEqual(readingsAtFine);
 });

@@ -1,15 +1,25 @@
 // The shape-space workflow: loads the demo model (or the one a link names), keeps the slider
 // values, morphs through the MorphQueue, and runs exports, CSV, links and in-app model builds.
 import type { CoreClient } from '../client/core-client';
-import { objText, plyBytes, positionsChecksum } from '../shared/mesh-export';
+import { positionsChecksum } from '../shared/mesh-export';
 import { decodeShapeLink, encodeShapeLink, isShareableModel, quantiseSigma, type ShapeLink } from '../shared/shape-link';
-import { SEGMENTS, type LoadedModel, type ModelCsv, type ReconstructedBody, type SegmentName, type ShapeCoefficients } from '../shared/shape-results';
-import { download } from '../ui/download';
+import {
+  SEGMENTS,
+  type LoadedModel,
+  type ModelCsv,
+  type ModelGlbParts,
+  type ReconstructedBody,
+  type SegmentName,
+  type ShapeCoefficients,
+  type ShownResolution,
+} from '../shared/shape-results';
+import type { TemplateResolution } from '../shared/template-data';
 import type { ErrorBanner } from '../ui/error-banner';
 import { ShapePanel, type PartName } from '../ui/shape-panel';
-import { bodiesGlb } from '../view/gltf-export';
 import type { Viewer } from '../view/viewer';
 import { MorphQueue } from './morph-queue';
+import * as shapeExports from './shape-exports';
+import type { BodyFormat } from './shape-exports';
 import { readFits } from './read-fits';
 import { subjects } from './subjects';
 
@@ -22,6 +32,10 @@ export class ShapeSpace {
   private source: string | null = null;
   private coefficients: ShapeCoefficients = { whole: [], segments: SEGMENTS.map(() => null) };
   private body: ReconstructedBody | null = null;
+  /** Resolution the body is shown at (chosen in the panel; kept across model loads). */
+  private resolution: TemplateResolution = 'base';
+  /** Triangles of the body shown: the model's own, or the fine template's. */
+  private triangles: Uint32Array | null = null;
   private readonly panel: ShapePanel;
   private readonly morph: MorphQueue;
   private readonly page = document.body;
@@ -34,7 +48,7 @@ export class ShapeSpace {
     private readonly viewer: Viewer,
     private readonly banner: ErrorBanner,
   ) {
-    this.morph = new MorphQueue(client, (body) => this.show(body), (message) => this.banner.show([message]));
+    this.morph = new MorphQueue(client, (body, _c, sentAt) => this.show(body, sentAt), (message) => this.banner.show([message]));
     this.panel = new ShapePanel({
       onSlider: (part, k, t) => this.setValue(part, k, t),
       onView: (part) => this.setView(part),
@@ -44,7 +58,8 @@ export class ShapeSpace {
       onCsv: (kind) => void this.csv(kind),
       onExportBody: (format) => void this.exportBody(format),
       onExportMode: (mode, steps) => void this.exportMode(mode, steps),
-      onExportModelGltf: () => void this.exportModelGltf(),
+      onExportModelGltf: (parts) => void this.exportModelGltf(parts),
+      onResolution: (resolution) => void this.switchResolution(resolution),
       onSaveModel: () => void this.saveModel(),
       onCopyLink: () => void this.copyLink(),
       onBuild: (variance) => void this.build(variance),
@@ -68,7 +83,7 @@ export class ShapeSpace {
     const loaded = await this.fetchModel(link?.model ?? DEMO_MODEL);
     if (!loaded && link && link.model !== DEMO_MODEL) await this.fetchModel(DEMO_MODEL);
     if (link && loaded) this.restore(link);
-    else this.redraw(true);
+    else this.redraw(true, true);
   }
 
   /** Takes the shape body out of the view (a scan was opened); any shape action brings it back. */
@@ -108,7 +123,8 @@ export class ShapeSpace {
     try {
       const loaded = await this.client.call({ type: 'loadModel', bytes, fileName }, { transfer: [bytes] });
       this.adopt(loaded, source, fileName);
-      this.redraw(true);
+      await this.keepResolution();
+      this.redraw(true, true);
       return true;
     } catch (error) {
       this.banner.show([error instanceof Error ? error.message : String(error)]);
@@ -121,12 +137,58 @@ export class ShapeSpace {
 
   private adopt(loaded: LoadedModel, source: string | null, label: string): void {
     this.model = loaded;
+    this.triangles = loaded.triangles;
     this.source = source;
     this.coefficients = { whole: loaded.info.parts[0]!.variances.map(() => 0), segments: SEGMENTS.map(() => null) };
     this.panel.showModel(label, loaded.info.parts, loaded.info.subjects.length);
     this.panel.showView('whole', this.coefficients);
     this.page.dataset.shapeModel = label;
     this.page.dataset.shapeModes = String(loaded.info.parts[0]!.variances.length);
+    this.showResolution({ resolution: loaded.info.template.resolution as TemplateResolution, vertexCount: loaded.info.template.vertex_count, triangles: loaded.triangles });
+  }
+
+  /** A newly loaded model is shown at its own resolution: go to fine again if that was chosen. */
+  private async keepResolution(): Promise<void> {
+    if (this.resolution === 'fine' && this.model?.info.template.resolution === 'base') await this.switchResolution('fine', false);
+  }
+
+  /**
+   * Shows the body at `resolution`: the worker maps the model to the fine template on first
+   * use (progress in the panel); the coefficients stay. A failure leaves the resolution as it was.
+   */
+  private async switchResolution(resolution: TemplateResolution, redraw = true): Promise<void> {
+    if (!this.model) return;
+    this.suppressed = false;
+    this.page.dataset.shapeBusy = 'true';
+    this.page.dataset.shapeSettled = 'false';
+    const started = performance.now();
+    try {
+      const shown = await this.client.call(
+        { type: 'shapeResolution', resolution },
+        { onProgress: (f, label) => this.panel.showResolutionStatus(`${label}… ${Math.round(f * 100)} %`) },
+      );
+      this.showResolution(shown);
+      const seconds = (performance.now() - started) / 1000;
+      this.panel.showResolutionStatus(shown.resolution === 'fine' && seconds > 0.05 ? `Mapped to fine in ${seconds.toFixed(1)} s.` : '');
+      if (redraw) this.redraw(false, true);
+    } catch (error) {
+      this.panel.showResolutionStatus('');
+      this.panel.showResolution(this.resolution, this.triangles ? this.vertexCountShown : 0);
+      this.banner.show([error instanceof Error ? error.message : String(error)]);
+    } finally {
+      this.page.dataset.shapeBusy = 'false';
+      if (this.morph.idle) this.page.dataset.shapeSettled = 'true';
+    }
+  }
+
+  private vertexCountShown = 0;
+
+  private showResolution(shown: ShownResolution): void {
+    this.resolution = shown.resolution;
+    this.triangles = shown.triangles;
+    this.vertexCountShown = shown.vertexCount;
+    this.panel.showResolution(shown.resolution, shown.vertexCount);
+    this.page.dataset.shapeResolution = shown.resolution;
   }
 
   private restore(link: ShapeLink): void {
@@ -139,7 +201,7 @@ export class ShapeSpace {
     this.panel.showView(link.view, this.coefficients);
     // The load asked to frame the camera; a link's own camera wins over that.
     this.frameNext = !link.camera;
-    this.redraw(!link.camera);
+    this.redraw(!link.camera, true);
     if (link.camera) this.viewer.setCameraPose(link.camera);
     this.page.dataset.linkRestored = 'true';
   }
@@ -178,7 +240,7 @@ export class ShapeSpace {
     if (!this.model) return;
     this.coefficients = { whole: this.coefficients.whole.map(() => 0), segments: SEGMENTS.map(() => null) };
     this.panel.showView(this.panel.currentView, this.coefficients);
-    this.redraw(false);
+    this.redraw(false, true);
   }
 
   /** b ~ N(0, σ²): standard normal σ values (Box–Muller), clipped to the sliders' ±3σ. */
@@ -192,32 +254,48 @@ export class ShapeSpace {
       segments: this.coefficients.segments.map((s) => (s ? draw(s.length) : null)),
     };
     this.panel.showView(this.panel.currentView, this.coefficients);
-    this.redraw(false);
+    this.redraw(false, true);
   }
 
   private frameNext = false;
 
-  private redraw(frame: boolean): void {
+  /** Asks the worker for the body of the current coefficients; `rebuild`: from scratch. */
+  private redraw(frame: boolean, rebuild = false): void {
     if (!this.model) return;
     this.frameNext ||= frame;
     this.page.dataset.shapeSettled = 'false';
-    this.morph.request(this.coefficients);
+    this.morph.request(this.coefficients, rebuild);
   }
 
-  private show(body: ReconstructedBody): void {
-    if (!this.model) return;
+  /** Shows a body from the worker; `sentAt`: when it was asked for (UI-thread round trip). */
+  private show(body: ReconstructedBody, sentAt: number): void {
+    const triangles = this.triangles;
+    if (!this.model || !triangles) return;
+    // A body of the resolution shown before a switch that has just landed: the next one follows.
+    if (body.positions.length / 3 !== this.vertexCountShown) return;
     this.body = body;
     if (!this.suppressed) {
-      const mesh = { positions: body.positions, triangles: this.model.triangles, normals: body.normals };
+      const mesh = { positions: body.positions, triangles, normals: body.normals };
       this.viewer.showBody('shape', { mesh, colour: 0xc8b4a0, transform: standBeside(body.positions) }, this.frameNext);
     }
+    // Post → result → the new arrays in the body's vertex buffers (rendering not included).
+    const roundTripMs = performance.now() - sentAt;
     if (!this.suppressed) this.frameNext = false;
     this.page.dataset.shapeShown = String(!this.suppressed);
-    this.panel.showBody(body, body.positions.length / 3);
+    this.panel.showBody(body, body.positions.length / 3, roundTripMs);
     const p = this.page.dataset;
-    p.shapeChecksum = positionsChecksum(body.positions);
+    // A pass over every coordinate: only for the body the sliders settle on (tests, links).
+    if (this.morph.idle) p.shapeChecksum = positionsChecksum(body.positions);
     p.shapeStature = body.measurements.stature.toFixed(5);
     p.shapeReconstructMs = body.reconstructMs.toFixed(3);
+    p.shapeRoundTripMs = roundTripMs.toFixed(3);
+    p.shapeNormalsMs = body.normalsMs.toFixed(3);
+    p.shapeMeasureMs = body.measureMs.toFixed(3);
+    p.shapeCopyMs = body.copyMs.toFixed(3);
+    p.shapeWorkerMs = body.workerMs.toFixed(3);
+    p.shapeRebuilt = String(body.rebuilt);
+    p.shapeDeltas = String(body.deltas);
+    p.shapeVertices = String(body.positions.length / 3);
     p.shapeBodies = String(++this.bodies);
     p.shapeReady = 'true';
     const hint = document.getElementById('empty-hint');
@@ -252,44 +330,26 @@ export class ShapeSpace {
   }
 
   private async csv(kind: ModelCsv): Promise<void> {
-    const text = await this.client.call({ type: 'modelCsv', kind });
-    download(`${kind}.csv`, text, 'text/csv');
+    await shapeExports.csv(this.client, kind);
   }
 
-  private async exportBody(format: 'ply' | 'obj' | 'glb'): Promise<void> {
-    const body = this.body;
-    const model = this.model;
-    if (!body || !model) return;
-    const comment = `BodySpace body of ${this.page.dataset.shapeModel ?? 'a shape model'}`;
-    if (format === 'ply') download('body.ply', plyBytes(body.positions, model.triangles, comment));
-    else if (format === 'obj') download('body.obj', objText(body.positions, model.triangles, comment), 'text/plain');
-    else download('body.glb', await bodiesGlb([{ name: 'body', positions: body.positions, normals: body.normals, triangles: model.triangles }]), 'model/gltf-binary');
+  private async exportBody(format: BodyFormat): Promise<void> {
+    if (!this.body || !this.triangles) return;
+    const label = `${this.page.dataset.shapeModel ?? 'a shape model'} (${this.resolution})`;
+    await shapeExports.body(this.body, this.triangles, format, label);
   }
 
-  /** One GLB with a body per σ step along whole-body mode `mode` (other values as they are). */
   private async exportMode(mode: number, steps: number[]): Promise<void> {
-    const model = this.model;
-    if (!model || steps.length === 0) return;
-    const bodies = [];
-    for (const t of steps) {
-      const c = structuredClone(this.coefficients);
-      c.whole[mode] = t;
-      const body = await this.client.call({ type: 'reconstruct', coefficients: c });
-      bodies.push({ name: `mode${mode + 1}_${t >= 0 ? '+' : ''}${t}sd`, positions: body.positions, normals: body.normals, triangles: model.triangles });
-    }
-    download(`mode${mode + 1}.glb`, await bodiesGlb(bodies, 0.7), 'model/gltf-binary');
+    if (!this.model || !this.triangles) return;
+    await shapeExports.alongMode(this.client, this.coefficients, this.triangles, mode, steps);
   }
 
-  private async exportModelGltf(): Promise<void> {
-    if (!this.model) return;
-    const glb = await this.client.call({ type: 'modelGlb', modes: this.model.info.parts[0]!.variances.length });
-    download('shape-model.glb', glb, 'model/gltf-binary');
+  private async exportModelGltf(parts: ModelGlbParts): Promise<void> {
+    if (this.model) await shapeExports.modelGlb(this.client, this.model, parts);
   }
 
   private async saveModel(): Promise<void> {
-    if (!this.model) return;
-    const bytes = await this.client.call({ type: 'modelFile' });
-    download('shape-model.bsm', bytes);
+    if (this.model) await shapeExports.modelFile(this.client);
   }
 
   private async addFits(files: File[]): Promise<void> {
@@ -321,7 +381,8 @@ export class ShapeSpace {
       );
       this.adopt(built, null, built.fileName);
       this.panel.showBuildStatus(`Built from ${all.length} subjects.`);
-      this.redraw(true);
+      await this.keepResolution();
+      this.redraw(true, true);
     } catch (error) {
       this.panel.showBuildStatus('');
       this.banner.show([error instanceof Error ? error.message : String(error)]);

@@ -2,7 +2,7 @@
 import type { AlignProgress, AlignResult, FineSettings, RbfSettings, ScanInput, WarpResult } from './align-types';
 import type { ParsedLandmarks, ParsedScan } from './results';
 import type { TemplateData, TemplateResolution } from './template-data';
-import type { LoadedModel, ModelCsv, ReconstructedBody, ShapeCoefficients } from './shape-results';
+import type { ExportBody, LoadedModel, ModelCsv, ModelGlbParts, ReconstructedBody, ShapeCoefficients, ShownResolution } from './shape-results';
 
 /** Every request the worker understands, without its `id` (the client adds it). */
 export type CoreRequestBody =
@@ -20,9 +20,17 @@ export type CoreRequestBody =
   | { type: 'loadModel'; bytes: ArrayBuffer; fileName: string }
   /** `positions`: the subjects' bodies concatenated (template order, metres). */
   | { type: 'buildModel'; positions: Float32Array; names: string[]; variance: number }
+  /**
+   * Moves the body shown to `coefficients`: rank-1 updates of the held body for the changed
+   * values, or a full reconstruction when `rebuild` (reset, random body, link, new model).
+   */
+  | { type: 'morph'; coefficients: ShapeCoefficients; rebuild: boolean }
+  /** A body for export at the shown resolution; the body shown is not touched. */
   | { type: 'reconstruct'; coefficients: ShapeCoefficients }
+  /** Shows the body at `resolution` (maps the model to fine on first use, with progress). */
+  | { type: 'shapeResolution'; resolution: TemplateResolution }
   | { type: 'modelCsv'; kind: ModelCsv }
-  | { type: 'modelGlb'; modes: number }
+  | { type: 'modelGlb'; modes: number; parts: ModelGlbParts }
   | { type: 'modelFile' };
 
 /** A request to the worker; `id` pairs it with its replies. */
@@ -40,7 +48,9 @@ export interface CoreResults {
   exportMesh: Uint8Array;
   loadModel: LoadedModel;
   buildModel: LoadedModel;
-  reconstruct: ReconstructedBody;
+  morph: ReconstructedBody;
+  reconstruct: ExportBody;
+  shapeResolution: ShownResolution;
   modelCsv: string;
   modelGlb: Uint8Array;
   modelFile: Uint8Array;

@@ -24,19 +24,29 @@ export interface ModelPart {
 
 export interface ModelInfo {
   template: { name: string; hash: string; resolution: string; vertex_count: number };
-  settings: { variance: number; max_modes: number | null; gpa: { pose: string } };
+  settings: { variance: number; max_modes: number | null; modes?: number | null; gpa: { pose: string } };
   subjects: string[];
   triangle_count: number;
   /** Whole body first, then the segments in `SEGMENTS` order. */
   parts: ModelPart[];
 }
 
-/** A model now held by the worker. */
+/** A model now held by the worker, shown at its own resolution. */
 export interface LoadedModel {
   info: ModelInfo;
   triangles: Uint32Array;
   fileName: string;
 }
+
+/** The resolution the body is shown at, with its triangles (`#F·3`). */
+export interface ShownResolution {
+  resolution: 'base' | 'fine';
+  vertexCount: number;
+  triangles: Uint32Array;
+}
+
+/** What "model as glTF" exports: the whole-body model, or it and the six segment models. */
+export type ModelGlbParts = 'whole' | 'all';
 
 /** Slider values in σ units; `segments[s] === null`: that segment follows the whole body. */
 export interface ShapeCoefficients {
@@ -66,16 +76,31 @@ export interface SeamReport {
   vertex: number | null;
 }
 
-/** A reconstructed body with its readings and what it cost in the worker. */
+/** The body shown, with its readings and what it cost in the worker. */
 export interface ReconstructedBody {
   positions: Float32Array;
   normals: Float32Array;
   measurements: Measurements;
   seam: SeamReport;
-  /** Core reconstruction (stitched) in the worker, ms. */
+  /** Core morph call in the worker (rank-1 updates or a full reconstruction), ms. */
   reconstructMs: number;
+  /** Whether the core reconstructed from scratch, and how many rank-1 updates it applied. */
+  rebuilt: boolean;
+  deltas: number;
+  /** Copy of the positions out of WASM memory, ms. */
+  copyMs: number;
+  /** Vertex normals (core) and their copy-out, ms. */
+  normalsMs: number;
   /** Measurements + seam report, ms. */
   measureMs: number;
+  /** Everything the worker did for this body (the above and the JSON), ms. */
+  workerMs: number;
+}
+
+/** A body made for export (not the one shown). */
+export interface ExportBody {
+  positions: Float32Array;
+  normals: Float32Array;
 }
 
 export type ModelCsv = 'eigenvalues' | 'scores' | 'quality';

@@ -1,6 +1,7 @@
 // The "Shape space" panel: segment picker, one σ slider per mode of the part in view, reset and
 // random, live measurements, seam quality and timing, quality charts, CSV, exports, link, build.
-import type { ModelCsv, ModelPart, ReconstructedBody, SegmentName, ShapeCoefficients } from '../shared/shape-results';
+import type { ModelCsv, ModelGlbParts, ModelPart, ReconstructedBody, SegmentName, ShapeCoefficients } from '../shared/shape-results';
+import type { TemplateResolution } from '../shared/template-data';
 import { SEGMENTS } from '../shared/shape-results';
 import { byId, h } from './dom';
 import { qualityCharts } from './quality-charts';
@@ -16,7 +17,9 @@ export interface ShapeActions {
   onCsv(kind: ModelCsv): void;
   onExportBody(format: 'ply' | 'obj' | 'glb'): void;
   onExportMode(mode: number, steps: number[]): void;
-  onExportModelGltf(): void;
+  onExportModelGltf(parts: ModelGlbParts): void;
+  /** Show the body at the base or fine template resolution. */
+  onResolution(resolution: TemplateResolution): void;
   onSaveModel(): void;
   onCopyLink(): void;
   onBuild(variance: number): void;
@@ -47,6 +50,9 @@ export class ShapePanel {
   private readonly subjectsNote = h('p', { class: 'note', 'data-testid': 'shape-subjects' }, 'No aligned subjects yet.');
   private readonly buildStatus = h('p', { class: 'note', 'data-testid': 'shape-build-status' });
   private readonly picker = h('select', { 'data-testid': 'shape-segment', 'aria-label': 'Part of the body' });
+  private readonly resolutionPicker = h('select', { 'data-testid': 'shape-resolution', 'aria-label': 'Resolution of the body shown' });
+  private readonly resolutionStatus = h('p', { class: 'note', 'data-testid': 'shape-resolution-status' });
+  private readonly resolutionNote = h('p', { class: 'note', 'data-testid': 'shape-resolution-note' });
   private readonly inputs: HTMLInputElement[] = [];
   private parts: ModelPart[] = [];
   private view: PartName = 'whole';
@@ -54,6 +60,8 @@ export class ShapePanel {
   constructor(private readonly actions: ShapeActions) {
     for (const part of ['whole', ...SEGMENTS] as PartName[]) this.picker.append(h('option', { value: part }, LABELS[part]));
     this.picker.addEventListener('change', () => actions.onView(this.picker.value as PartName));
+    this.resolutionPicker.append(h('option', { value: 'base' }, 'base (13,380 vertices)'), h('option', { value: 'fine' }, 'fine (214,050 vertices)'));
+    this.resolutionPicker.addEventListener('change', () => actions.onResolution(this.resolutionPicker.value as TemplateResolution));
     this.root.replaceChildren(
       h('h2', {}, 'Shape space'),
       this.head,
@@ -90,6 +98,9 @@ export class ShapePanel {
     this.root.replaceChildren(
       h('h2', {}, 'Shape space'),
       this.head,
+      h('div', { class: 'row' }, h('label', {}, 'Resolution ', this.resolutionPicker)),
+      this.resolutionStatus,
+      this.resolutionNote,
       h('div', { class: 'row' }, this.picker),
       h('div', { class: 'row' }, button('Reset to mean', 'shape-reset', () => this.actions.onReset()), button('Random body', 'shape-random', () => this.actions.onRandom())),
       this.sliders,
@@ -101,7 +112,8 @@ export class ShapePanel {
       h('h2', {}, 'Export'),
       h('div', { class: 'row' }, button('Body PLY', 'shape-export-ply', () => this.actions.onExportBody('ply')), button('OBJ', 'shape-export-obj', () => this.actions.onExportBody('obj')), button('glTF', 'shape-export-glb', () => this.actions.onExportBody('glb'))),
       h('div', { class: 'row' }, modeSelect, steps, button('Along mode (glTF)', 'export-along', () => this.actions.onExportMode(Number(modeSelect.value), parseSteps(steps.value)))),
-      h('div', { class: 'row' }, button('Model as glTF morph targets', 'export-model-gltf', () => this.actions.onExportModelGltf())),
+      h('div', { class: 'row' }, button('Model as glTF morph targets', 'export-model-gltf', () => this.actions.onExportModelGltf('whole')), button('With the six segments', 'export-model-parts-gltf', () => this.actions.onExportModelGltf('all'))),
+      h('p', { class: 'note' }, 'The second file holds seven meshes: the whole body and, 1 m beside it, the six segment models, each with its own modes as morph targets (weight = σ).'),
       h('h2', {}, 'Link'),
       h('div', { class: 'row' }, button('Copy link', 'copy-link', () => this.actions.onCopyLink()), this.linkField),
       this.linkNote,
@@ -165,8 +177,21 @@ export class ShapePanel {
     return this.view;
   }
 
-  /** Readings of the body on screen. */
-  showBody(body: ReconstructedBody, vertexCount: number): void {
+  /** The resolution the body is shown at; `vertexCount` of that body. */
+  showResolution(resolution: TemplateResolution, vertexCount: number): void {
+    this.resolutionPicker.value = resolution;
+    this.resolutionNote.textContent =
+      resolution === 'fine'
+        ? `The model is mapped exactly to the fine template (${vertexCount.toLocaleString('en')} vertices: every mean and mode through the subdivision stencils). Measurements are taken on the base vertices, which are the first vertices of the fine body and sit exactly where the base body's do.`
+        : '';
+  }
+
+  showResolutionStatus(text: string): void {
+    this.resolutionStatus.textContent = text;
+  }
+
+  /** Readings of the body on screen; `roundTripMs`: request to vertex buffers on the UI thread. */
+  showBody(body: ReconstructedBody, vertexCount: number, roundTripMs: number): void {
     const m = body.measurements;
     const fact = (label: string, testid: string, value: string) => [h('dt', {}, label), h('dd', { 'data-testid': testid }, value)];
     const seam = body.seam.segments && body.seam.max_jump > 0 ? `${(body.seam.max_jump * 1000).toFixed(2)} mm (${body.seam.segments.join(' / ')})` : '0 mm';
@@ -178,8 +203,10 @@ export class ShapePanel {
       ...fact('Arm length', 'measure-arm', cm(m.arm_length)),
       ...fact('Inseam', 'measure-inseam', cm(m.inseam)),
       ...fact('Largest seam jump', 'seam-jump', seam),
-      ...fact('Reconstruction', 'reconstruct-ms', `${body.reconstructMs.toFixed(2)} ms`),
+      ...fact('Reconstruction', 'reconstruct-ms', `${body.reconstructMs.toFixed(2)} ms (${body.rebuilt ? 'full rebuild' : `${body.deltas} rank-1 update${body.deltas === 1 ? '' : 's'}`})`),
+      ...fact('Normals', 'normals-ms', `${body.normalsMs.toFixed(1)} ms`),
       ...fact('Measuring', 'measure-ms', `${body.measureMs.toFixed(1)} ms`),
+      ...fact('Round trip', 'round-trip-ms', `${roundTripMs.toFixed(1)} ms`),
       ...fact('Vertices', 'shape-vertices', String(vertexCount)),
     );
   }

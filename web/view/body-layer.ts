@@ -42,9 +42,16 @@ export class BodyLayer {
     this.group.name = name;
   }
 
-  /** Applies `content`; geometry is rebuilt only when a new mesh object is given. */
+  /**
+   * Applies `content`. A new mesh object with the same triangles array and vertex count as the
+   * one shown (a morphed body) only swaps the vertex buffers' arrays; any other new mesh
+   * rebuilds the geometry.
+   */
   update(content: BodyContent): void {
-    if (content.mesh !== undefined && content.mesh !== this.source) this.setMesh(content.mesh, content.colour);
+    if (content.mesh !== undefined && content.mesh !== this.source) {
+      if (content.mesh && this.sameTopology(content.mesh)) this.morphMesh(content.mesh);
+      else this.setMesh(content.mesh, content.colour);
+    }
     if (this.mesh && content.meshScale !== undefined) this.mesh.scale.setScalar(content.meshScale);
     if (content.vertexColours !== undefined) this.setVertexColours(content.vertexColours);
     if (content.opacity !== undefined) this.setOpacity(content.opacity);
@@ -57,6 +64,10 @@ export class BodyLayer {
     }
     if (content.landmarks !== undefined) this.landmarks = content.landmarks;
     this.rebuildMarkers();
+  }
+
+  get vertexCount(): number {
+    return this.source ? this.source.positions.length / 3 : 0;
   }
 
   get triangleCount(): number {
@@ -128,6 +139,30 @@ export class BodyLayer {
     this.mesh = new THREE.Mesh(geometry, material);
     this.mesh.name = 'body-mesh';
     this.group.add(this.mesh);
+  }
+
+  private sameTopology(body: BodyMesh): boolean {
+    const old = this.source;
+    return Boolean(
+      this.mesh && old && body.triangles === old.triangles && body.positions.length === old.positions.length && Boolean(body.normals) === Boolean(old.normals),
+    );
+  }
+
+  /** New positions (and normals) for the same mesh: the arrays are adopted, not copied. */
+  private morphMesh(body: BodyMesh): void {
+    const geometry = this.mesh!.geometry;
+    const position = geometry.getAttribute('position') as THREE.BufferAttribute;
+    position.array = body.positions;
+    position.needsUpdate = true;
+    if (body.normals) {
+      const normal = geometry.getAttribute('normal') as THREE.BufferAttribute;
+      normal.array = body.normals;
+      normal.needsUpdate = true;
+    } else geometry.computeVertexNormals();
+    geometry.computeBoundingBox();
+    // The box's sphere is looser than computeBoundingSphere's but needs no second pass.
+    geometry.boundingSphere = geometry.boundingBox!.getBoundingSphere(new THREE.Sphere());
+    this.source = body;
   }
 
   private setVertexColours(colours: Float32Array | null): void {

@@ -58,6 +58,7 @@ export class Viewer {
     }
     layer.update(content);
     this.container.dataset[`${key}Triangles`] = String(layer.triangleCount);
+    this.container.dataset[`${key}Vertices`] = String(layer.vertexCount);
     this.container.dataset[`${key}Markers`] = String(layer.markerCount);
     this.container.dataset[`${key}Visible`] = String(layer.visible);
     this.container.dataset[`${key}Coloured`] = String(layer.coloured);
@@ -74,6 +75,7 @@ export class Viewer {
     layer.dispose();
     this.layers.delete(key);
     delete this.container.dataset[`${key}Triangles`];
+    delete this.container.dataset[`${key}Vertices`];
     delete this.container.dataset[`${key}Markers`];
     delete this.container.dataset[`${key}Visible`];
     this.placeGrid();

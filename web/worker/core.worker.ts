@@ -104,16 +104,27 @@ self.onmessage = async (event: MessageEvent<CoreRequest>) => {
         post({ id: request.id, type: 'result', result: built }, [built.triangles.buffer]);
         break;
       }
+      case 'morph': {
+        const body = models.morph(request.coefficients, request.rebuild);
+        post({ id: request.id, type: 'result', result: body }, [body.positions.buffer, body.normals.buffer]);
+        break;
+      }
       case 'reconstruct': {
         const body = models.reconstruct(request.coefficients);
         post({ id: request.id, type: 'result', result: body }, [body.positions.buffer, body.normals.buffer]);
+        break;
+      }
+      case 'shapeResolution': {
+        const id = request.id;
+        const shown = models.useResolution(request.resolution, (fraction, label) => post({ id, type: 'progress', fraction, label }));
+        post({ id, type: 'result', result: shown }, [shown.triangles.buffer]);
         break;
       }
       case 'modelCsv':
         post({ id: request.id, type: 'result', result: models.modelCsv(request.kind) });
         break;
       case 'modelGlb': {
-        const glb = models.modelGlb(request.modes);
+        const glb = models.modelGlb(request.modes, request.parts);
         post({ id: request.id, type: 'result', result: glb }, [glb.buffer]);
         break;
       }

@@ -1,10 +1,23 @@
-// Shape-model requests of the core worker: keeps the one loaded ShapeSpace, reconstructs stitched
-// bodies from slider values, measures them, and exports CSV / GLB / the model file.
+// Shape-model requests of the core worker: keeps the one loaded ShapeSpace, which holds the body
+// shown; morphs it (rank-1 updates per slider move, a full rebuild when asked), switches it to
+// the fine template, measures it, and exports CSV / GLB / the model file.
 import { buildShapeModel, loadShapeModel, type ShapeSpace } from '../pkg/bodyspace.js';
-import type { LoadedModel, ModelCsv, ModelInfo, ReconstructedBody, ShapeCoefficients } from '../shared/shape-results';
+import type {
+  ExportBody,
+  LoadedModel,
+  ModelCsv,
+  ModelGlbParts,
+  ModelInfo,
+  ReconstructedBody,
+  ShapeCoefficients,
+  ShownResolution,
+} from '../shared/shape-results';
+import type { TemplateResolution } from '../shared/template-data';
 import { vertexNormals } from '../shared/vertex-normals';
+import { templateHandle } from './template-handlers';
 
 let space: ShapeSpace | null = null;
+/** Triangles of the body shown (for the normals of export bodies). */
 let triangles: Uint32Array | null = null;
 
 /** Replaces the held model only once the new one is read: a failure leaves the old one. */
@@ -31,7 +44,7 @@ export function buildModel(positions: Float32Array, names: string[], variance: n
   return hold(built, `model of ${names.length} subjects`);
 }
 
-/** Flattens slider values into what `ShapeSpace.reconstruct` takes. */
+/** Flattens slider values into what `ShapeSpace.morph` / `reconstruct` take. */
 function flat(c: ShapeCoefficients): [Float64Array, Float64Array, Int32Array] {
   const counts = new Int32Array(6).fill(-1);
   const values: number[] = [];
@@ -44,23 +57,58 @@ function flat(c: ShapeCoefficients): [Float64Array, Float64Array, Int32Array] {
   return [Float64Array.from(c.whole), Float64Array.from(values), counts];
 }
 
-export function reconstruct(c: ShapeCoefficients): ReconstructedBody {
+/** Moves the body shown: the core keeps it, so a slider move is a rank-1 update. */
+export function morph(c: ShapeCoefficients, rebuild: boolean): ReconstructedBody {
   const model = current();
+  const start = performance.now();
   const [whole, segments, counts] = flat(c);
   const t0 = performance.now();
-  const positions = model.reconstruct(whole, segments, counts);
+  const update = JSON.parse(model.morph(whole, segments, counts, rebuild)) as { rebuilt: boolean; deltas: number };
   const t1 = performance.now();
-  const measurements = JSON.parse(model.measureJson()) as ReconstructedBody['measurements'];
-  const seam = JSON.parse(model.seamJson(whole, segments, counts)) as ReconstructedBody['seam'];
+  const positions = model.positions();
   const t2 = performance.now();
+  const normals = model.normals();
+  const t3 = performance.now();
+  const measurements = JSON.parse(model.measureJson()) as ReconstructedBody['measurements'];
+  const seam = JSON.parse(model.seamJson()) as ReconstructedBody['seam'];
+  const t4 = performance.now();
   return {
     positions,
-    normals: vertexNormals(positions, triangles!),
+    normals,
     measurements,
     seam,
     reconstructMs: t1 - t0,
-    measureMs: t2 - t1,
+    rebuilt: update.rebuilt,
+    deltas: update.deltas,
+    copyMs: t2 - t1,
+    normalsMs: t3 - t2,
+    measureMs: t4 - t3,
+    workerMs: performance.now() - start,
   };
+}
+
+/** A body for export at the shown resolution, leaving the body shown as it is. */
+export function reconstruct(c: ShapeCoefficients): ExportBody {
+  const [whole, segments, counts] = flat(c);
+  const positions = current().reconstruct(whole, segments, counts);
+  return { positions, normals: vertexNormals(positions, triangles!) };
+}
+
+/**
+ * Shows the body at `resolution`. The fine template is the worker's cached one (built on first
+ * use, shared with the template view); mapping the model reports its fraction done.
+ */
+export function useResolution(
+  resolution: TemplateResolution,
+  progress: (fraction: number, label: string) => void,
+): ShownResolution {
+  const model = current();
+  const label = 'Mapping the model to the fine template';
+  if (resolution === 'fine') progress(0, 'Building the fine template');
+  const template = templateHandle(resolution === 'fine' ? 'fine' : 'base');
+  model.useResolution(resolution, template, (f: number) => progress(0.2 + 0.8 * f, label));
+  triangles = model.triangles();
+  return { resolution: model.resolution as 'base' | 'fine', vertexCount: model.vertexCount, triangles: triangles.slice() };
 }
 
 export function modelCsv(kind: ModelCsv): string {
@@ -70,8 +118,8 @@ export function modelCsv(kind: ModelCsv): string {
   return model.qualityCsv();
 }
 
-export function modelGlb(modes: number): Uint8Array {
-  return current().modelGlb(modes);
+export function modelGlb(modes: number, parts: ModelGlbParts): Uint8Array {
+  return parts === 'all' ? current().partsGlb(modes) : current().modelGlb(modes);
 }
 
 export function modelFile(): Uint8Array {

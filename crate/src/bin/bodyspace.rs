@@ -41,6 +41,9 @@ mod native {
         Synth(bodyspace::cli::synth::SynthArgs),
         /// Build the whole-body and six segment PCA models from fits in template vertex order.
         BuildModel(bodyspace::cli::build_model::BuildModelArgs),
+        /// Write a model file as binary glTF, modes as morph targets: the whole-body model or
+        /// (`--parts all`, the default) the whole body and the six segments, one mesh each.
+        ExportGltf(bodyspace::cli::export_gltf::ExportGltfArgs),
         /// Print a fit's whole-body and segment coefficients as JSON.
         Project(bodyspace::cli::project::ProjectArgs),
         /// Write the stitched body for given coefficients as PLY (prints seam and measurements).
@@ -55,6 +58,7 @@ mod native {
             Command::Template(args) => bodyspace::cli::template::run(&args),
             Command::Synth(args) => bodyspace::cli::synth::run(&args),
             Command::BuildModel(args) => bodyspace::cli::build_model::run(&args),
+            Command::ExportGltf(args) => bodyspace::cli::export_gltf::run(&args),
             Command::Project(args) => bodyspace::cli::project::run(&args),
             Command::Reconstruct(args) => bodyspace::cli::reconstruct::run(&args),
         };

@@ -1,26 +1,38 @@
-//! Shape models for JavaScript: load a model file (or build one from fits), reconstruct stitched
-//! bodies from slider values in σ units, measure them, and export CSV / GLB / the model file.
+//! Shape models for JavaScript: load a model file (`model_build.rs` builds one from fits), morph the stitched
+//! body shown as sliders move, measure it, and export CSV / GLB / the model file.
 //!
-//! A [`ShapeSpace`] lives in the worker for as long as the model is shown; every call copies its
-//! result out of WASM memory.
+//! A [`ShapeSpace`] lives in the worker for as long as the model is shown. It holds the loaded
+//! model, optionally that model mapped to the template's `fine` resolution
+//! ([`crate::pca::subdivide`]), and a [`Morph`] — the current coefficients and stitched body of
+//! whichever of the two is shown — so a slider move is one rank-1 update. Every array handed
+//! out is a copy of WASM memory.
 
-use js_sys::{Float32Array, Uint32Array, Uint8Array};
-use nalgebra::Point3;
+use js_sys::{Float32Array, Function, Uint32Array, Uint8Array};
 use serde::Serialize;
 use wasm_bindgen::prelude::*;
 
+use crate::mesh::normals::NormalTopology;
 use crate::pca::export::{eigenvalues_csv, quality_csv, scores_csv};
 use crate::pca::file::{read_model, read_model_for, write_model, BasisPrecision};
-use crate::pca::gltf::model_glb;
+use crate::pca::gltf::{model_glb, parts_glb};
 use crate::pca::measure::{girth_triangles, measure, MeasureLandmarks, MeasureParams};
+use crate::pca::subdivide::{subdivide_model, FineTemplate};
 use crate::pca::{
-    build_body_model, BodyModel, BuildParams, Coefficients, QualityCurves, ShapeModel,
-    TemplateIdentity, TrainingSet,
+    BodyModel, BuildParams, Coefficients, Morph, QualityCurves, SeamReport, ShapeModel,
+    TemplateIdentity,
 };
 use crate::template::{Resolution, Segment, Template};
 
-fn js(e: impl std::fmt::Display) -> JsError {
+use super::template::TemplateHandle;
+
+pub(super) fn js(e: impl std::fmt::Display) -> JsError {
     JsError::new(&e.to_string())
+}
+
+/// The checked triangles of `model` for its vertex normals.
+fn topology_of(model: &BodyModel) -> Result<NormalTopology, JsError> {
+    NormalTopology::new(&model.triangles, model.template.vertex_count)
+        .ok_or_else(|| js("a triangle of the model indexes a vertex beyond its template"))
 }
 
 fn template_at(resolution: Resolution) -> Result<Template, JsError> {
@@ -64,26 +76,48 @@ struct ModelInfo<'a> {
     parts: Vec<PartInfo<'a>>,
 }
 
-/// A loaded shape model with the template data its measurements need.
+/// A loaded shape model, the body it shows and the template data its measurements need.
 #[wasm_bindgen]
 pub struct ShapeSpace {
+    /// The model as loaded or built (files, CSV, GLB, seam report and measurements use it).
     model: BodyModel,
+    /// `model` mapped to the fine template, once asked for.
+    fine: Option<BodyModel>,
+    /// Whether the body is shown (morphed) at fine.
+    at_fine: bool,
+    /// The shown body's coefficients and positions, on `fine` when `at_fine`, else on `model`.
+    morph: Morph,
     landmarks: MeasureLandmarks,
     sections: Vec<u32>,
-    positions: Vec<f32>,
+    /// Triangles of the body shown, checked once, and its normals.
+    topology: NormalTopology,
+    normals: Vec<f32>,
 }
 
 impl ShapeSpace {
-    fn new(model: BodyModel, template: &Template) -> Result<ShapeSpace, JsError> {
+    pub(super) fn new(model: BodyModel, template: &Template) -> Result<ShapeSpace, JsError> {
         let landmarks = MeasureLandmarks::from_named(template.landmark_vertices()).map_err(js)?;
         let sections = girth_triangles(&model.triangles, &model.segment_weights);
-        let positions = vec![0.0; 3 * model.template.vertex_count];
+        let morph = Morph::new(&model, &Coefficients::default()).map_err(js)?;
+        let topology = topology_of(&model)?;
         Ok(ShapeSpace {
             model,
+            fine: None,
+            at_fine: false,
+            morph,
             landmarks,
             sections,
-            positions,
+            topology,
+            normals: Vec::new(),
         })
+    }
+
+    /// The model whose body is shown.
+    fn shown(&self) -> &BodyModel {
+        match (&self.fine, self.at_fine) {
+            (Some(fine), true) => fine,
+            _ => &self.model,
+        }
     }
 
     /// σ-unit values to model coefficients; `segment_counts[s] < 0` means "not overridden".
@@ -134,19 +168,26 @@ impl ShapeSpace {
 
 #[wasm_bindgen]
 impl ShapeSpace {
-    /// Vertex count `#V` of the model's template resolution.
+    /// Vertex count `#V` of the body shown (the model's resolution, or fine).
     #[wasm_bindgen(getter, js_name = vertexCount)]
     pub fn vertex_count(&self) -> u32 {
-        self.model.template.vertex_count as u32
+        self.shown().template.vertex_count as u32
     }
 
-    /// `#F·3` triangle vertex indices (copied out).
+    /// Resolution of the body shown: the model's own (`base`, `fine`) or `fine` once mapped.
+    #[wasm_bindgen(getter)]
+    pub fn resolution(&self) -> String {
+        self.shown().template.resolution.clone()
+    }
+
+    /// `#F·3` triangle vertex indices of the body shown (copied out).
     pub fn triangles(&self) -> Uint32Array {
-        let flat: Vec<u32> = self.model.triangles.iter().flatten().copied().collect();
+        let flat: Vec<u32> = self.shown().triangles.iter().flatten().copied().collect();
         Uint32Array::from(flat.as_slice())
     }
 
-    /// Template identity, settings, subjects and per-part variances and quality curves, as JSON.
+    /// Template identity, settings, subjects and per-part variances and quality curves of the
+    /// loaded model, as JSON.
     #[wasm_bindgen(js_name = infoJson)]
     pub fn info_json(&self) -> Result<String, JsError> {
         let mut parts = vec![part("whole", &self.model.whole)];
@@ -163,42 +204,129 @@ impl ShapeSpace {
         serde_json::to_string(&info).map_err(js)
     }
 
-    /// Reconstructs the stitched body: whole-body values in σ units (shorter = trailing zeros),
-    /// `segment_sigma` the overridden segments' σ values concatenated in segment order, and
-    /// `segment_counts` (6 entries) how many belong to each (negative: not overridden).
-    /// Returns the `#V·3` positions in metres (copied out); the body is kept for `measureJson`.
-    pub fn reconstruct(
+    /// Shows the body at `resolution` ("base" or "fine") from now on, keeping its coefficients.
+    /// A model built at base is mapped to fine exactly through the subdivision stencils of
+    /// `fine_template` (the worker's cached fine template) on first use; `on_progress(fraction)`
+    /// is called as the seven models' means and modes are mapped. A model built at fine has no
+    /// base body to show.
+    #[wasm_bindgen(js_name = useResolution)]
+    pub fn use_resolution(
         &mut self,
+        resolution: &str,
+        fine_template: &TemplateHandle,
+        on_progress: &Function,
+    ) -> Result<(), JsError> {
+        let resolution: Resolution = resolution
+            .parse()
+            .map_err(|e| js(format!("resolution {resolution:?}: {e}")))?;
+        let own = self.model.template.resolution.as_str();
+        let at_fine = resolution == Resolution::Fine && own == Resolution::Base.name();
+        if resolution == Resolution::Base && own != Resolution::Base.name() {
+            return Err(js(format!(
+                "this model was built at {own} resolution; it has no base body to show"
+            )));
+        }
+        if at_fine && self.fine.is_none() {
+            let base = Template::embedded().map_err(|e| js(format!("embedded template: {e}")))?;
+            let target = FineTemplate::of_templates(&base, &fine_template.template).map_err(js)?;
+            let mut progress = |f: f64| {
+                // A failing callback only loses a progress report.
+                let _ = on_progress.call1(&JsValue::NULL, &JsValue::from_f64(f));
+            };
+            self.fine = Some(subdivide_model(&self.model, &target, &mut progress).map_err(js)?);
+        }
+        if at_fine != self.at_fine {
+            let coefficients = self.morph.coefficients().clone();
+            self.at_fine = at_fine;
+            self.morph = Morph::new(self.shown(), &coefficients).map_err(js)?;
+            self.topology = topology_of(self.shown())?;
+        }
+        Ok(())
+    }
+
+    /// Moves the body shown to the coefficients given as σ values: `whole_sigma` (shorter =
+    /// trailing zeros), `segment_sigma` the overridden segments' values concatenated in segment
+    /// order, `segment_counts` (6 entries) how many belong to each (negative: not overridden).
+    /// With `rebuild` the body is reconstructed from scratch (reset, random body, a link, a new
+    /// model); otherwise each changed coefficient is one rank-1 update, unless the set of
+    /// overridden segments changed or more than `pca::morph::MAX_DELTAS` values did. Returns
+    /// `{rebuilt, deltas}` as JSON; `positions()` then holds the body.
+    pub fn morph(
+        &mut self,
+        whole_sigma: &[f64],
+        segment_sigma: &[f64],
+        segment_counts: &[i32],
+        rebuild: bool,
+    ) -> Result<String, JsError> {
+        let c = self.coefficients(whole_sigma, segment_sigma, segment_counts)?;
+        let model = match (&self.fine, self.at_fine) {
+            (Some(fine), true) => fine,
+            _ => &self.model,
+        };
+        let update = if rebuild {
+            self.morph.rebuild(model, &c)
+        } else {
+            self.morph.update(model, &c)
+        }
+        .map_err(js)?;
+        serde_json::to_string(&update).map_err(js)
+    }
+
+    /// `#V·3` positions of the body shown, metres (copied out).
+    pub fn positions(&self) -> Float32Array {
+        Float32Array::from(self.morph.positions())
+    }
+
+    /// `#V·3` unit vertex normals of the body shown (computed now, copied out).
+    pub fn normals(&mut self) -> Float32Array {
+        let positions = self.morph.positions();
+        self.normals.resize(positions.len(), 0.0);
+        self.topology
+            .vertex_normals_into(positions, &mut self.normals);
+        Float32Array::from(self.normals.as_slice())
+    }
+
+    /// A body for export, without touching the one shown: same arguments as `morph`, positions
+    /// (`#V·3`, metres, at the shown resolution) copied out.
+    pub fn reconstruct(
+        &self,
         whole_sigma: &[f64],
         segment_sigma: &[f64],
         segment_counts: &[i32],
     ) -> Result<Float32Array, JsError> {
         let c = self.coefficients(whole_sigma, segment_sigma, segment_counts)?;
-        self.model
-            .reconstruct_into(&c, &mut self.positions)
-            .map_err(js)?;
-        Ok(Float32Array::from(self.positions.as_slice()))
+        let model = self.shown();
+        let mut out = vec![0.0f32; 3 * model.template.vertex_count];
+        model.reconstruct_into(&c, &mut out).map_err(js)?;
+        Ok(Float32Array::from(out.as_slice()))
     }
 
-    /// Seam quality of the same coefficients as `reconstruct`, as JSON
-    /// `{max_jump, segments: [a, b] | null, vertex}` (metres).
+    /// Seam quality of the body shown, on the loaded model, as JSON
+    /// `{max_jump, segments: [a, b] | null, vertex}` (metres); 0 and `null` when no segment has
+    /// its own coefficients (every segment then is the whole body).
     #[wasm_bindgen(js_name = seamJson)]
-    pub fn seam_json(
-        &self,
-        whole_sigma: &[f64],
-        segment_sigma: &[f64],
-        segment_counts: &[i32],
-    ) -> Result<String, JsError> {
-        let c = self.coefficients(whole_sigma, segment_sigma, segment_counts)?;
-        let seam = self.model.seam_report(&c).map_err(js)?;
+    pub fn seam_json(&self) -> Result<String, JsError> {
+        let c = self.morph.coefficients();
+        let seam = if c.overridden().iter().any(|&o| o) {
+            self.model.seam_report(c).map_err(js)?
+        } else {
+            SeamReport {
+                max_jump: 0.0,
+                segments: None,
+                vertex: None,
+            }
+        };
         serde_json::to_string(&seam).map_err(js)
     }
 
-    /// Measurements of the last reconstructed body as JSON (metres; girths may be `null`).
+    /// Measurements of the body shown as JSON (metres; girths may be `null`), taken on the
+    /// loaded model's vertices and triangles: at fine, on the base vertices, which are the first
+    /// vertices of the fine body and sit exactly where the base body's do.
     #[wasm_bindgen(js_name = measureJson)]
     pub fn measure_json(&self) -> Result<String, JsError> {
+        let own = 3 * self.model.template.vertex_count;
         let m = measure(
-            &self.positions,
+            &self.morph.positions()[..own],
             &self.model.triangles,
             &self.sections,
             &self.landmarks,
@@ -232,6 +360,13 @@ impl ShapeSpace {
         Uint8Array::from(model_glb(&self.model, modes as usize).as_slice())
     }
 
+    /// The whole-body model and the six segment models as one GLB (seven meshes, each with its
+    /// first `modes` modes at +1σ as morph targets; layout in `pca::gltf`).
+    #[wasm_bindgen(js_name = partsGlb)]
+    pub fn parts_glb(&self, modes: u32) -> Uint8Array {
+        Uint8Array::from(parts_glb(&self.model, modes as usize).as_slice())
+    }
+
     /// The model as a version-1 model file (f32 basis).
     #[wasm_bindgen(js_name = fileBytes)]
     pub fn file_bytes(&self) -> Uint8Array {
@@ -250,71 +385,5 @@ pub fn load_shape_model(bytes: &[u8], file_name: &str) -> Result<ShapeSpace, JsE
     let template = template_at(resolution)?;
     let model =
         read_model_for(bytes, &TemplateIdentity::of_template(&template)).map_err(|e| named(&e))?;
-    ShapeSpace::new(model, &template)
-}
-
-/// Builds a model from `count` fits in template vertex order (`positions` = count·#V·3, metres),
-/// keeping modes up to `variance` (0 < variance ≤ 1). `names_json` is a JSON array of names.
-#[wasm_bindgen(js_name = buildShapeModel)]
-pub fn build_shape_model(
-    positions: &[f32],
-    count: u32,
-    names_json: &str,
-    variance: f64,
-    compute_quality: bool,
-) -> Result<ShapeSpace, JsError> {
-    let count = count as usize;
-    if count < 2 {
-        return Err(js("a shape model needs at least 2 aligned subjects"));
-    }
-    if !(variance > 0.0 && variance <= 1.0) {
-        return Err(js("the variance to keep must be in (0, 1]"));
-    }
-    if positions.len() % (3 * count) != 0 {
-        return Err(js("the subjects' positions do not split into equal bodies"));
-    }
-    let vertex_count = positions.len() / (3 * count);
-    let base = Template::embedded().map_err(|e| js(format!("embedded template: {e}")))?;
-    let template = if base.mesh().vertex_count() == vertex_count {
-        base
-    } else {
-        let fine = base.at_resolution(Resolution::Fine);
-        if fine.mesh().vertex_count() != vertex_count {
-            return Err(js(format!(
-                "{vertex_count} vertices per subject match no template resolution (base {}, fine {}); fitted meshes must be in template vertex order",
-                base.mesh().vertex_count(),
-                fine.mesh().vertex_count()
-            )));
-        }
-        fine
-    };
-    let names: Vec<String> = serde_json::from_str(names_json)
-        .map_err(|e| js(format!("subject names are not a JSON list: {e}")))?;
-    if names.len() != count {
-        return Err(js("one name per subject is needed"));
-    }
-    let shapes = positions
-        .chunks_exact(3 * vertex_count)
-        .map(|body| {
-            body.chunks_exact(3)
-                .map(|p| Point3::new(p[0] as f64, p[1] as f64, p[2] as f64))
-                .collect()
-        })
-        .collect();
-    let set = TrainingSet {
-        template: TemplateIdentity::of_template(&template),
-        triangles: template.mesh().triangles.clone(),
-        segment_weights: (0..vertex_count as u32)
-            .map(|v| template.segment_weights(v))
-            .collect(),
-        names,
-        shapes,
-    };
-    let params = BuildParams {
-        variance,
-        compute_quality,
-        ..BuildParams::default()
-    };
-    let model = build_body_model(&set, &params).map_err(js)?;
     ShapeSpace::new(model, &template)
 }

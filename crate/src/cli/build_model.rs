@@ -1,5 +1,5 @@
-//! `bodyspace build-model --fits DIR --out MODEL [--variance 0.99] [--scale] [--f16] [--csv DIR]
-//! [--gltf FILE.glb]`.
+//! `bodyspace build-model --fits DIR --out MODEL [--variance 0.99 | --modes N] [--scale] [--f16]
+//! [--csv DIR] [--gltf FILE.glb]`.
 
 use super::model::{read_fit, template_for_vertex_count, template_identity};
 use crate::pca::export::{eigenvalues_csv, quality_csv, scores_csv};
@@ -26,8 +26,12 @@ pub struct BuildModelArgs {
     #[arg(long)]
     pub scale: bool,
     /// Cap on the modes kept per model.
-    #[arg(long)]
+    #[arg(long, conflicts_with = "modes")]
     pub max_modes: Option<usize>,
+    /// Keep exactly min(N, subjects − 1) modes per model, overriding the variance cut
+    /// (recorded in the model's settings).
+    #[arg(long, value_parser = clap::value_parser!(u32).range(1..))]
+    pub modes: Option<u32>,
     /// Store the basis in half precision (half the file size).
     #[arg(long)]
     pub f16: bool,
@@ -119,6 +123,7 @@ pub fn run(args: &BuildModelArgs) -> Result<(), String> {
     let params = BuildParams {
         variance: args.variance,
         max_modes: args.max_modes,
+        modes: args.modes.map(|n| n as usize),
         gpa: GpaParams {
             pose: if args.scale {
                 PoseRemoval::Similarity

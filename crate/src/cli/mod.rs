@@ -3,6 +3,7 @@
 pub mod align;
 pub mod align_fine;
 pub mod build_model;
+pub mod export_gltf;
 pub mod info;
 pub mod model;
 pub mod project;

@@ -1,8 +1,9 @@
 //! Readers and writers of the field's file formats: scans (PLY, OBJ, STL, gzip) and landmarks
-//! (CSV, CAESAR .lnd, JSON). Every reader is a pure function of bytes and a file name (the name
+//! (CSV, CAESAR .lnd, JSON); the binary glTF container. Every reader is a pure function of bytes and a file name (the name
 //! helps format detection and starts every error message).
 
 pub mod error;
+pub mod glb_write;
 pub mod gzip;
 pub mod landmarks_csv;
 pub mod landmarks_json;

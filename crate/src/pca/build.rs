@@ -24,6 +24,11 @@ pub struct BuildParams {
     pub variance: f64,
     /// Optional hard cap on the modes kept per model; default none.
     pub max_modes: Option<usize>,
+    /// Keep exactly this many leading modes per model (capped by the N−1 that exist),
+    /// overriding `variance` and `max_modes`; default none. Files written before this field
+    /// existed read as `None`.
+    #[serde(default)]
+    pub modes: Option<usize>,
     /// Pose removal before PCA; default rigid (rotation + translation).
     pub gpa: GpaParams,
     /// Compute the quality curves (the expensive part of a build); default true.
@@ -36,6 +41,7 @@ impl Default for BuildParams {
         Self {
             variance: 0.99,
             max_modes: None,
+            modes: None,
             gpa: GpaParams::default(),
             compute_quality: true,
             quality: QualityParams::default(),
@@ -99,7 +105,10 @@ fn shape_model(
     params: &BuildParams,
     quality: QualityCurves,
 ) -> ShapeModel {
-    let m = modes_for_variance(&pca.variances, params.variance, params.max_modes);
+    let m = match params.modes {
+        Some(n) => n.min(pca.variances.len()),
+        None => modes_for_variance(&pca.variances, params.variance, params.max_modes),
+    };
     ShapeModel {
         vertex_indices,
         mean: pca.mean.iter().map(|&x| x as f32).collect(),
@@ -138,6 +147,11 @@ pub fn build_body_model(set: &TrainingSet, params: &BuildParams) -> Result<BodyM
             "variance threshold {} is not in (0, 1]",
             params.variance
         )));
+    }
+    if params.modes == Some(0) {
+        return Err(PcaError::BadParameter(
+            "a model keeps at least 1 mode (modes = 0)".into(),
+        ));
     }
     set.validate()?;
     let refs: Vec<&[Point3<f64>]> = set.shapes.iter().map(|s| s.as_slice()).collect();

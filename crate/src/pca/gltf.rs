@@ -1,100 +1,124 @@
-//! The whole-body model as a binary glTF 2.0 (GLB) with its modes as morph targets, which
-//! three.js (`GLTFLoader`, `mesh.morphTargetInfluences`) and Blender (shape keys) open as is.
+//! Shape models as binary glTF 2.0 (GLB) with their modes as morph targets, which three.js
+//! (`GLTFLoader`, `mesh.morphTargetInfluences`) and Blender (shape keys) open as is.
 //!
-//! The base mesh is the mean S̄; morph target k is the displacement √λₖ·φₖ, so a morph weight
-//! equals the slider value in standard deviations (weight 2 = +2σ). Target names are in
-//! `mesh.extras.targetNames` (the convention three.js reads).
+//! Each model is one mesh: the base mesh is the mean S̄, morph target k is the displacement
+//! √λₖ·φₖ, so a morph weight equals the slider value in standard deviations (weight 2 = +2σ).
+//! Target names are in `mesh.extras.targetNames` (the convention three.js reads).
+//!
+//! * [`model_glb`]: the whole-body model alone (node and mesh `body`).
+//! * [`parts_glb`]: all seven models in one file. Node `whole` holds the whole-body mesh at the
+//!   origin; node `segments` holds one child node and mesh per segment (`head`, `left_arm`, …),
+//!   each over its own vertices (the template vertices of the segment, ascending) and the
+//!   triangles whose three vertices are all in the segment, so neighbouring segments overlap in
+//!   their bands as the models do. The `segments` node is translated 1 m along +x so the
+//!   two bodies stand side by side; vertex data are in the model frame (metres, y up).
 
-use super::model::BodyModel;
-use serde_json::json;
+use super::model::{BodyModel, ShapeModel};
+use crate::io::glb_write::GlbWriter;
+use crate::template::Segment;
+use serde_json::{json, Value};
 
-const ARRAY_BUFFER: u32 = 34962;
-const ELEMENT_ARRAY_BUFFER: u32 = 34963;
-const FLOAT: u32 = 5126;
-const UNSIGNED_INT: u32 = 5125;
-
-fn bounds(xyz: &[f32]) -> (Vec<f32>, Vec<f32>) {
-    let mut min = vec![f32::INFINITY; 3];
-    let mut max = vec![f32::NEG_INFINITY; 3];
-    for p in xyz.chunks_exact(3) {
-        for a in 0..3 {
-            min[a] = min[a].min(p[a]);
-            max[a] = max[a].max(p[a]);
-        }
-    }
-    if xyz.is_empty() {
-        return (vec![0.0; 3], vec![0.0; 3]);
-    }
-    (min, max)
-}
+/// Offset of the `segments` node from the whole body in [`parts_glb`], metres along +x.
+pub const SEGMENTS_OFFSET_M: f32 = 1.0;
 
 /// GLB bytes of the whole-body model with its first `modes` modes (all kept modes if larger).
 pub fn model_glb(model: &BodyModel, modes: usize) -> Vec<u8> {
-    let whole = &model.whole;
-    let m = modes.min(whole.mode_count());
-    let v = whole.vertex_count();
-    let mut bin: Vec<u8> = Vec::new();
-    let mut views = Vec::new();
-    let mut accessors = Vec::new();
-    let mut push_vec3 = |bin: &mut Vec<u8>, data: &[f32]| {
-        let (min, max) = bounds(data);
-        views.push(json!({"buffer": 0, "byteOffset": bin.len(), "byteLength": data.len() * 4, "target": ARRAY_BUFFER}));
-        data.iter()
-            .for_each(|x| bin.extend_from_slice(&x.to_le_bytes()));
-        accessors.push(json!({"bufferView": views.len() - 1, "componentType": FLOAT, "count": v, "type": "VEC3", "min": min, "max": max}));
-        accessors.len() - 1
-    };
-    let position = push_vec3(&mut bin, &whole.mean);
-    let targets: Vec<serde_json::Value> = (0..m)
-        .map(|k| {
-            let sd = whole.variances[k].sqrt() as f32;
-            let displacement: Vec<f32> = whole.mode(k).iter().map(|p| p * sd).collect();
-            json!({"POSITION": push_vec3(&mut bin, &displacement)})
-        })
-        .collect();
-    let index_offset = bin.len();
-    model
-        .triangles
-        .iter()
-        .flatten()
-        .for_each(|i| bin.extend_from_slice(&i.to_le_bytes()));
-    views.push(json!({"buffer": 0, "byteOffset": index_offset, "byteLength": bin.len() - index_offset, "target": ELEMENT_ARRAY_BUFFER}));
-    accessors.push(json!({"bufferView": views.len() - 1, "componentType": UNSIGNED_INT, "count": 3 * model.triangles.len(), "type": "SCALAR"}));
-    let indices = accessors.len() - 1;
-    let names: Vec<String> = (1..=m).map(|k| format!("mode {k} (+1 sd)")).collect();
-    let document = json!({
+    let mut glb = GlbWriter::new();
+    let indices: Vec<u32> = model.triangles.iter().flatten().copied().collect();
+    let (mesh, variances) = part_mesh(&mut glb, "body", &model.whole, &indices, modes);
+    glb.finish(json!({
         "asset": {"version": "2.0", "generator": "BodySpace shape model"},
         "scene": 0,
         "scenes": [{"nodes": [0]}],
         "nodes": [{"mesh": 0, "name": "body"}],
-        "meshes": [{
-            "name": "body",
-            "primitives": [{"attributes": {"POSITION": position}, "indices": indices, "targets": targets, "mode": 4}],
-            "weights": vec![0.0; m],
-            "extras": {"targetNames": names},
-        }],
-        "buffers": [{"byteLength": bin.len()}],
-        "bufferViews": views,
-        "accessors": accessors,
-        "extras": {"template": model.template, "subjects": model.subjects.len(), "variances": whole.variances[..m].to_vec()},
+        "meshes": [mesh],
+        "extras": {"template": model.template, "subjects": model.subjects.len(), "variances": variances},
+    }))
+}
+
+/// GLB bytes of the whole-body model and the six segment models, each with its first `modes`
+/// modes (all kept modes if larger); layout in the module docs.
+pub fn parts_glb(model: &BodyModel, modes: usize) -> Vec<u8> {
+    let mut glb = GlbWriter::new();
+    let whole_indices: Vec<u32> = model.triangles.iter().flatten().copied().collect();
+    let (whole, whole_variances) =
+        part_mesh(&mut glb, "whole", &model.whole, &whole_indices, modes);
+    let mut meshes = vec![whole];
+    let mut parts = vec![
+        json!({"name": "whole", "vertices": model.whole.vertex_count(), "variances": whole_variances}),
+    ];
+    for s in Segment::ALL {
+        let part = model.segment(s);
+        let indices = segment_triangles(
+            &model.triangles,
+            &part.vertex_indices,
+            model.template.vertex_count,
+        );
+        let (mesh, variances) = part_mesh(&mut glb, s.name(), part, &indices, modes);
+        meshes.push(mesh);
+        parts.push(
+            json!({"name": s.name(), "vertices": part.vertex_count(), "variances": variances}),
+        );
+    }
+    // Node 0: whole; node 1: segments (children 2..8 = meshes 1..7).
+    let mut nodes = vec![
+        json!({"name": "whole", "mesh": 0}),
+        json!({"name": "segments", "translation": [SEGMENTS_OFFSET_M, 0.0, 0.0], "children": (2..2 + Segment::ALL.len()).collect::<Vec<_>>()}),
+    ];
+    for (i, s) in Segment::ALL.iter().enumerate() {
+        nodes.push(json!({"name": s.name(), "mesh": i + 1}));
+    }
+    glb.finish(json!({
+        "asset": {"version": "2.0", "generator": "BodySpace shape model (whole body and six segments)"},
+        "scene": 0,
+        "scenes": [{"nodes": [0, 1]}],
+        "nodes": nodes,
+        "meshes": meshes,
+        "extras": {"template": model.template, "subjects": model.subjects.len(), "parts": parts},
+    }))
+}
+
+/// One model as a glTF mesh named `name`: mean as POSITION, √λₖ·φₖ as morph targets for the
+/// first `modes` modes, `indices` into the model's own vertices. Returns the mesh and the
+/// variances of the exported modes.
+fn part_mesh(
+    glb: &mut GlbWriter,
+    name: &str,
+    part: &ShapeModel,
+    indices: &[u32],
+    modes: usize,
+) -> (Value, Vec<f64>) {
+    let m = modes.min(part.mode_count());
+    let position = glb.vec3(&part.mean);
+    let targets: Vec<Value> = (0..m)
+        .map(|k| {
+            let sd = part.variances[k].sqrt() as f32;
+            let displacement: Vec<f32> = part.mode(k).iter().map(|p| p * sd).collect();
+            json!({"POSITION": glb.vec3(&displacement)})
+        })
+        .collect();
+    let indices = glb.indices(indices);
+    let names: Vec<String> = (1..=m).map(|k| format!("mode {k} (+1 sd)")).collect();
+    let mesh = json!({
+        "name": name,
+        "primitives": [{"attributes": {"POSITION": position}, "indices": indices, "targets": targets, "mode": 4}],
+        "weights": vec![0.0; m],
+        "extras": {"targetNames": names},
     });
-    let mut json_bytes = serde_json::to_vec(&document).unwrap_or_default();
-    while json_bytes.len() % 4 != 0 {
-        json_bytes.push(b' ');
+    (mesh, part.variances[..m].to_vec())
+}
+
+/// The triangles with all three vertices in `subset` (ascending template indices), as flat
+/// indices into the subset.
+fn segment_triangles(triangles: &[[u32; 3]], subset: &[u32], vertex_count: usize) -> Vec<u32> {
+    let mut local = vec![u32::MAX; vertex_count];
+    for (j, &v) in subset.iter().enumerate() {
+        local[v as usize] = j as u32;
     }
-    while bin.len() % 4 != 0 {
-        bin.push(0);
-    }
-    let total = 12 + 8 + json_bytes.len() + 8 + bin.len();
-    let mut out = Vec::with_capacity(total);
-    out.extend_from_slice(b"glTF");
-    out.extend_from_slice(&2u32.to_le_bytes());
-    out.extend_from_slice(&(total as u32).to_le_bytes());
-    out.extend_from_slice(&(json_bytes.len() as u32).to_le_bytes());
-    out.extend_from_slice(b"JSON");
-    out.extend_from_slice(&json_bytes);
-    out.extend_from_slice(&(bin.len() as u32).to_le_bytes());
-    out.extend_from_slice(b"BIN\0");
-    out.extend_from_slice(&bin);
-    out
+    triangles
+        .iter()
+        .map(|t| t.map(|v| local[v as usize]))
+        .filter(|t| t.iter().all(|&j| j != u32::MAX))
+        .flatten()
+        .collect()
 }

@@ -125,16 +125,21 @@ pub fn plane_section(
         let Some(tri) = triangles.get(t as usize) else {
             continue;
         };
-        let Some(p) = tri
-            .iter()
-            .map(|&v| vertex(positions, v))
-            .collect::<Option<Vec<_>>>()
-        else {
+        let (Some(p0), Some(p1), Some(p2)) = (
+            vertex(positions, tri[0]),
+            vertex(positions, tri[1]),
+            vertex(positions, tri[2]),
+        ) else {
             continue;
         };
+        let p = [p0, p1, p2];
         // A vertex exactly on the plane counts as above it, so every crossing is a proper edge cut.
-        let d: Vec<f64> = p.iter().map(|q| q[up_axis] - height).collect();
-        let above: Vec<bool> = d.iter().map(|&x| x >= 0.0).collect();
+        let d = p.map(|q| q[up_axis] - height);
+        let above = d.map(|x| x >= 0.0);
+        // Most triangles lie wholly above or below: nothing to allocate for them.
+        if above[0] == above[1] && above[1] == above[2] {
+            continue;
+        }
         let mut cut = Vec::with_capacity(2);
         for (a, b) in [(0, 1), (1, 2), (2, 0)] {
             if above[a] != above[b] {

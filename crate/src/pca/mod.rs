@@ -6,11 +6,13 @@
 //! * [`build`] — [`build_body_model`] from a [`TrainingSet`]
 //! * [`segments`] — segment vertex subsets and normalised blend weights
 //! * [`stitch`] — mixed whole-body/segment reconstruction, the slider fast path, seam quality
+//! * [`morph`] — the body on screen: held coefficients and positions, slider moves as rank-1 updates
+//! * [`subdivide`] — a model mapped exactly to the template's finer resolution (S̄_fine = S·S̄, φ_fine = S·φ)
 //! * [`project`] — coefficients of a new mesh
 //! * [`metrics`] — compactness, generalization, specificity (Styner 2003)
 //! * [`export`] — eigenvalues, scores and quality curves as CSV
 //! * [`measure`] — stature, girths by plane sections, arm length, inseam
-//! * [`gltf`] — the whole-body model as GLB with modes as morph targets
+//! * [`gltf`] — the whole-body model, or all seven models, as GLB with modes as morph targets
 //! * [`file`] — the versioned model file format ([`f16`] for the compact basis)
 //! * [`random`] — seeded normal draws
 
@@ -24,15 +26,18 @@ pub mod gram;
 pub mod measure;
 pub mod metrics;
 pub mod model;
+pub mod morph;
 pub mod procrustes_gpa;
 pub mod project;
 pub mod random;
 pub mod segments;
 pub mod stitch;
+pub mod subdivide;
 
 pub use build::{build_body_model, BuildParams, TrainingSet};
 pub use error::PcaError;
 pub use metrics::{QualityCurves, QualityParams};
 pub use model::{BodyModel, ShapeModel, TemplateIdentity};
+pub use morph::{Morph, MorphUpdate};
 pub use procrustes_gpa::{GpaParams, PoseRemoval};
 pub use stitch::{Coefficients, ModeTarget, SeamReport, StitchPlan};

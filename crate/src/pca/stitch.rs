@@ -135,6 +135,79 @@ impl BodyModel {
         out: &mut [f32],
     ) -> Result<(), PcaError> {
         self.check_out(out)?;
+        let d = delta as f32;
+        match self.delta_pass(plan, target, mode)? {
+            DeltaPass::Contiguous(phi) => axpy(d, phi, out),
+            DeltaPass::Weighted(phi, weight) => {
+                for ((xyz, p), &w) in out.chunks_exact_mut(3).zip(phi.chunks_exact(3)).zip(weight) {
+                    let f = d * w;
+                    xyz[0] += f * p[0];
+                    xyz[1] += f * p[1];
+                    xyz[2] += f * p[2];
+                }
+            }
+            DeltaPass::Scatter(phi, indices, blend) => scatter_axpy(d, phi, indices, blend, out),
+        }
+        Ok(())
+    }
+
+    /// [`BodyModel::apply_delta`] with compensated (Kahan) summation: `carry` (same length as
+    /// `out`, zero after a full reconstruction) keeps the low-order part each f32 addition loses,
+    /// so any number of slider moves stays within a few f32 roundings of a full reconstruction
+    /// instead of drifting as a random walk of roundings (tested in `pca::morph`). Costs one
+    /// more stream (`carry`) than the plain update.
+    pub fn apply_delta_compensated(
+        &self,
+        plan: &StitchPlan,
+        target: ModeTarget,
+        mode: usize,
+        delta: f64,
+        out: &mut [f32],
+        carry: &mut [f32],
+    ) -> Result<(), PcaError> {
+        self.check_out(out)?;
+        self.check_out(carry)?;
+        let d = delta as f32;
+        match self.delta_pass(plan, target, mode)? {
+            DeltaPass::Contiguous(phi) => {
+                for ((x, c), &p) in out.iter_mut().zip(carry.iter_mut()).zip(phi) {
+                    kahan_add(x, c, d * p);
+                }
+            }
+            DeltaPass::Weighted(phi, weight) => {
+                for (((xyz, cs), p), &w) in out
+                    .chunks_exact_mut(3)
+                    .zip(carry.chunks_exact_mut(3))
+                    .zip(phi.chunks_exact(3))
+                    .zip(weight)
+                {
+                    let f = d * w;
+                    for a in 0..3 {
+                        kahan_add(&mut xyz[a], &mut cs[a], f * p[a]);
+                    }
+                }
+            }
+            DeltaPass::Scatter(phi, indices, blend) => {
+                for ((p, &v), &w) in phi.chunks_exact(3).zip(indices).zip(blend) {
+                    let f = d * w;
+                    let o = 3 * v as usize;
+                    for a in 0..3 {
+                        kahan_add(&mut out[o + a], &mut carry[o + a], f * p[a]);
+                    }
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// What one slider move adds, checked against the plan: φₖ over all vertices, φₖ weighted by
+    /// 1 − cᵥ, or a segment's φₖ scattered with its blend weights.
+    fn delta_pass<'a>(
+        &'a self,
+        plan: &'a StitchPlan,
+        target: ModeTarget,
+        mode: usize,
+    ) -> Result<DeltaPass<'a>, PcaError> {
         let bad_mode =
             |m: usize| PcaError::BadParameter(format!("mode {mode} of a model with {m} modes"));
         match target {
@@ -143,21 +216,11 @@ impl BodyModel {
                     return Err(bad_mode(self.whole.mode_count()));
                 }
                 let phi = self.whole.mode(mode);
-                if plan.whole_weight.is_empty() {
-                    axpy(delta as f32, phi, out);
+                Ok(if plan.whole_weight.is_empty() {
+                    DeltaPass::Contiguous(phi)
                 } else {
-                    let d = delta as f32;
-                    for ((xyz, p), &w) in out
-                        .chunks_exact_mut(3)
-                        .zip(phi.chunks_exact(3))
-                        .zip(&plan.whole_weight)
-                    {
-                        let f = d * w;
-                        xyz[0] += f * p[0];
-                        xyz[1] += f * p[1];
-                        xyz[2] += f * p[2];
-                    }
-                }
+                    DeltaPass::Weighted(phi, &plan.whole_weight)
+                })
             }
             ModeTarget::Segment(segment) => {
                 let s = segment.index();
@@ -171,16 +234,13 @@ impl BodyModel {
                 if mode >= model.mode_count() {
                     return Err(bad_mode(model.mode_count()));
                 }
-                scatter_axpy(
-                    delta as f32,
+                Ok(DeltaPass::Scatter(
                     model.mode(mode),
                     &model.vertex_indices,
                     &self.blend[s],
-                    out,
-                );
+                ))
             }
         }
-        Ok(())
     }
 
     fn check_out(&self, out: &[f32]) -> Result<(), PcaError> {
@@ -273,6 +333,23 @@ impl BodyModel {
         }
         Ok(report)
     }
+}
+
+/// The arrays one slider move reads (see [`BodyModel::apply_delta`]).
+enum DeltaPass<'a> {
+    Contiguous(&'a [f32]),
+    Weighted(&'a [f32], &'a [f32]),
+    Scatter(&'a [f32], &'a [u32], &'a [f32]),
+}
+
+/// x += a with Kahan compensation: `c` holds what earlier additions lost (x − c is the running
+/// sum to within one rounding), and is subtracted from the next addend.
+#[inline(always)]
+fn kahan_add(x: &mut f32, c: &mut f32, a: f32) {
+    let y = a - *c;
+    let t = *x + y;
+    *c = (t - *x) - y;
+    *x = t;
 }
 
 /// The (bₖ, φₖ) pairs with bₖ ≠ 0.

@@ -204,6 +204,17 @@ impl Template {
         self.segment_weights[vertex as usize]
     }
 
+    /// Blend weights of every vertex (`#V` entries, [`Segment::ALL`] order).
+    pub fn segment_weight_table(&self) -> &[[f32; 6]] {
+        &self.segment_weights
+    }
+
+    /// Above base resolution: per vertex, the base vertices and weights it is made from (the
+    /// rows of the subdivision operator S, fine = S·base); `None` at base.
+    pub fn stencils(&self) -> Option<&[Vec<(u32, f64)>]> {
+        self.stencils.as_deref()
+    }
+
     /// The vertices that belong to `segment` (blend weight > 0), overlap bands included.
     pub fn segment_vertices(&self, segment: Segment) -> Vec<u32> {
         let k = segment.index();

@@ -1,0 +1,129 @@
+//! The shape-space bindings in a real browser (`wasm-pack test --headless --chrome`): the calls
+//! the worker makes on a slider move are incremental and land where a rebuild does (1e-6 m),
+//! at base and after mapping the model to the fine template.
+#![cfg(target_arch = "wasm32")]
+
+use bodyspace::bindings::{build_shape_model, load_template, ShapeSpace};
+use bodyspace::template::Template;
+use wasm_bindgen_test::*;
+
+wasm_bindgen_test_configure!(run_in_browser);
+
+/// `n` bodies: the template scaled in height and girth by a few per cent, with a belly.
+fn subjects(n: usize) -> Vec<f32> {
+    let template = Template::embedded().unwrap_or_else(|e| panic!("{e}"));
+    (0..n)
+        .flat_map(|i| {
+            let t = i as f64 / n as f64 - 0.5;
+            let (tall, wide, belly) = (1.0 + 0.05 * t, 1.0 - 0.08 * t * t, 0.03 * (3.0 * t).sin());
+            template
+                .mesh()
+                .positions
+                .iter()
+                .flat_map(move |p| {
+                    let bump = (-((p.y - 1.05) / 0.12).powi(2)).exp() * p.z.max(0.0);
+                    [
+                        (p.x * wide) as f32,
+                        (p.y * tall) as f32,
+                        (p.z * wide + belly * bump) as f32,
+                    ]
+                })
+                .collect::<Vec<f32>>()
+        })
+        .collect()
+}
+
+fn update(space: &mut ShapeSpace, whole: &[f64], torso: &[f64], rebuild: bool) -> (bool, u64) {
+    let counts = [-1, -1, -1, torso.len() as i32, -1, -1];
+    let json = space
+        .morph(whole, torso, &counts, rebuild)
+        .unwrap_or_else(|_| panic!("morph"));
+    let v: serde_json::Value = serde_json::from_str(&json).unwrap_or_else(|e| panic!("{e}"));
+    (
+        v["rebuilt"].as_bool().unwrap_or(false),
+        v["deltas"].as_u64().unwrap_or(99),
+    )
+}
+
+fn max_diff(a: &[f32], b: &[f32]) -> f32 {
+    a.iter()
+        .zip(b)
+        .map(|(x, y)| (x - y).abs())
+        .fold(0.0, f32::max)
+}
+
+fn stature(space: &ShapeSpace) -> f64 {
+    let json = space.measure_json().unwrap_or_else(|_| panic!("measure"));
+    let v: serde_json::Value = serde_json::from_str(&json).unwrap_or_else(|e| panic!("{e}"));
+    v["stature"].as_f64().unwrap_or(0.0)
+}
+
+#[wasm_bindgen_test]
+fn slider_moves_are_rank_one_updates_at_base_and_at_fine() {
+    let n = 5;
+    let names = serde_json::to_string(&(0..n).map(|i| format!("s{i}")).collect::<Vec<_>>())
+        .unwrap_or_default();
+    let mut space = build_shape_model(&subjects(n), n as u32, &names, 1.0, false)
+        .unwrap_or_else(|_| panic!("build"));
+    let info: serde_json::Value =
+        serde_json::from_str(&space.info_json().unwrap_or_else(|_| panic!("info")))
+            .unwrap_or_else(|e| panic!("{e}"));
+    let modes = |part: usize| {
+        info["parts"][part]["variances"]
+            .as_array()
+            .map_or(0, Vec::len)
+    };
+    let mut whole = vec![0.5; modes(0)];
+    let mut torso = vec![-0.5; modes(4)];
+    assert!(whole.len() >= 2 && !torso.is_empty());
+
+    assert_eq!(update(&mut space, &whole, &torso, true), (true, 0));
+    for i in 0..100 {
+        let (w, t) = (i % whole.len(), i % torso.len());
+        if i % 2 == 0 {
+            whole[w] = ((i % 7) as f64 - 3.0) * 0.8;
+        } else {
+            torso[t] = ((i % 5) as f64 - 2.0) * 1.1;
+        }
+        assert_eq!(update(&mut space, &whole, &torso, false), (false, 1));
+    }
+    let incremental = space.positions().to_vec();
+    assert_eq!(incremental.len(), 3 * 13_380);
+    assert_eq!(update(&mut space, &whole, &torso, true), (true, 0));
+    let base = space.positions().to_vec();
+    let drift = max_diff(&incremental, &base);
+    assert!(drift < 1e-6, "incremental vs rebuild at base: {drift} m");
+    let base_stature = stature(&space);
+    assert!(base_stature > 1.4 && base_stature < 2.0);
+
+    // The same body at fine: the base vertices come first and do not move.
+    let fine = load_template("fine").unwrap_or_else(|_| panic!("fine template"));
+    let progress = js_sys::Function::new_with_args("f", "");
+    space
+        .use_resolution("fine", &fine, &progress)
+        .unwrap_or_else(|_| panic!("fine"));
+    assert_eq!(space.vertex_count(), 214_050);
+    assert_eq!(space.resolution(), "fine");
+    let at_fine = space.positions().to_vec();
+    assert_eq!(at_fine.len(), 3 * 214_050);
+    assert!(max_diff(&at_fine[..base.len()], &base) < 1e-6);
+    assert!((stature(&space) - base_stature).abs() < 1e-6);
+    assert_eq!(space.normals().length() as usize, at_fine.len());
+
+    whole[0] = 2.5;
+    assert_eq!(update(&mut space, &whole, &torso, false), (false, 1));
+    torso[0] = -1.5;
+    assert_eq!(update(&mut space, &whole, &torso, false), (false, 1));
+    let moved = space.positions().to_vec();
+    assert_eq!(update(&mut space, &whole, &torso, true), (true, 0));
+    assert!(max_diff(&moved, &space.positions().to_vec()) < 1e-6);
+    assert!(stature(&space) != base_stature);
+
+    // Back to base keeps the coefficients; the GLB of the seven models opens with its magic.
+    space
+        .use_resolution("base", &fine, &progress)
+        .unwrap_or_else(|_| panic!("base"));
+    assert_eq!(space.vertex_count(), 13_380);
+    assert!(max_diff(&space.positions().to_vec(), &moved[..3 * 13_380]) < 1e-6);
+    assert_eq!(&space.parts_glb(20).to_vec()[..4], b"glTF");
+}

@@ -1,0 +1,47 @@
+// Downloads of the shape-space panel: the body shown (PLY, OBJ, GLB), bodies along a mode, the
+// model as GLB with morph targets (whole body, or all seven models), the model file, CSVs.
+import type { CoreClient } from '../client/core-client';
+import { objText, plyBytes } from '../shared/mesh-export';
+import type { LoadedModel, ModelCsv, ModelGlbParts, ReconstructedBody, ShapeCoefficients } from '../shared/shape-results';
+import { download } from '../ui/download';
+import { bodiesGlb } from '../view/gltf-export';
+
+export type BodyFormat = 'ply' | 'obj' | 'glb';
+
+export async function csv(client: CoreClient, kind: ModelCsv): Promise<void> {
+  const text = await client.call({ type: 'modelCsv', kind });
+  download(`${kind}.csv`, text, 'text/csv');
+}
+
+/** The body shown, at the resolution shown (`triangles` are its own); `label` names the model. */
+export async function body(shown: ReconstructedBody, triangles: Uint32Array, format: BodyFormat, label: string): Promise<void> {
+  const comment = `BodySpace body of ${label}`;
+  if (format === 'ply') download('body.ply', plyBytes(shown.positions, triangles, comment));
+  else if (format === 'obj') download('body.obj', objText(shown.positions, triangles, comment), 'text/plain');
+  else download('body.glb', await bodiesGlb([{ name: 'body', positions: shown.positions, normals: shown.normals, triangles }]), 'model/gltf-binary');
+}
+
+/** One GLB with a body per σ step along whole-body mode `mode` (other values as they are). */
+export async function alongMode(client: CoreClient, coefficients: ShapeCoefficients, triangles: Uint32Array, mode: number, steps: number[]): Promise<void> {
+  if (steps.length === 0) return;
+  const bodies = [];
+  for (const t of steps) {
+    const c = structuredClone(coefficients);
+    c.whole[mode] = t;
+    const made = await client.call({ type: 'reconstruct', coefficients: c });
+    bodies.push({ name: `mode${mode + 1}_${t >= 0 ? '+' : ''}${t}sd`, positions: made.positions, normals: made.normals, triangles });
+  }
+  download(`mode${mode + 1}.glb`, await bodiesGlb(bodies, 0.7), 'model/gltf-binary');
+}
+
+/** The model as GLB with its modes as morph targets: the whole body, or all seven models. */
+export async function modelGlb(client: CoreClient, model: LoadedModel, parts: ModelGlbParts): Promise<void> {
+  const modes = Math.max(...model.info.parts.map((p) => p.variances.length));
+  const glb = await client.call({ type: 'modelGlb', modes, parts });
+  download(parts === 'all' ? 'shape-model-segments.glb' : 'shape-model.glb', glb, 'model/gltf-binary');
+}
+
+export async function modelFile(client: CoreClient): Promise<void> {
+  const bytes = await client.call({ type: 'modelFile' });
+  download('shape-model.bsm', bytes);
+}
