@@ -212,7 +212,7 @@ impl Template {
     /// Above base resolution: per vertex, the base vertices and weights it is made from (the
     /// rows of the subdivision operator S, fine = S·base); `None` at base.
     pub fn stencils(&self) -> Option<&[Vec<(u32, f64)>]> {
-        self.stencils.as_deref()
+        self.refinement.as_ref().map(|s| s.stencils.as_slice())
     }
 
     /// The vertices that belong to `segment` (blend weight > 0), overlap bands included.
