@@ -177,6 +177,28 @@ fn fast_path_and_incremental_updates_match_the_reference() {
     mixed.segments[Segment::Torso.index()].as_mut().unwrap()[0] -= 0.4;
     assert!(max_abs_diff(&model.reconstruct(&mixed).unwrap(), &out) < 1e-5);
 
+    // All six overridden: the whole body has no weight anywhere, and the fast path skips its
+    // basis (blocks without whole-body weight), still equal to the reference.
+    let b = model.project(&shapes[3]).unwrap().coefficients;
+    let mut all = mixed.clone();
+    for s in Segment::ALL {
+        let from = if s.index() % 2 == 0 { &a } else { &b };
+        all.segments[s.index()] = from.segments[s.index()].clone();
+    }
+    let plan_all = model.reconstruct_into(&all, &mut out).unwrap();
+    assert!(max_abs_diff(&model.reconstruct(&all).unwrap(), &out) < 1e-5);
+    model
+        .apply_delta(
+            &plan_all,
+            ModeTarget::Segment(Segment::Head),
+            0,
+            0.2,
+            &mut out,
+        )
+        .unwrap();
+    all.segments[Segment::Head.index()].as_mut().unwrap()[0] += 0.2;
+    assert!(max_abs_diff(&model.reconstruct(&all).unwrap(), &out) < 1e-5);
+
     // A segment that is not overridden in the plan cannot be moved incrementally.
     assert!(model
         .apply_delta(&plan, ModeTarget::Segment(Segment::Head), 0, 1.0, &mut out)

@@ -85,8 +85,12 @@ impl BodyModel {
                     whole_weight[v as usize] -= w;
                 }
             }
-            // Rounding can leave −1e-8 where a vertex is fully covered.
-            whole_weight.iter_mut().for_each(|w| *w = w.max(0.0));
+            // Rounding leaves ±1e-7 where a vertex is fully covered: that is no weight (a
+            // whole-body contribution of < 1e-6 of a coordinate), so such vertices skip the
+            // whole-body basis.
+            whole_weight
+                .iter_mut()
+                .for_each(|w| *w = if *w < WHOLE_WEIGHT_EPSILON { 0.0 } else { *w });
         }
         StitchPlan {
             overridden,
@@ -105,11 +109,29 @@ impl BodyModel {
         self.check(coefficients)?;
         self.check_out(out)?;
         let plan = self.stitch_plan(coefficients.overridden());
-        out.copy_from_slice(&self.whole.mean);
-        add_modes(out, &nonzero_modes(&self.whole, &coefficients.whole));
-        if !plan.whole_weight.is_empty() {
-            for (xyz, &w) in out.chunks_exact_mut(3).zip(&plan.whole_weight) {
-                xyz.iter_mut().for_each(|x| *x *= w);
+        let terms = nonzero_modes(&self.whole, &coefficients.whole);
+        if plan.whole_weight.is_empty() {
+            out.copy_from_slice(&self.whole.mean);
+            add_modes(out, &terms);
+        } else {
+            // Only where the whole body still has weight: vertex blocks wholly covered by
+            // overridden segments skip the whole-body basis (with all six overridden, all of it).
+            for (block, weights) in plan.whole_weight.chunks(WHOLE_BLOCK).enumerate() {
+                let range = 3 * block * WHOLE_BLOCK..3 * (block * WHOLE_BLOCK + weights.len());
+                let out = &mut out[range.clone()];
+                if weights.iter().all(|&w| w == 0.0) {
+                    out.fill(0.0);
+                    continue;
+                }
+                out.copy_from_slice(&self.whole.mean[range.clone()]);
+                let block_terms: Vec<(f32, &[f32])> = terms
+                    .iter()
+                    .map(|&(b, phi)| (b, &phi[range.clone()]))
+                    .collect();
+                add_modes(out, &block_terms);
+                for (xyz, &w) in out.chunks_exact_mut(3).zip(weights) {
+                    xyz.iter_mut().for_each(|x| *x *= w);
+                }
             }
         }
         for (s, b) in coefficients.segments.iter().enumerate() {
@@ -353,6 +375,14 @@ fn kahan_add(x: &mut f32, c: &mut f32, a: f32) {
 }
 
 /// The (bₖ, φₖ) pairs with bₖ ≠ 0.
+/// Vertices per block of the whole-body pass under overrides (blocks without whole-body weight
+/// are skipped; 4096 vertices keep a block's slice of `out` in L1/L2 across its modes).
+const WHOLE_BLOCK: usize = 4096;
+
+/// Whole-body weights below this (left by rounding where overridden segments cover a vertex
+/// fully) count as zero.
+const WHOLE_WEIGHT_EPSILON: f32 = 1e-6;
+
 fn nonzero_modes<'m>(model: &'m super::model::ShapeModel, b: &[f64]) -> Vec<(f32, &'m [f32])> {
     b.iter()
         .enumerate()
