@@ -210,6 +210,24 @@ test('at fine the 214,050-vertex body follows whole-body and segment sliders by 
   await expect(page.getByTestId('measure-stature')).toHaveText(/^\d+\.\d cm$/);
   await expect(page.locator('#viewport')).toHaveAttribute('data-shape-vertices', '214050');
 
+  // The link carries the resolution: a new page opens on the same fine body.
+  await page.getByTestId('copy-link').click();
+  // Copying rebuilds a body made by rank-1 updates, so sender and receiver hold the same bits.
+  await expect(body).toHaveAttribute('data-shape-rebuilt', 'true');
+  await ready(page);
+  const link = await page.getByTestId('shape-link').inputValue();
+  expect(link).toContain('r=fine');
+  const checksum = await body.getAttribute('data-shape-checksum');
+  const other = await page.context().newPage();
+  await other.goto(link);
+  await expect(other.locator('body')).toHaveAttribute('data-link-restored', 'true');
+  await expect(other.locator('body')).toHaveAttribute('data-shape-vertices', '214050');
+  await ready(other);
+  await expect(other.locator('body')).toHaveAttribute('data-shape-resolution', 'fine');
+  await expect(other.locator('body')).toHaveAttribute('data-shape-checksum', checksum!);
+  await expect(other.getByTestId('shape-resolution')).toHaveValue('fine');
+  await other.close();
+
   // Back to base: the same coefficients, the same readings (measured on the base vertices).
   const readingsAtFine = await readings(page);
   await page.getByTestId('shape-resolution').selectOption('base');

@@ -80,6 +80,8 @@ export class ShapeSpace {
       this.page.dataset.linkIgnored = 'true';
     }
     const link = decoded?.link ?? null;
+    // A link's resolution applies as the model loads (a base model is mapped to fine).
+    if (link) this.resolution = link.resolution;
     const loaded = await this.fetchModel(link?.model ?? DEMO_MODEL);
     if (!loaded && link && link.model !== DEMO_MODEL) await this.fetchModel(DEMO_MODEL);
     if (link && loaded) this.restore(link);
@@ -122,8 +124,9 @@ export class ShapeSpace {
     this.page.dataset.shapeBusy = 'true';
     try {
       const loaded = await this.client.call({ type: 'loadModel', bytes, fileName }, { transfer: [bytes] });
+      const wanted = this.resolution;
       this.adopt(loaded, source, fileName);
-      await this.keepResolution();
+      await this.keepResolution(wanted);
       this.redraw(true, true);
       return true;
     } catch (error) {
@@ -148,8 +151,8 @@ export class ShapeSpace {
   }
 
   /** A newly loaded model is shown at its own resolution: go to fine again if that was chosen. */
-  private async keepResolution(): Promise<void> {
-    if (this.resolution === 'fine' && this.model?.info.template.resolution === 'base') await this.switchResolution('fine', false);
+  private async keepResolution(wanted: TemplateResolution): Promise<void> {
+    if (wanted === 'fine' && this.model?.info.template.resolution === 'base') await this.switchResolution('fine', false);
   }
 
   /**
@@ -311,13 +314,22 @@ export class ShapeSpace {
       this.page.dataset.shapeLink = '';
       return;
     }
-    const hash = encodeShapeLink({ model: this.source, coefficients: this.coefficients, view: this.panel.currentView, camera: this.viewer.cameraPose() });
+    const hash = encodeShapeLink({
+      model: this.source,
+      coefficients: this.coefficients,
+      view: this.panel.currentView,
+      camera: this.viewer.cameraPose(),
+      resolution: this.resolution,
+    });
     const url = `${location.origin}${location.pathname}${hash}`;
-    this.panel.showLink(url, 'The link holds the model location, every coefficient (0.001σ steps), the segment view and the camera.');
+    this.panel.showLink(url, 'The link holds the model location, every coefficient (0.001σ steps), the segment view, the camera and the resolution.');
     this.page.dataset.shapeLink = url;
   }
 
   private async copyLink(): Promise<void> {
+    // The body on screen may hold rank-1 updates (within 1e-7 m of a reconstruction); whoever
+    // opens the link reconstructs from scratch, so rebuild here and both see the same bits.
+    if (this.body && !this.body.rebuilt) this.redraw(false, true);
     this.updateLink();
     const url = this.page.dataset.shapeLink;
     if (!url) return;
@@ -375,13 +387,14 @@ export class ShapeSpace {
     all.forEach((s, i) => positions.set(s.positions, i * v));
     this.page.dataset.shapeBuilding = 'true';
     try {
+      const wanted = this.resolution;
       const built = await this.client.call(
         { type: 'buildModel', positions, names: all.map((s) => s.name), variance },
         { transfer: [positions.buffer], onProgress: (f, label) => this.panel.showBuildStatus(`${label} (${Math.round(f * 100)} %)`) },
       );
       this.adopt(built, null, built.fileName);
       this.panel.showBuildStatus(`Built from ${all.length} subjects.`);
-      await this.keepResolution();
+      await this.keepResolution(wanted);
       this.redraw(true, true);
     } catch (error) {
       this.panel.showBuildStatus('');

@@ -17,6 +17,8 @@ export interface ShapeLink {
   coefficients: ShapeCoefficients;
   view: 'whole' | SegmentName;
   camera: CameraPose | null;
+  /** Template resolution the body is shown at (a base model is mapped to fine in the worker). */
+  resolution: 'base' | 'fine';
 }
 
 /** Rounds a σ value onto the link grid (and into the int16 range). */
@@ -58,7 +60,7 @@ export function isShareableModel(model: string): boolean {
   return /^[A-Za-z0-9._~\-/]+$/.test(model) && !model.startsWith('/') && !model.includes('..') && !model.includes('//');
 }
 
-/** `#m=…&w=…&s=…&v=…&c=…` (see docs/links.md). */
+/** `#m=…&w=…&s=…&v=…&c=…&r=fine` (see docs/links.md). */
 export function encodeShapeLink(link: ShapeLink): string {
   const parts = [`m=${encodeURIComponent(link.model)}`, `w=${encodeValues(link.coefficients.whole)}`];
   const segments = SEGMENTS.flatMap((name, i) => {
@@ -71,6 +73,7 @@ export function encodeShapeLink(link: ShapeLink): string {
     const c = [...link.camera.position, ...link.camera.target].map((x) => x.toFixed(4));
     parts.push(`c=${c.join(',')}`);
   }
+  if (link.resolution === 'fine') parts.push('r=fine');
   return `#${parts.join('&')}`;
 }
 
@@ -88,7 +91,7 @@ export function decodeShapeLink(hash: string): DecodedLink | null {
   for (const pair of text.split('&')) {
     const eq = pair.indexOf('=');
     const key = eq < 0 ? pair : pair.slice(0, eq);
-    if (!['m', 'w', 's', 'v', 'c'].includes(key)) problems.push(`unknown parameter "${key.slice(0, 20)}"`);
+    if (!['m', 'w', 's', 'v', 'c', 'r'].includes(key)) problems.push(`unknown parameter "${key.slice(0, 20)}"`);
     else params.set(key, eq < 0 ? '' : pair.slice(eq + 1));
   }
   let model = '';
@@ -118,9 +121,11 @@ export function decodeShapeLink(hash: string): DecodedLink | null {
     if (c.length !== 6 || c.some((x) => !Number.isFinite(x) || Math.abs(x) > 1000)) problems.push('the camera (c) is not six finite numbers');
     else camera = { position: [c[0]!, c[1]!, c[2]!], target: [c[3]!, c[4]!, c[5]!] };
   }
+  const resolution = params.get('r') ?? 'base';
+  if (resolution !== 'base' && resolution !== 'fine') problems.push(`unknown resolution "${resolution.slice(0, 20)}" (r: base or fine)`);
   if (problems.length) return { link: null, problems };
   return {
-    link: { model, coefficients: { whole: whole!, segments }, view: view as ShapeLink['view'], camera },
+    link: { model, coefficients: { whole: whole!, segments }, view: view as ShapeLink['view'], camera, resolution: resolution as ShapeLink['resolution'] },
     problems: [],
   };
 }
