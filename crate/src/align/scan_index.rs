@@ -359,31 +359,10 @@ impl ScanIndex {
         normal: Option<&Vector3<f64>>,
         query: &MatchQuery,
     ) -> Option<Match> {
-        let v = self.nearest_compatible_vertex(p, normal, query)?;
-        let mut best = Match {
-            point: self.positions[v],
-            normal: self.vertex_normals[v],
-            on_boundary: self.boundary_vertex[v],
-        };
-        let mut best_d2 = (best.point - p).norm_squared();
-        for &f in self.rings.triangles_of(v) {
-            let f = f as usize;
-            let n = &self.face_normals[f];
-            if !Self::compatible(query.min_cos, normal, n) {
-                continue;
-            }
-            let [a, b, c] = self.triangles[f].map(|i| self.positions[i as usize]);
-            let x = closest_point_on_triangle(p, &a, &b, &c);
-            let d2 = (x - p).norm_squared();
-            if d2 < best_d2 {
-                best_d2 = d2;
-                best = Match {
-                    point: x,
-                    normal: *n,
-                    on_boundary: self.boundary_triangle[f],
-                };
-            }
-        }
-        Some(best)
+        self.closest_face(p, normal, query).map(|m| Match {
+            point: m.point,
+            normal: m.normal,
+            on_boundary: m.on_boundary,
+        })
     }
 }
