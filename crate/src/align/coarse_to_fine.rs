@@ -75,6 +75,25 @@ impl Default for CoarseToFineParams {
 }
 
 impl CoarseToFineParams {
+    /// The default schedules around a caller's base-stage parameters: the fine stage keeps the
+    /// same energy (a, b, landmark and scan-to-template weights) and runs at most
+    /// `fine_iterations` iterations ([`FINE_STAGE_ITERATIONS`] when `None`).
+    pub fn around(base: &FineAlignParams, fine_iterations: Option<usize>) -> Self {
+        let defaults = Self::default();
+        let fine = FineAlignParams {
+            a: base.a,
+            b: base.b,
+            landmark_weight: base.landmark_weight,
+            scan_term_weight: base.scan_term_weight,
+            max_iterations: fine_iterations.unwrap_or(defaults.fine.max_iterations),
+            ..defaults.fine
+        };
+        Self {
+            base: base.clone(),
+            fine,
+        }
+    }
+
     /// Both stages' limits together: the most iterations a run can report.
     pub fn max_iterations(&self) -> usize {
         self.base

@@ -163,16 +163,7 @@ pub fn align_scan(
     let t2 = js_sys::Date::now();
     let triangles = &template.template.mesh().triangles;
     let weights = data_weights(&template.template);
-    let mut c2f = CoarseToFineParams {
-        base: fine.clone(),
-        ..CoarseToFineParams::default()
-    };
-    c2f.fine = FineAlignParams {
-        a: fine.a,
-        b: fine.b,
-        max_iterations: fine_iterations.unwrap_or(c2f.fine.max_iterations),
-        ..c2f.fine
-    };
+    let c2f = CoarseToFineParams::around(&fine, fine_iterations);
     let max_iterations = match template.template.refinement() {
         Some(_) => c2f.max_iterations(),
         None => fine.max_iterations,

@@ -166,17 +166,7 @@ pub fn run_full(args: &AlignArgs) -> Result<(), String> {
             }
         }
         Some(refinement) => {
-            let mut c2f = CoarseToFineParams {
-                base: params.clone(),
-                ..CoarseToFineParams::default()
-            };
-            c2f.fine = FineAlignParams {
-                a: params.a,
-                b: params.b,
-                landmark_weight: params.landmark_weight,
-                max_iterations: args.fine_iterations.unwrap_or(c2f.fine.max_iterations),
-                ..c2f.fine
-            };
+            let c2f = CoarseToFineParams::around(&params, args.fine_iterations);
             let result = coarse_to_fine_align(
                 &warped_m,
                 &warped_template.mesh().triangles,
