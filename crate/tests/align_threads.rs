@@ -1,5 +1,6 @@
 //! Native fine alignment searches correspondences on all cores; the result must not depend on
 //! how many there are.
+#![cfg(not(target_arch = "wasm32"))]
 
 mod align_support;
 
