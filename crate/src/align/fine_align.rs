@@ -20,7 +20,7 @@ use super::report::{
     scan_to_template_distances, template_to_scan_distances, AlignReport, CurvePoint, DistanceStats,
 };
 use super::scan_index::{validate_mesh, MatchQuery, ScanIndex};
-use super::scan_term::{find_scan_samples, sample_scan_vertices, ScanSample, ScanTermSettings};
+use super::scan_term::ScanTerm;
 use super::surface::{unique_edges, vertex_normals_into};
 use nalgebra::{Point3, Vector3};
 use std::ops::ControlFlow;
@@ -262,14 +262,7 @@ pub fn fine_align_general(
     let (mut iteration, mut rounds) = (0usize, 0usize);
     let (mut cancelled, mut converged) = (false, false);
     let mut last_stiffness = f64::NAN;
-    let scan_sample_vertices = if params.scan_term_weight > 0.0 {
-        sample_scan_vertices(scan, params.scan_term_samples)
-    } else {
-        Vec::new()
-    };
-    let mut scan_samples: Vec<ScanSample> = Vec::new();
-    let mut template_index: Option<ScanIndex> = None;
-    let data_weight_sum: f64 = weights.iter().sum();
+    let mut scan_term = ScanTerm::new(scan, params, data_scale, weights);
 
     'rounds: while iteration < params.max_iterations {
         let round = rounds;
@@ -319,40 +312,16 @@ pub fn fine_align_general(
         }
         let stiffness =
             (params.initial_stiffness * params.stiffness_decay.powi(round as i32)).max(1.0);
-        scan_samples.clear();
-        if !scan_sample_vertices.is_empty() && stiffness <= params.scan_term_from_stiffness {
-            let template = match template_index.as_mut() {
-                Some(index) => {
-                    index.move_vertices(&positions);
-                    index
-                }
-                None => {
-                    template_index.insert(ScanIndex::from_parts("template", &positions, triangles)?)
-                }
-            };
-            let settings = ScanTermSettings {
-                query,
-                weights,
-                coefficient: data_scale * params.scan_term_weight * data_weight_sum
-                    / scan_sample_vertices.len() as f64,
-                max_distance: params.scan_term_max_distance,
-                centroid,
-            };
-            find_scan_samples(
-                scan,
-                &scan_sample_vertices,
-                template,
-                &settings,
-                &mut scan_samples,
-            );
-        }
+        let scan_samples = scan_term.find(
+            scan, &positions, triangles, weights, query, centroid, stiffness,
+        )?;
         let energy = AlignEnergy {
             vertices: &vertices,
             edges: &edges,
             targets: &targets,
             data_coefficients: &coefficients,
             smoothness_coefficient: params.b * stiffness,
-            scan_samples: &scan_samples,
+            scan_samples,
         };
         preconditioner.update(&energy, &degrees);
         let mut objective = RoundObjective {

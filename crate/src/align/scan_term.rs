@@ -17,6 +17,8 @@
 //! vertex of data weight 0 (unseen regions) or is farther than a cut-off get no term that round,
 //! mirroring the treatments of E_d (paper §3.2.1).
 
+use super::error::AlignError;
+use super::params::FineAlignParams;
 use super::scan_index::{MatchQuery, ScanIndex};
 use nalgebra::{Point3, Vector3};
 
@@ -31,6 +33,90 @@ pub struct ScanSample {
     pub target: Point3<f64>,
     /// γ_s ≥ 0.
     pub coefficient: f64,
+}
+
+/// The term across the rounds of one fine alignment: the sampled scan vertices (fixed), an index
+/// of the moving template (its topology built once, moved every round) and this round's samples.
+#[derive(Default)]
+pub struct ScanTerm {
+    sample_vertices: Vec<u32>,
+    template: Option<ScanIndex>,
+    samples: Vec<ScanSample>,
+    /// γ before the corner weight: a·κ·ρ·Σw_i / #samples, so the samples together weigh ρ times
+    /// the template vertices' data terms.
+    coefficient: f64,
+    max_distance: f64,
+    from_stiffness: f64,
+}
+
+impl ScanTerm {
+    /// The term for one alignment onto `scan`; `data_scale` = a·κ, `weights` the template's data
+    /// weights. Switched off (no samples ever) when `params.scan_term_weight` is 0.
+    pub fn new(
+        scan: &ScanIndex,
+        params: &FineAlignParams,
+        data_scale: f64,
+        weights: &[f64],
+    ) -> Self {
+        if params.scan_term_weight <= 0.0 {
+            return Self::default();
+        }
+        let sample_vertices = sample_scan_vertices(scan, params.scan_term_samples);
+        let weight_sum: f64 = weights.iter().sum();
+        Self {
+            coefficient: data_scale * params.scan_term_weight * weight_sum
+                / sample_vertices.len().max(1) as f64,
+            sample_vertices,
+            template: None,
+            samples: Vec::new(),
+            max_distance: params.scan_term_max_distance,
+            from_stiffness: params.scan_term_from_stiffness,
+        }
+    }
+
+    /// This round's samples on the template at `positions` (#V, metres, scan frame; same
+    /// `triangles` every round), or none when the term is off or `stiffness` is still above
+    /// `scan_term_from_stiffness`. `query`, `weights` and `centroid` as for E_d.
+    #[allow(clippy::too_many_arguments)]
+    pub fn find(
+        &mut self,
+        scan: &ScanIndex,
+        positions: &[Point3<f64>],
+        triangles: &[[u32; 3]],
+        weights: &[f64],
+        query: MatchQuery,
+        centroid: Vector3<f64>,
+        stiffness: f64,
+    ) -> Result<&[ScanSample], AlignError> {
+        self.samples.clear();
+        if self.sample_vertices.is_empty() || stiffness > self.from_stiffness {
+            return Ok(&self.samples);
+        }
+        let template = match self.template.as_mut() {
+            Some(index) => {
+                index.move_vertices(positions);
+                index
+            }
+            None => self
+                .template
+                .insert(ScanIndex::from_parts("template", positions, triangles)?),
+        };
+        let settings = ScanTermSettings {
+            query,
+            weights,
+            coefficient: self.coefficient,
+            max_distance: self.max_distance,
+            centroid,
+        };
+        find_scan_samples(
+            scan,
+            &self.sample_vertices,
+            template,
+            &settings,
+            &mut self.samples,
+        );
+        Ok(&self.samples)
+    }
 }
 
 /// Which scan vertices are sampled: every `stride`-th vertex used by a triangle, so at most
