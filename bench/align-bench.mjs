@@ -3,23 +3,11 @@
 // round trip on the UI thread) with the scan→template RMS. A `fine` template is aligned coarse to
 // fine; its base stage is printed too.
 // Usage: node bench/align-bench.mjs URL SCAN LANDMARKS base|fine RUNS
-import { chromium } from '@playwright/test';
+import { launchBenchPage } from './browser.mjs';
 
 const [url, scanPath, landmarksPath, resolution = 'base', runsArg] = process.argv.slice(2);
 const runs = Number(runsArg ?? 3);
-const browser = await chromium.launch({
-  executablePath: process.env.CHROMIUM_PATH ?? '/usr/bin/chromium',
-  args: [
-    '--no-sandbox',
-    '--disable-gpu',
-    '--disable-background-networking',
-    '--disable-component-update',
-    '--no-first-run',
-    '--use-angle=swiftshader',
-    '--enable-unsafe-swiftshader',
-  ],
-});
-const page = await browser.newPage({ viewport: { width: 1280, height: 800 } });
+const { browser, page } = await launchBenchPage();
 await page.goto(url);
 const waitFor = (attribute, value, timeout) =>
   page.waitForFunction(([a, v]) => document.body.getAttribute(a) === v, [attribute, value], { timeout });

@@ -1,23 +1,11 @@
 // Parses the benchmark PLY in the real app's worker inside Chromium, RUNS times, and prints the
 // timings the page records: the worker round trip (UI thread, around the call) and, inside the
 // worker, the core call and the copy-out of the arrays. Usage: node bench/browser-bench.mjs URL PLY RUNS
-import { chromium } from '@playwright/test';
+import { launchBenchPage } from './browser.mjs';
 
 const [url, plyPath, runsArg] = process.argv.slice(2);
 const runs = Number(runsArg ?? 7);
-const browser = await chromium.launch({
-  executablePath: process.env.CHROMIUM_PATH ?? '/usr/bin/chromium',
-  args: [
-    '--no-sandbox',
-    '--disable-gpu',
-    '--disable-background-networking',
-    '--disable-component-update',
-    '--no-first-run',
-    '--use-angle=swiftshader',
-    '--enable-unsafe-swiftshader',
-  ],
-});
-const page = await browser.newPage({ viewport: { width: 1280, height: 800 } });
+const { browser, page } = await launchBenchPage();
 await page.goto(url);
 await page.waitForFunction(() => document.body.dataset.coreReady === 'true', null, { timeout: 60_000 });
 const version = browser.version();

@@ -9,15 +9,11 @@
 // positions, the vertex normals, measurements + seam report, and the round trip on the UI thread
 // (post → the new arrays in the body's vertex buffers; rendering excluded: the bench waits for
 // the frame to finish before the next move). Usage: node bench/shape-bench.mjs URL RUNS
-import { chromium } from '@playwright/test';
+import { launchBenchPage } from './browser.mjs';
 
 const [url, runsArg] = process.argv.slice(2);
 const runs = Number(runsArg ?? 30);
-const browser = await chromium.launch({
-  executablePath: process.env.CHROMIUM_PATH ?? '/usr/bin/chromium',
-  args: ['--no-sandbox', '--disable-gpu', '--no-first-run', '--use-angle=swiftshader', '--enable-unsafe-swiftshader'],
-});
-const page = await browser.newPage({ viewport: { width: 1280, height: 800 } });
+const { browser, page } = await launchBenchPage();
 // 0.5σ on 20 modes of every part (int16 500 little-endian, base64url).
 const values = Buffer.alloc(40);
 for (let k = 0; k < 20; k++) values.writeInt16LE(500, 2 * k);
