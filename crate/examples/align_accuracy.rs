@@ -24,27 +24,21 @@
 #[cfg(not(target_arch = "wasm32"))]
 mod native {
     use bodyspace::align::{
-        coarse_to_fine_align, fine_align_anchored, scan_to_template_distances, CoarseToFineParams,
-        DistanceStats, FineAlignParams, ScanIndex,
+        align_scan, landmark_anchors, scan_to_template_distances, AlignInput, AlignParams,
+        DistanceStats, ScanIndex,
     };
-    use bodyspace::cli::align_fine::{data_weights, landmark_anchors};
     use bodyspace::io::{read_landmarks, read_scan, write_ply};
-    use bodyspace::mesh::units::detect_units;
     use bodyspace::mesh::Mesh;
-    use bodyspace::rbf::{rbf_warp_mesh, Kernel, RbfParams};
+    use bodyspace::rbf::Kernel;
     use bodyspace::template::{Resolution, Segment, Template};
     use nalgebra::Point3;
-    use std::ops::ControlFlow;
     use std::path::{Path, PathBuf};
-    use std::time::Instant;
 
     struct Options {
         dir: PathBuf,
         n: usize,
-        rbf: RbfParams,
-        fine: FineAlignParams,
-        /// `Some` at `--resolution fine`: the fine stage of coarse-to-fine alignment.
-        fine_stage: Option<FineAlignParams>,
+        params: AlignParams,
+        resolution: Resolution,
         first: usize,
         quiet: bool,
         export: Option<PathBuf>,
@@ -56,9 +50,8 @@ mod native {
         let mut options = Options {
             dir,
             n: 10,
-            rbf: RbfParams::default(),
-            fine: FineAlignParams::default(),
-            fine_stage: None,
+            params: AlignParams::default(),
+            resolution: Resolution::Base,
             first: 1,
             quiet: false,
             export: None,
@@ -80,68 +73,70 @@ mod native {
                 "--export" => options.export = Some(PathBuf::from(&value)),
                 "--first" => options.first = num()? as usize,
                 "--resolution" => match value.as_str() {
-                    "base" => options.fine_stage = None,
-                    "fine" => options.fine_stage = Some(CoarseToFineParams::default().fine),
+                    "base" => options.resolution = Resolution::Base,
+                    "fine" => options.resolution = Resolution::Fine,
                     _ => return Err(format!("--resolution {value}: base or fine")),
                 },
                 "--fine-max-iterations" => {
-                    fine_stage(&mut options.fine_stage, &flag)?.max_iterations = num()? as usize
+                    fine_stage(&mut options, &flag)?.max_iterations = num()? as usize
                 }
                 "--fine-iterations-per-round" => {
-                    fine_stage(&mut options.fine_stage, &flag)?.iterations_per_round =
-                        num()? as usize
+                    fine_stage(&mut options, &flag)?.iterations_per_round = num()? as usize
                 }
                 "--fine-displacement-tolerance" => {
-                    fine_stage(&mut options.fine_stage, &flag)?.displacement_tolerance = num()?
+                    fine_stage(&mut options, &flag)?.displacement_tolerance = num()?
                 }
-                "--fine-memory" => {
-                    fine_stage(&mut options.fine_stage, &flag)?.lbfgs_memory = num()? as usize
-                }
+                "--fine-memory" => fine_stage(&mut options, &flag)?.lbfgs_memory = num()? as usize,
                 "--fine-anneal" => {
                     let (init, decay) = value.split_once(':').ok_or("--fine-anneal INIT:DECAY")?;
-                    let fine = fine_stage(&mut options.fine_stage, &flag)?;
+                    let fine = fine_stage(&mut options, &flag)?;
                     fine.initial_stiffness = init.parse().map_err(|_| "--fine-anneal INIT")?;
                     fine.stiffness_decay = decay.parse().map_err(|_| "--fine-anneal DECAY")?;
                 }
                 "--n" => options.n = num()? as usize,
                 "--kernel" => kernel_name = Some(value.clone()),
                 "--kernel-param" => kernel_param = Some(num()?),
-                "--lambda" => options.rbf.lambda = num()?,
-                "--a" => options.fine.a = num()?,
-                "--b" => options.fine.b = num()?,
-                "--max-iterations" => options.fine.max_iterations = num()? as usize,
-                "--iterations-per-round" => options.fine.iterations_per_round = num()? as usize,
-                "--relative-tolerance" => options.fine.relative_tolerance = num()?,
-                "--displacement-tolerance" => options.fine.displacement_tolerance = num()?,
-                "--landmark-weight" => options.fine.landmark_weight = num()?,
-                "--scan-term" => options.fine.scan_term_weight = num()?,
-                "--scan-term-samples" => options.fine.scan_term_samples = num()? as usize,
-                "--scan-term-from" => options.fine.scan_term_from_stiffness = num()?,
-                "--scan-term-max-distance" => options.fine.scan_term_max_distance = num()?,
+                "--lambda" => options.params.rbf.lambda = num()?,
+                "--a" => options.params.fine.a = num()?,
+                "--b" => options.params.fine.b = num()?,
+                "--max-iterations" => options.params.fine.max_iterations = num()? as usize,
+                "--iterations-per-round" => {
+                    options.params.fine.iterations_per_round = num()? as usize
+                }
+                "--relative-tolerance" => options.params.fine.relative_tolerance = num()?,
+                "--displacement-tolerance" => options.params.fine.displacement_tolerance = num()?,
+                "--landmark-weight" => options.params.fine.landmark_weight = num()?,
+                "--scan-term" => options.params.fine.scan_term_weight = num()?,
+                "--scan-term-samples" => options.params.fine.scan_term_samples = num()? as usize,
+                "--scan-term-from" => options.params.fine.scan_term_from_stiffness = num()?,
+                "--scan-term-max-distance" => options.params.fine.scan_term_max_distance = num()?,
                 "--anneal" => {
                     let (init, decay) = value.split_once(':').ok_or("--anneal INIT:DECAY")?;
-                    options.fine.initial_stiffness = init.parse().map_err(|_| "--anneal INIT")?;
-                    options.fine.stiffness_decay = decay.parse().map_err(|_| "--anneal DECAY")?;
+                    options.params.fine.initial_stiffness =
+                        init.parse().map_err(|_| "--anneal INIT")?;
+                    options.params.fine.stiffness_decay =
+                        decay.parse().map_err(|_| "--anneal DECAY")?;
                 }
                 _ => return Err(format!("unknown option {flag}")),
             }
         }
         if kernel_name.is_some() || kernel_param.is_some() {
-            let name = kernel_name.unwrap_or_else(|| options.rbf.kernel.name().to_string());
-            options.rbf.kernel =
+            let name = kernel_name.unwrap_or_else(|| options.params.rbf.kernel.name().to_string());
+            options.params.rbf.kernel =
                 Kernel::from_name(&name, kernel_param).ok_or(format!("unknown kernel {name}"))?;
         }
         Ok(options)
     }
 
-    /// The fine stage's parameters, which exist only after `--resolution fine`.
+    /// The fine stage's schedule, which means something only after `--resolution fine`.
     fn fine_stage<'a>(
-        stage: &'a mut Option<FineAlignParams>,
+        options: &'a mut Options,
         flag: &str,
-    ) -> Result<&'a mut FineAlignParams, String> {
-        stage
-            .as_mut()
-            .ok_or(format!("{flag}: needs --resolution fine first"))
+    ) -> Result<&'a mut bodyspace::align::FineStageParams, String> {
+        match options.resolution {
+            Resolution::Base => Err(format!("{flag}: needs --resolution fine first")),
+            _ => Ok(&mut options.params.fine_stage),
+        }
     }
 
     fn read_mesh(path: &Path) -> Result<Mesh, String> {
@@ -159,6 +154,9 @@ mod native {
         truth_rms: f64,
         rough_error: f64,
         fine_error: f64,
+        /// 95th percentile and largest correspondence error after fine alignment.
+        p95: f64,
+        max: f64,
         segments: [f64; 6],
         iterations: usize,
         rough_ms: f64,
@@ -168,12 +166,11 @@ mod native {
         fine_stage_ms: f64,
     }
 
-    /// Subject `id`: `template` is the base template (warped and fitted first); `fine`, with
-    /// `--resolution fine`, the fine one it is carried to.
+    /// Subject `id`, aligned at the resolution of `template`; `base` is the base template.
     fn run_subject(
         options: &Options,
         template: &Template,
-        fine: Option<&Template>,
+        base: &Template,
         id: usize,
     ) -> Result<Row, String> {
         let file = |stem: &str, ext: &str| options.dir.join(format!("{stem}_{id:03}.{ext}"));
@@ -181,120 +178,59 @@ mod native {
         let truth = read_mesh(&file("truth", "ply"))?;
         let lnd = file("landmarks", "lnd");
         let bytes = std::fs::read(&lnd).map_err(|e| format!("{}: {e}", lnd.display()))?;
-        let scan_landmarks =
+        let landmarks =
             read_landmarks(&bytes, &lnd.display().to_string()).map_err(|e| e.to_string())?;
-
-        let started = Instant::now();
-        let warp = rbf_warp_mesh(
-            template.mesh(),
-            &template.landmark_positions(),
-            &scan,
-            &scan_landmarks,
-            &options.rbf,
-        )
-        .map_err(|e| e.to_string())?;
-        let rough_ms = started.elapsed().as_secs_f64() * 1e3;
-
-        let extent = (0..3)
-            .map(|k| {
-                let (lo, hi) = scan
-                    .positions
-                    .iter()
-                    .fold((f64::MAX, f64::MIN), |(l, h), p| (l.min(p[k]), h.max(p[k])));
-                hi - lo
-            })
-            .fold(0.0, f64::max);
-        let to_m = detect_units(extent).scale_to_metres();
+        let input = AlignInput {
+            template,
+            base_template: Some(base),
+            scan: &scan,
+            landmarks: &landmarks,
+            units: None,
+        };
+        let mut alignment =
+            align_scan(&input, &options.params, &mut ()).map_err(|e| e.to_string())?;
+        let to_m = alignment.scale_to_metres;
+        let truth: Vec<Point3<f64>> = truth.positions.iter().map(|p| p * to_m).collect();
+        alignment.compare_with_truth(base, &truth);
+        if let Some(dir) = &options.export {
+            let anchors = landmark_anchors(base, &alignment.warped, &alignment.report.warp.used);
+            export_start(dir, id, &alignment.warped, base, &anchors)?;
+        }
+        // The ground truth's own distance to the scan: the noise floor of the RMS column.
         let scan_m = Mesh::new(
             scan.positions.iter().map(|p| p * to_m).collect(),
             scan.triangles.clone(),
         );
-        let warped: Vec<Point3<f64>> = warp.positions.iter().map(|p| p * to_m).collect();
-        let truth: Vec<Point3<f64>> = truth.positions.iter().map(|p| p * to_m).collect();
-
-        let index_start = Instant::now();
         let index = ScanIndex::new(&scan_m).map_err(|e| e.to_string())?;
-        let index_ms = index_start.elapsed().as_secs_f64() * 1e3;
-        let anchors = landmark_anchors(template, &warped, &warp.used);
-        if let Some(dir) = &options.export {
-            export_start(dir, id, &warped, template, &anchors)?;
-        }
-        let (positions, report, fine_stage_ms) = match (fine, &options.fine_stage) {
-            (Some(fine), Some(stage)) => {
-                let refinement = fine
-                    .refinement()
-                    .ok_or("the fine template has no operator")?;
-                let params = CoarseToFineParams {
-                    base: options.fine.clone(),
-                    fine: stage.clone(),
-                };
-                let result = coarse_to_fine_align(
-                    &warped,
-                    &template.mesh().triangles,
-                    refinement,
-                    &index,
-                    &data_weights(fine),
-                    &anchors,
-                    &params,
-                    &mut |_, _| ControlFlow::Continue(()),
-                    &mut |_, _, _| {},
-                )
-                .map_err(|e| e.to_string())?;
-                let stage_ms = result.report.elapsed_ms - result.base.elapsed_ms;
-                (result.positions, result.report, stage_ms)
-            }
-            _ => {
-                let result = fine_align_anchored(
-                    &warped,
-                    &template.mesh().triangles,
-                    &index,
-                    &data_weights(template),
-                    &anchors,
-                    &options.fine,
-                    &mut |_| ControlFlow::Continue(()),
-                )
-                .map_err(|e| e.to_string())?;
-                (result.positions, result.report, 0.0)
-            }
-        };
-
-        let mean_error = |fitted: &[Point3<f64>]| {
-            fitted
-                .iter()
-                .zip(&truth)
-                .map(|(a, b)| (a - b).norm())
-                .sum::<f64>()
-                / fitted.len().min(truth.len()) as f64
-                * 1e3
-        };
-        let mut sums = [0.0; 6];
-        let mut counts = [0usize; 6];
-        for (v, (a, b)) in positions.iter().zip(&truth).enumerate() {
-            let w = template.segment_weights(v as u32);
-            let dominant = (0..6).max_by(|&i, &j| w[i].total_cmp(&w[j])).unwrap_or(3);
-            sums[dominant] += (a - b).norm() * 1e3;
-            counts[dominant] += 1;
-        }
-        let mut segments = [0.0; 6];
-        for s in 0..6 {
-            segments[s] = sums[s] / counts[s].max(1) as f64;
-        }
         let truth_stats = DistanceStats::of(
-            scan_to_template_distances(&truth, &template.mesh().triangles, &index)
+            scan_to_template_distances(&truth, &base.mesh().triangles, &index)
                 .map_err(|e| e.to_string())?,
         );
+        let report = &alignment.report;
+        let fine = report.fine.as_ref().ok_or("no fine alignment")?;
+        let correspondence = report.correspondence.as_ref().ok_or("no correspondence")?;
+        let mut segments = [0.0; 6];
+        for (s, e) in segments.iter_mut().zip(&correspondence.segments) {
+            *s = e.error.mean_mm;
+        }
+        let fine_stage_ms = fine
+            .stages
+            .as_ref()
+            .map_or(0.0, |s| fine.elapsed_ms - s.base.elapsed_ms);
         Ok(Row {
             scan_vertices: scan.positions.len(),
-            rms: report.scan_to_template.rms * 1e3,
-            signed: report.scan_to_template.mean * 1e3,
+            rms: fine.scan_to_template.rms_mm,
+            signed: fine.scan_to_template.mean_mm,
             truth_rms: truth_stats.rms * 1e3,
-            rough_error: mean_error(&warped),
-            fine_error: mean_error(&positions),
+            rough_error: correspondence.rough.mean_mm,
+            fine_error: correspondence.fitted.mean_mm,
+            p95: correspondence.fitted.p95_mm,
+            max: correspondence.fitted.max_mm,
             segments,
-            iterations: report.iterations,
-            rough_ms,
-            index_ms,
-            fine_ms: report.elapsed_ms,
+            iterations: fine.iterations,
+            rough_ms: report.rough_ms,
+            index_ms: report.index_ms,
+            fine_ms: fine.elapsed_ms,
             fine_stage_ms,
         })
     }
@@ -321,13 +257,15 @@ mod native {
 
     fn print_row(label: &str, r: &Row) {
         println!(
-            "{label:>7} {:>7} {:>7.3} {:>6.3} {:>6.3} {:>7.2} {:>7.2} | {} | {:>5} {:>6.0} {:>6.0} {:>7.0} {:>8.0}",
+            "{label:>7} {:>7} {:>7.3} {:>6.3} {:>6.3} {:>7.2} {:>7.2} {:>6.2} {:>6.2} | {} | {:>5} {:>6.0} {:>6.0} {:>7.0} {:>8.0}",
             r.scan_vertices,
             r.rms,
             r.signed,
             r.truth_rms,
             r.rough_error,
             r.fine_error,
+            r.p95,
+            r.max,
             r.segments
                 .iter()
                 .map(|e| format!("{e:>6.2}"))
@@ -359,31 +297,29 @@ mod native {
         let names: Vec<&str> = Segment::ALL.iter().map(|s| s.name()).collect();
         println!(
         "rbf {:?}; fine a={} b={} max_it={} it/round={} anneal={}:{} rel_tol={} disp_tol={} landmark_weight={} scan_term={}x{}@{}<{}",
-        options.rbf.kernel,
-        options.fine.a,
-        options.fine.b,
-        options.fine.max_iterations,
-        options.fine.iterations_per_round,
-        options.fine.initial_stiffness,
-        options.fine.stiffness_decay,
-        options.fine.relative_tolerance,
-        options.fine.displacement_tolerance,
-        options.fine.landmark_weight,
-        options.fine.scan_term_weight,
-        options.fine.scan_term_samples,
-        options.fine.scan_term_from_stiffness,
-        options.fine.scan_term_max_distance,
+        options.params.rbf.kernel,
+        options.params.fine.a,
+        options.params.fine.b,
+        options.params.fine.max_iterations,
+        options.params.fine.iterations_per_round,
+        options.params.fine.initial_stiffness,
+        options.params.fine.stiffness_decay,
+        options.params.fine.relative_tolerance,
+        options.params.fine.displacement_tolerance,
+        options.params.fine.landmark_weight,
+        options.params.fine.scan_term_weight,
+        options.params.fine.scan_term_samples,
+        options.params.fine.scan_term_from_stiffness,
+        options.params.fine.scan_term_max_distance,
     );
         println!(
-        "subject   scanV  RMS_mm signed truthRMS rbf_mm fine_mm | mean correspondence error after fine per segment (mm): {} | iters rbf_ms idx_ms fine_ms stage_ms",
+        "subject   scanV  RMS_mm signed truthRMS rbf_mm fine_mm  p95_mm max_mm | mean correspondence error after fine per segment (mm): {} | iters rbf_ms idx_ms fine_ms stage_ms",
         names.join(" ")
     );
         let mut rows = Vec::new();
-        let fine = options
-            .fine_stage
-            .as_ref()
-            .map(|_| template.at_resolution(Resolution::Fine));
-        if let Some(stage) = &options.fine_stage {
+        let aligned = template.at_resolution(options.resolution);
+        if options.resolution != Resolution::Base {
+            let stage = &options.params.fine_stage;
             println!(
                 "coarse to fine, fine stage: max_it={} it/round={} anneal={}:{} disp_tol={} memory={}",
                 stage.max_iterations,
@@ -395,7 +331,7 @@ mod native {
             );
         }
         for id in options.first..options.first + options.n {
-            match run_subject(&options, &template, fine.as_ref(), id) {
+            match run_subject(&options, &aligned, &template, id) {
                 Ok(row) => {
                     if !options.quiet {
                         print_row(&format!("{id:03}"), &row);
@@ -417,6 +353,8 @@ mod native {
             mean.truth_rms += r.truth_rms / k;
             mean.rough_error += r.rough_error / k;
             mean.fine_error += r.fine_error / k;
+            mean.p95 += r.p95 / k;
+            mean.max += r.max / k;
             for s in 0..6 {
                 mean.segments[s] += r.segments[s] / k;
             }

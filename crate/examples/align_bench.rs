@@ -6,10 +6,11 @@
 //! body-sized bumpy ellipsoid with 0.5 mm scanner-like noise; the template is its smooth,
 //! slightly misplaced version (as after the RBF warp).
 
-use bodyspace::align::{fine_align, CorrespondenceMode, FineAlignParams, MatchQuery, ScanIndex};
+use bodyspace::align::{
+    fine_align, CorrespondenceMode, FineAlignInput, FineAlignParams, MatchQuery, ScanIndex,
+};
 use bodyspace::mesh::Mesh;
 use nalgebra::{Point3, Vector3};
-use std::ops::ControlFlow;
 use std::time::Instant;
 
 fn uv_sphere(rings: usize, segments: usize) -> Mesh {
@@ -154,12 +155,15 @@ fn main() {
         };
         let t = Instant::now();
         let result = fine_align(
-            &template.positions,
-            &template.triangles,
-            &index,
-            &weights,
+            &FineAlignInput {
+                positions: &template.positions,
+                triangles: &template.triangles,
+                scan: &index,
+                weights: &weights,
+                anchors: &[],
+            },
             &params,
-            &mut |_| ControlFlow::Continue(()),
+            &mut (),
         );
         let total = ms(t);
         match result {
@@ -227,12 +231,15 @@ fn schedules(template: &Mesh, index: &ScanIndex) {
         };
         let t = Instant::now();
         if let Ok(r) = fine_align(
-            &template.positions,
-            &template.triangles,
-            index,
-            &weights,
+            &FineAlignInput {
+                positions: &template.positions,
+                triangles: &template.triangles,
+                scan: index,
+                weights: &weights,
+                anchors: &[],
+            },
             &params,
-            &mut |_| ControlFlow::Continue(()),
+            &mut (),
         ) {
             println!(
                 "schedule {per_round:>2}/round, max {limit:>3}: {:.0} ms, {} iterations, scan→template RMS {:.3} mm, template→scan RMS {:.3} mm",

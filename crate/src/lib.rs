@@ -16,6 +16,7 @@ pub mod pca;
 pub mod rbf;
 pub mod synth;
 pub mod template;
+pub mod utils;
 
 #[cfg(target_arch = "wasm32")]
 pub mod bindings;

@@ -4,8 +4,7 @@
 
 mod align_support;
 
-use bodyspace::align::{fine_align, FineAlignParams, ScanIndex};
-use std::ops::ControlFlow;
+use bodyspace::align::{fine_align, FineAlignInput, FineAlignParams, ScanIndex};
 
 #[test]
 fn fine_align_lands_on_the_known_sphere_natively() {
@@ -13,12 +12,15 @@ fn fine_align_lands_on_the_known_sphere_natively() {
     let index = ScanIndex::new(&scan).unwrap();
     let weights = vec![1.0; template.positions.len()];
     let result = fine_align(
-        &template.positions,
-        &template.triangles,
-        &index,
-        &weights,
+        &FineAlignInput {
+            positions: &template.positions,
+            triangles: &template.triangles,
+            scan: &index,
+            weights: &weights,
+            anchors: &[],
+        },
         &FineAlignParams::default(),
-        &mut |_| ControlFlow::Continue(()),
+        &mut (),
     )
     .unwrap();
     align_support::check_agreement(&result.positions, result.report.scan_to_template.rms);

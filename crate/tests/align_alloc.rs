@@ -15,7 +15,8 @@ use bodyspace::align::lbfgs::{Lbfgs, Objective, Step};
 use bodyspace::align::scan_term::ScanSample;
 use bodyspace::align::surface::unique_edges;
 use bodyspace::align::{
-    fine_align, CorrespondenceMode, FineAlignParams, MatchQuery, Progress, ScanIndex,
+    fine_align, CorrespondenceMode, FineAlignInput, FineAlignParams, MatchQuery, Progress,
+    ScanIndex,
 };
 use nalgebra::{Point3, Vector3};
 
@@ -153,10 +154,13 @@ fn iterations_within_a_round_of_fine_align_allocate_nothing() {
     };
     let mut seen: Vec<(usize, usize)> = Vec::with_capacity(1024);
     fine_align(
-        &template.positions,
-        &template.triangles,
-        &index,
-        &weights,
+        &FineAlignInput {
+            positions: &template.positions,
+            triangles: &template.triangles,
+            scan: &index,
+            weights: &weights,
+            anchors: &[],
+        },
         &params,
         &mut |p: &Progress| {
             seen.push((p.round, allocations()));

@@ -82,10 +82,10 @@ fn full_align_fits_the_scan_and_keeps_correspondences() {
     assert!((1..=40).contains(&iterations), "{iterations} iterations");
     let s2t = fine["scan_to_template"]["rms_mm"].as_f64().unwrap();
     assert!(s2t < 1.5, "scan-to-template RMS {s2t} mm");
-    let ce = &r["correspondence_error"];
+    let ce = &r["correspondence"];
     let (before, after) = (
-        ce["rough_mean_mm"].as_f64().unwrap(),
-        ce["mean_mm"].as_f64().unwrap(),
+        ce["rough"]["mean_mm"].as_f64().unwrap(),
+        ce["fitted"]["mean_mm"].as_f64().unwrap(),
     );
     assert!(
         after < before + 0.5,
@@ -130,9 +130,16 @@ fn fine_resolution_aligns_coarse_to_fine_in_fine_template_order() {
     );
     assert!(fine_rms <= base_rms + 0.01, "{base_rms} → {fine_rms} mm");
     // The ground truth has the base vertices, which come first at fine.
-    let ce = &r["correspondence_error"];
-    assert_eq!(ce["vertices"], 13_380);
-    assert!(ce["mean_mm"].as_f64().unwrap() < ce["rough_mean_mm"].as_f64().unwrap() + 0.5);
+    let ce = &r["correspondence"];
+    assert_eq!(ce["fitted"]["vertices"], 13_380);
+    let (before, after) = (
+        ce["rough"]["mean_mm"].as_f64().unwrap(),
+        ce["fitted"]["mean_mm"].as_f64().unwrap(),
+    );
+    assert!(
+        after < before + 0.5,
+        "correspondence error {before} → {after} mm"
+    );
     let fitted = std::fs::read(dir.join("fit.ply")).unwrap();
     let fitted = bodyspace::io::read_scan(&fitted, "fit.ply").unwrap();
     assert_eq!(fitted.positions.len(), 214_050);

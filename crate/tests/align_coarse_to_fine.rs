@@ -3,10 +3,13 @@
 
 use std::ops::ControlFlow;
 
-use bodyspace::align::{coarse_to_fine_align, data_weights, CoarseToFineParams, ScanIndex, Stage};
+use bodyspace::align::{
+    coarse_to_fine_align, data_weights, AlignObserver, CoarseToFineInput, FineAlignInput,
+    FineAlignParams, FineStageParams, Progress, ScanIndex, Stage,
+};
 use bodyspace::mesh::Mesh;
 use bodyspace::rbf::{rbf_warp_mesh, RbfParams};
-use bodyspace::template::{Resolution, Template};
+use bodyspace::template::{Resolution, Subdivision, Template};
 use nalgebra::{Point3, Vector3};
 
 /// The subject: a wider, slightly taller body with a belly-like bulge, moved (metres).
@@ -60,6 +63,45 @@ fn mean_distance(a: &[Point3<f64>], b: &[Point3<f64>]) -> f64 {
     a.iter().zip(b).map(|(p, q)| (p - q).norm()).sum::<f64>() / a.len().min(b.len()) as f64
 }
 
+/// The coarse-to-fine input for a start on the base template and the fine template's weights.
+fn input<'a>(
+    starting: &'a [Point3<f64>],
+    base: &'a Template,
+    scan: &'a ScanIndex,
+    refinement: &'a Subdivision,
+    weights: &'a [f64],
+) -> CoarseToFineInput<'a> {
+    CoarseToFineInput {
+        base: FineAlignInput {
+            positions: starting,
+            triangles: &base.mesh().triangles,
+            scan,
+            weights: &weights[..base.mesh().positions.len()],
+            anchors: &[],
+        },
+        refinement,
+        fine_weights: weights,
+    }
+}
+
+/// Records the stage and number of every iteration, and counts the rounds shown at fine.
+struct Recorder {
+    fine_vertices: usize,
+    seen: Vec<(Stage, usize)>,
+    rounds_at_fine: usize,
+}
+
+impl AlignObserver for Recorder {
+    fn progress(&mut self, p: &Progress) -> ControlFlow<()> {
+        self.seen.push((p.stage, p.iteration));
+        ControlFlow::Continue(())
+    }
+    fn round(&mut self, _: Stage, _: usize, positions: &[Point3<f64>]) {
+        assert_eq!(positions.len(), self.fine_vertices);
+        self.rounds_at_fine += 1;
+    }
+}
+
 #[test]
 fn fine_fit_keeps_the_base_fit_and_comes_back_in_fine_template_order() {
     let Case {
@@ -71,28 +113,28 @@ fn fine_fit_keeps_the_base_fit_and_comes_back_in_fine_template_order() {
     let refinement = fine
         .refinement()
         .expect("a fine template keeps its operator");
-    let mut params = CoarseToFineParams::default();
-    params.fine.max_iterations = 4;
-    let mut seen: Vec<(Stage, usize)> = Vec::new();
-    let mut rounds_at_fine = 0;
+    let stage = FineStageParams {
+        max_iterations: 4,
+        ..FineStageParams::default()
+    };
+    let weights = data_weights(&fine);
+    let mut recorder = Recorder {
+        fine_vertices: fine.mesh().positions.len(),
+        seen: Vec::new(),
+        rounds_at_fine: 0,
+    };
     let result = coarse_to_fine_align(
-        &starting,
-        &base.mesh().triangles,
-        refinement,
-        &scan,
-        &data_weights(&fine),
-        &[],
-        &params,
-        &mut |stage, p| {
-            seen.push((stage, p.iteration));
-            ControlFlow::Continue(())
-        },
-        &mut |_, _, positions| {
-            assert_eq!(positions.len(), fine.mesh().positions.len());
-            rounds_at_fine += 1;
-        },
+        &input(&starting, &base, &scan, refinement, &weights),
+        &FineAlignParams::default(),
+        &stage,
+        &mut recorder,
     )
     .unwrap();
+    let Recorder {
+        seen,
+        rounds_at_fine,
+        ..
+    } = recorder;
 
     assert_eq!(result.positions.len(), 214_050);
     assert_eq!(result.report.template_vertices, 214_050);
@@ -150,23 +192,19 @@ fn cancelled_in_the_base_stage_returns_the_last_state_at_fine() {
         starting,
     } = case();
     let refinement = fine.refinement().unwrap();
+    let weights = data_weights(&fine);
     let result = coarse_to_fine_align(
-        &starting,
-        &base.mesh().triangles,
-        refinement,
-        &scan,
-        &data_weights(&fine),
-        &[],
-        &CoarseToFineParams::default(),
-        &mut |stage, p| {
-            assert_eq!(stage, Stage::Base);
+        &input(&starting, &base, &scan, refinement, &weights),
+        &FineAlignParams::default(),
+        &FineStageParams::default(),
+        &mut |p: &Progress| {
+            assert_eq!(p.stage, Stage::Base);
             if p.iteration >= 3 {
                 ControlFlow::Break(())
             } else {
                 ControlFlow::Continue(())
             }
         },
-        &mut |_, _, _| {},
     )
     .unwrap();
     assert!(result.report.cancelled && result.base.cancelled);
@@ -188,16 +226,12 @@ fn an_operator_of_another_template_is_an_error() {
     } = case();
     let refinement = fine.refinement().unwrap();
     let few = &base.mesh().positions[..100];
+    let weights = data_weights(&fine);
     let err = coarse_to_fine_align(
-        few,
-        &base.mesh().triangles,
-        refinement,
-        &scan,
-        &data_weights(&fine),
-        &[],
-        &CoarseToFineParams::default(),
-        &mut |_, _| ControlFlow::Continue(()),
-        &mut |_, _, _| {},
+        &input(few, &base, &scan, refinement, &weights),
+        &FineAlignParams::default(),
+        &FineStageParams::default(),
+        &mut (),
     )
     .unwrap_err();
     assert!(err.to_string().contains("subdivision operator"), "{err}");

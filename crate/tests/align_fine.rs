@@ -3,7 +3,7 @@
 mod align_support;
 
 use align_support::{ellipsoid_point, map, uv_sphere, Rng};
-use bodyspace::align::{fine_align, FineAlignParams, ScanIndex};
+use bodyspace::align::{fine_align, FineAlignInput, FineAlignParams, Progress, ScanIndex};
 use bodyspace::mesh::Mesh;
 use nalgebra::{Point3, Vector3};
 use std::ops::ControlFlow;
@@ -40,12 +40,15 @@ fn converges_onto_bumpy_noisy_ellipsoid() {
     let weights = vec![1.0; template.positions.len()];
     let mut last_rms = f64::INFINITY;
     let result = fine_align(
-        &template.positions,
-        &template.triangles,
-        &index,
-        &weights,
+        &FineAlignInput {
+            positions: &template.positions,
+            triangles: &template.triangles,
+            scan: &index,
+            weights: &weights,
+            anchors: &[],
+        },
         &FineAlignParams::default(),
-        &mut |p| {
+        &mut |p: &Progress| {
             last_rms = p.rms;
             ControlFlow::Continue(())
         },
@@ -86,12 +89,15 @@ fn break_after_three_iterations_cancels_with_finite_state() {
     let weights = vec![1.0; template.positions.len()];
     let mut seen = 0;
     let result = fine_align(
-        &template.positions,
-        &template.triangles,
-        &index,
-        &weights,
+        &FineAlignInput {
+            positions: &template.positions,
+            triangles: &template.triangles,
+            scan: &index,
+            weights: &weights,
+            anchors: &[],
+        },
         &FineAlignParams::default(),
-        &mut |p| {
+        &mut |p: &Progress| {
             seen = p.iteration;
             if p.iteration >= 3 {
                 ControlFlow::Break(())
@@ -133,12 +139,15 @@ fn zero_weights_leave_vertices_to_smoothness() {
         ..FineAlignParams::default()
     };
     let result = fine_align(
-        &template.positions,
-        &template.triangles,
-        &index,
-        &weights,
+        &FineAlignInput {
+            positions: &template.positions,
+            triangles: &template.triangles,
+            scan: &index,
+            weights: &weights,
+            anchors: &[],
+        },
         &params,
-        &mut |_| ControlFlow::Continue(()),
+        &mut (),
     )
     .unwrap();
     eprintln!(
@@ -155,12 +164,15 @@ fn zero_weights_leave_vertices_to_smoothness() {
     // All weights zero: nothing pulls, identity is optimal, nothing moves.
     let zeros = vec![0.0; template.positions.len()];
     let still = fine_align(
-        &template.positions,
-        &template.triangles,
-        &index,
-        &zeros,
+        &FineAlignInput {
+            positions: &template.positions,
+            triangles: &template.triangles,
+            scan: &index,
+            weights: &zeros,
+            anchors: &[],
+        },
         &params,
-        &mut |_| ControlFlow::Continue(()),
+        &mut (),
     )
     .unwrap();
     for (a, b) in still.positions.iter().zip(&template.positions) {
@@ -176,33 +188,42 @@ fn bad_inputs_are_errors_not_panics() {
     let params = FineAlignParams::default();
     let short = vec![1.0; 3];
     assert!(fine_align(
-        &template.positions,
-        &template.triangles,
-        &index,
-        &short,
+        &FineAlignInput {
+            positions: &template.positions,
+            triangles: &template.triangles,
+            scan: &index,
+            weights: &short,
+            anchors: &[],
+        },
         &params,
-        &mut go
+        &mut go,
     )
     .is_err());
     let weights = vec![1.0; template.positions.len()];
     let bad_tri = vec![[0, 1, 999_999]];
     assert!(fine_align(
-        &template.positions,
-        &bad_tri,
-        &index,
-        &weights,
+        &FineAlignInput {
+            positions: &template.positions,
+            triangles: &bad_tri,
+            scan: &index,
+            weights: &weights,
+            anchors: &[],
+        },
         &params,
-        &mut go
+        &mut go,
     )
     .is_err());
     let bad_params = FineAlignParams { a: -1.0, ..params };
     assert!(fine_align(
-        &template.positions,
-        &template.triangles,
-        &index,
-        &weights,
+        &FineAlignInput {
+            positions: &template.positions,
+            triangles: &template.triangles,
+            scan: &index,
+            weights: &weights,
+            anchors: &[],
+        },
         &bad_params,
-        &mut go
+        &mut go,
     )
     .is_err());
     assert!(ScanIndex::new(&Mesh::new(scan.positions.clone(), vec![])).is_err());

@@ -5,9 +5,8 @@
 mod align_support;
 
 use align_support::agreement_case;
-use bodyspace::align::{fine_align, FineAlignParams, ScanIndex};
+use bodyspace::align::{fine_align, FineAlignInput, FineAlignParams, ScanIndex};
 use nalgebra::Point3;
-use std::ops::ControlFlow;
 
 fn fit_with_threads(threads: usize) -> Vec<Point3<f64>> {
     let (scan, template) = agreement_case();
@@ -19,12 +18,15 @@ fn fit_with_threads(threads: usize) -> Vec<Point3<f64>> {
         .unwrap();
     pool.install(|| {
         fine_align(
-            &template.positions,
-            &template.triangles,
-            &index,
-            &weights,
+            &FineAlignInput {
+                positions: &template.positions,
+                triangles: &template.triangles,
+                scan: &index,
+                weights: &weights,
+                anchors: &[],
+            },
             &FineAlignParams::default(),
-            &mut |_| ControlFlow::Continue(()),
+            &mut (),
         )
         .unwrap()
         .positions

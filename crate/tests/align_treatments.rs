@@ -3,21 +3,23 @@
 mod align_support;
 
 use align_support::{map, merge, tube, uv_sphere};
-use bodyspace::align::{fine_align, FineAlignParams, FineAlignResult, ScanIndex};
+use bodyspace::align::{fine_align, FineAlignInput, FineAlignParams, FineAlignResult, ScanIndex};
 use bodyspace::mesh::Mesh;
 use nalgebra::Point3;
-use std::ops::ControlFlow;
 
 fn run(template: &Mesh, scan: &Mesh, params: &FineAlignParams) -> FineAlignResult {
     let index = ScanIndex::new(scan).unwrap();
     let weights = vec![1.0; template.positions.len()];
     fine_align(
-        &template.positions,
-        &template.triangles,
-        &index,
-        &weights,
+        &FineAlignInput {
+            positions: &template.positions,
+            triangles: &template.triangles,
+            scan: &index,
+            weights: &weights,
+            anchors: &[],
+        },
         params,
-        &mut |_| ControlFlow::Continue(()),
+        &mut (),
     )
     .unwrap()
 }

@@ -67,13 +67,17 @@ fn rough_only_writes_the_warped_template_and_a_report() {
         String::from_utf8_lossy(&out.stderr)
     );
     let report: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
-    assert_eq!(report["landmarks_used"], 72 + 12);
-    assert_eq!(report["skipped"], serde_json::json!(["Rt. Dactylion"]));
-    assert_eq!(report["kernel"], "thin-plate");
-    let after = report["max_residual_after"].as_f64().unwrap();
+    let warp = &report["warp"];
+    assert_eq!(warp["used"].as_array().unwrap().len(), 72 + 12);
+    assert_eq!(warp["skipped"], serde_json::json!(["Rt. Dactylion"]));
+    assert_eq!(warp["kernel"], "thin-plate");
+    assert_eq!(report["units"], "millimetres");
+    assert!(report["fine"].is_null());
+    let after = warp["max_residual_after_mm"].as_f64().unwrap();
     assert!(after < 1e-8 * 2000.0, "landmark residual {after} mm");
-    assert!(report["max_residual_before"].as_f64().unwrap() > 20.0);
-    assert!((report["similarity"]["scale"].as_f64().unwrap() - 1000.0).abs() < 150.0);
+    assert!(warp["max_residual_before_mm"].as_f64().unwrap() > 20.0);
+    // The pipeline works in metres: template (m) → scan (m) is about the identity scale.
+    assert!((warp["similarity"]["scale"].as_f64().unwrap() - 1.0).abs() < 0.15);
 
     let bytes = std::fs::read(dir.join("warped.ply")).unwrap();
     let warped = read_scan(&bytes, "warped.ply").unwrap();

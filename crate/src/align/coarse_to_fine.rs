@@ -6,100 +6,86 @@
 //! Why: the base fit does the large, slow part of the work (annealing from the RBF warp, ≈ 28
 //! iterations) on 16× fewer vertices; the subdivided fit already lies within the base mesh's
 //! chord sag (≈ 0.5 mm) of the scan, so the fine level needs a few rounds at the paper's b and
-//! no annealing. Both stages are [`fine_align_general`]; a and b carry across the resolutions
+//! no annealing. Both stages are [`fine_align`]; a and b carry across the resolutions
 //! through `reference_edge_length` (docs/fine-alignment.md, "How a and b scale with the mesh").
 
 use std::ops::ControlFlow;
 
 use nalgebra::Point3;
+use serde::{Deserialize, Serialize};
 
 use super::error::AlignError;
-use super::fine_align::{fine_align_general, now_ms, Progress};
+use super::fine_align::{fine_align, FineAlignInput};
+use super::observer::{AlignObserver, Progress, Stage};
 use super::params::FineAlignParams;
 use super::report::{AlignReport, CurvePoint};
-use super::scan_index::ScanIndex;
 use crate::template::Subdivision;
+use crate::utils::now_ms;
 
-/// Which of the two stages a progress report or a round belongs to.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Stage {
-    /// Fine alignment of the base-resolution template.
-    Base,
-    /// The short fine alignment of the subdivided fit.
-    Fine,
+/// The schedule of the fine stage. Its energy (a, b, the treatments, the landmark and
+/// scan-to-template weights, the correspondence search) is the base stage's; only how long and
+/// how stiffly it runs differ. Defaults: no stiffness annealing (the base stage has done it),
+/// 2 iterations per round, at most 8 iterations, stop when a round moves the surface by less
+/// than 0.1 mm RMS, L-BFGS memory 3 (the fine level has 16× the unknowns; memory 7 would hold
+/// ≈ 390 MB of correction pairs). Measured in docs/fine-alignment.md, "Coarse to fine".
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(default)]
+pub struct FineStageParams {
+    /// Limit on the fine stage's L-BFGS iterations.
+    pub max_iterations: usize,
+    /// L-BFGS iterations between two correspondence searches.
+    pub iterations_per_round: usize,
+    /// Stop when a round moves the surface by less than this RMS (metres).
+    pub displacement_tolerance: f64,
+    /// L-BFGS memory m.
+    pub lbfgs_memory: usize,
+    /// Stiffness annealing of the fine stage (1.0: none), as in [`FineAlignParams`].
+    pub initial_stiffness: f64,
+    /// Factor by which the stiffness multiplier shrinks per round.
+    pub stiffness_decay: f64,
 }
 
-impl Stage {
-    /// "base" or "fine".
-    pub fn name(self) -> &'static str {
-        match self {
-            Stage::Base => "base",
-            Stage::Fine => "fine",
-        }
-    }
-}
-
-/// `on_round(stage, round, positions)` of [`coarse_to_fine_align`]: the surface at the fine
-/// resolution at the start of every round.
-pub type StagedRoundObserver<'a> = dyn FnMut(Stage, usize, &[Point3<f64>]) + 'a;
-
-/// The two schedules of [`coarse_to_fine_align`].
-#[derive(Debug, Clone, PartialEq)]
-pub struct CoarseToFineParams {
-    /// The base stage: the normal defaults ([`FineAlignParams::default`]).
-    pub base: FineAlignParams,
-    /// The fine stage: same a, b, treatments and correspondence search; no stiffness annealing
-    /// (the base stage has done it), 2 iterations per round, at most
-    /// [`FINE_STAGE_ITERATIONS`] iterations, stop when a round moves the surface by less than
-    /// 0.1 mm RMS, L-BFGS memory 3 (the fine level has 16× the unknowns; memory 7 would hold
-    /// ≈ 390 MB of correction pairs). Measured in docs/fine-alignment.md, "Coarse to fine".
-    pub fine: FineAlignParams,
-}
-
-/// Iteration limit of the default fine stage.
-pub const FINE_STAGE_ITERATIONS: usize = 8;
-
-impl Default for CoarseToFineParams {
+impl Default for FineStageParams {
     fn default() -> Self {
-        let base = FineAlignParams::default();
-        let fine = FineAlignParams {
-            initial_stiffness: 1.0,
+        Self {
+            max_iterations: 8,
             iterations_per_round: 2,
-            max_iterations: FINE_STAGE_ITERATIONS,
             displacement_tolerance: 1e-4,
             lbfgs_memory: 3,
-            ..base.clone()
-        };
-        Self { base, fine }
+            initial_stiffness: 1.0,
+            stiffness_decay: 0.7,
+        }
     }
 }
 
-impl CoarseToFineParams {
-    /// The default schedules around a caller's base-stage parameters: the fine stage keeps the
-    /// same energy (a, b, landmark and scan-to-template weights) and runs at most
-    /// `fine_iterations` iterations ([`FINE_STAGE_ITERATIONS`] when `None`).
-    pub fn around(base: &FineAlignParams, fine_iterations: Option<usize>) -> Self {
-        let defaults = Self::default();
-        let fine = FineAlignParams {
-            a: base.a,
-            b: base.b,
-            landmark_weight: base.landmark_weight,
-            scan_term_weight: base.scan_term_weight,
-            max_iterations: fine_iterations.unwrap_or(defaults.fine.max_iterations),
-            ..defaults.fine
-        };
-        Self {
-            base: base.clone(),
-            fine,
+impl FineStageParams {
+    /// The fine stage's full parameters: `base`'s energy with this schedule.
+    pub fn around(&self, base: &FineAlignParams) -> FineAlignParams {
+        FineAlignParams {
+            max_iterations: self.max_iterations,
+            iterations_per_round: self.iterations_per_round,
+            displacement_tolerance: self.displacement_tolerance,
+            lbfgs_memory: self.lbfgs_memory,
+            initial_stiffness: self.initial_stiffness,
+            stiffness_decay: self.stiffness_decay,
+            ..base.clone()
         }
     }
+}
 
-    /// Both stages' limits together: the most iterations a run can report.
-    pub fn max_iterations(&self) -> usize {
-        self.base
-            .max_iterations
-            .saturating_add(self.fine.max_iterations)
-    }
+/// The base template's fit and how it is carried to fine.
+#[derive(Debug, Clone, Copy)]
+pub struct CoarseToFineInput<'a> {
+    /// The base stage's input: `#Vb` RBF-warped base template (metres, scan frame), its
+    /// triangles, the scan, `#Vb` data weights and landmark anchors (base vertex indices, the
+    /// same vertices at fine; both stages use them).
+    pub base: FineAlignInput<'a>,
+    /// The template's subdivision operator base → fine (its `stencils` are `#Vf`, the first
+    /// `#Vb` being the base vertices; its `triangles` are the fine faces).
+    pub refinement: &'a Subdivision,
+    /// `#Vf` data weights of the fine template (a base vertex has the same flags at both
+    /// resolutions, so their first `#Vb` equal the base stage's).
+    pub fine_weights: &'a [f64],
 }
 
 /// The fine-resolution fit and its reports.
@@ -118,35 +104,26 @@ pub struct CoarseToFineResult {
 
 /// Fits the fine template to the scan, coarse to fine.
 ///
-/// * `base_positions`: `#Vb` RBF-warped base template (metres, scan frame); `base_triangles`.
-/// * `refinement`: the template's subdivision operator base → fine (its `stencils` are `#Vf`,
-///   the first `#Vb` being the base vertices; its `triangles` are the fine faces).
-/// * `weights`: `#Vf` data weights of the fine template; the base stage uses the first `#Vb`
-///   (a base vertex has the same flags at both resolutions).
-/// * `anchors`: landmark anchors as in [`super::fine_align_anchored`], base vertex indices
-///   (the same vertices at fine); both stages use them.
-/// * `on_progress(stage, progress)`: after every iteration, `iteration`, `round` and
-///   `elapsed_ms` counted from the start of the whole run; `Break` cancels.
-/// * `on_round(stage, round, positions)`: at the start of every round, the current surface at
-///   the fine resolution (`#Vf`; the base stage's surface carried through S), so a caller that
-///   may be stopped abruptly holds the last good state at the resolution it shows.
+/// `observer` hears both stages: iterations, rounds and `elapsed_ms` count on from the start of
+/// the whole run, `max_iterations` is both stages' limit together; its rounds hand the current
+/// surface at the fine resolution (the base stage's surface carried through S), so a caller that
+/// may be stopped abruptly holds the last good state at the resolution it shows.
 ///
 /// A cancelled base stage returns its last iterate carried to fine, with the report measured
 /// there and `cancelled = true`; a cancelled fine stage returns the fine stage's last iterate.
-#[allow(clippy::too_many_arguments)]
 pub fn coarse_to_fine_align(
-    base_positions: &[Point3<f64>],
-    base_triangles: &[[u32; 3]],
-    refinement: &Subdivision,
-    scan: &ScanIndex,
-    weights: &[f64],
-    anchors: &[(u32, Point3<f64>)],
-    params: &CoarseToFineParams,
-    on_progress: &mut dyn FnMut(Stage, &Progress) -> ControlFlow<()>,
-    on_round: &mut StagedRoundObserver<'_>,
+    input: &CoarseToFineInput<'_>,
+    base_params: &FineAlignParams,
+    fine_stage: &FineStageParams,
+    observer: &mut dyn AlignObserver,
 ) -> Result<CoarseToFineResult, AlignError> {
     let start = now_ms();
-    let base_count = base_positions.len();
+    let CoarseToFineInput {
+        base: base_input,
+        refinement,
+        fine_weights,
+    } = *input;
+    let base_count = base_input.positions.len();
     let fine_count = refinement.stencils.len();
     if refinement.base_vertex_count != base_count || fine_count < base_count {
         return Err(AlignError::Refinement {
@@ -155,23 +132,28 @@ pub fn coarse_to_fine_align(
             operator_fine_vertices: fine_count,
         });
     }
-    if weights.len() != fine_count {
+    if fine_weights.len() != fine_count {
         return Err(AlignError::WeightCount {
-            got: weights.len(),
+            got: fine_weights.len(),
             expected: fine_count,
         });
     }
-    params.fine.validate()?;
+    let fine_params = fine_stage.around(base_params);
+    fine_params.validate()?;
+    let max_iterations = base_params
+        .max_iterations
+        .saturating_add(fine_params.max_iterations);
 
-    let base = fine_align_general(
-        base_positions,
-        base_triangles,
-        scan,
-        &weights[..base_count],
-        anchors,
-        &params.base,
-        &mut |p| on_progress(Stage::Base, p),
-        &mut |round, positions| on_round(Stage::Base, round, &refinement.apply(positions)),
+    let base = fine_align(
+        &base_input,
+        base_params,
+        &mut Staged {
+            outer: observer,
+            stage: Stage::Base,
+            max_iterations,
+            offsets: (0, 0, 0.0),
+            refinement: Some(refinement),
+        },
     )?;
 
     let subdivide_start = now_ms();
@@ -183,30 +165,28 @@ pub fn coarse_to_fine_align(
     let fine_params = if base.report.cancelled {
         FineAlignParams {
             max_iterations: 0,
-            ..params.fine.clone()
+            ..fine_params
         }
     } else {
-        params.fine.clone()
+        fine_params
     };
     let (iteration_offset, round_offset) = (base.report.iterations, base.report.rounds);
     let elapsed_offset = now_ms() - start;
-    let fine = fine_align_general(
-        &fine_start,
-        &refinement.triangles,
-        scan,
-        weights,
-        anchors,
-        &fine_params,
-        &mut |p| {
-            let continued = Progress {
-                iteration: p.iteration + iteration_offset,
-                round: p.round + round_offset,
-                elapsed_ms: p.elapsed_ms + elapsed_offset,
-                ..*p
-            };
-            on_progress(Stage::Fine, &continued)
+    let fine = fine_align(
+        &FineAlignInput {
+            positions: &fine_start,
+            triangles: &refinement.triangles,
+            weights: fine_weights,
+            ..base_input
         },
-        &mut |round, positions| on_round(Stage::Fine, round + round_offset, positions),
+        &fine_params,
+        &mut Staged {
+            outer: observer,
+            stage: Stage::Fine,
+            max_iterations,
+            offsets: (iteration_offset, round_offset, elapsed_offset),
+            refinement: None,
+        },
     )?;
 
     let mut curve = base.report.curve.clone();
@@ -235,4 +215,38 @@ pub fn coarse_to_fine_align(
         base: base.report,
         subdivide_ms,
     })
+}
+
+/// One stage's view of the caller's observer: progress renumbered to count on across the
+/// stages, rounds of the base stage carried to fine.
+struct Staged<'a, 'b> {
+    outer: &'a mut dyn AlignObserver,
+    stage: Stage,
+    max_iterations: usize,
+    /// Iterations, rounds and milliseconds of the stages before this one.
+    offsets: (usize, usize, f64),
+    /// At the base stage: the operator that carries its surface to fine.
+    refinement: Option<&'b Subdivision>,
+}
+
+impl AlignObserver for Staged<'_, '_> {
+    fn progress(&mut self, p: &Progress) -> ControlFlow<()> {
+        let (iterations, rounds, ms) = self.offsets;
+        self.outer.progress(&Progress {
+            stage: self.stage,
+            iteration: p.iteration + iterations,
+            max_iterations: self.max_iterations,
+            round: p.round + rounds,
+            elapsed_ms: p.elapsed_ms + ms,
+            ..*p
+        })
+    }
+
+    fn round(&mut self, _stage: Stage, round: usize, positions: &[Point3<f64>]) {
+        let round = round + self.offsets.1;
+        match self.refinement {
+            Some(s) => self.outer.round(self.stage, round, &s.apply(positions)),
+            None => self.outer.round(self.stage, round, positions),
+        }
+    }
 }

@@ -8,13 +8,14 @@
 //! from the current transforms, with E_s weighted by b·max(1, initial_stiffness·decay^r). It stops
 //! after a round that lowered E by less than `relative_tolerance`·E or moved the vertices by less
 //! than `displacement_tolerance` RMS (once annealing is over), after
-//! `max_iterations` iterations in total, or when `on_progress` returns `Break`.
+//! `max_iterations` iterations in total, or when the observer returns `Break`.
 
 use super::energy::{
     identity_transforms, transformed, AlignEnergy, BlockPreconditioner, EnergyTerms,
 };
 use super::error::AlignError;
 use super::lbfgs::{Lbfgs, Objective, Step};
+use super::observer::{AlignObserver, Progress, Stage};
 use super::params::FineAlignParams;
 use super::report::{
     scan_to_template_distances, template_to_scan_distances, AlignReport, CurvePoint, DistanceStats,
@@ -22,28 +23,27 @@ use super::report::{
 use super::scan_index::{validate_mesh, MatchQuery, ScanIndex};
 use super::scan_term::ScanTerm;
 use super::surface::{unique_edges, vertex_normals_into};
+use crate::utils::now_ms;
+use crate::utils::parallel::for_each_pair_mut;
 use nalgebra::{Point3, Vector3};
-use std::ops::ControlFlow;
 
-/// Sent after every L-BFGS iteration.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Progress {
-    /// Iterations done so far (1-based after the first).
-    pub iteration: usize,
-    /// Correspondence round (0-based).
-    pub round: usize,
-    /// The minimised objective E (with this round's weights).
-    pub energy: f64,
-    /// E_d = Σ w_i dist² (m²) over vertices with a data term this round (paper eq. 6).
-    pub data_error: f64,
-    /// E_s = Σ_edges ‖T_i − T_j‖²_F (paper eq. 7).
-    pub smoothness_error: f64,
-    /// RMS distance (m) of matched template vertices to their closest scan points.
-    pub rms: f64,
-    /// Template vertices with a data term this round.
-    pub matched: usize,
-    /// Milliseconds since the start.
-    pub elapsed_ms: f64,
+/// The template to fit and what it is fitted to.
+#[derive(Debug, Clone, Copy)]
+pub struct FineAlignInput<'a> {
+    /// `#V` template positions (metres, in the scan's frame; usually the RBF-warped template).
+    pub positions: &'a [Point3<f64>],
+    /// `#F` template triangles.
+    pub triangles: &'a [[u32; 3]],
+    /// The scan's [`ScanIndex`], built once per scan.
+    pub scan: &'a ScanIndex,
+    /// `#V` data weights w_i ≥ 0 (1 normally, 0.1 hands and ears, 0 unseen regions).
+    pub weights: &'a [f64],
+    /// Landmark anchors `(vertex, target)` (metres, scan frame; usually where the RBF warp put
+    /// the landmark vertex). Each adds a·κ·`landmark_weight`·‖T_i v_i − target‖², folded into the
+    /// vertex's data term (α‖x − c‖² + β‖x − L‖² = (α+β)‖x − (αc+βL)/(α+β)‖² + const), so the
+    /// reported E_d and RMS of anchored vertices are to that blended target. Empty, or
+    /// `landmark_weight` 0, is the paper's energy.
+    pub anchors: &'a [(u32, Point3<f64>)],
 }
 
 /// The aligned template and its report.
@@ -53,21 +53,6 @@ pub struct FineAlignResult {
     pub positions: Vec<Point3<f64>>,
     /// Statistics, curve and per-vertex distances.
     pub report: AlignReport,
-}
-
-/// Milliseconds on a monotonic-enough clock (`Instant` does not exist on wasm32-unknown-unknown).
-pub(crate) fn now_ms() -> f64 {
-    #[cfg(target_arch = "wasm32")]
-    {
-        js_sys::Date::now()
-    }
-    #[cfg(not(target_arch = "wasm32"))]
-    {
-        use std::sync::OnceLock;
-        use std::time::Instant;
-        static START: OnceLock<Instant> = OnceLock::new();
-        START.get_or_init(Instant::now).elapsed().as_secs_f64() * 1e3
-    }
 }
 
 /// The energy of one round plus its preconditioner, remembering the terms of the last evaluation.
@@ -92,100 +77,27 @@ impl Objective for RoundObjective<'_> {
 }
 
 /// Fits the (RBF-warped) template to the scan by per-vertex affine transforms T_i minimising
-/// E = a·κ·Σ w_i dist²(T_i v_i, Γ) + b·Σ_edges ‖T_i − T_j‖²_F (paper eq. 6–8), κ = (h̄/h_ref)².
+/// E = a·κ·Σ w_i dist²(T_i v_i, Γ) + b·Σ_edges ‖T_i − T_j‖²_F (+ the scan-to-template term E_r
+/// when `params.scan_term_weight` > 0) (paper eq. 6–8; the energy is in `energy.rs`),
+/// κ = (h̄/h_ref)².
 ///
-/// * `template_positions`: `#V` (metres, in the scan's frame); `triangles`: `#F` template faces.
-/// * `scan`: the scan's [`ScanIndex`], built once per scan.
-/// * `weights`: `#V` data weights w_i ≥ 0 (1 normally, 0.1 hands and ears, 0 unseen regions).
-/// * `on_progress`: called after every iteration; `Break` cancels, and the result is then the
-///   last accepted iterate with `report.cancelled = true`.
+/// `observer` hears every iteration (stage [`Stage::Base`]) and every round's surface; a `Break`
+/// cancels, and the result is then the last accepted iterate with `report.cancelled = true`.
 ///
-/// Returns the fitted positions (same order) and the report. Vertices are centred on the template
-/// centroid before building ṽ_i, so E_s does not depend on where the scan's origin is.
+/// Returns the fitted positions (input order) and the report. Vertices are centred on the
+/// template centroid before building ṽ_i, so E_s does not depend on where the scan's origin is.
 pub fn fine_align(
-    template_positions: &[Point3<f64>],
-    triangles: &[[u32; 3]],
-    scan: &ScanIndex,
-    weights: &[f64],
+    input: &FineAlignInput<'_>,
     params: &FineAlignParams,
-    on_progress: &mut dyn FnMut(&Progress) -> ControlFlow<()>,
+    observer: &mut dyn AlignObserver,
 ) -> Result<FineAlignResult, AlignError> {
-    fine_align_general(
-        template_positions,
-        triangles,
-        scan,
-        weights,
-        &[],
-        params,
-        on_progress,
-        &mut |_, _| {},
-    )
-}
-
-/// [`fine_align`] that also hands `on_round(round, positions)` the current template positions
-/// (`#V`, metres, input order) at the start of every correspondence round, so a caller that may
-/// be stopped abruptly (a terminated web worker) always holds the last good state.
-pub fn fine_align_observed(
-    template_positions: &[Point3<f64>],
-    triangles: &[[u32; 3]],
-    scan: &ScanIndex,
-    weights: &[f64],
-    params: &FineAlignParams,
-    on_progress: &mut dyn FnMut(&Progress) -> ControlFlow<()>,
-    on_round: &mut dyn FnMut(usize, &[Point3<f64>]),
-) -> Result<FineAlignResult, AlignError> {
-    fine_align_general(
-        template_positions,
-        triangles,
-        scan,
-        weights,
-        &[],
-        params,
-        on_progress,
-        on_round,
-    )
-}
-
-/// [`fine_align`] with landmark anchors: `anchors[k] = (vertex, target)` adds
-/// a·κ·`params.landmark_weight`·‖T_i v_i − target‖² for that vertex (metres, scan frame; usually
-/// the scan landmark the RBF warp interpolated). The anchor is folded into the vertex's data term
-/// (α‖x − c‖² + β‖x − L‖² = (α+β)‖x − (αc+βL)/(α+β)‖² + const), so the reported E_d and RMS of
-/// anchored vertices are to that blended target. With `landmark_weight` 0 or no anchors this is
-/// exactly [`fine_align`].
-pub fn fine_align_anchored(
-    template_positions: &[Point3<f64>],
-    triangles: &[[u32; 3]],
-    scan: &ScanIndex,
-    weights: &[f64],
-    anchors: &[(u32, Point3<f64>)],
-    params: &FineAlignParams,
-    on_progress: &mut dyn FnMut(&Progress) -> ControlFlow<()>,
-) -> Result<FineAlignResult, AlignError> {
-    fine_align_general(
-        template_positions,
+    let FineAlignInput {
+        positions: template_positions,
         triangles,
         scan,
         weights,
         anchors,
-        params,
-        on_progress,
-        &mut |_, _| {},
-    )
-}
-
-/// The one implementation behind [`fine_align`], [`fine_align_observed`] and
-/// [`fine_align_anchored`]: anchors and a per-round observer together.
-#[allow(clippy::too_many_arguments)]
-pub fn fine_align_general(
-    template_positions: &[Point3<f64>],
-    triangles: &[[u32; 3]],
-    scan: &ScanIndex,
-    weights: &[f64],
-    anchors: &[(u32, Point3<f64>)],
-    params: &FineAlignParams,
-    on_progress: &mut dyn FnMut(&Progress) -> ControlFlow<()>,
-    on_round: &mut dyn FnMut(usize, &[Point3<f64>]),
-) -> Result<FineAlignResult, AlignError> {
+    } = *input;
     let start = now_ms();
     params.validate()?;
     let n = template_positions.len();
@@ -280,9 +192,9 @@ pub fn fine_align_general(
             converged = true;
             break;
         }
-        on_round(round, &positions);
+        observer.round(Stage::Base, round, &positions);
         vertex_normals_into(&positions, triangles, &mut normals);
-        for_each_vertex(&mut targets, &mut coefficients, |i, target, coefficient| {
+        for_each_pair_mut(&mut targets, &mut coefficients, |i, target, coefficient| {
             *coefficient = 0.0;
             if weights[i] <= 0.0 {
                 return;
@@ -346,7 +258,9 @@ pub fn fine_align_general(
             let point = curve_point(iteration, now_ms() - start, t);
             curve.push(point);
             let progress = Progress {
+                stage: Stage::Base,
                 iteration,
+                max_iterations: params.max_iterations,
                 round,
                 energy: t.total,
                 data_error: t.data_weighted / data_scale,
@@ -355,7 +269,7 @@ pub fn fine_align_general(
                 matched: t.matched,
                 elapsed_ms: point.elapsed_ms,
             };
-            if on_progress(&progress).is_break() {
+            if observer.progress(&progress).is_break() {
                 cancelled = true;
                 break 'rounds;
             }
@@ -397,32 +311,6 @@ pub fn fine_align_general(
             per_vertex_distance,
         },
     })
-}
-
-/// Calls `f(i, &mut targets[i], &mut coefficients[i])` for every template vertex: on native
-/// builds on all cores (rayon), on wasm32 in order. Each call writes only its own vertex, so the
-/// result does not depend on the number of threads.
-#[cfg(not(target_arch = "wasm32"))]
-fn for_each_vertex<F>(targets: &mut [Point3<f64>], coefficients: &mut [f64], f: F)
-where
-    F: Fn(usize, &mut Point3<f64>, &mut f64) + Sync,
-{
-    use rayon::prelude::*;
-    targets
-        .par_iter_mut()
-        .zip(coefficients.par_iter_mut())
-        .enumerate()
-        .for_each(|(i, (t, c))| f(i, t, c));
-}
-
-#[cfg(target_arch = "wasm32")]
-fn for_each_vertex<F>(targets: &mut [Point3<f64>], coefficients: &mut [f64], f: F)
-where
-    F: Fn(usize, &mut Point3<f64>, &mut f64),
-{
-    for (i, (t, c)) in targets.iter_mut().zip(coefficients.iter_mut()).enumerate() {
-        f(i, t, c);
-    }
 }
 
 fn curve_point(iteration: usize, elapsed_ms: f64, t: &EnergyTerms) -> CurvePoint {

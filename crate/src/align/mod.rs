@@ -1,38 +1,51 @@
-//! Fine alignment (paper §3.2): per-vertex affine transforms minimising E = a·E_d + b·E_s.
+//! Fine alignment (paper §3.2) and the whole alignment pipeline around it.
 //!
-//! * [`ScanIndex`] (`scan_index.rs`) — closest points on the scan, built once per scan.
-//! * [`surface`] — normals, edges, one-rings, boundary flags, closest point on a triangle.
-//! * [`energy`] — E_d, E_s (paper eq. 6–8) and their analytic gradient.
-//! * [`scan_term`] — the optional scan-to-template term E_r (not in the paper).
-//! * [`lbfgs`] — allocation-free L-BFGS with exact line search on the quadratic inner problem.
+//! * [`pipeline`] — [`align_scan`]: scan → units → RBF warp → weights and anchors → scan index →
+//!   fine or coarse-to-fine alignment → [`AlignmentReport`]; the one place the chain is assembled.
+//! * [`observer`] — [`Progress`], [`Stage`] and [`AlignObserver`]: progress, rounds, cancel.
 //! * [`fine_align()`] (`fine_align.rs`) — the outer loop: find correspondences, minimise, repeat.
 //! * [`coarse_to_fine_align`] (`coarse_to_fine.rs`) — the `fine` template: base fit, carried to
 //!   fine by the subdivision operator, then a short fine-level alignment.
-//! * [`report`] — the paper's Table 1 statistics, per-vertex distances, time-to-RMS curve.
+//! * [`energy`] — E_d, E_s (paper eq. 6–8) and their analytic gradient.
+//! * [`scan_term`] — the scan-to-template term E_r (not in the paper; switchable).
+//! * [`lbfgs`] — allocation-free L-BFGS with exact line search on the quadratic inner problem.
+//! * [`ScanIndex`] (`scan_index.rs`) — closest points on a triangle mesh, built once per mesh.
+//! * [`surface`] — closest point on a triangle, one-rings.
+//! * [`weights`] — the per-vertex data weights from the template's region flags.
+//! * [`anchors`] — landmark anchors (optional, weight 0 by default).
+//! * [`report`] — the paper's Table 1 statistics, per-vertex distances, the convergence curve.
+//! * [`alignment_report`] — the pipeline's serialisable report (lengths in mm).
+//! * [`correspondence`] — correspondence error against a ground truth.
 //! * [`FineAlignParams`] (`params.rs`), [`AlignError`] (`error.rs`).
 
+pub mod alignment_report;
+pub mod anchors;
 pub mod coarse_to_fine;
+pub mod correspondence;
 pub mod energy;
 pub mod error;
 pub mod fine_align;
 pub mod lbfgs;
+pub mod observer;
 pub mod params;
+pub mod pipeline;
 pub mod report;
 pub mod scan_index;
 pub mod scan_term;
 pub mod surface;
 pub mod weights;
 
+pub use alignment_report::{AlignmentReport, FineReport, WarpReport};
+pub use anchors::landmark_anchors;
 pub use coarse_to_fine::{
-    coarse_to_fine_align, CoarseToFineParams, CoarseToFineResult, Stage, StagedRoundObserver,
-    FINE_STAGE_ITERATIONS,
+    coarse_to_fine_align, CoarseToFineInput, CoarseToFineResult, FineStageParams,
 };
+pub use correspondence::{correspondence_report, CorrespondenceReport, ErrorSummaryMm};
 pub use error::AlignError;
-pub use fine_align::{
-    fine_align, fine_align_anchored, fine_align_general, fine_align_observed, FineAlignResult,
-    Progress,
-};
+pub use fine_align::{fine_align, FineAlignInput, FineAlignResult};
+pub use observer::{AlignObserver, Progress, Stage};
 pub use params::{CorrespondenceMode, FineAlignParams};
+pub use pipeline::{align_scan, AlignInput, AlignParams, Alignment, PipelineError};
 pub use report::{
     scan_to_template_distances, template_to_scan_distances, AlignReport, CurvePoint, DistanceStats,
 };

@@ -18,7 +18,8 @@ pub enum CorrespondenceMode {
     ClosestOnTriangle,
 }
 
-/// Parameters of [`crate::align::fine_align`]. Lengths are in metres.
+/// Parameters of [`crate::align::fine_align`], with the defaults of the pipeline. Lengths are in
+/// metres.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(default)]
 pub struct FineAlignParams {
@@ -57,7 +58,9 @@ pub struct FineAlignParams {
     pub candidates: usize,
     /// A vertex whose match lies on a hole rim gets no data term that round (paper §3.2.1).
     pub skip_boundary_matches: bool,
-    /// Matches farther than this (m) are ignored that round; `f64::INFINITY` keeps all.
+    /// Matches farther than this (m) are ignored that round; `f64::INFINITY` keeps all (JSON
+    /// writes infinity as `null` and reads `null` back as infinity).
+    #[serde(deserialize_with = "infinity_if_null")]
     pub max_match_distance: f64,
     /// Stiffness annealing (Amberg et al. 2007 style; not in the paper): E_s is weighted by b·s_r
     /// in round r, with s_r = max(1, initial_stiffness·stiffness_decay^r); 1.0 switches annealing
@@ -66,11 +69,10 @@ pub struct FineAlignParams {
     pub initial_stiffness: f64,
     /// Factor by which the stiffness multiplier shrinks per round (0 < decay ≤ 1). Default 0.7.
     pub stiffness_decay: f64,
-    /// Weight of the landmark anchors of [`crate::align::fine_align_anchored`] relative to the
-    /// data weight 1 of a vertex: an anchored vertex is also pulled towards its landmark by
+    /// Weight of the landmark anchors ([`crate::align::FineAlignInput::anchors`]) relative to
+    /// the data weight 1 of a vertex: an anchored vertex is also pulled towards its landmark by
     /// a·κ·landmark_weight·‖T_i v_i − L_i‖² (an addition to the paper, which drops the markers
-    /// after the RBF warp; docs/fine-alignment.md measures it). 0 switches anchoring off; plain
-    /// [`crate::align::fine_align`] has no anchors and ignores it.
+    /// after the RBF warp; docs/fine-alignment.md measures it). Default 0: anchoring off.
     pub landmark_weight: f64,
     /// Weight of the scan-to-template term E_r (`scan_term.rs`; not in the paper) relative to
     /// E_d: its samples together carry `scan_term_weight` times the total data weight of the
@@ -87,6 +89,11 @@ pub struct FineAlignParams {
     pub scan_term_from_stiffness: f64,
     /// Scan samples farther than this (m) from the template get no E_r term that round.
     pub scan_term_max_distance: f64,
+}
+
+/// Reads a length where JSON `null` (how serde_json writes infinity) means infinity.
+fn infinity_if_null<'de, D: serde::Deserializer<'de>>(d: D) -> Result<f64, D::Error> {
+    Ok(Option::<f64>::deserialize(d)?.unwrap_or(f64::INFINITY))
 }
 
 impl Default for FineAlignParams {

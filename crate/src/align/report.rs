@@ -91,13 +91,6 @@ pub struct AlignReport {
     pub per_vertex_distance: Vec<f64>,
 }
 
-impl AlignReport {
-    /// First iteration and time at which the curve's RMS fell to `rms` (paper Table 2: 6.2 mm).
-    pub fn time_to_rms(&self, rms: f64) -> Option<CurvePoint> {
-        self.curve.iter().copied().find(|p| p.rms <= rms)
-    }
-}
-
 const EXACT: MatchQuery = MatchQuery {
     mode: CorrespondenceMode::VertexOneRing,
     min_cos: None,

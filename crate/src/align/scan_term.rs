@@ -157,17 +157,9 @@ pub fn find_scan_samples(
     settings: &ScanTermSettings<'_>,
     out: &mut Vec<ScanSample>,
 ) -> usize {
-    let find = |&s: &u32| sample_of(scan, s as usize, template, settings);
-    #[cfg(not(target_arch = "wasm32"))]
-    {
-        use rayon::prelude::*;
-        *out = sample_vertices.par_iter().filter_map(find).collect();
-    }
-    #[cfg(target_arch = "wasm32")]
-    {
-        out.clear();
-        out.extend(sample_vertices.iter().filter_map(find));
-    }
+    crate::utils::parallel::filter_map_into(sample_vertices, out, |&s: &u32| {
+        sample_of(scan, s as usize, template, settings)
+    });
     out.len()
 }
 

@@ -1,7 +1,6 @@
 //! The native `bodyspace` command-line program: one module per subcommand.
 
 pub mod align;
-pub mod align_fine;
 pub mod build_model;
 pub mod export_gltf;
 pub mod info;

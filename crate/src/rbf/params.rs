@@ -10,6 +10,7 @@ use super::kernel::Kernel;
 /// Procrustes has taken the scan landmarks there, so c and s mean the same for a scan in
 /// millimetres and one in metres.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(default)]
 pub struct RbfParams {
     /// The radial basis function. Default: thin-plate spline — measured after the FULL pipeline
     /// (RBF warp + fine alignment, 10 synthetic subjects) it leaves the lowest correspondence

@@ -1,0 +1,264 @@
+//! The whole alignment of one scan, in one place: scan → units → RBF warp (paper §3.1) → data
+//! weights and landmark anchors → scan index → fine alignment (§3.2), coarse to fine at the `fine`
+//! resolution → report. The command line, the WASM bindings, the examples and the tests all call
+//! [`align_scan`]; nothing else assembles this chain.
+//!
+//! Frames and units: the scan and its landmarks come in the scan's own frame and units; the
+//! pipeline scales them to metres (given units, or detected from the body's extent) and works in
+//! the scan's frame in metres from then on. Every position it returns is in that frame, in metres,
+//! in template vertex order; [`Alignment::scale_to_metres`] converts back to the scan's units.
+
+use std::borrow::Cow;
+
+use nalgebra::Point3;
+use serde::{Deserialize, Serialize};
+use thiserror::Error;
+
+use super::alignment_report::{AlignmentReport, FineReport, WarpReport};
+use super::anchors::landmark_anchors;
+use super::coarse_to_fine::{coarse_to_fine_align, CoarseToFineInput, FineStageParams};
+use super::correspondence::correspondence_report;
+use super::error::AlignError;
+use super::fine_align::{fine_align, FineAlignInput};
+use super::observer::AlignObserver;
+use super::params::FineAlignParams;
+use super::scan_index::ScanIndex;
+use super::weights::data_weights;
+use crate::landmarks::{Landmark, LandmarkSet};
+use crate::mesh::units::{detect_units, Units};
+use crate::mesh::Mesh;
+use crate::rbf::{rbf_warp_mesh, RbfError, RbfParams};
+use crate::template::{Resolution, Template};
+use crate::utils::now_ms;
+
+/// What one alignment works on.
+#[derive(Debug, Clone, Copy)]
+pub struct AlignInput<'a> {
+    /// The template at the resolution to align (`base`, or `fine`: aligned coarse to fine).
+    pub template: &'a Template,
+    /// At `fine`: the same template at `base`, when the caller keeps one (it is made from
+    /// `template` otherwise).
+    pub base_template: Option<&'a Template>,
+    /// The scan, in its own frame and units.
+    pub scan: &'a Mesh,
+    /// The scan's landmarks, in the scan's frame and units (missing ones are skipped).
+    pub landmarks: &'a LandmarkSet,
+    /// The scan's units; `None` detects them from the body's extent ([`detect_units`]).
+    pub units: Option<Units>,
+}
+
+/// Every parameter of the pipeline, each with its documented default (the defaults live in the
+/// `Default` impls of the parts, and nowhere else: the CLI and the app read them from here).
+/// Absent fields of a JSON object keep their defaults.
+#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
+#[serde(default)]
+pub struct AlignParams {
+    /// The RBF warp (paper §3.1).
+    pub rbf: RbfParams,
+    /// Fine alignment (paper §3.2) — at `fine`, of its base stage.
+    pub fine: FineAlignParams,
+    /// At `fine`: the schedule of the short fine stage after the base fit.
+    pub fine_stage: FineStageParams,
+    /// Stop after the RBF warp.
+    pub rough_only: bool,
+}
+
+impl AlignParams {
+    /// Checks the fine-alignment parameters of both stages (the RBF parameters are checked by
+    /// the warp itself, before any work).
+    pub fn validate(&self) -> Result<(), AlignError> {
+        self.fine.validate()?;
+        self.fine_stage.around(&self.fine).validate()
+    }
+
+    /// The most iterations a run with these parameters can report at `resolution`.
+    pub fn max_iterations(&self, resolution: Resolution) -> usize {
+        match resolution {
+            Resolution::Base => self.fine.max_iterations,
+            _ => self
+                .fine
+                .max_iterations
+                .saturating_add(self.fine_stage.max_iterations),
+        }
+    }
+}
+
+/// Why an alignment did not run; each message names the step and what to do.
+#[derive(Debug, Error)]
+pub enum PipelineError {
+    /// The RBF warp refused (too few landmarks, a degenerate configuration, a bad kernel…).
+    #[error("RBF warp: {0}")]
+    Warp(#[from] RbfError),
+    /// The scan cannot be indexed for closest points (no triangles, bad indices, NaN).
+    #[error("{0}")]
+    Scan(AlignError),
+    /// Fine alignment refused its parameters or inputs.
+    #[error("fine alignment: {0}")]
+    Align(#[from] AlignError),
+}
+
+/// A finished (or cancelled) alignment.
+#[derive(Debug, Clone)]
+pub struct Alignment {
+    /// `#V` fitted template positions (the warped ones with `rough_only`): metres, the scan's
+    /// frame, template order.
+    pub positions: Vec<Point3<f64>>,
+    /// The RBF-warped template that fine alignment started from (at `fine`: the base template),
+    /// metres, the scan's frame.
+    pub warped: Vec<Point3<f64>>,
+    /// `#V` signed distance (metres) of each fitted vertex to the scan (empty with `rough_only`).
+    pub per_vertex_distance: Vec<f64>,
+    /// The factor that took the scan's units to metres (divide by it to write in scan units).
+    pub scale_to_metres: f64,
+    /// Everything the run measured, ready for JSON.
+    pub report: AlignmentReport,
+}
+
+impl Alignment {
+    /// Adds the correspondence error against `truth` (true template positions, at least the base
+    /// vertices, metres, the scan's frame) to the report.
+    pub fn compare_with_truth(&mut self, template: &Template, truth: &[Point3<f64>]) {
+        self.report.correspondence = Some(correspondence_report(
+            template,
+            &self.warped,
+            &self.positions,
+            truth,
+        ));
+    }
+}
+
+/// Aligns `input.template` to `input.scan`: the RBF warp of the (base) template by the landmarks,
+/// then — unless `params.rough_only` — fine alignment, coarse to fine when the template is at
+/// `fine`. `observer` hears every iteration (a `Break` cancels: the result is the last accepted
+/// iterate, flagged `cancelled` in the report) and every round's surface.
+pub fn align_scan(
+    input: &AlignInput<'_>,
+    params: &AlignParams,
+    observer: &mut dyn AlignObserver,
+) -> Result<Alignment, PipelineError> {
+    let started = now_ms();
+    params.validate()?;
+    let template = input.template;
+    // A rough-only run warps the template at its own resolution; a full run at `fine` warps and
+    // fits the base template first.
+    let coarse_to_fine = template.refinement().filter(|_| !params.rough_only);
+    let warped_template: Cow<Template> = match (coarse_to_fine, input.base_template) {
+        (None, _) => Cow::Borrowed(template),
+        (Some(_), Some(base)) => Cow::Borrowed(base),
+        (Some(_), None) => Cow::Owned(template.at_resolution(Resolution::Base)),
+    };
+
+    let units = input
+        .units
+        .unwrap_or_else(|| detect_units(largest_extent(&input.scan.positions)));
+    let to_m = units.scale_to_metres();
+    let scan = Mesh::new(
+        input.scan.positions.iter().map(|p| p * to_m).collect(),
+        input.scan.triangles.clone(),
+    );
+    let landmarks = scaled_landmarks(input.landmarks, to_m);
+
+    let warp = rbf_warp_mesh(
+        warped_template.mesh(),
+        &warped_template.landmark_positions(),
+        &scan,
+        &landmarks,
+        &params.rbf,
+    )?;
+    let rough_ms = now_ms() - started;
+    let anchors = landmark_anchors(&warped_template, &warp.positions, &warp.used);
+    let mut report = AlignmentReport {
+        template_resolution: template.resolution().name(),
+        coarse_to_fine: coarse_to_fine.is_some(),
+        template_vertices: template.mesh().positions.len(),
+        scan_vertices: scan.positions.len(),
+        units,
+        units_detected: input.units.is_none(),
+        params: params.clone(),
+        warp: WarpReport::of(&warp, &params.rbf),
+        anchors: anchors.len(),
+        fine: None,
+        correspondence: None,
+        rough_ms,
+        index_ms: 0.0,
+        total_ms: rough_ms,
+    };
+    if params.rough_only {
+        return Ok(Alignment {
+            positions: warp.positions.clone(),
+            warped: warp.positions,
+            per_vertex_distance: Vec::new(),
+            scale_to_metres: to_m,
+            report,
+        });
+    }
+
+    let index_start = now_ms();
+    let index = ScanIndex::new(&scan).map_err(PipelineError::Scan)?;
+    report.index_ms = now_ms() - index_start;
+    let weights = data_weights(template);
+    let base_input = FineAlignInput {
+        positions: &warp.positions,
+        triangles: &warped_template.mesh().triangles,
+        scan: &index,
+        weights: &weights[..warp.positions.len()],
+        anchors: &anchors,
+    };
+    let (positions, per_vertex_distance, fine) = match coarse_to_fine {
+        None => {
+            let result = fine_align(&base_input, &params.fine, observer)?;
+            let fine = FineReport::of(&result.report, true);
+            (result.positions, result.report.per_vertex_distance, fine)
+        }
+        Some(refinement) => {
+            let result = coarse_to_fine_align(
+                &CoarseToFineInput {
+                    base: base_input,
+                    refinement,
+                    fine_weights: &weights,
+                },
+                &params.fine,
+                &params.fine_stage,
+                observer,
+            )?;
+            let fine = FineReport::of_coarse_to_fine(&result, params.fine_stage.max_iterations);
+            (result.positions, result.report.per_vertex_distance, fine)
+        }
+    };
+    report.fine = Some(fine);
+    report.total_ms = now_ms() - started;
+    Ok(Alignment {
+        positions,
+        warped: warp.positions,
+        per_vertex_distance,
+        scale_to_metres: to_m,
+        report,
+    })
+}
+
+/// The landmarks scaled by `to_m` (names and the missing/unknown lists unchanged).
+fn scaled_landmarks(landmarks: &LandmarkSet, to_m: f64) -> LandmarkSet {
+    LandmarkSet {
+        landmarks: landmarks
+            .landmarks
+            .iter()
+            .map(|l| Landmark {
+                name: l.name.clone(),
+                position: l.position * to_m,
+            })
+            .collect(),
+        missing: landmarks.missing.clone(),
+        unknown: landmarks.unknown.clone(),
+    }
+}
+
+// TEMP until the geometry layer's bounding box lands.
+fn largest_extent(points: &[Point3<f64>]) -> f64 {
+    let mut lo = Point3::new(f64::INFINITY, f64::INFINITY, f64::INFINITY);
+    let mut hi = Point3::new(f64::NEG_INFINITY, f64::NEG_INFINITY, f64::NEG_INFINITY);
+    for p in points {
+        lo = lo.inf(p);
+        hi = hi.sup(p);
+    }
+    (hi - lo).max().max(0.0)
+}
