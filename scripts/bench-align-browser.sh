@@ -50,8 +50,8 @@ for resolution in base fine; do
   node -e '
     const r = JSON.parse(require("fs").readFileSync(process.argv[1], "utf8"));
     const f = r.fine, base = f.stages ? ` (base stage ${f.stages.base.elapsed_ms.toFixed(0)})` : "";
-    console.log(`${r.template_resolution}: scan ${f.scan_vertices} vertices; RBF ${r.rough_ms.toFixed(0)} ms, index ${r.scan_index_ms.toFixed(0)} ms, ` +
+    console.log(`${r.template_resolution}: scan ${f.scan_vertices} vertices; RBF ${r.rough_ms.toFixed(0)} ms, index ${r.index_ms.toFixed(0)} ms, ` +
       `fine ${f.elapsed_ms.toFixed(0)} ms${base}, total ${r.total_ms.toFixed(0)} ms; ${f.iterations} iterations; ` +
-      `RMS ${f.scan_to_template.rms_mm.toFixed(3)} mm; correspondence ${r.correspondence_error.mean_mm.toFixed(2)} mm`);
+      `RMS ${f.scan_to_template.rms_mm.toFixed(3)} mm; correspondence ${r.correspondence.fitted.mean_mm.toFixed(2)} mm`);
   ' "$work/report-$resolution.json"
 done

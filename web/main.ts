@@ -43,8 +43,9 @@ void shapeSpace.start(location.hash);
 
 acceptDrops((files) => void open(files));
 
-Promise.all([client.call({ type: 'version' }), client.call({ type: 'caesarNames' })])
-  .then(([version, names]) => {
+Promise.all([client.call({ type: 'version' }), client.call({ type: 'caesarNames' }), client.call({ type: 'alignDefaults' })])
+  .then(([version, names, defaults]) => {
+    warpStep.panel.setDefaults(defaults);
     landmarksPanel.setCaesarNames(names);
     landmarksPanel.render(null);
     topBar.setStatus(`Core ${version} ready. Drop a scan and its landmarks anywhere on the page.`);

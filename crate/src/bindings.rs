@@ -7,7 +7,9 @@
 mod align;
 mod template;
 
-pub use align::{align_defaults, align_scan_js, export_mesh, rbf_warp_js, AlignOutcome};
+pub use align::{
+    align_defaults, align_scan_js, export_mesh, rbf_warp_js, AlignOutcome, ScanWithLandmarks,
+};
 pub use template::{load_template, TemplateHandle};
 
 use js_sys::{Float32Array, Uint32Array};

@@ -2,7 +2,7 @@
 // template's latest positions after every round, so Cancel (which terminates the worker) leaves
 // the last good state on screen. The result is shown as a distance heat map.
 import { CancelledError, type CoreClient } from '../client/core-client';
-import type { AlignResult } from '../shared/align-types';
+import { rbfParams, type AlignResult } from '../shared/align-types';
 import type { CoreEvent } from '../shared/messages';
 import { AlignPanel } from '../ui/align-panel';
 import { heatColours } from '../view/heat-colours';
@@ -56,26 +56,27 @@ export class AlignStep {
   async run(): Promise<void> {
     const template = this.template.data;
     const input = template ? scanInput(this.session, template.resolution) : null;
-    if (!template || !input) return;
+    const rbf = this.warp.panel.current;
+    if (!template || !input || !rbf) return;
     this.running = true;
     this.result = null;
     this.latest = null;
     this.kept = false;
     this.iteration = 0;
     this.panel.chart.clear();
-    this.panel.render({ state: 'running', iteration: 0, maxIterations: 200, rmsMm: null, stage: 'base' });
+    this.panel.render({ state: 'running', iteration: 0, maxIterations: 0, rmsMm: null, stage: 'base' });
     this.warp.show('scan', true);
     const triangles = template.triangles;
     const onEvent = (event: CoreEvent) => {
       if (event.kind === 'alignProgress') {
         this.iteration = event.iteration;
         document.body.dataset.alignIteration = String(event.iteration);
-        this.panel.chart.add({ iteration: event.iteration, energy: event.energy, rmsMm: event.rmsMetres * 1e3 });
+        this.panel.chart.add({ iteration: event.iteration, energy: event.energy, rmsMm: event.rms * 1e3 });
         this.panel.render({
           state: 'running',
           iteration: event.iteration,
-          maxIterations: event.maxIterations,
-          rmsMm: event.rmsMetres * 1e3,
+          maxIterations: event.max_iterations,
+          rmsMm: event.rms * 1e3,
           stage: event.stage,
         });
         document.body.dataset.alignStage = event.stage;
@@ -87,7 +88,7 @@ export class AlignStep {
     try {
       const posted = performance.now();
       const result = await this.client.call(
-        { type: 'align', scan: input, rbf: this.warp.panel.current, fine: {} },
+        { type: 'align', scan: input, params: { rbf: rbfParams(rbf) } },
         { transfer: scanTransfer(input), onEvent },
       );
       recordTimings(result, performance.now() - posted);

@@ -1,7 +1,7 @@
 // The RBF warp step: runs the warp in the worker, shows the warped template over the scan (the
 // scan see-through, both shown upright by the warp's Procrustes rotation), fills the panel.
 import type { CoreClient } from '../client/core-client';
-import type { RbfSettings, WarpResult } from '../shared/align-types';
+import { rbfParams, type RbfSettings, type WarpResult } from '../shared/align-types';
 import { RbfPanel } from '../ui/rbf-panel';
 import type { Viewer } from '../view/viewer';
 import { describeFrame, uprightTransform } from './display-frame';
@@ -53,7 +53,8 @@ export class WarpStep {
     // The loaded data takes the stage; the template's toggle brings it back.
     this.template.setShown(false);
     this.panel.render(this.ready, null, null);
-    if (this.ready) void this.run(this.panel.current);
+    const settings = this.panel.current;
+    if (this.ready && settings) void this.run(settings);
   }
 
   async run(settings: RbfSettings): Promise<void> {
@@ -63,7 +64,7 @@ export class WarpStep {
     body.rbfState = 'running';
     this.panel.render(true, this.outcome(), null, true);
     try {
-      const warp = await this.client.call({ type: 'rbfWarp', scan: input, settings }, { transfer: scanTransfer(input) });
+      const warp = await this.client.call({ type: 'rbfWarp', scan: input, params: { rbf: rbfParams(settings) } }, { transfer: scanTransfer(input) });
       this.last = warp;
       this.transform = uprightTransform(warp.report.similarity);
       this.viewer.showBody('scan', { transform: this.transform, opacity: SCAN_OPACITY });

@@ -3,7 +3,10 @@ import type { TemplateResolution } from './template-data';
 
 export type KernelName = 'gaussian' | 'thin-plate' | 'multiquadric';
 
-/** RBF settings; `param` is the Gaussian width c or the multiquadric stiffness s, in metres. */
+/** A kernel as the core writes and reads it (its parameter c or s in metres). */
+export type Kernel = { kind: 'thin-plate' } | { kind: 'gaussian'; c: number } | { kind: 'multiquadric'; s: number };
+
+/** The RBF panel's settings; `param` is the Gaussian width c or the multiquadric stiffness s, in metres. */
 export interface RbfSettings {
   kernel: KernelName;
   param: number | null;
@@ -11,25 +14,38 @@ export interface RbfSettings {
   affine: boolean;
 }
 
-/** The core's kernel parameters (docs/rbf.md): Gaussian c = 0.1 m, multiquadric s = 0.01 m. */
-/** The core's default kernel, chosen by measurement after the full pipeline (docs/rbf.md). */
-export const DEFAULT_KERNEL: KernelName = 'thin-plate';
+/** The parameters the app sends: any part of the core's `AlignParams` (absent fields keep the core's defaults). */
+export interface AlignParams {
+  rbf?: { kernel?: Kernel; lambda?: number; affine?: boolean; virtual_landmarks?: boolean };
+  fine?: { a?: number; b?: number; max_iterations?: number; [name: string]: unknown };
+  fine_stage?: { max_iterations?: number; [name: string]: unknown };
+}
 
-export const DEFAULT_KERNEL_PARAM: Record<KernelName, number | null> = {
-  gaussian: 0.1,
-  'thin-plate': null,
-  multiquadric: 0.01,
-};
+/** The core's defaults (`alignDefaults`): every parameter, and each kernel with its default parameter. */
+export interface AlignDefaults {
+  params: {
+    rbf: { kernel: Kernel; lambda: number; affine: boolean; virtual_landmarks: boolean; min_rcond: number };
+    fine: { a: number; b: number; max_iterations: number; [name: string]: unknown };
+    fine_stage: { max_iterations: number; [name: string]: unknown };
+    rough_only: boolean;
+  };
+  kernels: Kernel[];
+}
 
-/**
- * Fine-alignment settings; absent fields keep the core's defaults (a = 0.96, b = 0.04).
- * `max_iterations` limits the (base) fit; `fine_iterations` the fine stage of a fine template.
- */
-export interface FineSettings {
-  a?: number;
-  b?: number;
-  max_iterations?: number;
-  fine_iterations?: number;
+/** The kernel's parameter, or null for the thin-plate spline. */
+export function kernelParam(kernel: Kernel): number | null {
+  return kernel.kind === 'gaussian' ? kernel.c : kernel.kind === 'multiquadric' ? kernel.s : null;
+}
+
+/** The panel's settings as the core's RBF parameters. */
+export function rbfParams(settings: RbfSettings): NonNullable<AlignParams['rbf']> {
+  const kernel: Kernel =
+    settings.kernel === 'gaussian'
+      ? { kind: 'gaussian', c: settings.param ?? Number.NaN }
+      : settings.kernel === 'multiquadric'
+        ? { kind: 'multiquadric', s: settings.param ?? Number.NaN }
+        : { kind: 'thin-plate' };
+  return { kernel, lambda: settings.lambda, affine: settings.affine };
 }
 
 /**
@@ -68,10 +84,13 @@ export interface WarpReport {
   param: number | null;
   lambda: number;
   affine: boolean;
+  virtual_landmarks: boolean;
   used: string[];
   skipped: string[];
   virtual_off_surface: string[];
   residuals: LandmarkResidual[];
+  max_residual_before_mm: number;
+  max_residual_after_mm: number;
   similarity: Similarity;
   rcond: number;
 }
@@ -104,22 +123,32 @@ export interface FineReport {
   converged: boolean;
   cancelled: boolean;
   elapsed_ms: number;
+  /** E and RMS after every iteration (the whole run only). */
+  curve?: { iteration: number; elapsed_ms: number; energy: number; rms_mm: number }[];
+  /** Coarse to fine only: the base stage, the subdivision and the fine stage's iterations. */
+  stages?: {
+    base: FineReport;
+    subdivide_ms: number;
+    fine_iterations: number;
+    fine_max_iterations: number;
+  };
 }
 
+/** The core's report of one alignment (`AlignmentReport`): lengths in mm, times in ms. */
 export interface AlignReport {
+  template_resolution: TemplateResolution;
+  coarse_to_fine: boolean;
+  template_vertices: number;
+  scan_vertices: number;
+  units: 'metres' | 'millimetres';
+  units_detected: boolean;
+  params: AlignDefaults['params'];
   warp: WarpReport;
+  anchors: number;
+  fine: FineReport;
   rough_ms: number;
   index_ms: number;
   total_ms: number;
-  fine: FineReport & {
-    /** Coarse to fine only: the base stage, the subdivision and the fine stage's iterations. */
-    stages?: {
-      base: FineReport;
-      subdivide_ms: number;
-      fine_iterations: number;
-      fine_max_iterations: number;
-    };
-  };
 }
 
 /** The fitted template and the per-vertex distance (metres) to the scan. */
@@ -132,16 +161,18 @@ export interface AlignResult {
   workerMs: number;
 }
 
-/** Sent after every L-BFGS iteration. */
+/** Sent after every L-BFGS iteration: the core's `Progress`. */
 export interface AlignProgress {
+  stage: AlignStage;
   iteration: number;
+  /** The most iterations this run can take (both stages of coarse to fine). */
+  max_iterations: number;
   round: number;
   energy: number;
-  dataError: number;
-  smoothnessError: number;
-  rmsMetres: number;
-  elapsedMs: number;
-  stage: AlignStage;
-  /** The most iterations this run can take (both stages of coarse to fine). */
-  maxIterations: number;
+  data_error: number;
+  smoothness_error: number;
+  /** RMS distance (m) of matched template vertices to their closest scan points. */
+  rms: number;
+  matched: number;
+  elapsed_ms: number;
 }

@@ -1,5 +1,5 @@
 // Messages between the UI thread and the core worker. No DOM here: shared by both threads.
-import type { AlignProgress, AlignResult, FineSettings, RbfSettings, ScanInput, WarpResult } from './align-types';
+import type { AlignDefaults, AlignParams, AlignProgress, AlignResult, ScanInput, WarpResult } from './align-types';
 import type { ParsedLandmarks, ParsedScan } from './results';
 import type { TemplateData, TemplateResolution } from './template-data';
 import type { ExportBody, LoadedModel, ModelCsv, ModelGlbParts, ReconstructedBody, ShapeCoefficients, ShownResolution } from './shape-results';
@@ -12,9 +12,11 @@ export type CoreRequestBody =
   | { type: 'parseScan'; bytes: ArrayBuffer; fileName: string }
   | { type: 'parseLandmarks'; bytes: ArrayBuffer; fileName: string }
   | { type: 'loadTemplate'; resolution: TemplateResolution }
-  | { type: 'rbfWarp'; scan: ScanInput; settings: RbfSettings }
+  /** The core's alignment parameters with their defaults. */
+  | { type: 'alignDefaults' }
+  | { type: 'rbfWarp'; scan: ScanInput; params: AlignParams }
   /** RBF warp then fine alignment; replies with `alignProgress` and `alignRound` events. */
-  | { type: 'align'; scan: ScanInput; rbf: RbfSettings; fine: FineSettings }
+  | { type: 'align'; scan: ScanInput; params: AlignParams }
   | { type: 'exportMesh'; positions: Float32Array; triangles: Uint32Array; format: 'ply' | 'obj' }
   /** Shape models: the worker keeps one; a failed load or build leaves the previous one. */
   | { type: 'loadModel'; bytes: ArrayBuffer; fileName: string }
@@ -43,6 +45,7 @@ export interface CoreResults {
   parseScan: ParsedScan;
   parseLandmarks: ParsedLandmarks;
   loadTemplate: TemplateData;
+  alignDefaults: AlignDefaults;
   rbfWarp: WarpResult;
   align: AlignResult;
   exportMesh: Uint8Array;

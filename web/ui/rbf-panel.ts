@@ -1,6 +1,6 @@
 // The RBF warp step (paper §3.1): kernel, its parameter, λ, affine term; what is shown; and the
 // landmark residuals before (after Procrustes) and after the warp, in millimetres.
-import { DEFAULT_KERNEL, DEFAULT_KERNEL_PARAM, type KernelName, type RbfSettings, type WarpReport } from '../shared/align-types';
+import { kernelParam, type AlignDefaults, type KernelName, type RbfSettings, type WarpReport } from '../shared/align-types';
 import { byId, h } from './dom';
 import { checkbox } from './template-panel';
 
@@ -24,21 +24,32 @@ const KERNELS: { name: KernelName; label: string; param: string | null }[] = [
 
 export class RbfPanel {
   private readonly root = byId('rbf-panel');
-  private settings: RbfSettings = { kernel: DEFAULT_KERNEL, param: DEFAULT_KERNEL_PARAM[DEFAULT_KERNEL], lambda: 0, affine: true };
+  /** The core's default parameter of each kernel. */
+  private readonly kernelDefaults = new Map<KernelName, number | null>();
+  /** Null until the core's defaults have arrived ({@link setDefaults}). */
+  private settings: RbfSettings | null = null;
   private readonly shown = { scan: true, template: false, warped: true };
 
   constructor(private readonly controls: RbfControls) {
     this.render(false, null, null);
   }
 
-  get current(): RbfSettings {
-    return { ...this.settings };
+  /** Takes the core's defaults (the one source of them). */
+  setDefaults(defaults: AlignDefaults): void {
+    for (const kernel of defaults.kernels) this.kernelDefaults.set(kernel.kind, kernelParam(kernel));
+    const rbf = defaults.params.rbf;
+    this.settings = { kernel: rbf.kernel.kind, param: kernelParam(rbf.kernel), lambda: rbf.lambda, affine: rbf.affine };
+  }
+
+  /** The settings shown, or null before the core's defaults have arrived. */
+  get current(): RbfSettings | null {
+    return this.settings && { ...this.settings };
   }
 
   /** `ready`: a scan and landmarks are loaded. `error`: the core's message of the last run. */
   render(ready: boolean, outcome: RbfOutcome | null, error: string | null, running = false): void {
     const title = h('h2', {}, 'RBF warp');
-    if (!ready) {
+    if (!ready || !this.settings) {
       this.root.replaceChildren(title, h('p', { class: 'placeholder' }, 'Load a scan and its landmarks to warp the template onto it.'));
       return;
     }
@@ -46,7 +57,7 @@ export class RbfPanel {
   }
 
   private form(running: boolean): HTMLElement {
-    const s = this.settings;
+    const s = this.settings!;
     const kernel = h('select', { 'data-testid': 'rbf-kernel', 'aria-label': 'Kernel' });
     for (const k of KERNELS) kernel.append(h('option', { value: k.name }, k.label));
     kernel.value = s.kernel;
@@ -68,12 +79,12 @@ export class RbfPanel {
       affine: affine.checked,
     });
     kernel.addEventListener('change', () => {
-      this.settings = { ...read(), param: DEFAULT_KERNEL_PARAM[kernel.value as KernelName] };
+      this.settings = { ...read(), param: this.kernelDefaults.get(kernel.value as KernelName) ?? null };
       this.root.replaceChild(this.form(running), this.root.children[1]!);
     });
     run.addEventListener('click', () => {
       this.settings = read();
-      this.controls.onRun(this.current);
+      this.controls.onRun(read());
     });
     return h(
       'div',
@@ -119,7 +130,6 @@ export class RbfPanel {
     if (error) return [h('p', { class: 'error-note', 'data-testid': 'rbf-error' }, error)];
     if (!outcome) return [];
     const r = outcome.report;
-    const max = (f: (x: WarpReport['residuals'][number]) => number) => r.residuals.reduce((m, x) => Math.max(m, f(x)), 0);
     const rows = r.residuals.map((x) =>
       h(
         'tr',
@@ -142,9 +152,9 @@ export class RbfPanel {
         h('dt', {}, 'Skipped'),
         h('dd', { 'data-testid': 'rbf-skipped-count' }, String(r.skipped.length)),
         h('dt', {}, 'Max before (mm)'),
-        h('dd', { 'data-testid': 'rbf-max-before' }, max((x) => x.before_mm).toFixed(1)),
+        h('dd', { 'data-testid': 'rbf-max-before' }, r.max_residual_before_mm.toFixed(1)),
         h('dt', {}, 'Max after (mm)'),
-        h('dd', { 'data-testid': 'rbf-max-after' }, max((x) => x.after_mm).toExponential(1)),
+        h('dd', { 'data-testid': 'rbf-max-after' }, r.max_residual_after_mm.toExponential(1)),
         h('dt', {}, 'Time'),
         h('dd', {}, `${outcome.workerMs.toFixed(0)} ms`),
       ),

@@ -1,26 +1,23 @@
-// The RBF warp and the full alignment in the worker. Progress goes out after every iteration and
-// the template's positions after every round (transferred), so a terminated worker loses nothing
-// the page has not already got.
-import { alignScan, exportMesh, rbfWarp } from '../pkg/bodyspace.js';
-import type { AlignResult, AlignStage, FineSettings, RbfSettings, ScanInput, WarpReport, WarpResult } from '../shared/align-types';
+// The RBF warp and the full alignment in the worker, both the core's one pipeline. Progress goes
+// out after every iteration and the template's positions after every round (transferred), so a
+// terminated worker loses nothing the page has not already got.
+import { alignDefaults, alignScan, exportMesh, rbfWarp, ScanWithLandmarks } from '../pkg/bodyspace.js';
+import type { AlignDefaults, AlignParams, AlignProgress, AlignReport, AlignResult, ScanInput, WarpResult } from '../shared/align-types';
 import type { CoreEvent } from '../shared/messages';
 import { templateHandle } from './template-handlers';
 
-export function runRbfWarp(scan: ScanInput, settings: RbfSettings): WarpResult {
+export function runAlignDefaults(): AlignDefaults {
+  return JSON.parse(alignDefaults()) as AlignDefaults;
+}
+
+export function runRbfWarp(scan: ScanInput, params: AlignParams): WarpResult {
   const t0 = performance.now();
-  const outcome = rbfWarp(
-    templateHandle(scan.resolution),
-    scan.positions,
-    scan.triangles,
-    scan.landmarkNames.join('\n'),
-    scan.landmarkPositions,
-    JSON.stringify(settings),
-  );
+  const outcome = withScan(scan, (input) => rbfWarp(templateHandle(scan.resolution), input, JSON.stringify(params)));
   try {
     return {
       positions: outcome.positions(),
       normals: outcome.normals(),
-      report: JSON.parse(outcome.reportJson()) as WarpReport,
+      report: (JSON.parse(outcome.reportJson()) as AlignReport).warp,
       workerMs: performance.now() - t0,
     };
   } finally {
@@ -28,53 +25,38 @@ export function runRbfWarp(scan: ScanInput, settings: RbfSettings): WarpResult {
   }
 }
 
-export function runAlign(
-  scan: ScanInput,
-  rbf: RbfSettings,
-  fine: FineSettings,
-  emit: (event: CoreEvent, transfer?: Transferable[]) => void,
-): AlignResult {
+export function runAlign(scan: ScanInput, params: AlignParams, emit: (event: CoreEvent, transfer?: Transferable[]) => void): AlignResult {
   let lastIteration = 0;
-  const onProgress = (
-    iteration: number,
-    round: number,
-    energy: number,
-    dataError: number,
-    smoothnessError: number,
-    rmsMetres: number,
-    elapsedMs: number,
-    stage: AlignStage,
-    maxIterations: number,
-  ): boolean => {
-    lastIteration = iteration;
-    emit({ kind: 'alignProgress', iteration, round, energy, dataError, smoothnessError, rmsMetres, elapsedMs, stage, maxIterations });
+  const onProgress = (progress: AlignProgress): boolean => {
+    lastIteration = progress.iteration;
+    emit({ kind: 'alignProgress', ...progress });
     return true;
   };
-  const onRound = (round: number, positions: Float32Array): void => {
+  const onRound = (_stage: string, round: number, positions: Float32Array): void => {
     emit({ kind: 'alignRound', round, iteration: lastIteration, positions }, [positions.buffer]);
   };
   const t0 = performance.now();
-  const outcome = alignScan(
-    templateHandle(scan.resolution),
-    scan.positions,
-    scan.triangles,
-    scan.landmarkNames.join('\n'),
-    scan.landmarkPositions,
-    JSON.stringify(rbf),
-    JSON.stringify(fine),
-    onProgress,
-    onRound,
-  );
+  const outcome = withScan(scan, (input) => alignScan(templateHandle(scan.resolution), input, JSON.stringify(params), onProgress, onRound));
   try {
     return {
       positions: outcome.positions(),
       normals: outcome.normals(),
       distances: outcome.distances(),
-      report: JSON.parse(outcome.reportJson()) as AlignResult['report'],
+      report: JSON.parse(outcome.reportJson()) as AlignReport,
       workerMs: performance.now() - t0,
     };
   } finally {
     outcome.free();
+  }
+}
+
+/** Runs `f` on the scan and its landmarks copied into the core, freeing the copy afterwards. */
+function withScan<T>(scan: ScanInput, f: (input: ScanWithLandmarks) => T): T {
+  const input = new ScanWithLandmarks(scan.positions, scan.triangles, scan.landmarkNames.join('\n'), scan.landmarkPositions);
+  try {
+    return f(input);
+  } finally {
+    input.free();
   }
 }
 

@@ -3,7 +3,7 @@
 import init, { caesarLandmarkNames, coreVersion, parseLandmarks, parseScan } from '../pkg/bodyspace.js';
 import type { CoreReply, CoreRequest } from '../shared/messages';
 import type { MeshSummary, ParsedLandmarks, ParsedScan } from '../shared/results';
-import { runAlign, runExport, runRbfWarp } from './align-handlers';
+import { runAlign, runAlignDefaults, runExport, runRbfWarp } from './align-handlers';
 import { templateData, templateTransfer } from './template-handlers';
 import * as models from './model-handlers';
 
@@ -72,14 +72,17 @@ self.onmessage = async (event: MessageEvent<CoreRequest>) => {
         post({ id: request.id, type: 'result', result: data }, templateTransfer(data));
         break;
       }
+      case 'alignDefaults':
+        post({ id: request.id, type: 'result', result: runAlignDefaults() });
+        break;
       case 'rbfWarp': {
-        const warp = runRbfWarp(request.scan, request.settings);
+        const warp = runRbfWarp(request.scan, request.params);
         post({ id: request.id, type: 'result', result: warp }, [warp.positions.buffer, warp.normals.buffer]);
         break;
       }
       case 'align': {
         const id = request.id;
-        const result = runAlign(request.scan, request.rbf, request.fine, (event, transfer) =>
+        const result = runAlign(request.scan, request.params, (event, transfer) =>
           post({ id, type: 'event', event }, transfer),
         );
         post({ id, type: 'result', result }, [result.positions.buffer, result.normals.buffer, result.distances.buffer]);

@@ -224,9 +224,7 @@ pub fn fine_align(
         }
         let stiffness =
             (params.initial_stiffness * params.stiffness_decay.powi(round as i32)).max(1.0);
-        let scan_samples = scan_term.find(
-            scan, &positions, triangles, weights, query, centroid, stiffness,
-        )?;
+        let scan_samples = scan_term.find(input, &positions, query, centroid, stiffness)?;
         let energy = AlignEnergy {
             vertices: &vertices,
             edges: &edges,

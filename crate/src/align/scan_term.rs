@@ -18,6 +18,7 @@
 //! mirroring the treatments of E_d (paper §3.2.1).
 
 use super::error::AlignError;
+use super::fine_align::FineAlignInput;
 use super::params::FineAlignParams;
 use super::scan_index::{MatchQuery, ScanIndex};
 use nalgebra::{Point3, Vector3};
@@ -74,20 +75,23 @@ impl ScanTerm {
         }
     }
 
-    /// This round's samples on the template at `positions` (#V, metres, scan frame; same
-    /// `triangles` every round), or none when the term is off or `stiffness` is still above
-    /// `scan_term_from_stiffness`. `query`, `weights` and `centroid` as for E_d.
-    #[allow(clippy::too_many_arguments)]
+    /// This round's samples on the template at `positions` (#V, metres, scan frame; the
+    /// triangles, scan and weights of `input` every round), or none when the term is off or
+    /// `stiffness` is still above `scan_term_from_stiffness`. `query` and `centroid` as for E_d.
     pub fn find(
         &mut self,
-        scan: &ScanIndex,
+        input: &FineAlignInput<'_>,
         positions: &[Point3<f64>],
-        triangles: &[[u32; 3]],
-        weights: &[f64],
         query: MatchQuery,
         centroid: Vector3<f64>,
         stiffness: f64,
     ) -> Result<&[ScanSample], AlignError> {
+        let FineAlignInput {
+            scan,
+            triangles,
+            weights,
+            ..
+        } = *input;
         self.samples.clear();
         if self.sample_vertices.is_empty() || stiffness > self.from_stiffness {
             return Ok(&self.samples);

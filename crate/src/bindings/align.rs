@@ -37,48 +37,55 @@ pub fn align_defaults() -> Result<String, JsError> {
     .map_err(|e| JsError::new(&e.to_string()))
 }
 
-/// Warps the template onto the scan by the landmarks (paper §3.1). `scan_positions` `#V·3`
-/// metres, `scan_triangles` `#F·3`, `landmark_names` one per line, `landmark_positions` `#L·3`
-/// metres, `params` JSON of [`AlignParams`] (its `rbf` part is used).
+/// A scan and its landmarks from the page, checked once at the boundary: `positions` `#V·3`
+/// metres, `triangles` `#F·3`, `landmark_names` one per line, `landmark_positions` `#L·3` metres.
+#[wasm_bindgen]
+pub struct ScanWithLandmarks {
+    scan: Mesh,
+    landmarks: LandmarkSet,
+}
+
+#[wasm_bindgen]
+impl ScanWithLandmarks {
+    #[wasm_bindgen(constructor)]
+    pub fn new(
+        positions: &[f32],
+        triangles: &[u32],
+        landmark_names: &str,
+        landmark_positions: &[f64],
+    ) -> Result<ScanWithLandmarks, JsError> {
+        Ok(Self {
+            scan: scan_mesh(positions, triangles)?,
+            landmarks: scan_landmarks(landmark_names, landmark_positions)?,
+        })
+    }
+}
+
+/// Warps the template onto the scan by the landmarks (paper §3.1); `params` JSON of
+/// [`AlignParams`] (its `rbf` part is used).
 #[wasm_bindgen(js_name = rbfWarp)]
 pub fn rbf_warp_js(
     template: &TemplateHandle,
-    scan_positions: &[f32],
-    scan_triangles: &[u32],
-    landmark_names: &str,
-    landmark_positions: &[f64],
+    scan: &ScanWithLandmarks,
     params: &str,
 ) -> Result<AlignOutcome, JsError> {
     let params = AlignParams {
         rough_only: true,
         ..align_params(params)?
     };
-    let alignment = run(
-        template,
-        scan_positions,
-        scan_triangles,
-        landmark_names,
-        landmark_positions,
-        &params,
-        &mut (),
-    )?;
+    let alignment = run(template, scan, &params, &mut ())?;
     outcome(template, alignment)
 }
 
-/// RBF warp then fine alignment (paper §3.1 + §3.2). Same inputs as `rbfWarp`; `params` JSON
-/// of [`AlignParams`]; `on_progress(progress)` after every L-BFGS iteration with the core's
+/// RBF warp then fine alignment (paper §3.1 + §3.2). `params` JSON of [`AlignParams`]; `on_progress(progress)` after every L-BFGS iteration with the core's
 /// [`Progress`] as one object (`{stage, iteration, max_iterations, round, energy, data_error,
 /// smoothness_error, rms, matched, elapsed_ms}`; returning `false` cancels); `on_round(stage,
 /// round, positions)` with the current template positions (`Float32Array`, metres, the handle's
 /// resolution) at the start of every round. A `fine` template is aligned coarse to fine.
 #[wasm_bindgen(js_name = alignScan)]
-#[allow(clippy::too_many_arguments)]
 pub fn align_scan_js(
     template: &TemplateHandle,
-    scan_positions: &[f32],
-    scan_triangles: &[u32],
-    landmark_names: &str,
-    landmark_positions: &[f64],
+    scan: &ScanWithLandmarks,
     params: &str,
     on_progress: &Function,
     on_round: &Function,
@@ -86,10 +93,7 @@ pub fn align_scan_js(
     let params = align_params(params)?;
     let alignment = run(
         template,
-        scan_positions,
-        scan_triangles,
-        landmark_names,
-        landmark_positions,
+        scan,
         &params,
         &mut JsObserver {
             on_progress,
@@ -183,20 +187,15 @@ impl AlignObserver for JsObserver<'_> {
 /// The pipeline on the page's scan (metres) with the handle's template.
 fn run(
     template: &TemplateHandle,
-    scan_positions: &[f32],
-    scan_triangles: &[u32],
-    landmark_names: &str,
-    landmark_positions: &[f64],
+    scan: &ScanWithLandmarks,
     params: &AlignParams,
     observer: &mut dyn AlignObserver,
 ) -> Result<Alignment, JsError> {
-    let scan = scan_mesh(scan_positions, scan_triangles)?;
-    let landmarks = scan_landmarks(landmark_names, landmark_positions)?;
     let input = AlignInput {
         template: &template.template,
         base_template: template.base.as_ref(),
-        scan: &scan,
-        landmarks: &landmarks,
+        scan: &scan.scan,
+        landmarks: &scan.landmarks,
         units: Some(Units::Metres),
     };
     align_scan(&input, params, observer).map_err(|e| JsError::new(&e.to_string()))
