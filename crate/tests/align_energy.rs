@@ -91,3 +91,60 @@ fn gradient_and_curvature_match_finite_differences() {
         "quadratic model {predicted} vs {ft}"
     );
 }
+
+/// E = Σ α_i ‖T_i ṽ_i − c_i‖² + β Σ_edges ‖T_i − T_j‖²_F (paper eq. 6–8) on one triangle, with
+/// every term worked out by hand.
+#[test]
+fn energy_of_one_triangle_equals_the_hand_computed_value() {
+    // ṽ: the corners (0,0,0), (1,0,0), (0,1,0) with a trailing 1.
+    let vertices = [
+        [0.0, 0.0, 0.0, 1.0],
+        [1.0, 0.0, 0.0, 1.0],
+        [0.0, 1.0, 0.0, 1.0],
+    ];
+    let edges = [[0, 1], [1, 2], [0, 2]];
+    // T_0 = [I | 0]; T_1 = [I | (0, 0, 1)]; T_2 = [diag(2, 1, 1) | 0], rows of [A | t].
+    let mut x = vec![0.0; 3 * DOF];
+    for t in x.chunks_exact_mut(DOF) {
+        t[0] = 1.0;
+        t[5] = 1.0;
+        t[10] = 1.0;
+    }
+    x[DOF + 11] = 1.0;
+    x[2 * DOF] = 2.0;
+    // T_i ṽ_i = (0,0,0), (1,0,1), (0,1,0); against c = (1,0,0), (1,0,0), (0,1,2) the squared
+    // distances are 1, 1, 4; with α = 1, 2, 0.5: Σ α d² = 1 + 2 + 2 = 5.
+    let targets = [
+        Point3::new(1.0, 0.0, 0.0),
+        Point3::new(1.0, 0.0, 0.0),
+        Point3::new(0.0, 1.0, 2.0),
+    ];
+    let alpha = [1.0, 2.0, 0.5];
+    // ‖T_0 − T_1‖² = 1 (t_z), ‖T_1 − T_2‖² = 1 + 1 (A_00, t_z), ‖T_0 − T_2‖² = 1 (A_00): E_s = 4;
+    // β = 0.25 gives 1, and E = 5 + 1 = 6.
+    let energy = AlignEnergy {
+        vertices: &vertices,
+        edges: &edges,
+        targets: &targets,
+        data_coefficients: &alpha,
+        smoothness_coefficient: 0.25,
+        scan_samples: &[],
+    };
+    let mut grad = vec![0.0; 3 * DOF];
+    let terms = energy.evaluate(&x, &mut grad);
+    assert!((terms.data_weighted - 5.0).abs() < 1e-14, "{terms:?}");
+    assert!((terms.smoothness - 4.0).abs() < 1e-14, "{terms:?}");
+    assert!((terms.total - 6.0).abs() < 1e-14, "{terms:?}");
+    assert_eq!(terms.matched, 3);
+    assert!((terms.matched_sq_sum - 6.0).abs() < 1e-14);
+    // ∂E/∂T_0 = 2α_0 r_0 ṽ_0ᵀ + 2β Σ_j (T_0 − T_j), r_0 = (−1, 0, 0), ṽ_0 = (0, 0, 0, 1):
+    // t_x gets 2·1·(−1)·1 = −2; A_00 gets 2·0.25·(1 − 2) = −0.5 (from T_2); t_z gets
+    // 2·0.25·(0 − 1) = −0.5 (from T_1); every other entry is 0.
+    let mut expected = [0.0; DOF];
+    expected[3] = -2.0;
+    expected[0] = -0.5;
+    expected[11] = -0.5;
+    for (k, (g, e)) in grad[..DOF].iter().zip(expected).enumerate() {
+        assert!((g - e).abs() < 1e-14, "∂E/∂T_0[{k}] = {g}, expected {e}");
+    }
+}

@@ -262,3 +262,37 @@ fn largest_extent(points: &[Point3<f64>]) -> f64 {
     }
     (hi - lo).max().max(0.0)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn defaults_survive_a_json_round_trip_and_partial_json_keeps_them() {
+        let defaults = AlignParams::default();
+        let json = serde_json::to_string(&defaults).unwrap();
+        // Infinity (max_match_distance) is written as null and read back as infinity.
+        let back: AlignParams = serde_json::from_str(&json).unwrap();
+        assert_eq!(back, defaults);
+        let partial: AlignParams =
+            serde_json::from_str(r#"{"fine": {"a": 0.5}, "rbf": {"lambda": 0.1}}"#).unwrap();
+        assert_eq!(partial.fine.a, 0.5);
+        assert_eq!(partial.fine.b, defaults.fine.b);
+        assert_eq!(partial.rbf.lambda, 0.1);
+        assert_eq!(partial.rbf.kernel, defaults.rbf.kernel);
+        assert_eq!(partial.fine_stage, defaults.fine_stage);
+    }
+
+    #[test]
+    fn bad_parameters_are_refused_before_any_work() {
+        let params = AlignParams {
+            fine: FineAlignParams {
+                b: -1.0,
+                ..FineAlignParams::default()
+            },
+            ..AlignParams::default()
+        };
+        let err = params.validate().unwrap_err();
+        assert!(err.to_string().contains("b = -1"), "{err}");
+    }
+}
