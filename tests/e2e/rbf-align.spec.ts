@@ -42,9 +42,10 @@ test('Align fits the template and shows the RMS, the heat map and keeps the subj
   await page.getByTestId('align-run').click();
   await expect(page.locator('body')).toHaveAttribute('data-align-state', 'done', { timeout: 240_000 });
   const rms = Number(await page.getByTestId('align-rms').getAttribute('data-rms-mm'));
-  expect(Number.isFinite(rms)).toBe(true);
-  expect(rms).toBeGreaterThan(0);
-  expect(rms).toBeLessThan(5);
+  // The native pipeline fits this sample to 0.92 mm scan→template RMS at base; the worker runs
+  // the same core in f32 positions.
+  expect(rms).toBeGreaterThan(0.7);
+  expect(rms).toBeLessThan(1.1);
   expect(Number(await page.getByTestId('align-chart').getAttribute('data-points'))).toBeGreaterThan(1);
   await expect(page.locator('#viewport')).toHaveAttribute('data-fitted-coloured', 'true');
   await expect(page.getByTestId('heat-legend')).toBeVisible();
@@ -73,8 +74,9 @@ test('Align on the fine template goes coarse to fine and returns the fine templa
   await expect(page.locator('body')).toHaveAttribute('data-align-stage', 'fine');
   await expect(page.getByTestId('align-iterations')).toContainText(/\d+ base \+ \d+ fine/);
   const rms = Number(await page.getByTestId('align-rms').getAttribute('data-rms-mm'));
-  expect(rms).toBeGreaterThan(0);
-  expect(rms).toBeLessThan(5);
+  // Natively 0.69 mm at fine (coarse to fine), below the base fit's 0.92 mm.
+  expect(rms).toBeGreaterThan(0.5);
+  expect(rms).toBeLessThan(0.85);
   await expect(page.locator('#viewport')).toHaveAttribute('data-fitted-triangles', String(triangles));
   await expect(page.locator('#viewport')).toHaveAttribute('data-fitted-coloured', 'true');
 });
