@@ -155,13 +155,7 @@ fn main() {
         };
         let t = Instant::now();
         let result = fine_align(
-            &FineAlignInput {
-                positions: &template.positions,
-                triangles: &template.triangles,
-                scan: &index,
-                weights: &weights,
-                anchors: &[],
-            },
+            &FineAlignInput::of_mesh(&template, &index, &weights),
             &params,
             &mut (),
         );
@@ -231,13 +225,7 @@ fn schedules(template: &Mesh, index: &ScanIndex) {
         };
         let t = Instant::now();
         if let Ok(r) = fine_align(
-            &FineAlignInput {
-                positions: &template.positions,
-                triangles: &template.triangles,
-                scan: index,
-                weights: &weights,
-                anchors: &[],
-            },
+            &FineAlignInput::of_mesh(&template, index, &weights),
             &params,
             &mut (),
         ) {

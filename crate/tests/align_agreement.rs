@@ -12,13 +12,7 @@ fn fine_align_lands_on_the_known_sphere_natively() {
     let index = ScanIndex::new(&scan).unwrap();
     let weights = vec![1.0; template.positions.len()];
     let result = fine_align(
-        &FineAlignInput {
-            positions: &template.positions,
-            triangles: &template.triangles,
-            scan: &index,
-            weights: &weights,
-            anchors: &[],
-        },
+        &FineAlignInput::of_mesh(&template, &index, &weights),
         &FineAlignParams::default(),
         &mut (),
     )

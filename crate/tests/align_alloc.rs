@@ -154,13 +154,7 @@ fn iterations_within_a_round_of_fine_align_allocate_nothing() {
     };
     let mut seen: Vec<(usize, usize)> = Vec::with_capacity(1024);
     fine_align(
-        &FineAlignInput {
-            positions: &template.positions,
-            triangles: &template.triangles,
-            scan: &index,
-            weights: &weights,
-            anchors: &[],
-        },
+        &FineAlignInput::of_mesh(&template, &index, &weights),
         &params,
         &mut |p: &Progress| {
             seen.push((p.round, allocations()));

@@ -68,6 +68,19 @@ fn align(dir: &Path, extra: &[&str]) -> serde_json::Value {
     serde_json::from_slice(&std::fs::read(&report).unwrap()).unwrap()
 }
 
+/// The fit's mean correspondence error is no worse than the RBF warp's (within 0.5 mm).
+fn assert_correspondence_kept(r: &serde_json::Value) {
+    let ce = &r["correspondence"];
+    let (before, after) = (
+        ce["rough"]["mean_mm"].as_f64().unwrap(),
+        ce["fitted"]["mean_mm"].as_f64().unwrap(),
+    );
+    assert!(
+        after < before + 0.5,
+        "correspondence error {before} → {after} mm"
+    );
+}
+
 #[test]
 fn full_align_fits_the_scan_and_keeps_correspondences() {
     let dir = write_subject("align-full");
@@ -82,15 +95,7 @@ fn full_align_fits_the_scan_and_keeps_correspondences() {
     assert!((1..=40).contains(&iterations), "{iterations} iterations");
     let s2t = fine["scan_to_template"]["rms_mm"].as_f64().unwrap();
     assert!(s2t < 1.5, "scan-to-template RMS {s2t} mm");
-    let ce = &r["correspondence"];
-    let (before, after) = (
-        ce["rough"]["mean_mm"].as_f64().unwrap(),
-        ce["fitted"]["mean_mm"].as_f64().unwrap(),
-    );
-    assert!(
-        after < before + 0.5,
-        "correspondence error {before} → {after} mm"
-    );
+    assert_correspondence_kept(&r);
     let fitted = std::fs::read(dir.join("fit.ply")).unwrap();
     assert!(fitted.starts_with(b"ply"));
     let _ = std::fs::remove_dir_all(&dir);
@@ -130,16 +135,8 @@ fn fine_resolution_aligns_coarse_to_fine_in_fine_template_order() {
     );
     assert!(fine_rms <= base_rms + 0.01, "{base_rms} → {fine_rms} mm");
     // The ground truth has the base vertices, which come first at fine.
-    let ce = &r["correspondence"];
-    assert_eq!(ce["fitted"]["vertices"], 13_380);
-    let (before, after) = (
-        ce["rough"]["mean_mm"].as_f64().unwrap(),
-        ce["fitted"]["mean_mm"].as_f64().unwrap(),
-    );
-    assert!(
-        after < before + 0.5,
-        "correspondence error {before} → {after} mm"
-    );
+    assert_eq!(r["correspondence"]["fitted"]["vertices"], 13_380);
+    assert_correspondence_kept(&r);
     let fitted = std::fs::read(dir.join("fit.ply")).unwrap();
     let fitted = bodyspace::io::read_scan(&fitted, "fit.ply").unwrap();
     assert_eq!(fitted.positions.len(), 214_050);

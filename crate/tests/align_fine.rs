@@ -40,13 +40,7 @@ fn converges_onto_bumpy_noisy_ellipsoid() {
     let weights = vec![1.0; template.positions.len()];
     let mut last_rms = f64::INFINITY;
     let result = fine_align(
-        &FineAlignInput {
-            positions: &template.positions,
-            triangles: &template.triangles,
-            scan: &index,
-            weights: &weights,
-            anchors: &[],
-        },
+        &FineAlignInput::of_mesh(&template, &index, &weights),
         &FineAlignParams::default(),
         &mut |p: &Progress| {
             last_rms = p.rms;
@@ -89,13 +83,7 @@ fn break_after_three_iterations_cancels_with_finite_state() {
     let weights = vec![1.0; template.positions.len()];
     let mut seen = 0;
     let result = fine_align(
-        &FineAlignInput {
-            positions: &template.positions,
-            triangles: &template.triangles,
-            scan: &index,
-            weights: &weights,
-            anchors: &[],
-        },
+        &FineAlignInput::of_mesh(&template, &index, &weights),
         &FineAlignParams::default(),
         &mut |p: &Progress| {
             seen = p.iteration;
@@ -139,13 +127,7 @@ fn zero_weights_leave_vertices_to_smoothness() {
         ..FineAlignParams::default()
     };
     let result = fine_align(
-        &FineAlignInput {
-            positions: &template.positions,
-            triangles: &template.triangles,
-            scan: &index,
-            weights: &weights,
-            anchors: &[],
-        },
+        &FineAlignInput::of_mesh(&template, &index, &weights),
         &params,
         &mut (),
     )
@@ -164,13 +146,7 @@ fn zero_weights_leave_vertices_to_smoothness() {
     // All weights zero: nothing pulls, identity is optimal, nothing moves.
     let zeros = vec![0.0; template.positions.len()];
     let still = fine_align(
-        &FineAlignInput {
-            positions: &template.positions,
-            triangles: &template.triangles,
-            scan: &index,
-            weights: &zeros,
-            anchors: &[],
-        },
+        &FineAlignInput::of_mesh(&template, &index, &zeros),
         &params,
         &mut (),
     )
@@ -188,13 +164,7 @@ fn bad_inputs_are_errors_not_panics() {
     let params = FineAlignParams::default();
     let short = vec![1.0; 3];
     assert!(fine_align(
-        &FineAlignInput {
-            positions: &template.positions,
-            triangles: &template.triangles,
-            scan: &index,
-            weights: &short,
-            anchors: &[],
-        },
+        &FineAlignInput::of_mesh(&template, &index, &short),
         &params,
         &mut go,
     )
@@ -215,13 +185,7 @@ fn bad_inputs_are_errors_not_panics() {
     .is_err());
     let bad_params = FineAlignParams { a: -1.0, ..params };
     assert!(fine_align(
-        &FineAlignInput {
-            positions: &template.positions,
-            triangles: &template.triangles,
-            scan: &index,
-            weights: &weights,
-            anchors: &[],
-        },
+        &FineAlignInput::of_mesh(&template, &index, &weights),
         &bad_params,
         &mut go,
     )

@@ -18,13 +18,7 @@ fn fit_with_threads(threads: usize) -> Vec<Point3<f64>> {
         .unwrap();
     pool.install(|| {
         fine_align(
-            &FineAlignInput {
-                positions: &template.positions,
-                triangles: &template.triangles,
-                scan: &index,
-                weights: &weights,
-                anchors: &[],
-            },
+            &FineAlignInput::of_mesh(&template, &index, &weights),
             &FineAlignParams::default(),
             &mut (),
         )

@@ -11,13 +11,7 @@ fn run(template: &Mesh, scan: &Mesh, params: &FineAlignParams) -> FineAlignResul
     let index = ScanIndex::new(scan).unwrap();
     let weights = vec![1.0; template.positions.len()];
     fine_align(
-        &FineAlignInput {
-            positions: &template.positions,
-            triangles: &template.triangles,
-            scan: &index,
-            weights: &weights,
-            anchors: &[],
-        },
+        &FineAlignInput::of_mesh(&template, &index, &weights),
         params,
         &mut (),
     )

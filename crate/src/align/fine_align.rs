@@ -23,6 +23,7 @@ use super::report::{
 use super::scan_index::{validate_mesh, MatchQuery, ScanIndex};
 use super::scan_term::ScanTerm;
 use super::surface::{unique_edges, vertex_normals_into};
+use crate::mesh::Mesh;
 use crate::utils::now_ms;
 use crate::utils::parallel::for_each_pair_mut;
 use nalgebra::{Point3, Vector3};
@@ -44,6 +45,19 @@ pub struct FineAlignInput<'a> {
     /// reported E_d and RMS of anchored vertices are to that blended target. Empty, or
     /// `landmark_weight` 0, is the paper's energy.
     pub anchors: &'a [(u32, Point3<f64>)],
+}
+
+impl<'a> FineAlignInput<'a> {
+    /// The input for a template `mesh` without anchors.
+    pub fn of_mesh(mesh: &'a Mesh, scan: &'a ScanIndex, weights: &'a [f64]) -> Self {
+        Self {
+            positions: &mesh.positions,
+            triangles: &mesh.triangles,
+            scan,
+            weights,
+            anchors: &[],
+        }
+    }
 }
 
 /// The aligned template and its report.

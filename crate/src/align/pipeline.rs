@@ -24,7 +24,7 @@ use super::observer::AlignObserver;
 use super::params::FineAlignParams;
 use super::scan_index::ScanIndex;
 use super::weights::data_weights;
-use crate::landmarks::{Landmark, LandmarkSet};
+use crate::landmarks::LandmarkSet;
 use crate::mesh::units::{detect_units, Units};
 use crate::mesh::Mesh;
 use crate::rbf::{rbf_warp_mesh, RbfError, RbfParams};
@@ -156,7 +156,7 @@ pub fn align_scan(
         input.scan.positions.iter().map(|p| p * to_m).collect(),
         input.scan.triangles.clone(),
     );
-    let landmarks = scaled_landmarks(input.landmarks, to_m);
+    let landmarks = input.landmarks.scaled(to_m);
 
     let warp = rbf_warp_mesh(
         warped_template.mesh(),
@@ -234,22 +234,6 @@ pub fn align_scan(
         scale_to_metres: to_m,
         report,
     })
-}
-
-/// The landmarks scaled by `to_m` (names and the missing/unknown lists unchanged).
-fn scaled_landmarks(landmarks: &LandmarkSet, to_m: f64) -> LandmarkSet {
-    LandmarkSet {
-        landmarks: landmarks
-            .landmarks
-            .iter()
-            .map(|l| Landmark {
-                name: l.name.clone(),
-                position: l.position * to_m,
-            })
-            .collect(),
-        missing: landmarks.missing.clone(),
-        unknown: landmarks.unknown.clone(),
-    }
 }
 
 // TEMP until the geometry layer's bounding box lands.
