@@ -8,7 +8,7 @@ use serde::Serialize;
 
 use super::coarse_to_fine::CoarseToFineResult;
 use super::correspondence::CorrespondenceReport;
-use super::pipeline::AlignParams;
+use super::params::AlignParams;
 use super::report::{AlignReport, DistanceStats};
 use crate::mesh::units::Units;
 use crate::rbf::{RbfParams, RbfWarp};

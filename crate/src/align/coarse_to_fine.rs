@@ -12,66 +12,15 @@
 use std::ops::ControlFlow;
 
 use nalgebra::Point3;
-use serde::{Deserialize, Serialize};
 
 use super::error::AlignError;
-use super::fine_align::{fine_align, FineAlignInput};
+use super::fine_align::fine_align;
+use super::fine_input::FineAlignInput;
 use super::observer::{AlignObserver, Progress, Stage};
-use super::params::FineAlignParams;
+use super::params::{FineAlignParams, FineStageParams};
 use super::report::{AlignReport, CurvePoint};
 use crate::template::Subdivision;
 use crate::utils::now_ms;
-
-/// The schedule of the fine stage. Its energy (a, b, the treatments, the landmark and
-/// scan-to-template weights, the correspondence search) is the base stage's; only how long and
-/// how stiffly it runs differ. Defaults: no stiffness annealing (the base stage has done it),
-/// 2 iterations per round, at most 8 iterations, stop when a round moves the surface by less
-/// than 0.1 mm RMS, L-BFGS memory 3 (the fine level has 16× the unknowns; memory 7 would hold
-/// ≈ 390 MB of correction pairs). Measured in docs/fine-alignment.md, "Coarse to fine".
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-#[serde(default)]
-pub struct FineStageParams {
-    /// Limit on the fine stage's L-BFGS iterations.
-    pub max_iterations: usize,
-    /// L-BFGS iterations between two correspondence searches.
-    pub iterations_per_round: usize,
-    /// Stop when a round moves the surface by less than this RMS (metres).
-    pub displacement_tolerance: f64,
-    /// L-BFGS memory m.
-    pub lbfgs_memory: usize,
-    /// Stiffness annealing of the fine stage (1.0: none), as in [`FineAlignParams`].
-    pub initial_stiffness: f64,
-    /// Factor by which the stiffness multiplier shrinks per round.
-    pub stiffness_decay: f64,
-}
-
-impl Default for FineStageParams {
-    fn default() -> Self {
-        Self {
-            max_iterations: 8,
-            iterations_per_round: 2,
-            displacement_tolerance: 1e-4,
-            lbfgs_memory: 3,
-            initial_stiffness: 1.0,
-            stiffness_decay: 0.7,
-        }
-    }
-}
-
-impl FineStageParams {
-    /// The fine stage's full parameters: `base`'s energy with this schedule.
-    pub fn around(&self, base: &FineAlignParams) -> FineAlignParams {
-        FineAlignParams {
-            max_iterations: self.max_iterations,
-            iterations_per_round: self.iterations_per_round,
-            displacement_tolerance: self.displacement_tolerance,
-            lbfgs_memory: self.lbfgs_memory,
-            initial_stiffness: self.initial_stiffness,
-            stiffness_decay: self.stiffness_decay,
-            ..base.clone()
-        }
-    }
-}
 
 /// The base template's fit and how it is carried to fine.
 #[derive(Debug, Clone, Copy)]

@@ -16,7 +16,9 @@
 //! * [`report`] — the paper's Table 1 statistics, per-vertex distances, the convergence curve.
 //! * [`alignment_report`] — the pipeline's serialisable report (lengths in mm).
 //! * [`correspondence`] — correspondence error against a ground truth.
-//! * [`FineAlignParams`] (`params.rs`), [`AlignError`] (`error.rs`).
+//! * [`FineAlignInput`] (`fine_input.rs`) — what fine alignment works on.
+//! * [`AlignParams`], [`FineAlignParams`], [`FineStageParams`] (`params.rs`) — every parameter
+//!   with its default; [`AlignError`] (`error.rs`).
 
 pub mod alignment_report;
 pub mod anchors;
@@ -25,6 +27,7 @@ pub mod correspondence;
 pub mod energy;
 pub mod error;
 pub mod fine_align;
+pub mod fine_input;
 pub mod lbfgs;
 pub mod observer;
 pub mod params;
@@ -37,15 +40,14 @@ pub mod weights;
 
 pub use alignment_report::{AlignmentReport, FineReport, WarpReport};
 pub use anchors::landmark_anchors;
-pub use coarse_to_fine::{
-    coarse_to_fine_align, CoarseToFineInput, CoarseToFineResult, FineStageParams,
-};
+pub use coarse_to_fine::{coarse_to_fine_align, CoarseToFineInput, CoarseToFineResult};
 pub use correspondence::{correspondence_report, CorrespondenceReport, ErrorSummaryMm};
 pub use error::AlignError;
-pub use fine_align::{fine_align, FineAlignInput, FineAlignResult};
+pub use fine_align::{fine_align, FineAlignResult};
+pub use fine_input::FineAlignInput;
 pub use observer::{AlignObserver, Progress, Stage};
-pub use params::{CorrespondenceMode, FineAlignParams};
-pub use pipeline::{align_scan, AlignInput, AlignParams, Alignment, PipelineError};
+pub use params::{AlignParams, CorrespondenceMode, FineAlignParams, FineStageParams};
+pub use pipeline::{align_scan, AlignInput, Alignment, PipelineError};
 pub use report::{
     scan_to_template_distances, template_to_scan_distances, AlignReport, CurvePoint, DistanceStats,
 };

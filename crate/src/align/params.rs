@@ -1,6 +1,11 @@
-//! Parameters of fine alignment, with the paper's values as defaults.
+//! Parameters of the alignment, each with its documented default (the one place the defaults
+//! live): [`FineAlignParams`] (fine alignment, paper §3.2, with the paper's values where it gives
+//! them), [`FineStageParams`] (the fine stage of coarse to fine) and [`AlignParams`] (the whole
+//! pipeline: RBF warp, fine alignment, fine stage).
 
 use super::error::AlignError;
+use crate::rbf::RbfParams;
+use crate::template::Resolution;
 use serde::{Deserialize, Serialize};
 
 /// How the closest point on the scan is found for a template vertex.
@@ -210,5 +215,92 @@ impl FineAlignParams {
             ));
         }
         Ok(())
+    }
+}
+
+/// The schedule of the fine stage. Its energy (a, b, the treatments, the landmark and
+/// scan-to-template weights, the correspondence search) is the base stage's; only how long and
+/// how stiffly it runs differ. Defaults: no stiffness annealing (the base stage has done it),
+/// 2 iterations per round, at most 8 iterations, stop when a round moves the surface by less
+/// than 0.1 mm RMS, L-BFGS memory 3 (the fine level has 16× the unknowns; memory 7 would hold
+/// ≈ 390 MB of correction pairs). Measured in docs/fine-alignment.md, "Coarse to fine".
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(default)]
+pub struct FineStageParams {
+    /// Limit on the fine stage's L-BFGS iterations.
+    pub max_iterations: usize,
+    /// L-BFGS iterations between two correspondence searches.
+    pub iterations_per_round: usize,
+    /// Stop when a round moves the surface by less than this RMS (metres).
+    pub displacement_tolerance: f64,
+    /// L-BFGS memory m.
+    pub lbfgs_memory: usize,
+    /// Stiffness annealing of the fine stage (1.0: none), as in [`FineAlignParams`].
+    pub initial_stiffness: f64,
+    /// Factor by which the stiffness multiplier shrinks per round.
+    pub stiffness_decay: f64,
+}
+
+impl Default for FineStageParams {
+    fn default() -> Self {
+        Self {
+            max_iterations: 8,
+            iterations_per_round: 2,
+            displacement_tolerance: 1e-4,
+            lbfgs_memory: 3,
+            initial_stiffness: 1.0,
+            stiffness_decay: 0.7,
+        }
+    }
+}
+
+impl FineStageParams {
+    /// The fine stage's full parameters: `base`'s energy with this schedule.
+    pub fn around(&self, base: &FineAlignParams) -> FineAlignParams {
+        FineAlignParams {
+            max_iterations: self.max_iterations,
+            iterations_per_round: self.iterations_per_round,
+            displacement_tolerance: self.displacement_tolerance,
+            lbfgs_memory: self.lbfgs_memory,
+            initial_stiffness: self.initial_stiffness,
+            stiffness_decay: self.stiffness_decay,
+            ..base.clone()
+        }
+    }
+}
+
+/// Every parameter of the pipeline, each with its documented default (the defaults live in the
+/// `Default` impls of the parts, and nowhere else: the CLI and the app read them from here).
+/// Absent fields of a JSON object keep their defaults.
+#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
+#[serde(default)]
+pub struct AlignParams {
+    /// The RBF warp (paper §3.1).
+    pub rbf: RbfParams,
+    /// Fine alignment (paper §3.2) — at `fine`, of its base stage.
+    pub fine: FineAlignParams,
+    /// At `fine`: the schedule of the short fine stage after the base fit.
+    pub fine_stage: FineStageParams,
+    /// Stop after the RBF warp.
+    pub rough_only: bool,
+}
+
+impl AlignParams {
+    /// Checks the fine-alignment parameters of both stages (the RBF parameters are checked by
+    /// the warp itself, before any work).
+    pub fn validate(&self) -> Result<(), AlignError> {
+        self.fine.validate()?;
+        self.fine_stage.around(&self.fine).validate()
+    }
+
+    /// The most iterations a run with these parameters can report at `resolution`.
+    pub fn max_iterations(&self, resolution: Resolution) -> usize {
+        match resolution {
+            Resolution::Base => self.fine.max_iterations,
+            _ => self
+                .fine
+                .max_iterations
+                .saturating_add(self.fine_stage.max_iterations),
+        }
     }
 }

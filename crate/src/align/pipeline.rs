@@ -11,23 +11,23 @@
 use std::borrow::Cow;
 
 use nalgebra::Point3;
-use serde::{Deserialize, Serialize};
 use thiserror::Error;
 
 use super::alignment_report::{AlignmentReport, FineReport, WarpReport};
 use super::anchors::landmark_anchors;
-use super::coarse_to_fine::{coarse_to_fine_align, CoarseToFineInput, FineStageParams};
+use super::coarse_to_fine::{coarse_to_fine_align, CoarseToFineInput};
 use super::correspondence::correspondence_report;
 use super::error::AlignError;
-use super::fine_align::{fine_align, FineAlignInput};
+use super::fine_align::fine_align;
+use super::fine_input::FineAlignInput;
 use super::observer::AlignObserver;
-use super::params::FineAlignParams;
+use super::params::AlignParams;
 use super::scan_index::ScanIndex;
 use super::weights::data_weights;
 use crate::landmarks::LandmarkSet;
 use crate::mesh::units::{detect_units, Units};
 use crate::mesh::Mesh;
-use crate::rbf::{rbf_warp_mesh, RbfError, RbfParams};
+use crate::rbf::{rbf_warp_mesh, RbfError};
 use crate::template::{Resolution, Template};
 use crate::utils::now_ms;
 
@@ -45,42 +45,6 @@ pub struct AlignInput<'a> {
     pub landmarks: &'a LandmarkSet,
     /// The scan's units; `None` detects them from the body's extent ([`detect_units`]).
     pub units: Option<Units>,
-}
-
-/// Every parameter of the pipeline, each with its documented default (the defaults live in the
-/// `Default` impls of the parts, and nowhere else: the CLI and the app read them from here).
-/// Absent fields of a JSON object keep their defaults.
-#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
-#[serde(default)]
-pub struct AlignParams {
-    /// The RBF warp (paper §3.1).
-    pub rbf: RbfParams,
-    /// Fine alignment (paper §3.2) — at `fine`, of its base stage.
-    pub fine: FineAlignParams,
-    /// At `fine`: the schedule of the short fine stage after the base fit.
-    pub fine_stage: FineStageParams,
-    /// Stop after the RBF warp.
-    pub rough_only: bool,
-}
-
-impl AlignParams {
-    /// Checks the fine-alignment parameters of both stages (the RBF parameters are checked by
-    /// the warp itself, before any work).
-    pub fn validate(&self) -> Result<(), AlignError> {
-        self.fine.validate()?;
-        self.fine_stage.around(&self.fine).validate()
-    }
-
-    /// The most iterations a run with these parameters can report at `resolution`.
-    pub fn max_iterations(&self, resolution: Resolution) -> usize {
-        match resolution {
-            Resolution::Base => self.fine.max_iterations,
-            _ => self
-                .fine
-                .max_iterations
-                .saturating_add(self.fine_stage.max_iterations),
-        }
-    }
 }
 
 /// Why an alignment did not run; each message names the step and what to do.
@@ -250,6 +214,7 @@ fn largest_extent(points: &[Point3<f64>]) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::align::FineAlignParams;
 
     #[test]
     fn defaults_survive_a_json_round_trip_and_partial_json_keeps_them() {

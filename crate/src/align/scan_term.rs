@@ -18,7 +18,7 @@
 //! mirroring the treatments of E_d (paper §3.2.1).
 
 use super::error::AlignError;
-use super::fine_align::FineAlignInput;
+use super::fine_input::FineAlignInput;
 use super::params::FineAlignParams;
 use super::scan_index::{MatchQuery, ScanIndex};
 use nalgebra::{Point3, Vector3};
