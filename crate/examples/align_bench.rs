@@ -225,7 +225,7 @@ fn schedules(template: &Mesh, index: &ScanIndex) {
         };
         let t = Instant::now();
         if let Ok(r) = fine_align(
-            &FineAlignInput::of_mesh(&template, index, &weights),
+            &FineAlignInput::of_mesh(template, index, &weights),
             &params,
             &mut (),
         ) {
