@@ -11,7 +11,7 @@ fn run(template: &Mesh, scan: &Mesh, params: &FineAlignParams) -> FineAlignResul
     let index = ScanIndex::new(scan).unwrap();
     let weights = vec![1.0; template.positions.len()];
     fine_align(
-        &FineAlignInput::of_mesh(&template, &index, &weights),
+        &FineAlignInput::of_mesh(template, &index, &weights),
         params,
         &mut (),
     )
