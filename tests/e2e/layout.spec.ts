@@ -1,6 +1,6 @@
-// The page at the window widths people use (1280–1920 × 900): with the sample subject open and
-// warped, no value in a panel is cut off, no panel scrolls sideways, and the 3D view sits between
-// the columns, so the bodies are never drawn under a panel.
+// The page at the window widths people use (1280–1920 × 900): with the sample subject open,
+// warped and aligned, no value in a panel is cut off, no panel scrolls sideways, and the 3D
+// view sits between the columns, so the bodies are never drawn under a panel.
 import { expect, test, type Page } from '@playwright/test';
 import { dropFiles, waitForLoads } from './fixtures';
 import { sampleSubject } from './samples';
@@ -102,6 +102,7 @@ async function canvasBetweenPanels(page: Page): Promise<void> {
 
 for (const width of WIDTHS) {
   test(`at ${width} × ${HEIGHT} every panel value is readable and the view sits between the panels`, async ({ page }, info) => {
+    test.setTimeout(300_000);
     await page.setViewportSize({ width, height: HEIGHT });
     await page.goto('./');
     await expect(page.locator('body')).toHaveAttribute('data-template-ready', 'true', { timeout: 60_000 });
@@ -119,6 +120,13 @@ for (const width of WIDTHS) {
     await page.screenshot({ path: info.outputPath(`layout-${width}.png`) });
     await page.getByTestId('rbf-residuals').scrollIntoViewIfNeeded();
     await page.screenshot({ path: info.outputPath(`layout-${width}-warp.png`) });
+    expect(await clippedText(page)).toEqual([]);
+
+    // The Align panel's results (Table 1 numbers, iterations, legend) as well.
+    await page.getByTestId('align-run').click();
+    await expect(page.locator('body')).toHaveAttribute('data-align-state', 'done', { timeout: 240_000 });
+    await page.getByTestId('align-rms').scrollIntoViewIfNeeded();
+    await page.screenshot({ path: info.outputPath(`layout-${width}-align.png`) });
     expect(await clippedText(page)).toEqual([]);
   });
 }
