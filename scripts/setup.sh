@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Installs everything BodySpace needs from the package registries, skipping what is already there:
-# Debian's chromium, chromium-driver and binaryen; the wasm32 Rust target; wasm-pack (built by cargo,
+# Debian's chromium and chromium-driver; the wasm32 Rust target; wasm-pack (built by cargo,
 # since its own binary download fails here; wasm-pack in turn builds the matching wasm-bindgen CLI
 # with cargo on its first run and caches it); npm packages.
 set -euo pipefail
@@ -11,7 +11,6 @@ export PATH="$HOME/.cargo/bin:$PATH"
 need_apt=()
 command -v chromium >/dev/null 2>&1 || need_apt+=(chromium)
 command -v chromedriver >/dev/null 2>&1 || need_apt+=(chromium-driver)
-command -v wasm-opt >/dev/null 2>&1 || need_apt+=(binaryen)
 if [ ${#need_apt[@]} -gt 0 ]; then
   echo "setup: installing Debian packages: ${need_apt[*]}"
   SUDO=""; [ "$(id -u)" -ne 0 ] && SUDO="sudo"

@@ -11,11 +11,8 @@ bash scripts/setup.sh
 echo "== build the core for the browser (the TypeScript check reads its types)"
 bash scripts/build-wasm.sh
 
-echo "== lint"
-cargo fmt --manifest-path crate/Cargo.toml --check
-cargo clippy --manifest-path crate/Cargo.toml --all-targets -- -D warnings
-cargo clippy --manifest-path crate/Cargo.toml --lib --target wasm32-unknown-unknown -- -D warnings
-npm run --silent typecheck
+echo "== lint (package.json's lint: rustfmt, clippy native and wasm32, tsc)"
+npm run --silent lint
 
 echo "== rust tests"
 cargo test --manifest-path crate/Cargo.toml

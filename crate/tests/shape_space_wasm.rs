@@ -96,6 +96,20 @@ fn slider_moves_are_rank_one_updates_at_base_and_at_fine() {
     let base_stature = stature(&space);
     assert!(base_stature > 1.4 && base_stature < 2.0);
 
+    // An export body of the same coefficients has the shown body's positions and normals.
+    let counts = [-1, -1, -1, torso.len() as i32, -1, -1];
+    let export = space
+        .reconstruct(&whole, &torso, &counts)
+        .unwrap_or_else(|_| panic!("reconstruct"))
+        .to_vec();
+    assert!(max_diff(&export, &base) < 1e-6);
+    let export_normals = space
+        .normals_of(&export)
+        .unwrap_or_else(|_| panic!("normals of"))
+        .to_vec();
+    assert!(max_diff(&export_normals, &space.normals().to_vec()) < 1e-6);
+    assert!(space.normals_of(&export[..3]).is_err());
+
     // The same body at fine: the base vertices come first and do not move.
     let fine = load_template("fine").unwrap_or_else(|_| panic!("fine template"));
     let progress = js_sys::Function::new_with_args("f", "");

@@ -30,7 +30,7 @@ export function holedBoxPly(name = 'subject.ply'): TestFile {
 }
 
 /** A binary little-endian PLY with float vertices and uchar/int face lists. */
-export function binaryPly(positions: number[][], triangles: number[][]): Buffer {
+function binaryPly(positions: number[][], triangles: number[][]): Buffer {
   const header =
     'ply\nformat binary_little_endian 1.0\ncomment built by the BodySpace tests\n' +
     `element vertex ${positions.length}\nproperty float x\nproperty float y\nproperty float z\n` +

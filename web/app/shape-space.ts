@@ -24,7 +24,7 @@ import { readFits } from './read-fits';
 import { subjects } from './subjects';
 
 /** Where the app finds its embedded model, relative to the page. */
-export const DEMO_MODEL = 'models/demo.bsm';
+const DEMO_MODEL = 'models/demo.bsm';
 
 export class ShapeSpace {
   private model: LoadedModel | null = null;

@@ -3,7 +3,7 @@
 import { SEGMENTS, type SegmentName, type ShapeCoefficients } from './shape-results';
 
 /** Slider values are held on this grid, so a link restores exactly the same body. */
-export const SIGMA_STEP = 0.001;
+const SIGMA_STEP = 0.001;
 const LIMIT = 32767;
 
 export interface CameraPose {

@@ -5,9 +5,6 @@ export type TemplateResolution = 'base' | 'fine';
 /** Segment names in the core's order (`template::Segment::ALL`): columns of `segmentWeights`. */
 export const SEGMENT_NAMES = ['head', 'left arm', 'right arm', 'torso', 'left leg', 'right leg'] as const;
 
-/** Region flag bits (`template::RegionFlags`). */
-export const REGION_FLAGS = { hand: 1, ear: 2, sole: 4, unseen: 8 } as const;
-
 export interface TemplateData {
   resolution: TemplateResolution;
   /** `#V·3` metres, y up, feet on y = 0, facing +z. */
@@ -22,6 +19,6 @@ export interface TemplateData {
   virtualLandmarkCount: number;
   /** `#V·6` blend weights in `SEGMENT_NAMES` order; each row sums to 1. */
   segmentWeights: Float32Array;
-  /** `#V` region flags. */
+  /** `#V` region flags (bits of the core's `template::RegionFlags`). */
   flags: Uint8Array;
 }

@@ -3,12 +3,12 @@
 import * as THREE from 'three';
 
 /** sRGB stops of the scale, low to high. */
-export const HEAT_STOPS = ['#440154', '#3b528b', '#21918c', '#5ec962', '#fde725'] as const;
+const HEAT_STOPS = ['#440154', '#3b528b', '#21918c', '#5ec962', '#fde725'] as const;
 
 const stops = HEAT_STOPS.map((hex) => new THREE.Color(hex));
 
 /** The scale's colour at `t` ∈ [0, 1] (linear RGB, for vertex colours). */
-export function heatColour(t: number, target = new THREE.Color()): THREE.Color {
+function heatColour(t: number, target = new THREE.Color()): THREE.Color {
   const x = Math.min(Math.max(t, 0), 1) * (stops.length - 1);
   const i = Math.min(Math.floor(x), stops.length - 2);
   return target.copy(stops[i]!).lerp(stops[i + 1]!, x - i);

@@ -20,6 +20,8 @@ export class Viewer {
   private readonly grid = makeGrid();
   private readonly layers = new Map<string, BodyLayer>();
   private frameRequested = false;
+  /** What the camera was last aimed at, for `data-framed-ndc`. */
+  private framed: THREE.Box3 | null = null;
 
   constructor(private readonly container: HTMLElement) {
     this.renderer = new THREE.WebGLRenderer({ antialias: true });
@@ -108,6 +110,7 @@ export class Viewer {
   }
 
   private aimAt(box: THREE.Box3): void {
+    this.framed = box.clone();
     const sphere = box.getBoundingSphere(new THREE.Sphere());
     const radius = Math.max(sphere.radius, 0.05);
     const fov = THREE.MathUtils.degToRad(this.camera.fov);
@@ -133,6 +136,7 @@ export class Viewer {
       this.renderer.render(this.scene, this.camera);
       const rendered = Number(this.container.dataset.frames ?? '0') + 1;
       this.container.dataset.frames = String(rendered);
+      if (this.framed) this.container.dataset.framedNdc = projectedExtent(this.framed, this.camera);
     });
   }
 
@@ -156,4 +160,20 @@ export class Viewer {
     this.camera.updateProjectionMatrix();
     this.requestRender();
   }
+}
+
+/**
+ * `minX,maxX,minY,maxY` of `box`'s corners in normalised device coordinates (the canvas spans
+ * −1…1 both ways): where what the camera was aimed at lands on the canvas, for tests.
+ */
+function projectedExtent(box: THREE.Box3, camera: THREE.Camera): string {
+  const [lo, hi] = [box.min, box.max];
+  const xs: number[] = [];
+  const ys: number[] = [];
+  for (let i = 0; i < 8; i++) {
+    const p = new THREE.Vector3(i & 1 ? hi.x : lo.x, i & 2 ? hi.y : lo.y, i & 4 ? hi.z : lo.z).project(camera);
+    xs.push(p.x);
+    ys.push(p.y);
+  }
+  return [Math.min(...xs), Math.max(...xs), Math.min(...ys), Math.max(...ys)].map((v) => v.toFixed(3)).join(',');
 }

@@ -13,21 +13,17 @@ import type {
   ShownResolution,
 } from '../shared/shape-results';
 import type { TemplateResolution } from '../shared/template-data';
-import { vertexNormals } from '../shared/vertex-normals';
 import { templateHandle } from './template-handlers';
 
 let space: ShapeSpace | null = null;
-/** Triangles of the body shown (for the normals of export bodies). */
-let triangles: Uint32Array | null = null;
 
 /** Replaces the held model only once the new one is read: a failure leaves the old one. */
 function hold(next: ShapeSpace, fileName: string): LoadedModel {
   const info = JSON.parse(next.infoJson()) as ModelInfo;
-  const tris = next.triangles();
+  const triangles = next.triangles();
   space?.free();
   space = next;
-  triangles = tris;
-  return { info, triangles: tris.slice(), fileName };
+  return { info, triangles, fileName };
 }
 
 function current(): ShapeSpace {
@@ -90,8 +86,9 @@ export function morph(c: ShapeCoefficients, rebuild: boolean): ReconstructedBody
 /** A body for export at the shown resolution, leaving the body shown as it is. */
 export function reconstruct(c: ShapeCoefficients): ExportBody {
   const [whole, segments, counts] = flat(c);
-  const positions = current().reconstruct(whole, segments, counts);
-  return { positions, normals: vertexNormals(positions, triangles!) };
+  const model = current();
+  const positions = model.reconstruct(whole, segments, counts);
+  return { positions, normals: model.normalsOf(positions) };
 }
 
 /**
@@ -107,8 +104,7 @@ export function useResolution(
   if (resolution === 'fine') progress(0, 'Building the fine template');
   const template = templateHandle(resolution === 'fine' ? 'fine' : 'base');
   model.useResolution(resolution, template, (f: number) => progress(0.2 + 0.8 * f, label));
-  triangles = model.triangles();
-  return { resolution: model.resolution as 'base' | 'fine', vertexCount: model.vertexCount, triangles: triangles.slice() };
+  return { resolution: model.resolution as 'base' | 'fine', vertexCount: model.vertexCount, triangles: model.triangles() };
 }
 
 export function modelCsv(kind: ModelCsv): string {

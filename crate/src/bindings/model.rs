@@ -286,8 +286,25 @@ impl ShapeSpace {
         Float32Array::from(self.normals.as_slice())
     }
 
+    /// `#V·3` unit vertex normals of other `positions` (`#V·3`) over the triangles of the body
+    /// shown, e.g. of a body from `reconstruct` (computed now, copied out).
+    #[wasm_bindgen(js_name = normalsOf)]
+    pub fn normals_of(&self, positions: &[f32]) -> Result<Float32Array, JsError> {
+        let n = 3 * self.topology.vertex_count();
+        if positions.len() != n {
+            return Err(js(format!(
+                "positions hold {} values; the body shown has {} vertices ({n} values)",
+                positions.len(),
+                n / 3
+            )));
+        }
+        let mut out = vec![0.0f32; n];
+        self.topology.vertex_normals_into(positions, &mut out);
+        Ok(Float32Array::from(out.as_slice()))
+    }
+
     /// A body for export, without touching the one shown: same arguments as `morph`, positions
-    /// (`#V·3`, metres, at the shown resolution) copied out.
+    /// (`#V·3`, metres, at the shown resolution) copied out; `normalsOf` gives its normals.
     pub fn reconstruct(
         &self,
         whole_sigma: &[f64],
