@@ -24,7 +24,6 @@ pub use model_build::build_shape_model;
 use crate::io::{read_landmarks, read_scan};
 use crate::landmarks::report::{report, LandmarkReport};
 use crate::landmarks::CAESAR_LANDMARKS;
-use crate::mesh::normals::vertex_normals;
 use crate::mesh::summary::{summarise, MeshSummary};
 use crate::mesh::Mesh;
 
@@ -99,7 +98,7 @@ impl ParsedScan {
 pub fn parse_scan(bytes: &[u8], file_name: &str) -> Result<ParsedScan, JsError> {
     let file_name = checked_file_name(file_name)?;
     let mesh = read_scan(bytes, file_name).map_err(|e| JsError::new(&e.to_string()))?;
-    let normals = vertex_normals(&mesh);
+    let normals = mesh.vertex_normals();
     let summary = summarise(&mesh);
     Ok(ParsedScan {
         mesh,

@@ -21,7 +21,8 @@ use super::report::{
 };
 use super::scan_index::{validate_mesh, MatchQuery, ScanIndex};
 use super::scan_term::ScanTerm;
-use super::surface::{unique_edges, vertex_normals_into};
+use crate::mesh::normals::vertex_normals_into;
+use crate::mesh::topology::unique_edges;
 use nalgebra::{Point3, Vector3};
 use std::ops::ControlFlow;
 

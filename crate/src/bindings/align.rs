@@ -16,7 +16,6 @@ use crate::align::{
     DistanceStats, FineAlignParams, Progress, ScanIndex, Stage,
 };
 use crate::landmarks::{Landmark, LandmarkSet};
-use crate::mesh::normals::vertex_normals;
 use crate::mesh::Mesh;
 use crate::rbf::{rbf_warp_mesh, Kernel, RbfParams, RbfWarp};
 use crate::template::Template;
@@ -419,7 +418,7 @@ fn fine_report(r: &AlignReport) -> serde_json::Value {
 }
 
 fn flat_normals(mesh: &Mesh) -> Vec<f32> {
-    vertex_normals(mesh)
+    mesh.vertex_normals()
         .iter()
         .flat_map(|n| [n.x as f32, n.y as f32, n.z as f32])
         .collect()

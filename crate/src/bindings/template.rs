@@ -9,7 +9,6 @@ use nalgebra::Vector3;
 use wasm_bindgen::prelude::*;
 
 use crate::landmarks::Landmark;
-use crate::mesh::normals::vertex_normals;
 use crate::rbf::virtual_landmarks;
 use crate::template::{Resolution, Template};
 
@@ -34,7 +33,7 @@ pub fn load_template(resolution: &str) -> Result<TemplateHandle, JsError> {
         .map_err(|e| JsError::new(&format!("embedded template: {e}")))?
         .at_resolution(resolution);
     let virtual_landmarks = virtual_landmarks(&template.landmark_positions(), template.mesh());
-    let normals = vertex_normals(template.mesh());
+    let normals = template.mesh().vertex_normals();
     let base = (template.resolution() != Resolution::Base)
         .then(|| template.at_resolution(Resolution::Base));
     Ok(TemplateHandle {

@@ -10,7 +10,7 @@ use super::resolution::Resolution;
 use super::segment::Segment;
 use super::store::{self, StoredTemplate};
 use super::subdivide::Subdivision;
-use super::topology::unique_edges;
+use crate::mesh::topology::unique_edges;
 
 /// The stored base template, embedded in the binary.
 pub const EMBEDDED_TEMPLATE: &[u8] =
