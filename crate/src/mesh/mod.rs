@@ -4,11 +4,13 @@
 //! * [`bounds`]: bounding box and largest extent.
 //! * [`normals`]: area-weighted vertex normals (f64 and flat f32) and face normals.
 //! * [`topology`]: unique edges, neighbours, boundary edges/vertices/loops, components.
+//! * [`similarity`]: the least-squares similarity or rigid transform between point sets (Umeyama).
 //! * [`units`]: metres or millimetres from a body's extent.
 //! * [`summary`]: the one-look summary of a loaded scan.
 
 pub mod bounds;
 pub mod normals;
+pub mod similarity;
 pub mod summary;
 pub mod topology;
 pub mod trimesh;

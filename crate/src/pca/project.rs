@@ -3,8 +3,9 @@
 
 use super::error::PcaError;
 use super::model::BodyModel;
-use super::procrustes_gpa::{rigid_align, PoseRemoval, PoseTransform};
+use super::procrustes_gpa::{rigid_align, PoseRemoval};
 use super::stitch::Coefficients;
+use crate::mesh::similarity::Similarity;
 use nalgebra::Point3;
 
 /// Result of [`BodyModel::project`].
@@ -13,7 +14,7 @@ pub struct Projection {
     /// Whole-body and all six segment coefficients (model units).
     pub coefficients: Coefficients,
     /// The transform that brought the mesh into the model frame.
-    pub pose: PoseTransform,
+    pub pose: Similarity,
     /// Mean per-vertex distance between the aligned mesh and its whole-body reconstruction.
     pub residual: f64,
 }
@@ -42,7 +43,7 @@ impl BodyModel {
             .map(|c| Point3::new(c[0] as f64, c[1] as f64, c[2] as f64))
             .collect();
         let pose = match self.settings.gpa.pose {
-            PoseRemoval::None => PoseTransform::identity(),
+            PoseRemoval::None => Similarity::identity(),
             PoseRemoval::Rigid => rigid_align(positions, &mean, false),
             PoseRemoval::Similarity => rigid_align(positions, &mean, true),
         };
