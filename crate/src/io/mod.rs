@@ -5,6 +5,7 @@
 pub mod error;
 pub mod glb_write;
 pub mod gzip;
+pub mod landmark_raw;
 pub mod landmarks_csv;
 pub mod landmarks_json;
 pub mod landmarks_read;
