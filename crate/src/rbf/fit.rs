@@ -1,4 +1,4 @@
-//! The RBF network of paper eq. 1–2, fitted by LU with partial pivoting, and its evaluation.
+//! Fitting the RBF network of paper eq. 1–2 ([`RbfNetwork`]) by LU with partial pivoting.
 //!
 //! One network per coordinate, all three solved at once (three right-hand sides):
 //!
@@ -16,23 +16,8 @@ use nalgebra::{DMatrix, Point3};
 
 use super::checks::{check_coincident, check_finite, check_len, check_spread, check_unique_names};
 use super::error::{name_list, RbfError};
-use super::evaluate::{blocks, Block};
-use super::kernel::Kernel;
+use super::network::{blocks, RbfNetwork};
 use super::params::RbfParams;
-
-/// A fitted RBF network mapping R³ → R³.
-#[derive(Debug, Clone, PartialEq)]
-pub struct RbfNetwork {
-    pub(super) kernel: Kernel,
-    /// Centres p_j and weights w_j per coordinate, in vectorisable blocks.
-    pub(super) blocks: Vec<Block>,
-    /// Affine part: row 0 the constant a_0, rows 1..4 the linear map (x, y, z → output).
-    /// All zero when the fit had no affine term.
-    pub(super) affine: [[f64; 3]; 4],
-    pub(super) rcond: f64,
-    /// n, the number of real (unpadded) centres.
-    pub(super) centres: usize,
-}
 
 /// Fits f with f(source_i) = target_i (exactly when λ = 0).
 ///
@@ -162,27 +147,9 @@ fn solve(
     Ok(RbfNetwork {
         kernel: params.kernel,
         blocks: blocks(source, &x),
-        centres: n,
         affine,
         rcond,
     })
-}
-
-impl RbfNetwork {
-    /// The kernel the network was fitted with.
-    pub fn kernel(&self) -> Kernel {
-        self.kernel
-    }
-
-    /// Reciprocal 1-norm condition number of the fitted system (1 = perfect, ~1e-16 = singular).
-    pub fn rcond(&self) -> f64 {
-        self.rcond
-    }
-
-    /// Number of centres n.
-    pub fn centre_count(&self) -> usize {
-        self.centres
-    }
 }
 
 fn one_norm(a: &DMatrix<f64>) -> f64 {
