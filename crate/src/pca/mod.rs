@@ -3,7 +3,7 @@
 //! * [`procrustes_gpa`] — generalised Procrustes analysis (rigid pose removal, optional scale)
 //! * [`gram`] — snapshot PCA through the N×N Gram matrix
 //! * [`model`] — [`ShapeModel`] (one part) and [`BodyModel`] (whole body + six segments)
-//! * [`build`] — [`build_body_model`] from a [`TrainingSet`]
+//! * [`build`] — [`build_body_model`] from a [`TrainingSet`]; [`params`] — its [`BuildParams`]
 //! * [`segments`] — segment vertex subsets and normalised blend weights
 //! * [`stitch`] — mixed whole-body/segment reconstruction, the slider fast path, seam quality
 //! * [`morph`] — the body on screen: held coefficients and positions, slider moves as rank-1 updates
@@ -27,6 +27,7 @@ pub mod measure;
 pub mod metrics;
 pub mod model;
 pub mod morph;
+pub mod params;
 pub mod procrustes_gpa;
 pub mod project;
 pub mod random;
@@ -34,9 +35,10 @@ pub mod segments;
 pub mod stitch;
 pub mod subdivide;
 
-pub use build::{build_body_model, BuildParams, TrainingSet};
+pub use build::{build_body_model, TrainingSet};
 pub use error::PcaError;
 pub use metrics::{QualityCurves, QualityParams};
+pub use params::BuildParams;
 pub use model::{BodyModel, ShapeModel, TemplateIdentity};
 pub use morph::{Morph, MorphUpdate};
 pub use procrustes_gpa::{GpaParams, PoseRemoval};

@@ -1,7 +1,7 @@
 //! The shape model types: one linear model S = S̄ + Φ·B (paper eq. 9) per body part, and the body
 //! model that holds the whole-body model, the six segment models and what built them.
 
-use super::build::BuildParams;
+use super::params::BuildParams;
 use super::error::PcaError;
 use super::metrics::QualityCurves;
 use crate::template::Segment;
