@@ -10,10 +10,11 @@
 use super::error::PcaError;
 use super::gram::{modes_for_variance, snapshot_pca, SnapshotPca};
 use super::metrics::{quality_curves, QualityCurves};
-use super::model::{BodyModel, ShapeModel, TemplateIdentity};
+use super::model::BodyModel;
 use super::params::BuildParams;
 use super::procrustes_gpa::generalised_procrustes;
 use super::segments::{segment_subsets, validate_weights};
+use super::shape_model::{ShapeModel, TemplateIdentity};
 use nalgebra::Point3;
 
 /// Aligned subjects in template vertex order plus what the model must remember of the template.
