@@ -200,11 +200,6 @@ impl ScanIndex {
             .map(|&v| &self.positions[v as usize])
     }
 
-    /// Number of scan vertices used by at least one triangle.
-    pub fn surface_vertex_count(&self) -> usize {
-        self.tree_vertex.len()
-    }
-
     /// Per-vertex boundary flags (`true` on hole rims and open borders).
     pub fn boundary_vertices(&self) -> &[bool] {
         &self.boundary_vertex
