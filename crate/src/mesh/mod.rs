@@ -3,6 +3,7 @@
 //! * [`trimesh`]: the [`Mesh`] type.
 //! * [`bounds`]: bounding box and largest extent.
 //! * [`normals`]: area-weighted vertex normals (f64 and flat f32) and face normals.
+//! * [`ray`]: ray–triangle intersection.
 //! * [`topology`]: unique edges, neighbours, boundary edges/vertices/loops, components.
 //! * [`similarity`]: the least-squares similarity or rigid transform between point sets (Umeyama).
 //! * [`units`]: metres or millimetres from a body's extent.
@@ -10,6 +11,7 @@
 
 pub mod bounds;
 pub mod normals;
+pub mod ray;
 pub mod similarity;
 pub mod summary;
 pub mod topology;
