@@ -19,6 +19,7 @@ pub mod ply_source;
 pub mod ply_write;
 pub mod scan;
 pub mod stl_read;
+pub mod text_xyz;
 
 pub use error::IoError;
 pub use landmarks_csv::write_landmarks_csv;
