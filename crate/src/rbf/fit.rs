@@ -64,15 +64,29 @@ pub fn fit(
     if params.affine {
         check_spread(names, source, 3, "template", "the affine term")?;
     }
-    solve(names, source, target, params)
+    solve(source, target, params).map_err(|e| RbfError::IllConditioned {
+        rcond: e.rcond,
+        min_rcond: params.min_rcond,
+        worst: names
+            .get(e.worst_unknown)
+            .cloned()
+            .unwrap_or_else(|| "the affine term".to_string()),
+    })
 }
 
+/// Why the system was not solved: its reciprocal condition (0 when the solve itself failed) and
+/// the unknown it resolves worst (a landmark index, or ≥ n for the affine term).
+struct Unsolvable {
+    rcond: f64,
+    worst_unknown: usize,
+}
+
+/// Builds and solves the system above for checked inputs (`source`, `target` n long).
 fn solve(
-    names: &[String],
     source: &[Point3<f64>],
     target: &[Point3<f64>],
     params: &RbfParams,
-) -> Result<RbfNetwork, RbfError> {
+) -> Result<RbfNetwork, Unsolvable> {
     let n = source.len();
     let m = if params.affine { n + 4 } else { n };
     let mut a = DMatrix::<f64>::zeros(m, m);
@@ -104,14 +118,9 @@ fn solve(
     // Partial pivoting permutes rows only, so U's column i still belongs to unknown i: the
     // smallest |U_ii| points at the landmark (or affine term) the system cannot resolve.
     let u = lu.u();
-    let worst_col = (0..m)
+    let worst_unknown = (0..m)
         .min_by(|&i, &j| u[(i, i)].abs().total_cmp(&u[(j, j)].abs()))
         .unwrap_or(0);
-    let worst = if worst_col < n {
-        names[worst_col].clone()
-    } else {
-        "the affine term".to_string()
-    };
     // rcond = 1 / (‖A‖₁ ‖A⁻¹‖₁), exact rather than estimated: A⁻¹ costs (n+4)³ ≈ 10⁶ flops.
     let rcond = match lu.try_inverse() {
         Some(inv) if norm1 > 0.0 => {
@@ -124,10 +133,9 @@ fn solve(
         }
         _ => 0.0,
     };
-    let ill = |rcond| RbfError::IllConditioned {
+    let ill = |rcond| Unsolvable {
         rcond,
-        min_rcond: params.min_rcond,
-        worst: worst.clone(),
+        worst_unknown,
     };
     if rcond < params.min_rcond {
         return Err(ill(rcond));
