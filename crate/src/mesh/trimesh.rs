@@ -55,6 +55,14 @@ impl Mesh {
         vertex_normals(&self.positions, &self.triangles)
     }
 
+    /// [`Mesh::vertex_normals`] as a flat `[x0, y0, z0, x1, ...]` f32 array (three.js layout).
+    pub fn flat_vertex_normals_f32(&self) -> Vec<f32> {
+        self.vertex_normals()
+            .iter()
+            .flat_map(|n| [n.x as f32, n.y as f32, n.z as f32])
+            .collect()
+    }
+
     /// Triangles as a flat `[a0, b0, c0, a1, ...]` index array.
     pub fn flat_triangles(&self) -> Vec<u32> {
         self.triangles.iter().flatten().copied().collect()
