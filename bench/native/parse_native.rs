@@ -4,7 +4,6 @@
 use std::time::Instant;
 
 use bodyspace::io::read_scan;
-use bodyspace::mesh::normals::vertex_normals;
 use bodyspace::mesh::summary::summarise;
 
 fn median(mut xs: Vec<f64>) -> f64 {
@@ -35,7 +34,7 @@ fn main() -> Result<(), String> {
         let t0 = Instant::now();
         let mesh = read_scan(&bytes, &name).map_err(|e| e.to_string())?;
         let t1 = Instant::now();
-        let n = vertex_normals(&mesh);
+        let n = mesh.vertex_normals();
         let t2 = Instant::now();
         let s = summarise(&mesh);
         let t3 = Instant::now();

@@ -7,7 +7,6 @@
 use std::time::Instant;
 
 use bodyspace::io::{read_scan, write_obj, write_ply};
-use bodyspace::mesh::normals::vertex_normals;
 use bodyspace::mesh::{summarise, Mesh};
 use nalgebra::Point3;
 
@@ -76,7 +75,7 @@ fn main() {
         assert_eq!((s.components, s.boundary_loops), (1, 1));
     });
     let normals_ms = median_of(runs, || {
-        assert_eq!(vertex_normals(&mesh).len(), mesh.positions.len());
+        assert_eq!(mesh.vertex_normals().len(), mesh.positions.len());
     });
     println!("summarise: {summary_ms:.2} ms; vertex_normals: {normals_ms:.2} ms");
 }

@@ -13,7 +13,6 @@ pub use align::{
 pub use template::{load_template, TemplateHandle};
 
 use js_sys::{Float32Array, Uint32Array};
-use nalgebra::Vector3;
 use serde::Serialize;
 use wasm_bindgen::prelude::*;
 
@@ -26,7 +25,6 @@ pub use model_build::build_shape_model;
 use crate::io::{read_landmarks, read_scan};
 use crate::landmarks::report::{report, LandmarkReport};
 use crate::landmarks::CAESAR_LANDMARKS;
-use crate::mesh::normals::vertex_normals;
 use crate::mesh::summary::{summarise, MeshSummary};
 use crate::mesh::Mesh;
 
@@ -50,7 +48,8 @@ pub fn caesar_landmark_names() -> Vec<String> {
 #[wasm_bindgen]
 pub struct ParsedScan {
     mesh: Mesh,
-    normals: Vec<Vector3<f64>>,
+    /// `#V·3` unit vertex normals, xyz interleaved.
+    normals: Vec<f32>,
     summary: MeshSummary,
 }
 
@@ -80,12 +79,7 @@ impl ParsedScan {
 
     /// `#V·3` unit vertex normals, xyz interleaved (copied out).
     pub fn normals(&self) -> Float32Array {
-        let flat: Vec<f32> = self
-            .normals
-            .iter()
-            .flat_map(|n| [n.x as f32, n.y as f32, n.z as f32])
-            .collect();
-        Float32Array::from(flat.as_slice())
+        Float32Array::from(self.normals.as_slice())
     }
 
     /// The [`MeshSummary`] as JSON (snake_case fields, bounding box in metres).
@@ -101,7 +95,7 @@ impl ParsedScan {
 pub fn parse_scan(bytes: &[u8], file_name: &str) -> Result<ParsedScan, JsError> {
     let file_name = checked_file_name(file_name)?;
     let mesh = read_scan(bytes, file_name).map_err(|e| JsError::new(&e.to_string()))?;
-    let normals = vertex_normals(&mesh);
+    let normals = mesh.flat_vertex_normals_f32();
     let summary = summarise(&mesh);
     Ok(ParsedScan {
         mesh,

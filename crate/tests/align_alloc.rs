@@ -13,11 +13,11 @@ use align_support::{agreement_case, map, uv_sphere};
 use bodyspace::align::energy::{identity_transforms, AlignEnergy, BlockPreconditioner};
 use bodyspace::align::lbfgs::{Lbfgs, Objective, Step};
 use bodyspace::align::scan_term::ScanSample;
-use bodyspace::align::surface::unique_edges;
 use bodyspace::align::{
     fine_align, CorrespondenceMode, FineAlignInput, FineAlignParams, MatchQuery, Progress,
     ScanIndex,
 };
+use bodyspace::mesh::topology::unique_edges;
 use nalgebra::{Point3, Vector3};
 
 struct CountingAllocator;

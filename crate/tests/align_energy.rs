@@ -5,7 +5,7 @@ mod align_support;
 use align_support::{uv_sphere, Rng};
 use bodyspace::align::energy::{AlignEnergy, DOF};
 use bodyspace::align::scan_term::ScanSample;
-use bodyspace::align::surface::unique_edges;
+use bodyspace::mesh::topology::unique_edges;
 use nalgebra::Point3;
 
 #[test]

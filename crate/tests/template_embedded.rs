@@ -3,7 +3,8 @@
 #![cfg(not(target_arch = "wasm32"))]
 
 use bodyspace::landmarks::CAESAR_LANDMARKS;
-use bodyspace::template::topology::{signed_volume, vertex_normals};
+use bodyspace::mesh::normals::vertex_normals;
+use bodyspace::template::topology::signed_volume;
 use bodyspace::template::{Resolution, Segment, Template};
 
 fn base() -> Template {

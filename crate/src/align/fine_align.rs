@@ -23,7 +23,8 @@ use super::report::{
 };
 use super::scan_index::{validate_mesh, MatchQuery};
 use super::scan_term::ScanTerm;
-use super::surface::{unique_edges, vertex_normals_into};
+use crate::mesh::normals::vertex_normals_into;
+use crate::mesh::topology::unique_edges;
 use crate::utils::now_ms;
 use crate::utils::parallel::for_each_pair_mut;
 use nalgebra::{Point3, Vector3};

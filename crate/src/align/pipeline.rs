@@ -25,6 +25,7 @@ use super::params::AlignParams;
 use super::scan_index::ScanIndex;
 use super::weights::data_weights;
 use crate::landmarks::LandmarkSet;
+use crate::mesh::bounding_extent;
 use crate::mesh::units::{detect_units, Units};
 use crate::mesh::Mesh;
 use crate::rbf::{rbf_warp_mesh, RbfError};
@@ -114,7 +115,7 @@ pub fn align_scan(
 
     let units = input
         .units
-        .unwrap_or_else(|| detect_units(largest_extent(&input.scan.positions)));
+        .unwrap_or_else(|| detect_units(bounding_extent(&input.scan.positions)));
     let to_m = units.scale_to_metres();
     let scan = Mesh::new(
         input.scan.positions.iter().map(|p| p * to_m).collect(),
@@ -198,17 +199,6 @@ pub fn align_scan(
         scale_to_metres: to_m,
         report,
     })
-}
-
-// TEMP until the geometry layer's bounding box lands.
-fn largest_extent(points: &[Point3<f64>]) -> f64 {
-    let mut lo = Point3::new(f64::INFINITY, f64::INFINITY, f64::INFINITY);
-    let mut hi = Point3::new(f64::NEG_INFINITY, f64::NEG_INFINITY, f64::NEG_INFINITY);
-    for p in points {
-        lo = lo.inf(p);
-        hi = hi.sup(p);
-    }
-    (hi - lo).max().max(0.0)
 }
 
 #[cfg(test)]

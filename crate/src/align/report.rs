@@ -4,7 +4,7 @@
 use super::error::AlignError;
 use super::params::CorrespondenceMode;
 use super::scan_index::{MatchQuery, ScanIndex};
-use super::surface::vertex_normals;
+use crate::mesh::normals::vertex_normals;
 use nalgebra::Point3;
 use serde::Serialize;
 

@@ -2,10 +2,9 @@
 
 use super::error::AlignError;
 use super::params::CorrespondenceMode;
-use super::surface::{
-    barycentric, boundary_vertices, closest_point_on_triangle, face_normals, vertex_normals,
-    OneRings,
-};
+use super::surface::{barycentric, closest_point_on_triangle, OneRings};
+use crate::mesh::normals::{face_normals, vertex_normals};
+use crate::mesh::topology::boundary_vertices;
 use crate::mesh::Mesh;
 use kiddo::{ImmutableKdTree, SquaredEuclidean};
 use nalgebra::{Point3, Vector3};
@@ -199,11 +198,6 @@ impl ScanIndex {
         self.tree_vertex
             .iter()
             .map(|&v| &self.positions[v as usize])
-    }
-
-    /// Number of scan vertices used by at least one triangle.
-    pub fn surface_vertex_count(&self) -> usize {
-        self.tree_vertex.len()
     }
 
     /// Per-vertex boundary flags (`true` on hole rims and open borders).

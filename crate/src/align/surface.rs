@@ -1,100 +1,7 @@
-//! Per-mesh geometry the aligner needs: normals, unique edges, one-rings and boundary flags.
+//! Point-to-surface geometry the scan index needs: the vertex → triangle table (one-rings), the
+//! closest point on a triangle and barycentric coordinates.
 
-use nalgebra::{Point3, Vector3};
-
-/// Area-weighted vertex normals (unit length; zero for isolated or degenerate vertices).
-///
-/// `positions`: `#V`; `triangles`: `#F`, counter-clockwise seen from outside. Each triangle adds
-/// its unnormalised cross product (twice its area times its normal) to its three corners.
-pub fn vertex_normals(positions: &[Point3<f64>], triangles: &[[u32; 3]]) -> Vec<Vector3<f64>> {
-    let mut normals = vec![Vector3::zeros(); positions.len()];
-    vertex_normals_into(positions, triangles, &mut normals);
-    normals
-}
-
-/// [`vertex_normals`] into a caller-owned buffer of length `#V` (no allocation per round).
-pub fn vertex_normals_into(
-    positions: &[Point3<f64>],
-    triangles: &[[u32; 3]],
-    normals: &mut [Vector3<f64>],
-) {
-    normals.iter_mut().for_each(|n| *n = Vector3::zeros());
-    for t in triangles {
-        let [a, b, c] = t.map(|i| i as usize);
-        let n = (positions[b] - positions[a]).cross(&(positions[c] - positions[a]));
-        normals[a] += n;
-        normals[b] += n;
-        normals[c] += n;
-    }
-    for n in normals.iter_mut() {
-        let len = n.norm();
-        *n = if len > 0.0 {
-            *n / len
-        } else {
-            Vector3::zeros()
-        };
-    }
-}
-
-/// Unit face normals, `#F` (zero for degenerate triangles).
-pub fn face_normals(positions: &[Point3<f64>], triangles: &[[u32; 3]]) -> Vec<Vector3<f64>> {
-    triangles
-        .iter()
-        .map(|t| {
-            let [a, b, c] = t.map(|i| i as usize);
-            let n = (positions[b] - positions[a]).cross(&(positions[c] - positions[a]));
-            let len = n.norm();
-            if len > 0.0 {
-                n / len
-            } else {
-                Vector3::zeros()
-            }
-        })
-        .collect()
-}
-
-/// Each undirected edge once, as `(i, j)` with `i < j`, sorted; plus how many triangles use it.
-pub fn edges_with_use_count(triangles: &[[u32; 3]]) -> Vec<([u32; 2], u32)> {
-    let mut directed: Vec<[u32; 2]> = Vec::with_capacity(triangles.len() * 3);
-    for t in triangles {
-        for k in 0..3 {
-            let (i, j) = (t[k], t[(k + 1) % 3]);
-            if i != j {
-                directed.push([i.min(j), i.max(j)]);
-            }
-        }
-    }
-    directed.sort_unstable();
-    let mut out: Vec<([u32; 2], u32)> = Vec::with_capacity(directed.len() / 2 + 1);
-    for e in directed {
-        match out.last_mut() {
-            Some((last, count)) if *last == e => *count += 1,
-            _ => out.push((e, 1)),
-        }
-    }
-    out
-}
-
-/// Unique undirected edges `(i, j)`, `i < j` — the pairs summed over in E_s (paper eq. 7).
-pub fn unique_edges(triangles: &[[u32; 3]]) -> Vec<[u32; 2]> {
-    edges_with_use_count(triangles)
-        .into_iter()
-        .map(|(e, _)| e)
-        .collect()
-}
-
-/// `#V` flags: a vertex is on a boundary (hole rim or open border) when one of its edges is used
-/// by exactly one triangle.
-pub fn boundary_vertices(vertex_count: usize, triangles: &[[u32; 3]]) -> Vec<bool> {
-    let mut flags = vec![false; vertex_count];
-    for ([i, j], count) in edges_with_use_count(triangles) {
-        if count == 1 {
-            flags[i as usize] = true;
-            flags[j as usize] = true;
-        }
-    }
-    flags
-}
+use nalgebra::Point3;
 
 /// Vertex → incident triangles in compressed rows: triangles of vertex `v` are
 /// `indices[offsets[v]..offsets[v + 1]]`.
@@ -205,16 +112,6 @@ pub fn barycentric(x: &Point3<f64>, a: &Point3<f64>, b: &Point3<f64>, c: &Point3
 mod tests {
     use super::*;
 
-    fn quad() -> (Vec<Point3<f64>>, Vec<[u32; 3]>) {
-        let p = vec![
-            Point3::new(0.0, 0.0, 0.0),
-            Point3::new(1.0, 0.0, 0.0),
-            Point3::new(1.0, 1.0, 0.0),
-            Point3::new(0.0, 1.0, 0.0),
-        ];
-        (p, vec![[0, 1, 2], [0, 2, 3]])
-    }
-
     #[test]
     fn barycentric_reproduces_the_point() {
         let (a, b, c) = (
@@ -231,13 +128,8 @@ mod tests {
     }
 
     #[test]
-    fn quad_has_five_edges_all_vertices_on_boundary_and_up_normals() {
-        let (p, t) = quad();
-        assert_eq!(unique_edges(&t).len(), 5);
-        assert!(boundary_vertices(4, &t).iter().all(|&b| b));
-        for n in vertex_normals(&p, &t) {
-            assert!((n - Vector3::z()).norm() < 1e-12);
-        }
+    fn one_rings_list_each_vertex_triangles() {
+        let t = [[0, 1, 2], [0, 2, 3]];
         let rings = OneRings::new(4, &t);
         assert_eq!(rings.triangles_of(0), &[0, 1]);
         assert_eq!(rings.triangles_of(1), &[0]);

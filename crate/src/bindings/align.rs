@@ -17,7 +17,6 @@ use crate::align::{
     align_scan, AlignInput, AlignObserver, AlignParams, Alignment, Progress, Stage,
 };
 use crate::landmarks::{Landmark, LandmarkSet};
-use crate::mesh::normals::vertex_normals;
 use crate::mesh::units::Units;
 use crate::mesh::Mesh;
 use crate::rbf::Kernel;
@@ -141,7 +140,7 @@ fn outcome(template: &TemplateHandle, alignment: Alignment) -> Result<AlignOutco
     );
     Ok(AlignOutcome {
         positions: mesh.flat_positions_f32(),
-        normals: flat_normals(&mesh),
+        normals: mesh.flat_vertex_normals_f32(),
         distances: alignment
             .per_vertex_distance
             .iter()
@@ -261,13 +260,6 @@ fn scan_landmarks(names: &str, positions: &[f64]) -> Result<LandmarkSet, JsError
         missing: Vec::new(),
         unknown: Vec::new(),
     })
-}
-
-fn flat_normals(mesh: &Mesh) -> Vec<f32> {
-    vertex_normals(mesh)
-        .iter()
-        .flat_map(|n| [n.x as f32, n.y as f32, n.z as f32])
-        .collect()
 }
 
 /// The mesh as a file: `format` "ply" (binary little-endian) or "obj"; positions `#V·3`, as given.

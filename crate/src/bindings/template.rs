@@ -5,11 +5,9 @@
 use std::str::FromStr;
 
 use js_sys::{Float32Array, Uint32Array, Uint8Array};
-use nalgebra::Vector3;
 use wasm_bindgen::prelude::*;
 
 use crate::landmarks::Landmark;
-use crate::mesh::normals::vertex_normals;
 use crate::rbf::virtual_landmarks;
 use crate::template::{Resolution, Template};
 
@@ -19,7 +17,8 @@ pub struct TemplateHandle {
     pub(super) template: Template,
     /// At `fine`: the base template, which coarse-to-fine alignment warps and fits first.
     pub(super) base: Option<Template>,
-    normals: Vec<Vector3<f64>>,
+    /// `#V·3` unit vertex normals, xyz interleaved.
+    normals: Vec<f32>,
     /// The 12 virtual landmarks made by the RBF's own rule on the template surface (the same
     /// points `rbf_warp_mesh` pairs with the scan's), for display.
     virtual_landmarks: Vec<Landmark>,
@@ -34,7 +33,7 @@ pub fn load_template(resolution: &str) -> Result<TemplateHandle, JsError> {
         .map_err(|e| JsError::new(&format!("embedded template: {e}")))?
         .at_resolution(resolution);
     let virtual_landmarks = virtual_landmarks(&template.landmark_positions(), template.mesh());
-    let normals = vertex_normals(template.mesh());
+    let normals = template.mesh().flat_vertex_normals_f32();
     let base = (template.resolution() != Resolution::Base)
         .then(|| template.at_resolution(Resolution::Base));
     Ok(TemplateHandle {
@@ -84,12 +83,7 @@ impl TemplateHandle {
 
     /// `#V·3` unit vertex normals.
     pub fn normals(&self) -> Float32Array {
-        let flat: Vec<f32> = self
-            .normals
-            .iter()
-            .flat_map(|n| [n.x as f32, n.y as f32, n.z as f32])
-            .collect();
-        Float32Array::from(flat.as_slice())
+        Float32Array::from(self.normals.as_slice())
     }
 
     /// Landmark names, one per line: the 73 CAESAR names in `.lnd` order, then the 12 virtual.

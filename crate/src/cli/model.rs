@@ -93,8 +93,7 @@ pub fn read_fit(path: &Path) -> Result<Mesh, String> {
     let bytes = std::fs::read(path).map_err(|e| format!("{}: {e}", path.display()))?;
     let mesh =
         crate::io::read_scan(&bytes, &path.display().to_string()).map_err(|e| e.to_string())?;
-    let extent =
-        crate::mesh::summary::bounding_box(&mesh.positions).map_or(0.0, |(lo, hi)| (hi - lo).max());
+    let extent = crate::mesh::bounding_extent(&mesh.positions);
     let scale = crate::mesh::units::detect_units(extent).scale_to_metres();
     Ok(if scale == 1.0 {
         mesh

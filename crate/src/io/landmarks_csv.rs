@@ -2,7 +2,7 @@
 //! quoted where they contain commas (`"Rt. Axilla, Ant."`); a header may order the columns any
 //! way (`x,y,z,name`); a row with empty coordinates marks a missing landmark.
 
-use super::landmarks_read::{finite, RawLandmark};
+use super::landmark_raw::{finite, RawLandmark};
 use super::IoError;
 use crate::landmarks::LandmarkSet;
 

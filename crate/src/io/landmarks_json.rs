@@ -8,7 +8,7 @@ use std::fmt;
 use serde::de::{Deserializer, MapAccess, SeqAccess, Visitor};
 use serde::Deserialize;
 
-use super::landmarks_read::{finite, RawLandmark};
+use super::landmark_raw::{finite, RawLandmark};
 use super::IoError;
 
 struct Entries(Vec<(String, Option<[f64; 3]>)>);

@@ -6,20 +6,10 @@
 //! has too small an extent to guess from, so the caller should take the units of the scan the
 //! landmarks were placed on (`crate::mesh::summary::summarise(&scan).units_detected`).
 
-use nalgebra::Point3;
-
 use super::gzip::{inner_name, maybe_gunzip};
+use super::landmark_raw::RawLandmark;
 use super::{landmarks_csv, landmarks_json, lnd, IoError};
 use crate::landmarks::{canonical_name, Landmark, LandmarkSet};
-
-/// A landmark as a reader found it, before names are normalised.
-#[derive(Debug, Clone, PartialEq)]
-pub struct RawLandmark {
-    /// The name as written in the file.
-    pub name: String,
-    /// `None` when the file marks it as missing.
-    pub position: Option<Point3<f64>>,
-}
 
 /// Reads a landmark file: CAESAR `.lnd`, CSV `name,x,y,z` (header optional, quoted names) or JSON
 /// `{"name": [x, y, z]}` (`null` = missing; an array of `{name, position}` also works), optionally gzip-compressed. Names are normalised to
@@ -60,7 +50,7 @@ pub fn read_landmarks(bytes: &[u8], file_name: &str) -> Result<LandmarkSet, IoEr
 }
 
 /// Normalises names, rejects duplicates and splits present / missing / unknown.
-pub fn assemble(raw: Vec<RawLandmark>, file: &str) -> Result<LandmarkSet, IoError> {
+fn assemble(raw: Vec<RawLandmark>, file: &str) -> Result<LandmarkSet, IoError> {
     let mut set = LandmarkSet::default();
     let mut seen: Vec<String> = Vec::with_capacity(raw.len());
     let mut duplicates: Vec<String> = Vec::new();
@@ -98,16 +88,4 @@ pub fn assemble(raw: Vec<RawLandmark>, file: &str) -> Result<LandmarkSet, IoErro
         });
     }
     Ok(set)
-}
-
-/// Checks that a coordinate triple is finite, naming the landmark otherwise.
-pub(crate) fn finite(p: [f64; 3], name: &str, file: &str) -> Result<Point3<f64>, IoError> {
-    if p.iter().all(|c| c.is_finite()) {
-        Ok(Point3::new(p[0], p[1], p[2]))
-    } else {
-        Err(IoError::NonFinite {
-            file: file.to_string(),
-            what: format!("landmark {name:?}"),
-        })
-    }
 }

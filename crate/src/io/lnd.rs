@@ -8,7 +8,7 @@
 
 use std::fmt::Write as _;
 
-use super::landmarks_read::{finite, RawLandmark};
+use super::landmark_raw::{finite, RawLandmark};
 use super::IoError;
 use crate::landmarks::{LandmarkSet, CAESAR_LANDMARKS};
 

@@ -1,10 +1,19 @@
-//! Readers and writers of the field's file formats: scans (PLY, OBJ, STL, gzip) and landmarks
-//! (CSV, CAESAR .lnd, JSON); the binary glTF container. Every reader is a pure function of bytes and a file name (the name
-//! helps format detection and starts every error message).
+//! Readers and writers of the field's file formats. Every reader is a pure function of bytes and
+//! a file name (the name helps format detection and starts every error message).
+//!
+//! * Scans: [`scan`] (`read_scan`, format detection), [`ply_read`] with [`ply_header`],
+//!   [`ply_source`] and [`ply_fast`]; [`obj_read`]; [`stl_read`]; [`text_xyz`] (coordinate
+//!   triples of text formats); [`gzip`] (transparent decompression).
+//! * Landmarks: [`landmarks_read`] (`read_landmarks`, format dispatch and name normalisation),
+//!   [`landmarks_csv`], [`landmarks_json`], [`lnd`] (CAESAR `.lnd`), [`landmark_raw`] (the record
+//!   the three readers produce).
+//! * Writers: [`ply_write`], [`obj_write`], [`glb_write`] (the binary glTF container).
+//! * [`error`]: [`IoError`], the one error type of every reader.
 
 pub mod error;
 pub mod glb_write;
 pub mod gzip;
+pub mod landmark_raw;
 pub mod landmarks_csv;
 pub mod landmarks_json;
 pub mod landmarks_read;
@@ -18,6 +27,7 @@ pub mod ply_source;
 pub mod ply_write;
 pub mod scan;
 pub mod stl_read;
+pub mod text_xyz;
 
 pub use error::IoError;
 pub use landmarks_csv::write_landmarks_csv;

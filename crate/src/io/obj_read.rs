@@ -9,6 +9,7 @@
 
 use nalgebra::Point3;
 
+use super::text_xyz::parse_xyz;
 use super::IoError;
 use crate::mesh::Mesh;
 
@@ -44,21 +45,9 @@ pub fn read_obj(bytes: &[u8], file: &str) -> Result<Mesh, IoError> {
         let mut words = line.split_ascii_whitespace();
         match words.next() {
             Some("v") => {
-                let mut p = [0.0f64; 3];
-                for c in &mut p {
-                    let word = words.next().ok_or_else(|| {
-                        IoError::at_line(file, at, "a `v` line needs three coordinates")
-                    })?;
-                    *c = word.parse::<f64>().map_err(|_| {
-                        IoError::at_line(file, at, format!("cannot read {word:?} as a number"))
-                    })?;
-                }
-                if !p.iter().all(|c| c.is_finite()) {
-                    return Err(IoError::NonFinite {
-                        file: file.to_string(),
-                        what: format!("vertex {} (line {at})", mesh.positions.len() + 1),
-                    });
-                }
+                let p = parse_xyz(&mut words, file, at, "v", || {
+                    format!("vertex {} (line {at})", mesh.positions.len() + 1)
+                })?;
                 mesh.positions.push(Point3::new(p[0], p[1], p[2]));
             }
             Some("f") => {

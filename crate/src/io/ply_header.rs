@@ -79,17 +79,6 @@ pub struct Element {
 }
 
 impl Element {
-    /// Smallest possible size of one record in a binary body (a list holds at least its count).
-    pub fn min_binary_record_size(&self) -> usize {
-        self.properties
-            .iter()
-            .map(|p| match p.kind {
-                PropertyKind::Scalar(t) => t.size(),
-                PropertyKind::List { count, .. } => count.size(),
-            })
-            .sum()
-    }
-
     /// Whether every record has the same binary size (no list properties).
     pub fn is_fixed_size(&self) -> bool {
         self.properties
@@ -253,7 +242,11 @@ mod tests {
         let h = parse_header(text, "a.ply").unwrap();
         assert_eq!(h.format, PlyFormat::BinaryBigEndian);
         assert_eq!(h.elements.len(), 2);
-        assert_eq!(h.elements[0].min_binary_record_size(), 4 + 8 + 2);
+        let kinds: Vec<_> = h.elements[0].properties.iter().map(|p| p.kind).collect();
+        assert_eq!(
+            kinds,
+            [ScalarType::F32, ScalarType::F64, ScalarType::I16].map(PropertyKind::Scalar)
+        );
         assert_eq!(
             h.elements[1].properties[0].kind,
             PropertyKind::List {

@@ -93,39 +93,31 @@ mod tests {
 
     #[test]
     fn content_beats_the_extension() {
-        assert_eq!(
-            detect_format(b"ply\nformat ascii 1.0\n", "x.obj"),
-            Some(ScanFormat::Ply)
-        );
-        assert_eq!(
-            detect_format(b"solid x\nfacet\n", "x.ply"),
-            Some(ScanFormat::Stl)
-        );
-        assert_eq!(
-            detect_format(b"# hi\nv 1 2 3\n", "x.ply"),
-            Some(ScanFormat::Obj)
-        );
         let mut binary_stl = vec![b's'; 80];
         binary_stl.extend_from_slice(&1u32.to_le_bytes());
         binary_stl.extend_from_slice(&[0u8; 50]);
-        assert_eq!(detect_format(&binary_stl, "x"), Some(ScanFormat::Stl));
+        let cases: [(&[u8], &str, ScanFormat); 4] = [
+            (b"ply\nformat ascii 1.0\n", "x.obj", ScanFormat::Ply),
+            (b"solid x\nfacet\n", "x.ply", ScanFormat::Stl),
+            (b"# hi\nv 1 2 3\n", "x.ply", ScanFormat::Obj),
+            (&binary_stl, "x", ScanFormat::Stl),
+        ];
+        for (bytes, name, format) in cases {
+            assert_eq!(detect_format(bytes, name), Some(format), "{name}");
+        }
     }
 
     #[test]
     fn extension_decides_unclear_content_and_nothing_decides_noise() {
-        assert_eq!(
-            detect_format(b"\x00\x01junk", "x.PLY"),
-            Some(ScanFormat::Ply)
-        );
-        assert_eq!(
-            detect_format(b"\x00\x01junk", "x.obj.gz"),
-            Some(ScanFormat::Obj)
-        );
-        assert_eq!(
-            detect_format(b"\x00\x01junk", "x.stl"),
-            Some(ScanFormat::Stl)
-        );
-        assert_eq!(detect_format(b"\x00\x01junk", "x.bin"), None);
+        let cases = [
+            ("x.PLY", Some(ScanFormat::Ply)),
+            ("x.obj.gz", Some(ScanFormat::Obj)),
+            ("x.stl", Some(ScanFormat::Stl)),
+            ("x.bin", None),
+        ];
+        for (name, format) in cases {
+            assert_eq!(detect_format(b"\x00\x01junk", name), format, "{name}");
+        }
         assert_eq!(detect_format(b"hello world\n", "notes.txt"), None);
     }
 }

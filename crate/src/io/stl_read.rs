@@ -11,6 +11,7 @@ use std::collections::HashMap;
 
 use nalgebra::Point3;
 
+use super::text_xyz::parse_xyz;
 use super::IoError;
 use crate::mesh::Mesh;
 
@@ -127,21 +128,9 @@ fn read_ascii(bytes: &[u8], file: &str) -> Result<Mesh, IoError> {
         let mut words = line.split_ascii_whitespace();
         match words.next() {
             Some("vertex") => {
-                let mut p = [0.0f64; 3];
-                for c in &mut p {
-                    let word = words.next().ok_or_else(|| {
-                        IoError::at_line(file, line_no, "a `vertex` line needs three coordinates")
-                    })?;
-                    *c = word.parse().map_err(|_| {
-                        IoError::at_line(file, line_no, format!("cannot read {word:?} as a number"))
-                    })?;
-                }
-                if !p.iter().all(|c| c.is_finite()) {
-                    return Err(IoError::NonFinite {
-                        file: file.to_string(),
-                        what: format!("facet {facet} (line {line_no})"),
-                    });
-                }
+                let p = parse_xyz(&mut words, file, line_no, "vertex", || {
+                    format!("facet {facet} (line {line_no})")
+                })?;
                 polygon.push(welder.vertex(p));
             }
             Some("endloop") => {

@@ -1,11 +1,24 @@
-//! Triangle meshes and what can be measured on them.
+//! Triangle meshes and the geometry measured on them, one concept per file:
+//!
+//! * [`trimesh`]: the [`Mesh`] type.
+//! * [`bounds`]: bounding box and largest extent.
+//! * [`normals`]: area-weighted vertex normals (f64 and flat f32) and face normals.
+//! * [`ray`]: ray–triangle intersection.
+//! * [`topology`]: unique edges, neighbours, boundary edges/vertices/loops, components.
+//! * [`similarity`]: the least-squares similarity or rigid transform between point sets (Umeyama).
+//! * [`units`]: metres or millimetres from a body's extent.
+//! * [`summary`]: the one-look summary of a loaded scan.
 
+pub mod bounds;
 pub mod normals;
+pub mod ray;
+pub mod similarity;
 pub mod summary;
 pub mod topology;
 pub mod trimesh;
 pub mod units;
 
+pub use bounds::{bounding_box, bounding_extent};
 pub use summary::{summarise, MeshSummary};
 pub use trimesh::Mesh;
 pub use units::{detect_units, Units};

@@ -3,6 +3,7 @@
 use nalgebra::Point3;
 use serde::Serialize;
 
+use super::bounds::bounding_box;
 use super::topology::{boundary_loops, components};
 use super::units::{detect_units, Units};
 use super::Mesh;
@@ -26,16 +27,6 @@ pub struct MeshSummary {
     pub boundary_loops: usize,
     /// Number of connected components.
     pub components: usize,
-}
-
-/// Bounding box `(min, max)` of `positions` in their own units; `None` when empty.
-pub fn bounding_box(positions: &[Point3<f64>]) -> Option<(Point3<f64>, Point3<f64>)> {
-    let first = *positions.first()?;
-    Some(
-        positions
-            .iter()
-            .fold((first, first), |(lo, hi), p| (lo.inf(p), hi.sup(p))),
-    )
 }
 
 /// Summarises a mesh whose positions are in file units.

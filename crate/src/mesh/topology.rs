@@ -1,17 +1,43 @@
-//! Mesh topology: boundary edges, boundary vertices, boundary loops (holes) and connected
-//! components. A boundary edge is an edge used by exactly one triangle; edges used by three or
-//! more (non-manifold) are not boundary edges.
+//! Mesh connectivity: unique edges, vertex neighbours, boundary edges, boundary vertices,
+//! boundary loops (holes) and connected components. A boundary edge is an edge used by exactly
+//! one triangle; edges used by three or more (non-manifold) are not boundary edges. Degenerate
+//! edges (a triangle naming one vertex twice) are ignored throughout.
 
 use super::Mesh;
 
+/// Each undirected edge once, as `[i, j]` with `i < j`, sorted: the pairs summed over in the
+/// smoothness term E_s (paper eq. 7). `triangles`: `#F`.
+pub fn unique_edges(triangles: &[[u32; 3]]) -> Vec<[u32; 2]> {
+    let mut edges: Vec<[u32; 2]> = triangles
+        .iter()
+        .flat_map(|t| [[t[0], t[1]], [t[1], t[2]], [t[2], t[0]]])
+        .filter(|[a, b]| a != b)
+        .map(|[a, b]| [a.min(b), a.max(b)])
+        .collect();
+    edges.sort_unstable();
+    edges.dedup();
+    edges
+}
+
+/// Per-vertex neighbour lists (`#V` lists, each ascending) from the triangles.
+pub fn vertex_neighbours(vertex_count: usize, triangles: &[[u32; 3]]) -> Vec<Vec<u32>> {
+    let mut nb = vec![Vec::new(); vertex_count];
+    for [a, b] in unique_edges(triangles) {
+        nb[a as usize].push(b);
+        nb[b as usize].push(a);
+    }
+    nb
+}
+
 /// Boundary edges `[a, b]`, directed as in their triangle (so loops run consistently), sorted.
-pub fn boundary_edges(mesh: &Mesh) -> Vec<[u32; 2]> {
+/// `triangles`: `#F` indexing `vertex_count` vertices.
+pub fn boundary_edges(vertex_count: usize, triangles: &[[u32; 3]]) -> Vec<[u32; 2]> {
     // Bucket each undirected edge under its smaller vertex (counting sort, O(E)), then find the
     // edges used once within each small bucket: far faster than sorting all 3·#F edges.
-    let n = mesh.positions.len();
+    let n = vertex_count;
     let mut start = vec![0u32; n + 1];
     let directed = || {
-        mesh.triangles
+        triangles
             .iter()
             .flat_map(|t| [[t[0], t[1]], [t[1], t[2]], [t[2], t[0]]])
             .filter(|[a, b]| a != b)
@@ -33,26 +59,20 @@ pub fn boundary_edges(mesh: &Mesh) -> Vec<[u32; 2]> {
     for v in 0..n {
         let edges = &mut bucket[start[v] as usize..start[v + 1] as usize];
         edges.sort_unstable_by_key(|e| e.0);
-        let mut i = 0;
-        while i < edges.len() {
-            let mut j = i + 1;
-            while j < edges.len() && edges[j].0 == edges[i].0 {
-                j += 1;
+        for run in edges.chunk_by(|x, y| x.0 == y.0) {
+            if let [(_, edge)] = run {
+                out.push(*edge);
             }
-            if j - i == 1 {
-                out.push(edges[i].1);
-            }
-            i = j;
         }
     }
     out.sort_unstable();
     out
 }
 
-/// `#V` flags: whether each vertex lies on a boundary edge (`is_boundary`).
-pub fn boundary_vertices(mesh: &Mesh) -> Vec<bool> {
-    let mut is_boundary = vec![false; mesh.positions.len()];
-    for [a, b] in boundary_edges(mesh) {
+/// `#V` flags: whether each vertex lies on a boundary edge (a hole rim or an open border).
+pub fn boundary_vertices(vertex_count: usize, triangles: &[[u32; 3]]) -> Vec<bool> {
+    let mut is_boundary = vec![false; vertex_count];
+    for [a, b] in boundary_edges(vertex_count, triangles) {
         is_boundary[a as usize] = true;
         is_boundary[b as usize] = true;
     }
@@ -63,7 +83,7 @@ pub fn boundary_vertices(mesh: &Mesh) -> Vec<bool> {
 /// chained head to tail; where a boundary vertex is pinched (two loops touch), each loop is still
 /// traced separately, and a chain that cannot close is returned as it is.
 pub fn boundary_loops(mesh: &Mesh) -> Vec<Vec<u32>> {
-    let edges = boundary_edges(mesh);
+    let edges = boundary_edges(mesh.positions.len(), &mesh.triangles);
     let mut used = vec![false; edges.len()];
     let mut loops = Vec::new();
     // `edges` is sorted by start vertex, so the edges leaving `v` are one contiguous run.
@@ -185,10 +205,12 @@ mod tests {
     #[test]
     fn closed_cube_has_no_loops_and_one_component() {
         let mesh = cube();
-        assert!(boundary_edges(&mesh).is_empty());
+        assert!(boundary_edges(mesh.positions.len(), &mesh.triangles).is_empty());
         assert!(boundary_loops(&mesh).is_empty());
         assert_eq!(components(&mesh), 1);
-        assert!(boundary_vertices(&mesh).iter().all(|b| !b));
+        assert!(boundary_vertices(mesh.positions.len(), &mesh.triangles)
+            .iter()
+            .all(|b| !b));
     }
 
     #[test]
@@ -201,7 +223,7 @@ mod tests {
         hole.sort_unstable();
         assert_eq!(hole, [1, 3, 5, 7]);
         assert_eq!(components(&mesh), 1);
-        let flags = boundary_vertices(&mesh);
+        let flags = boundary_vertices(mesh.positions.len(), &mesh.triangles);
         assert_eq!(flags.iter().filter(|b| **b).count(), 4);
         assert!(flags[1] && flags[3] && flags[5] && flags[7]);
     }
@@ -244,11 +266,25 @@ mod tests {
             ],
             vec![[0, 1, 2], [1, 0, 3], [0, 1, 4]],
         );
-        let edges = boundary_edges(&mesh);
+        let edges = boundary_edges(mesh.positions.len(), &mesh.triangles);
         assert!(!edges
             .iter()
             .any(|e| (e[0].min(e[1]), e[0].max(e[1])) == (0, 1)));
         assert_eq!(edges.len(), 6);
+    }
+
+    #[test]
+    fn quad_has_five_unique_edges_and_every_vertex_on_the_boundary() {
+        let t = [[0, 1, 2], [0, 2, 3], [3, 3, 0]];
+        assert_eq!(
+            unique_edges(&t),
+            vec![[0, 1], [0, 2], [0, 3], [1, 2], [2, 3]]
+        );
+        assert!(boundary_vertices(4, &t).iter().all(|&b| b));
+        assert_eq!(
+            vertex_neighbours(4, &t),
+            vec![vec![1, 2, 3], vec![0, 2], vec![0, 1, 3], vec![0, 2]]
+        );
     }
 
     #[test]

@@ -1,6 +1,8 @@
 //! The triangle mesh type shared by scans, the template and fitted bodies.
 
-use nalgebra::Point3;
+use nalgebra::{Point3, Vector3};
+
+use super::normals::vertex_normals;
 
 /// A triangle mesh: `#V` positions and `#F` triangles indexing them (counter-clockwise seen from
 /// outside). Units are whatever the source used until [`crate::mesh`] unit detection says
@@ -46,6 +48,19 @@ impl Mesh {
             positions: self.positions.iter().map(|p| p * factor).collect(),
             triangles: self.triangles.clone(),
         }
+    }
+
+    /// Area-weighted unit vertex normals, `#V` ([`crate::mesh::normals::vertex_normals`]).
+    pub fn vertex_normals(&self) -> Vec<Vector3<f64>> {
+        vertex_normals(&self.positions, &self.triangles)
+    }
+
+    /// [`Mesh::vertex_normals`] as a flat `[x0, y0, z0, x1, ...]` f32 array (three.js layout).
+    pub fn flat_vertex_normals_f32(&self) -> Vec<f32> {
+        self.vertex_normals()
+            .iter()
+            .flat_map(|n| [n.x as f32, n.y as f32, n.z as f32])
+            .collect()
     }
 
     /// Triangles as a flat `[a0, b0, c0, a1, ...]` index array.

@@ -2,13 +2,14 @@
 //!
 //! * [`procrustes_gpa`] — generalised Procrustes analysis (rigid pose removal, optional scale)
 //! * [`gram`] — snapshot PCA through the N×N Gram matrix
-//! * [`model`] — [`ShapeModel`] (one part) and [`BodyModel`] (whole body + six segments)
-//! * [`build`] — [`build_body_model`] from a [`TrainingSet`]
+//! * [`shape_model`] — [`ShapeModel`] (one part) and the [`TemplateIdentity`] it was built on
+//! * [`model`] — [`BodyModel`] (whole body + six segments): assembly, projection of a new mesh,
+//!   stitched reconstruction and seam report
+//! * [`build`] — [`build_body_model`] from a [`TrainingSet`]; [`params`] — its [`BuildParams`]
 //! * [`segments`] — segment vertex subsets and normalised blend weights
-//! * [`stitch`] — mixed whole-body/segment reconstruction, the slider fast path, seam quality
+//! * [`stitch`] — the stitching types (coefficients, plan, seam report) and f32 slider kernels
 //! * [`morph`] — the body on screen: held coefficients and positions, slider moves as rank-1 updates
 //! * [`subdivide`] — a model mapped exactly to the template's finer resolution (S̄_fine = S·S̄, φ_fine = S·φ)
-//! * [`project`] — coefficients of a new mesh
 //! * [`metrics`] — compactness, generalization, specificity (Styner 2003)
 //! * [`export`] — eigenvalues, scores and quality curves as CSV
 //! * [`measure`] — stature, girths by plane sections, arm length, inseam
@@ -27,17 +28,20 @@ pub mod measure;
 pub mod metrics;
 pub mod model;
 pub mod morph;
+pub mod params;
 pub mod procrustes_gpa;
-pub mod project;
 pub mod random;
 pub mod segments;
+pub mod shape_model;
 pub mod stitch;
 pub mod subdivide;
 
-pub use build::{build_body_model, BuildParams, TrainingSet};
+pub use build::{build_body_model, TrainingSet};
 pub use error::PcaError;
 pub use metrics::{QualityCurves, QualityParams};
-pub use model::{BodyModel, ShapeModel, TemplateIdentity};
+pub use model::{BodyModel, Projection};
 pub use morph::{Morph, MorphUpdate};
+pub use params::BuildParams;
 pub use procrustes_gpa::{GpaParams, PoseRemoval};
+pub use shape_model::{ShapeModel, TemplateIdentity};
 pub use stitch::{Coefficients, ModeTarget, SeamReport, StitchPlan};

@@ -1,183 +1,31 @@
-//! The shape model types: one linear model S = S̄ + Φ·B (paper eq. 9) per body part, and the body
-//! model that holds the whole-body model, the six segment models and what built them.
+//! The body model of paper §4 ([`BodyModel`]): the whole-body model, the six segment models and
+//! what built them, with everything done to a body model — assembling and checking one,
+//! projecting a mesh onto it (rigid alignment to the mean with the model's own pose removal, then
+//! B = Φᵀ(x − S̄) for every part), and the stitched reconstruction of [`super::stitch`] (full,
+//! as slider deltas, and the seam report).
 
-use super::build::BuildParams;
+use nalgebra::Point3;
+
 use super::error::PcaError;
-use super::metrics::QualityCurves;
+use super::params::BuildParams;
+use super::procrustes_gpa::{rigid_align, PoseRemoval};
+use super::shape_model::{ShapeModel, TemplateIdentity};
+use super::stitch::{
+    add_modes, axpy, kahan_add, nonzero_modes, scatter_axpy, Coefficients, ModeTarget, SeamReport,
+    StitchPlan,
+};
+use crate::mesh::similarity::Similarity;
 use crate::template::Segment;
-use serde::{Deserialize, Serialize};
 
-/// Which template a model belongs to. A model only makes sense on meshes in this template's vertex
-/// order, so loading checks it.
-#[derive(Debug, Clone, PartialEq, Eq, Serialize, Deserialize)]
-pub struct TemplateIdentity {
-    /// Template name, e.g. `makehuman-base`.
-    pub name: String,
-    /// Content hash of the template mesh (hex), whatever the template module computes.
-    pub hash: String,
-    /// Resolution name (`base`, `fine`, ...).
-    pub resolution: String,
-    /// `#V` of the template at this resolution.
-    pub vertex_count: usize,
-}
-
-impl TemplateIdentity {
-    /// The identity of `template` at its resolution: name `bodyspace-makehuman`, hash = CRC-32
-    /// (hex) of its positions (f64 LE), triangles (u32 LE) and segment weights (f32 LE), so a
-    /// model refuses a template whose geometry or segments changed. The web side must use this
-    /// same function to check models against the embedded template.
-    pub fn of_template(template: &crate::template::Template) -> Self {
-        let mesh = template.mesh();
-        let mut crc = flate2::Crc::new();
-        for p in &mesh.positions {
-            for c in [p.x, p.y, p.z] {
-                crc.update(&c.to_le_bytes());
-            }
-        }
-        for t in &mesh.triangles {
-            for i in t {
-                crc.update(&i.to_le_bytes());
-            }
-        }
-        for v in 0..mesh.vertex_count() as u32 {
-            for w in template.segment_weights(v) {
-                crc.update(&w.to_le_bytes());
-            }
-        }
-        Self {
-            name: "bodyspace-makehuman".into(),
-            hash: format!("{:08x}", crc.sum()),
-            resolution: template.resolution().name().into(),
-            vertex_count: mesh.vertex_count(),
-        }
-    }
-}
-
-impl std::fmt::Display for TemplateIdentity {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        write!(
-            f,
-            "{} ({}, {} vertices, hash {})",
-            self.name, self.resolution, self.vertex_count, self.hash
-        )
-    }
-}
-
-/// One PCA model over `n` vertices (the whole body or one segment's subset), stored in f32 in the
-/// layout the slider loop reads: `basis` is mode-major, mode k at `basis[k·3n .. (k+1)·3n]`, each
-/// mode `[x0, y0, z0, x1, ...]`. Coefficients Bₖ are in model units (metres); a slider value tₖ in
-/// standard deviations is Bₖ = tₖ·√λₖ.
+/// Result of [`BodyModel::project`].
 #[derive(Debug, Clone, PartialEq)]
-pub struct ShapeModel {
-    /// Template vertex index of each model vertex, ascending; empty for the whole body (= all).
-    pub vertex_indices: Vec<u32>,
-    /// S̄ flat, length 3n.
-    pub mean: Vec<f32>,
-    /// Φ mode-major, length M·3n, orthonormal modes.
-    pub basis: Vec<f32>,
-    /// λ₁ ≥ … ≥ λ_M of the kept modes.
-    pub variances: Vec<f64>,
-    /// All non-zero eigenvalues before truncation (at most N−1), for compactness.
-    pub all_variances: Vec<f64>,
-    /// Per-subject coefficients, row-major N × M.
-    pub scores: Vec<f32>,
-    /// Compactness / generalization / specificity.
-    pub quality: QualityCurves,
-}
-
-impl ShapeModel {
-    /// Number of kept modes M.
-    pub fn mode_count(&self) -> usize {
-        self.variances.len()
-    }
-
-    /// Number of vertices n of this model.
-    pub fn vertex_count(&self) -> usize {
-        self.mean.len() / 3
-    }
-
-    /// Mode k (φₖ, length 3n). The caller guarantees k < M.
-    pub fn mode(&self, k: usize) -> &[f32] {
-        let d = self.mean.len();
-        &self.basis[k * d..(k + 1) * d]
-    }
-
-    /// √λₖ for every kept mode.
-    pub fn standard_deviations(&self) -> Vec<f64> {
-        self.variances.iter().map(|v| v.sqrt()).collect()
-    }
-
-    /// Bₖ = tₖ·√λₖ for slider values `sigma` (extra entries beyond M are an error).
-    pub fn coefficients_from_sigma(&self, sigma: &[f64]) -> Result<Vec<f64>, PcaError> {
-        self.check_coefficients(sigma.len())?;
-        Ok(sigma
-            .iter()
-            .zip(&self.variances)
-            .map(|(t, v)| t * v.sqrt())
-            .collect())
-    }
-
-    /// tₖ = Bₖ/√λₖ.
-    pub fn sigma_from_coefficients(&self, coefficients: &[f64]) -> Vec<f64> {
-        coefficients
-            .iter()
-            .zip(&self.variances)
-            .map(|(b, v)| if *v > 0.0 { b / v.sqrt() } else { 0.0 })
-            .collect()
-    }
-
-    pub(crate) fn check_coefficients(&self, len: usize) -> Result<(), PcaError> {
-        if len > self.mode_count() {
-            return Err(PcaError::BadLength {
-                what: "coefficients".into(),
-                expected: self.mode_count(),
-                got: len,
-            });
-        }
-        Ok(())
-    }
-
-    /// S = S̄ + Σₖ Bₖφₖ in f64, flat length 3n; missing trailing coefficients are 0.
-    pub fn reconstruct(&self, coefficients: &[f64]) -> Result<Vec<f64>, PcaError> {
-        self.check_coefficients(coefficients.len())?;
-        let mut out: Vec<f64> = self.mean.iter().map(|&m| m as f64).collect();
-        for (k, &b) in coefficients.iter().enumerate() {
-            if b != 0.0 {
-                for (o, &p) in out.iter_mut().zip(self.mode(k)) {
-                    *o += b * p as f64;
-                }
-            }
-        }
-        Ok(out)
-    }
-
-    /// B = Φᵀ(x − S̄) for a flat shape `x` of length 3n already in the model frame.
-    pub fn project_flat(&self, x: &[f64]) -> Vec<f64> {
-        (0..self.mode_count())
-            .map(|k| {
-                self.mode(k)
-                    .iter()
-                    .zip(x.iter().zip(&self.mean))
-                    .map(|(&p, (&xi, &m))| p as f64 * (xi - m as f64))
-                    .sum()
-            })
-            .collect()
-    }
-
-    /// A random plausible shape: bₖ ~ N(0, λₖ) for every kept mode, reproducible from `seed`.
-    pub fn random_coefficients(&self, seed: u64) -> Vec<f64> {
-        let mut rng = super::random::NormalRng::new(seed);
-        self.variances
-            .iter()
-            .map(|v| rng.next_normal() * v.sqrt())
-            .collect()
-    }
-
-    /// Coefficients of training subject i (row of `scores`).
-    pub fn subject_scores(&self, i: usize) -> Option<&[f32]> {
-        let m = self.mode_count();
-        self.scores.get(i * m..(i + 1) * m)
-    }
+pub struct Projection {
+    /// Whole-body and all six segment coefficients (model units).
+    pub coefficients: Coefficients,
+    /// The transform that brought the mesh into the model frame.
+    pub pose: Similarity,
+    /// Mean per-vertex distance between the aligned mesh and its whole-body reconstruction.
+    pub residual: f64,
 }
 
 /// The whole-body model and the six segment models of paper §4, with everything needed to use
@@ -270,4 +118,363 @@ impl BodyModel {
         }
         Ok(())
     }
+
+    /// Projects `positions` (`#V` points in template order) onto every model.
+    pub fn project(&self, positions: &[Point3<f64>]) -> Result<Projection, PcaError> {
+        let v = self.template.vertex_count;
+        if positions.len() != v {
+            return Err(PcaError::VertexCountMismatch {
+                subject: "mesh".into(),
+                got: positions.len(),
+                expected: v,
+            });
+        }
+        if positions
+            .iter()
+            .any(|p| !p.coords.iter().all(|c| c.is_finite()))
+        {
+            return Err(PcaError::NonFinite("mesh".into()));
+        }
+        let mean: Vec<Point3<f64>> = self
+            .whole
+            .mean
+            .chunks_exact(3)
+            .map(|c| Point3::new(c[0] as f64, c[1] as f64, c[2] as f64))
+            .collect();
+        let pose = match self.settings.gpa.pose {
+            PoseRemoval::None => Similarity::identity(),
+            PoseRemoval::Rigid => rigid_align(positions, &mean, false),
+            PoseRemoval::Similarity => rigid_align(positions, &mean, true),
+        };
+        let x: Vec<f64> = positions
+            .iter()
+            .flat_map(|p| {
+                let q = pose.apply(p);
+                [q.x, q.y, q.z]
+            })
+            .collect();
+        let whole = self.whole.project_flat(&x);
+        let segments = std::array::from_fn(|s| {
+            let model = &self.segments[s];
+            let sub: Vec<f64> = model
+                .vertex_indices
+                .iter()
+                .flat_map(|&i| x[3 * i as usize..3 * i as usize + 3].iter().copied())
+                .collect();
+            Some(model.project_flat(&sub))
+        });
+        let rebuilt = self.whole.reconstruct(&whole)?;
+        let diff: Vec<f64> = rebuilt.iter().zip(&x).map(|(a, b)| a - b).collect();
+        Ok(Projection {
+            coefficients: Coefficients { whole, segments },
+            pose,
+            residual: super::metrics::mean_vertex_norm(&diff),
+        })
+    }
+
+    fn check(&self, c: &Coefficients) -> Result<(), PcaError> {
+        self.whole.check_coefficients(c.whole.len())?;
+        for (model, b) in self.segments.iter().zip(&c.segments) {
+            if let Some(b) = b {
+                model.check_coefficients(b.len())?;
+            }
+        }
+        Ok(())
+    }
+
+    /// The per-vertex weights for a set of overridden segments.
+    pub fn stitch_plan(&self, overridden: [bool; 6]) -> StitchPlan {
+        let mut whole_weight = Vec::new();
+        if overridden.iter().any(|&o| o) {
+            whole_weight = vec![1.0f32; self.template.vertex_count];
+            for s in (0..6).filter(|&s| overridden[s]) {
+                for (&v, &w) in self.segments[s].vertex_indices.iter().zip(&self.blend[s]) {
+                    whole_weight[v as usize] -= w;
+                }
+            }
+            // Rounding leaves ±1e-7 where a vertex is fully covered: that is no weight (a
+            // whole-body contribution of < 1e-6 of a coordinate), so such vertices skip the
+            // whole-body basis.
+            whole_weight
+                .iter_mut()
+                .for_each(|w| *w = if *w < WHOLE_WEIGHT_EPSILON { 0.0 } else { *w });
+        }
+        StitchPlan {
+            overridden,
+            whole_weight,
+        }
+    }
+
+    /// Writes the stitched body for `coefficients` into `out` (flat `[x0, y0, z0, ...]`, 3V f32)
+    /// and returns the plan for subsequent [`BodyModel::apply_delta`] calls. Mode-major: each
+    /// non-zero coefficient is one pass of out += b·φₖ over contiguous memory.
+    pub fn reconstruct_into(
+        &self,
+        coefficients: &Coefficients,
+        out: &mut [f32],
+    ) -> Result<StitchPlan, PcaError> {
+        self.check(coefficients)?;
+        self.check_out(out)?;
+        let plan = self.stitch_plan(coefficients.overridden());
+        let terms = nonzero_modes(&self.whole, &coefficients.whole);
+        if plan.whole_weight.is_empty() {
+            out.copy_from_slice(&self.whole.mean);
+            add_modes(out, &terms);
+        } else {
+            // Only where the whole body still has weight: vertex blocks wholly covered by
+            // overridden segments skip the whole-body basis (with all six overridden, all of it).
+            for (block, weights) in plan.whole_weight.chunks(WHOLE_BLOCK).enumerate() {
+                let range = 3 * block * WHOLE_BLOCK..3 * (block * WHOLE_BLOCK + weights.len());
+                let out = &mut out[range.clone()];
+                if weights.iter().all(|&w| w == 0.0) {
+                    out.fill(0.0);
+                    continue;
+                }
+                out.copy_from_slice(&self.whole.mean[range.clone()]);
+                let block_terms: Vec<(f32, &[f32])> = terms
+                    .iter()
+                    .map(|&(b, phi)| (b, &phi[range.clone()]))
+                    .collect();
+                add_modes(out, &block_terms);
+                for (xyz, &w) in out.chunks_exact_mut(3).zip(weights) {
+                    xyz.iter_mut().for_each(|x| *x *= w);
+                }
+            }
+        }
+        for (s, b) in coefficients.segments.iter().enumerate() {
+            let Some(b) = b else { continue };
+            let model = &self.segments[s];
+            // Reconstruct the segment contiguously, then blend it in with one scatter.
+            let mut part = model.mean.clone();
+            add_modes(&mut part, &nonzero_modes(model, b));
+            scatter_axpy(1.0, &part, &model.vertex_indices, &self.blend[s], out);
+        }
+        Ok(plan)
+    }
+
+    /// Incremental slider move: adds the effect of changing one coefficient by `delta` to `out`
+    /// (which holds the body reconstructed with `plan`). Moving a segment mode needs that segment
+    /// to be overridden in the plan (otherwise reconstruct with the new override set first).
+    pub fn apply_delta(
+        &self,
+        plan: &StitchPlan,
+        target: ModeTarget,
+        mode: usize,
+        delta: f64,
+        out: &mut [f32],
+    ) -> Result<(), PcaError> {
+        self.check_out(out)?;
+        let d = delta as f32;
+        match self.delta_pass(plan, target, mode)? {
+            DeltaPass::Contiguous(phi) => axpy(d, phi, out),
+            DeltaPass::Weighted(phi, weight) => {
+                for ((xyz, p), &w) in out.chunks_exact_mut(3).zip(phi.chunks_exact(3)).zip(weight) {
+                    let f = d * w;
+                    xyz[0] += f * p[0];
+                    xyz[1] += f * p[1];
+                    xyz[2] += f * p[2];
+                }
+            }
+            DeltaPass::Scatter(phi, indices, blend) => scatter_axpy(d, phi, indices, blend, out),
+        }
+        Ok(())
+    }
+
+    /// [`BodyModel::apply_delta`] with compensated (Kahan) summation: `carry` (same length as
+    /// `out`, zero after a full reconstruction) keeps the low-order part each f32 addition loses,
+    /// so any number of slider moves stays within a few f32 roundings of a full reconstruction
+    /// instead of drifting as a random walk of roundings (tested in `pca::morph`). Costs one
+    /// more stream (`carry`) than the plain update.
+    pub fn apply_delta_compensated(
+        &self,
+        plan: &StitchPlan,
+        target: ModeTarget,
+        mode: usize,
+        delta: f64,
+        out: &mut [f32],
+        carry: &mut [f32],
+    ) -> Result<(), PcaError> {
+        self.check_out(out)?;
+        self.check_out(carry)?;
+        let d = delta as f32;
+        match self.delta_pass(plan, target, mode)? {
+            DeltaPass::Contiguous(phi) => {
+                for ((x, c), &p) in out.iter_mut().zip(carry.iter_mut()).zip(phi) {
+                    kahan_add(x, c, d * p);
+                }
+            }
+            DeltaPass::Weighted(phi, weight) => {
+                for (((xyz, cs), p), &w) in out
+                    .chunks_exact_mut(3)
+                    .zip(carry.chunks_exact_mut(3))
+                    .zip(phi.chunks_exact(3))
+                    .zip(weight)
+                {
+                    let f = d * w;
+                    for a in 0..3 {
+                        kahan_add(&mut xyz[a], &mut cs[a], f * p[a]);
+                    }
+                }
+            }
+            DeltaPass::Scatter(phi, indices, blend) => {
+                for ((p, &v), &w) in phi.chunks_exact(3).zip(indices).zip(blend) {
+                    let f = d * w;
+                    let o = 3 * v as usize;
+                    for a in 0..3 {
+                        kahan_add(&mut out[o + a], &mut carry[o + a], f * p[a]);
+                    }
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// What one slider move adds, checked against the plan: φₖ over all vertices, φₖ weighted by
+    /// 1 − cᵥ, or a segment's φₖ scattered with its blend weights.
+    fn delta_pass<'a>(
+        &'a self,
+        plan: &'a StitchPlan,
+        target: ModeTarget,
+        mode: usize,
+    ) -> Result<DeltaPass<'a>, PcaError> {
+        let bad_mode =
+            |m: usize| PcaError::BadParameter(format!("mode {mode} of a model with {m} modes"));
+        match target {
+            ModeTarget::Whole => {
+                if mode >= self.whole.mode_count() {
+                    return Err(bad_mode(self.whole.mode_count()));
+                }
+                let phi = self.whole.mode(mode);
+                Ok(if plan.whole_weight.is_empty() {
+                    DeltaPass::Contiguous(phi)
+                } else {
+                    DeltaPass::Weighted(phi, &plan.whole_weight)
+                })
+            }
+            ModeTarget::Segment(segment) => {
+                let s = segment.index();
+                if !plan.overridden[s] {
+                    return Err(PcaError::BadParameter(format!(
+                        "segment {} is not overridden in this plan; reconstruct with its coefficients first",
+                        segment.name()
+                    )));
+                }
+                let model = &self.segments[s];
+                if mode >= model.mode_count() {
+                    return Err(bad_mode(model.mode_count()));
+                }
+                Ok(DeltaPass::Scatter(
+                    model.mode(mode),
+                    &model.vertex_indices,
+                    &self.blend[s],
+                ))
+            }
+        }
+    }
+
+    fn check_out(&self, out: &[f32]) -> Result<(), PcaError> {
+        if out.len() != 3 * self.template.vertex_count {
+            return Err(PcaError::BadLength {
+                what: "output positions".into(),
+                expected: 3 * self.template.vertex_count,
+                got: out.len(),
+            });
+        }
+        Ok(())
+    }
+
+    /// Each segment's own contribution xᵥ⁽ˢ⁾ in f64 (flat over its subset), per the semantics above.
+    pub fn segment_reconstructions(&self, c: &Coefficients) -> Result<Vec<Vec<f64>>, PcaError> {
+        self.check(c)?;
+        let whole = self.whole.reconstruct(&c.whole)?;
+        self.segments
+            .iter()
+            .zip(&c.segments)
+            .map(|(model, b)| match b {
+                Some(b) => model.reconstruct(b),
+                None => Ok(model
+                    .vertex_indices
+                    .iter()
+                    .flat_map(|&v| whole[3 * v as usize..3 * v as usize + 3].iter().copied())
+                    .collect()),
+            })
+            .collect()
+    }
+
+    /// The stitched body in f64 (reference implementation of [`BodyModel::reconstruct_into`]).
+    pub fn reconstruct(&self, c: &Coefficients) -> Result<Vec<f64>, PcaError> {
+        let parts = self.segment_reconstructions(c)?;
+        let plan = self.stitch_plan(c.overridden());
+        let mut out = self.whole.reconstruct(&c.whole)?;
+        if !plan.whole_weight.is_empty() {
+            for (xyz, &w) in out.chunks_exact_mut(3).zip(&plan.whole_weight) {
+                xyz.iter_mut().for_each(|x| *x *= w as f64);
+            }
+        }
+        for s in (0..6).filter(|&s| plan.overridden[s]) {
+            for (j, (&v, &w)) in self.segments[s]
+                .vertex_indices
+                .iter()
+                .zip(&self.blend[s])
+                .enumerate()
+            {
+                for a in 0..3 {
+                    out[3 * v as usize + a] += w as f64 * parts[s][3 * j + a];
+                }
+            }
+        }
+        Ok(out)
+    }
+
+    /// Seam quality: the largest jump between two segments' contributions within their overlap.
+    pub fn seam_report(&self, c: &Coefficients) -> Result<SeamReport, PcaError> {
+        let parts = self.segment_reconstructions(c)?;
+        let v = self.template.vertex_count;
+        let mut report = SeamReport {
+            max_jump: 0.0,
+            segments: None,
+            vertex: None,
+        };
+        let mut local = vec![u32::MAX; v];
+        for a in 0..6 {
+            local.iter_mut().for_each(|l| *l = u32::MAX);
+            for (j, &vi) in self.segments[a].vertex_indices.iter().enumerate() {
+                local[vi as usize] = j as u32;
+            }
+            for b in a + 1..6 {
+                for (j, &vi) in self.segments[b].vertex_indices.iter().enumerate() {
+                    let i = local[vi as usize];
+                    if i == u32::MAX {
+                        continue;
+                    }
+                    let (pa, pb) = (&parts[a][3 * i as usize..], &parts[b][3 * j..]);
+                    let jump = ((pa[0] - pb[0]).powi(2)
+                        + (pa[1] - pb[1]).powi(2)
+                        + (pa[2] - pb[2]).powi(2))
+                    .sqrt();
+                    if jump > report.max_jump || report.segments.is_none() {
+                        report.max_jump = report.max_jump.max(jump);
+                        report.segments = Some((Segment::ALL[a], Segment::ALL[b]));
+                        report.vertex = Some(vi);
+                    }
+                }
+            }
+        }
+        Ok(report)
+    }
 }
+
+/// The arrays one slider move reads (see [`BodyModel::apply_delta`]).
+enum DeltaPass<'a> {
+    Contiguous(&'a [f32]),
+    Weighted(&'a [f32], &'a [f32]),
+    Scatter(&'a [f32], &'a [u32], &'a [f32]),
+}
+
+/// Vertices per block of the whole-body pass under overrides (blocks without whole-body weight
+/// are skipped; 4096 vertices keep a block's slice of `out` in L1/L2 across its modes).
+const WHOLE_BLOCK: usize = 4096;
+
+/// Whole-body weights below this (left by rounding where overridden segments cover a vertex
+/// fully) count as zero.
+const WHOLE_WEIGHT_EPSILON: f32 = 1e-6;

@@ -5,7 +5,9 @@
 //! orientation of the first subject and, with scaling, the average centroid size of the inputs
 //! so coordinates stay in metres.
 
-use nalgebra::{Matrix3, Point3, Vector3};
+use nalgebra::{Point3, Vector3};
+
+use crate::mesh::similarity::{centroid, similarity, Similarity};
 use serde::{Deserialize, Serialize};
 
 /// Which part of each subject's pose is removed before PCA. Recorded in the model file.
@@ -42,81 +44,21 @@ impl Default for GpaParams {
     }
 }
 
-/// A similarity transform x ↦ s·R·x + t mapping a subject onto the mean.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct PoseTransform {
-    pub rotation: Matrix3<f64>,
-    pub translation: Vector3<f64>,
-    pub scale: f64,
-}
-
-impl PoseTransform {
-    /// The identity transform.
-    pub fn identity() -> Self {
-        Self {
-            rotation: Matrix3::identity(),
-            translation: Vector3::zeros(),
-            scale: 1.0,
-        }
-    }
-
-    /// Applies the transform to one point.
-    pub fn apply(&self, p: &Point3<f64>) -> Point3<f64> {
-        Point3::from(self.scale * (self.rotation * p.coords) + self.translation)
-    }
-}
-
 /// Result of [`generalised_procrustes`]: aligned shapes (same order as the input), the transforms
 /// that produced them, the final mean and the number of rounds run.
 #[derive(Debug, Clone)]
 pub struct GpaResult {
     pub aligned: Vec<Vec<Point3<f64>>>,
-    pub transforms: Vec<PoseTransform>,
+    pub transforms: Vec<Similarity>,
     pub mean: Vec<Point3<f64>>,
     pub iterations: usize,
 }
 
-fn centroid(points: &[Point3<f64>]) -> Vector3<f64> {
-    let sum = points.iter().fold(Vector3::zeros(), |a, p| a + p.coords);
-    sum / points.len().max(1) as f64
-}
-
-/// The transform minimising Σ‖s·R·a_i + t − b_i‖² (Umeyama 1991), with s = 1 unless
-/// `with_scale`; R is a proper rotation (det = +1). Shapes: `source`, `target` both `#V`.
-pub fn rigid_align(
-    source: &[Point3<f64>],
-    target: &[Point3<f64>],
-    with_scale: bool,
-) -> PoseTransform {
-    let ca = centroid(source);
-    let cb = centroid(target);
-    let mut h = Matrix3::zeros();
-    let mut var_a = 0.0;
-    for (a, b) in source.iter().zip(target) {
-        let da = a.coords - ca;
-        let db = b.coords - cb;
-        h += db * da.transpose();
-        var_a += da.norm_squared();
-    }
-    let svd = h.svd(true, true);
-    let (Some(u), Some(v_t)) = (svd.u, svd.v_t) else {
-        return PoseTransform::identity();
-    };
-    let d = (u * v_t).determinant().signum();
-    let sign = Matrix3::from_diagonal(&Vector3::new(1.0, 1.0, if d < 0.0 { -1.0 } else { 1.0 }));
-    let rotation = u * sign * v_t;
-    let scale = if with_scale && var_a > 0.0 {
-        let sv = svd.singular_values;
-        (sv[0] + sv[1] + sign[(2, 2)] * sv[2]) / var_a
-    } else {
-        1.0
-    };
-    let translation = cb - scale * (rotation * ca);
-    PoseTransform {
-        rotation,
-        translation,
-        scale,
-    }
+/// The transform minimising Σ‖s·R·a_i + t − b_i‖² ([`crate::mesh::similarity`]), with s = 1
+/// unless `with_scale`; R is a proper rotation (det = +1). Shapes: `source`, `target` both `#V`.
+/// The identity when no transform can be computed (empty or mismatched shapes).
+pub fn rigid_align(source: &[Point3<f64>], target: &[Point3<f64>], with_scale: bool) -> Similarity {
+    similarity(source, target, with_scale).unwrap_or_else(Similarity::identity)
 }
 
 fn centroid_size(points: &[Point3<f64>]) -> f64 {
@@ -137,7 +79,7 @@ pub fn generalised_procrustes(shapes: &[&[Point3<f64>]], params: &GpaParams) -> 
         let mean = mean_shape(&aligned);
         return GpaResult {
             aligned,
-            transforms: vec![PoseTransform::identity(); n],
+            transforms: vec![Similarity::identity(); n],
             mean,
             iterations: 0,
         };
@@ -150,7 +92,7 @@ pub fn generalised_procrustes(shapes: &[&[Point3<f64>]], params: &GpaParams) -> 
         .iter()
         .map(|p| Point3::from(p.coords - c0))
         .collect();
-    let mut transforms = vec![PoseTransform::identity(); n];
+    let mut transforms = vec![Similarity::identity(); n];
     let mut aligned: Vec<Vec<Point3<f64>>> = Vec::with_capacity(n);
     let mut iterations = 0;
     for _ in 0..params.max_iterations.max(1) {
@@ -229,24 +171,6 @@ mod tests {
             Point3::new(0.0, 0.0, 3.0),
             Point3::new(0.5, 0.7, 0.2),
         ]
-    }
-
-    #[test]
-    fn rigid_align_recovers_a_known_similarity() {
-        let r = Rotation3::from_euler_angles(0.3, -0.5, 1.1).into_inner();
-        let t = Vector3::new(0.4, -2.0, 7.0);
-        let a = shape();
-        let b: Vec<_> = a
-            .iter()
-            .map(|p| Point3::from(1.7 * (r * p.coords) + t))
-            .collect();
-        let found = rigid_align(&a, &b, true);
-        assert!((found.rotation - r).norm() < 1e-10);
-        assert!((found.scale - 1.7).abs() < 1e-10);
-        assert!((found.translation - t).norm() < 1e-9);
-        let rigid = rigid_align(&a, &b, false);
-        assert_eq!(rigid.scale, 1.0);
-        assert!((rigid.rotation.determinant() - 1.0).abs() < 1e-12);
     }
 
     #[test]

@@ -1,5 +1,7 @@
 //! Segment vertex subsets and blend weights (paper §4.2.1: six overlapping segments).
 
+use crate::mesh::topology::unique_edges;
+
 /// Vertices of each segment (weight > 0), ascending, in [`crate::template::Segment::ALL`] order.
 pub fn segment_subsets(weights: &[[f32; 6]]) -> Vec<Vec<u32>> {
     (0..6)
@@ -37,19 +39,6 @@ pub fn normalised_blend(weights: &[[f32; 6]], subsets: &[Vec<u32>]) -> Vec<Vec<f
         .collect()
 }
 
-/// Pairs of segments that share at least one vertex (their overlap band), as index pairs.
-pub fn overlapping_pairs(weights: &[[f32; 6]]) -> Vec<(usize, usize)> {
-    let mut pairs = Vec::new();
-    for a in 0..6 {
-        for b in a + 1..6 {
-            if weights.iter().any(|w| w[a] > 0.0 && w[b] > 0.0) {
-                pairs.push((a, b));
-            }
-        }
-    }
-    pairs
-}
-
 /// Mesh edges whose two vertices share no segment. Stitching is seamless only across overlap
 /// bands: where two segments meet along such an edge without overlapping, different coefficients
 /// can tear the body, so a template should have none — except between parts that only touch when
@@ -58,20 +47,16 @@ pub fn edges_without_common_segment(
     triangles: &[[u32; 3]],
     weights: &[[f32; 6]],
 ) -> Vec<(u32, u32)> {
-    let mut edges: Vec<(u32, u32)> = triangles
-        .iter()
-        .flat_map(|t| [(t[0], t[1]), (t[1], t[2]), (t[2], t[0])])
-        .map(|(a, b)| (a.min(b), a.max(b)))
+    unique_edges(triangles)
+        .into_iter()
         .filter(
-            |&(a, b)| match (weights.get(a as usize), weights.get(b as usize)) {
+            |&[a, b]| match (weights.get(a as usize), weights.get(b as usize)) {
                 (Some(wa), Some(wb)) => !(0..6).any(|s| wa[s] > 0.0 && wb[s] > 0.0),
                 _ => false,
             },
         )
-        .collect();
-    edges.sort_unstable();
-    edges.dedup();
-    edges
+        .map(|[a, b]| (a, b))
+        .collect()
 }
 
 /// Checks the blend weights: one `[f32; 6]` per vertex, all finite and ≥ 0.
@@ -107,6 +92,5 @@ mod tests {
         let blend = normalised_blend(&w, &subsets);
         assert_eq!(blend[0], vec![0.5]);
         assert_eq!(blend[3], vec![0.5, 1.0]);
-        assert_eq!(overlapping_pairs(&w), vec![(0, 3)]);
     }
 }

@@ -22,8 +22,9 @@
 //!   the two segments there (what the seam report measures).
 
 use super::error::PcaError;
-use super::model::{BodyModel, ShapeModel, TemplateIdentity};
+use super::model::BodyModel;
 use super::segments::segment_subsets;
+use super::shape_model::{ShapeModel, TemplateIdentity};
 use crate::template::{Resolution, Template};
 
 /// What a base model needs of a finer template resolution.

@@ -20,18 +20,23 @@ pub fn exp_nonpositive(x: f64) -> f64 {
     let r = (x - n * LN2_HI) - n * LN2_LO;
     // Taylor series of e^r to degree 11: the remainder (ln2/2)^12/12! < 7e-15 relative, far
     // below any tolerance the warp is held to, and two multiply-adds cheaper than degree 13.
-    let mut p = 1.0 / 39_916_800.0;
-    p = p * r + 1.0 / 3_628_800.0;
-    p = p * r + 1.0 / 362_880.0;
-    p = p * r + 1.0 / 40_320.0;
-    p = p * r + 1.0 / 5_040.0;
-    p = p * r + 1.0 / 720.0;
-    p = p * r + 1.0 / 120.0;
-    p = p * r + 1.0 / 24.0;
-    p = p * r + 1.0 / 6.0;
-    p = p * r + 0.5;
-    p = p * r + 1.0;
-    p = p * r + 1.0;
+    let p = horner(
+        r,
+        [
+            1.0 / 39_916_800.0,
+            1.0 / 3_628_800.0,
+            1.0 / 362_880.0,
+            1.0 / 40_320.0,
+            1.0 / 5_040.0,
+            1.0 / 720.0,
+            1.0 / 120.0,
+            1.0 / 24.0,
+            1.0 / 6.0,
+            0.5,
+            1.0,
+            1.0,
+        ],
+    );
     // 2^n from the low bits of t: (n + 1023) << 52 is the IEEE exponent field.
     let scale = f64::from_bits(t.to_bits().wrapping_add(1023) << 52);
     p * scale
@@ -52,18 +57,34 @@ pub fn ln_positive(x: f64) -> f64 {
     // ln m = 2·atanh(s), s = (m−1)/(m+1), |s| ≤ 0.172: odd series to s^21 (< 1e-17).
     let s = (m - 1.0) / (m + 1.0);
     let s2 = s * s;
-    let mut p = 1.0 / 21.0;
-    p = p * s2 + 1.0 / 19.0;
-    p = p * s2 + 1.0 / 17.0;
-    p = p * s2 + 1.0 / 15.0;
-    p = p * s2 + 1.0 / 13.0;
-    p = p * s2 + 1.0 / 11.0;
-    p = p * s2 + 1.0 / 9.0;
-    p = p * s2 + 1.0 / 7.0;
-    p = p * s2 + 1.0 / 5.0;
-    p = p * s2 + 1.0 / 3.0;
-    p = p * s2 + 1.0;
+    let p = horner(
+        s2,
+        [
+            1.0 / 21.0,
+            1.0 / 19.0,
+            1.0 / 17.0,
+            1.0 / 15.0,
+            1.0 / 13.0,
+            1.0 / 11.0,
+            1.0 / 9.0,
+            1.0 / 7.0,
+            1.0 / 5.0,
+            1.0 / 3.0,
+            1.0,
+        ],
+    );
     e * LN2_HI + (e * LN2_LO + 2.0 * s * p)
+}
+
+/// c₀·x^(N−1) + c₁·x^(N−2) + … + c_{N−1} by Horner's rule (highest degree first), one
+/// multiply-add per coefficient; N is a constant, so the loop unrolls.
+#[inline(always)]
+fn horner<const N: usize>(x: f64, c: [f64; N]) -> f64 {
+    let mut p = c[0];
+    for &k in &c[1..] {
+        p = p * x + k;
+    }
+    p
 }
 
 #[cfg(test)]

@@ -1,4 +1,4 @@
-//! The RBF network of paper eq. 1–2, fitted by LU with partial pivoting, and its evaluation.
+//! Fitting the RBF network of paper eq. 1–2 ([`RbfNetwork`]) by LU with partial pivoting.
 //!
 //! One network per coordinate, all three solved at once (three right-hand sides):
 //!
@@ -16,23 +16,8 @@ use nalgebra::{DMatrix, Point3};
 
 use super::checks::{check_coincident, check_finite, check_len, check_spread, check_unique_names};
 use super::error::{name_list, RbfError};
-use super::evaluate::{blocks, Block};
-use super::kernel::Kernel;
+use super::network::{blocks, RbfNetwork};
 use super::params::RbfParams;
-
-/// A fitted RBF network mapping R³ → R³.
-#[derive(Debug, Clone, PartialEq)]
-pub struct RbfNetwork {
-    pub(super) kernel: Kernel,
-    /// Centres p_j and weights w_j per coordinate, in vectorisable blocks.
-    pub(super) blocks: Vec<Block>,
-    /// Affine part: row 0 the constant a_0, rows 1..4 the linear map (x, y, z → output).
-    /// All zero when the fit had no affine term.
-    pub(super) affine: [[f64; 3]; 4],
-    pub(super) rcond: f64,
-    /// n, the number of real (unpadded) centres.
-    pub(super) centres: usize,
-}
 
 /// Fits f with f(source_i) = target_i (exactly when λ = 0).
 ///
@@ -79,15 +64,29 @@ pub fn fit(
     if params.affine {
         check_spread(names, source, 3, "template", "the affine term")?;
     }
-    solve(names, source, target, params)
+    solve(source, target, params).map_err(|e| RbfError::IllConditioned {
+        rcond: e.rcond,
+        min_rcond: params.min_rcond,
+        worst: names
+            .get(e.worst_unknown)
+            .cloned()
+            .unwrap_or_else(|| "the affine term".to_string()),
+    })
 }
 
+/// Why the system was not solved: its reciprocal condition (0 when the solve itself failed) and
+/// the unknown it resolves worst (a landmark index, or ≥ n for the affine term).
+struct Unsolvable {
+    rcond: f64,
+    worst_unknown: usize,
+}
+
+/// Builds and solves the system above for checked inputs (`source`, `target` n long).
 fn solve(
-    names: &[String],
     source: &[Point3<f64>],
     target: &[Point3<f64>],
     params: &RbfParams,
-) -> Result<RbfNetwork, RbfError> {
+) -> Result<RbfNetwork, Unsolvable> {
     let n = source.len();
     let m = if params.affine { n + 4 } else { n };
     let mut a = DMatrix::<f64>::zeros(m, m);
@@ -119,14 +118,9 @@ fn solve(
     // Partial pivoting permutes rows only, so U's column i still belongs to unknown i: the
     // smallest |U_ii| points at the landmark (or affine term) the system cannot resolve.
     let u = lu.u();
-    let worst_col = (0..m)
+    let worst_unknown = (0..m)
         .min_by(|&i, &j| u[(i, i)].abs().total_cmp(&u[(j, j)].abs()))
         .unwrap_or(0);
-    let worst = if worst_col < n {
-        names[worst_col].clone()
-    } else {
-        "the affine term".to_string()
-    };
     // rcond = 1 / (‖A‖₁ ‖A⁻¹‖₁), exact rather than estimated: A⁻¹ costs (n+4)³ ≈ 10⁶ flops.
     let rcond = match lu.try_inverse() {
         Some(inv) if norm1 > 0.0 => {
@@ -139,10 +133,9 @@ fn solve(
         }
         _ => 0.0,
     };
-    let ill = |rcond| RbfError::IllConditioned {
+    let ill = |rcond| Unsolvable {
         rcond,
-        min_rcond: params.min_rcond,
-        worst: worst.clone(),
+        worst_unknown,
     };
     if rcond < params.min_rcond {
         return Err(ill(rcond));
@@ -162,27 +155,9 @@ fn solve(
     Ok(RbfNetwork {
         kernel: params.kernel,
         blocks: blocks(source, &x),
-        centres: n,
         affine,
         rcond,
     })
-}
-
-impl RbfNetwork {
-    /// The kernel the network was fitted with.
-    pub fn kernel(&self) -> Kernel {
-        self.kernel
-    }
-
-    /// Reciprocal 1-norm condition number of the fitted system (1 = perfect, ~1e-16 = singular).
-    pub fn rcond(&self) -> f64 {
-        self.rcond
-    }
-
-    /// Number of centres n.
-    pub fn centre_count(&self) -> usize {
-        self.centres
-    }
 }
 
 fn one_norm(a: &DMatrix<f64>) -> f64 {

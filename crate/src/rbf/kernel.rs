@@ -37,11 +37,6 @@ impl Kernel {
         }
     }
 
-    /// Φ(r) for a distance r ≥ 0.
-    pub fn eval(self, r: f64) -> f64 {
-        self.eval_r2(r * r)
-    }
-
     /// The kernel named `name` (`gaussian`, `thin-plate`, `multiquadric`) with parameter
     /// `param` (c or s; ignored by the thin-plate spline), or its default parameter when `None`.
     pub fn from_name(name: &str, param: Option<f64>) -> Option<Kernel> {
@@ -109,30 +104,30 @@ mod tests {
     #[test]
     fn thin_plate_matches_hand_values() {
         let k = Kernel::ThinPlate;
-        assert_eq!(k.eval(0.0), 0.0);
-        assert_eq!(k.eval(1.0), 0.0);
+        assert_eq!(k.eval_r2(0.0), 0.0);
+        assert_eq!(k.eval_r2(1.0), 0.0);
         // 2² ln 2 = 2.772588722239781
-        assert!((k.eval(2.0) - 2.772_588_722_239_781).abs() < 1e-14);
+        assert!((k.eval_r2(4.0) - 2.772_588_722_239_781).abs() < 1e-14);
         // 0.5² ln 0.5 = −0.17328679513998632
-        assert!((k.eval(0.5) + 0.173_286_795_139_986_3).abs() < 1e-15);
+        assert!((k.eval_r2(0.25) + 0.173_286_795_139_986_3).abs() < 1e-15);
     }
 
     #[test]
     fn multiquadric_matches_hand_values() {
         let k = Kernel::Multiquadric { s: 4.0 };
-        assert_eq!(k.eval(3.0), 5.0);
-        assert_eq!(Kernel::Multiquadric { s: 0.0 }.eval(2.5), 2.5);
+        assert_eq!(k.eval_r2(9.0), 5.0);
+        assert_eq!(Kernel::Multiquadric { s: 0.0 }.eval_r2(6.25), 2.5);
     }
 
     #[test]
     fn gaussian_matches_hand_values() {
         let k = Kernel::Gaussian { c: 2.0 };
-        assert_eq!(k.eval(0.0), 1.0);
+        assert_eq!(k.eval_r2(0.0), 1.0);
         // exp(−1) at r = c
-        assert!((k.eval(2.0) - 0.367_879_441_171_442_33).abs() < 1e-16);
+        assert!((k.eval_r2(4.0) - 0.367_879_441_171_442_33).abs() < 1e-16);
         // exp(−4/9) for c = 3, r = 2
         let k3 = Kernel::Gaussian { c: 3.0 };
-        assert!((k3.eval(2.0) - 0.641_180_388_429_954_6).abs() < 1e-15);
+        assert!((k3.eval_r2(4.0) - 0.641_180_388_429_954_6).abs() < 1e-15);
     }
 
     #[test]

@@ -2,9 +2,10 @@
 //! warps the template onto the scan.
 //!
 //! * [`kernel`] — Φ: thin-plate, multiquadric, Gaussian (eq. 3–5).
-//! * [`fit`] — the network f(p_i) = q_i (eq. 1–2) with optional affine term, LU solve,
+//! * [`network`] — the fitted network [`RbfNetwork`] and the warp loop: the network at every
+//!   template vertex, vectorised.
+//! * [`fit`] — fitting f(p_i) = q_i (eq. 1–2) with optional affine term, LU solve,
 //!   conditioning checks.
-//! * [`evaluate`] — the warp loop: the network at every template vertex, vectorised.
 //! * [`checks`] — input checks naming the offending landmarks; [`fast_math`] — exp/ln for the loop.
 //! * [`procrustes`] — similarity pre-alignment so the scan's frame and units do not matter.
 //! * [`virtual_landmarks`] — the 12 automatically made landmarks (n = 73 + 12 = 85).
@@ -13,17 +14,18 @@
 
 pub mod checks;
 pub mod error;
-pub mod evaluate;
 pub mod fast_math;
 pub mod fit;
 pub mod kernel;
+pub mod network;
 pub mod params;
 pub mod procrustes;
 pub mod warp;
 
 pub use error::RbfError;
-pub use fit::{fit, RbfNetwork};
+pub use fit::fit;
 pub use kernel::Kernel;
+pub use network::RbfNetwork;
 pub use params::RbfParams;
 pub use procrustes::{similarity, Similarity};
 // The virtual landmarks live with the other landmarks; re-exported here, where the RBF uses them.

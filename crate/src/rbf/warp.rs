@@ -12,8 +12,9 @@ use serde::Serialize;
 
 use super::checks::check_unique_names;
 use super::error::RbfError;
-use super::fit::{fit, RbfNetwork};
+use super::fit::fit;
 use super::kernel::Kernel;
+use super::network::RbfNetwork;
 use super::params::RbfParams;
 use super::procrustes::{similarity_named, Similarity};
 use crate::landmarks::virtual_landmarks::{virtual_landmarks_detailed, VIRTUAL_PREFIX};

@@ -7,6 +7,7 @@
 
 use nalgebra::{Point3, Vector3};
 
+use crate::mesh::ray::ray_triangle;
 use crate::mesh::Mesh;
 
 const LEAF_SIZE: usize = 4;
@@ -154,26 +155,8 @@ impl TriangleBvh {
     }
 
     fn hit_triangle(&self, t: usize, o: &Point3<f64>, d: &Vector3<f64>) -> Option<(f64, [f64; 3])> {
-        let [a, b, c] = self.triangles[t].map(|i| self.positions[i as usize]);
-        let e1 = b - a;
-        let e2 = c - a;
-        let p = d.cross(&e2);
-        let det = e1.dot(&p);
-        if det.abs() < 1e-18 {
-            return None;
-        }
-        let inv_det = 1.0 / det;
-        let s = o - a;
-        let u = s.dot(&p) * inv_det;
-        if !(0.0..=1.0).contains(&u) {
-            return None;
-        }
-        let q = s.cross(&e1);
-        let v = d.dot(&q) * inv_det;
-        if v < 0.0 || u + v > 1.0 {
-            return None;
-        }
-        let dist = e2.dot(&q) * inv_det;
+        let [a, b, c] = self.triangles[t].map(|i| &self.positions[i as usize]);
+        let (dist, u, v) = ray_triangle(o, d, [a, b, c], 1e-18)?;
         (dist > 1e-12).then_some((dist, [1.0 - u - v, u, v]))
     }
 }

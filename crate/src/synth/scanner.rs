@@ -23,7 +23,8 @@ use rand::Rng;
 use rand_distr::{Distribution, Normal};
 
 use super::bvh::TriangleBvh;
-use crate::mesh::Mesh;
+use crate::mesh::normals::face_normals;
+use crate::mesh::{bounding_box, Mesh};
 
 /// Settings of the virtual scanner.
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
@@ -119,25 +120,27 @@ impl View {
 /// the noise is drawn from `rng`.
 pub fn scan<R: Rng>(surface: &Mesh, params: &ScannerParams, rng: &mut R) -> Scan {
     let mut out = Scan::default();
-    if surface.positions.is_empty() || params.heads == 0 {
+    let Some((min, max)) = bounding_box(&surface.positions) else {
+        return out;
+    };
+    if params.heads == 0 {
         return out;
     }
     let bvh = TriangleBvh::new(surface);
-    let (min, max) = bounds(&surface.positions);
     let centre = Point3::new((min.x + max.x) / 2.0, 0.0, (min.z + max.z) / 2.0);
     let radius = ((max.x - min.x).powi(2) + (max.z - min.z).powi(2)).sqrt() / 2.0 + 0.01;
     let rows = ((max.y - min.y) / params.vertical_step).ceil() as usize + 1;
     let y0 = min.y;
     let cos_limit = params.max_grazing_deg.to_radians().cos();
-    let face_normals: Vec<Vector3<f64>> = surface
-        .triangles
-        .iter()
-        .map(|t| {
-            let [a, b, c] = t.map(|i| surface.positions[i as usize]);
-            (b - a)
-                .cross(&(c - a))
-                .try_normalize(0.0)
-                .unwrap_or_else(Vector3::y)
+    // A degenerate triangle has no normal; +y keeps a (never expected) hit on one usable.
+    let face_normals: Vec<Vector3<f64>> = face_normals(&surface.positions, &surface.triangles)
+        .into_iter()
+        .map(|n| {
+            if n == Vector3::zeros() {
+                Vector3::y()
+            } else {
+                n
+            }
         })
         .collect();
 
@@ -289,16 +292,6 @@ fn triangulate<R: Rng>(
             }
         }
     }
-}
-
-fn bounds(points: &[Point3<f64>]) -> (Point3<f64>, Point3<f64>) {
-    points.iter().fold(
-        (
-            Point3::from([f64::INFINITY; 3]),
-            Point3::from([f64::NEG_INFINITY; 3]),
-        ),
-        |(lo, hi), p| (lo.inf(p), hi.sup(p)),
-    )
 }
 
 #[cfg(test)]

@@ -5,7 +5,7 @@ use std::collections::HashMap;
 use nalgebra::{Point3, Rotation3, Vector3};
 use rand::Rng;
 
-use crate::mesh::Mesh;
+use crate::mesh::{bounding_box, Mesh};
 
 use super::data::MakeHumanData;
 use super::error::SynthError;
@@ -168,16 +168,7 @@ fn pose_rotations(
 }
 
 fn extent_y(points: &[Point3<f64>]) -> f64 {
-    let (lo, hi) = points
-        .iter()
-        .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), p| {
-            (lo.min(p.y), hi.max(p.y))
-        });
-    if lo.is_finite() {
-        hi - lo
-    } else {
-        0.0
-    }
+    bounding_box(points).map_or(0.0, |(lo, hi)| hi.y - lo.y)
 }
 
 fn on_floor(points: &mut [Point3<f64>]) {

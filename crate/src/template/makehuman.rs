@@ -188,11 +188,6 @@ impl MakeHumanModel {
         joint_mean(&self.joint_pos_idxs, &self.positions, name)
     }
 
-    /// Index of the bone called `name`.
-    pub fn bone_index(&self, name: &str) -> Option<usize> {
-        self.bones.iter().position(|b| b.name == name)
-    }
-
     /// The body skin as the template base mesh: only faces of material `body`, quads split along
     /// their shorter diagonal, vertices renumbered compactly in MakeHuman order. Returns the mesh
     /// and, per template vertex, its MakeHuman vertex index (provenance).

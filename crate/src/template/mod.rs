@@ -7,7 +7,7 @@
 //! * [`makehuman`]: reader of the MakeHuman base mesh (CC0 data) into the template frame.
 //! * [`frame`]: the template frame transform (metres, y up, feet on y = 0, facing +z).
 //! * [`build`]: the tool that made the stored template (landmark rules, segments, flags).
-//! * [`topology`]: edges, neighbours, normals, signed volume, edge distance.
+//! * [`topology`]: signed volume, edge distance.
 //! * [`segment`]: the six segments; [`error`]: the error enum `TemplateError`.
 
 pub mod build;

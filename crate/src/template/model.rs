@@ -10,7 +10,7 @@ use super::resolution::Resolution;
 use super::segment::Segment;
 use super::store::{self, StoredTemplate};
 use super::subdivide::Subdivision;
-use super::topology::unique_edges;
+use crate::mesh::topology::unique_edges;
 
 /// The stored base template, embedded in the binary.
 pub const EMBEDDED_TEMPLATE: &[u8] =
@@ -66,7 +66,13 @@ impl Template {
 
     /// The stored form of a base template (for the build tool).
     pub fn to_bytes(&self) -> Vec<u8> {
-        store::encode(&StoredTemplate {
+        store::encode(&self.base_stored())
+    }
+
+    /// This template's base resolution as stored: the first `base_vertex_count` vertices with
+    /// their weights and flags, and the base triangles.
+    fn base_stored(&self) -> StoredTemplate {
+        StoredTemplate {
             header: self.header.clone(),
             mesh: Mesh::new(
                 self.mesh.positions[..self.base_vertex_count].to_vec(),
@@ -75,7 +81,7 @@ impl Template {
             segment_weights: self.segment_weights[..self.base_vertex_count].to_vec(),
             flags: self.flags[..self.base_vertex_count].to_vec(),
             provenance: self.makehuman_vertex.clone(),
-        })
+        }
     }
 
     /// The subdivision operator from this template's base resolution to `resolution`.
@@ -101,16 +107,7 @@ impl Template {
         if resolution == self.resolution {
             return self.clone();
         }
-        let base = Template::from_stored(store::StoredTemplate {
-            header: self.header.clone(),
-            mesh: Mesh::new(
-                self.mesh.positions[..self.base_vertex_count].to_vec(),
-                self.base_triangles.clone(),
-            ),
-            segment_weights: self.segment_weights[..self.base_vertex_count].to_vec(),
-            flags: self.flags[..self.base_vertex_count].to_vec(),
-            provenance: self.makehuman_vertex.clone(),
-        });
+        let base = Template::from_stored(self.base_stored());
         if resolution == Resolution::Base {
             return base;
         }

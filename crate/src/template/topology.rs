@@ -1,50 +1,7 @@
-//! Edges, neighbours, normals and volume of a triangle mesh: what the template build and the
-//! smoothness term need.
+//! Signed volume and edge-length geodesic distance over a triangle mesh: what the template build
+//! measures (edges, neighbours and normals are in [`crate::mesh`]).
 
-use std::collections::HashMap;
-
-use nalgebra::{Point3, Vector3};
-
-/// Unique undirected edges `(a, b)` with `a < b`, in first-seen order.
-pub fn unique_edges(triangles: &[[u32; 3]]) -> Vec<[u32; 2]> {
-    let mut seen = HashMap::with_capacity(triangles.len() * 2);
-    let mut edges = Vec::with_capacity(triangles.len() * 3 / 2);
-    for t in triangles {
-        for k in 0..3 {
-            let (a, b) = (t[k], t[(k + 1) % 3]);
-            let e = [a.min(b), a.max(b)];
-            if seen.insert(e, ()).is_none() {
-                edges.push(e);
-            }
-        }
-    }
-    edges
-}
-
-/// Per-vertex neighbour lists (`#V` lists) from the triangles.
-pub fn vertex_neighbours(vertex_count: usize, triangles: &[[u32; 3]]) -> Vec<Vec<u32>> {
-    let mut nb = vec![Vec::new(); vertex_count];
-    for [a, b] in unique_edges(triangles) {
-        nb[a as usize].push(b);
-        nb[b as usize].push(a);
-    }
-    nb
-}
-
-/// Area-weighted vertex normals (unit length; zero for isolated vertices).
-pub fn vertex_normals(positions: &[Point3<f64>], triangles: &[[u32; 3]]) -> Vec<Vector3<f64>> {
-    let mut n = vec![Vector3::zeros(); positions.len()];
-    for t in triangles {
-        let [a, b, c] = t.map(|i| positions[i as usize]);
-        let f = (b - a).cross(&(c - a));
-        for &i in t {
-            n[i as usize] += f;
-        }
-    }
-    n.iter()
-        .map(|v| v.try_normalize(1e-30).unwrap_or_else(Vector3::zeros))
-        .collect()
-}
+use nalgebra::Point3;
 
 /// Signed volume `Σ (a · (b × c)) / 6` over the triangles: positive when a closed surface is
 /// oriented with outward normals.
@@ -122,14 +79,11 @@ mod tests {
     }
 
     #[test]
-    fn tetra_volume_edges_distance() {
+    fn tetra_volume_and_distance() {
         let (p, t) = tetra();
         assert!((signed_volume(&p, &t) - 1.0 / 6.0).abs() < 1e-12);
-        assert_eq!(unique_edges(&t).len(), 6);
-        let nb = vertex_neighbours(4, &t);
+        let nb = crate::mesh::topology::vertex_neighbours(4, &t);
         let d = edge_distance(&p, &nb, [1]);
         assert!((d[2] - 2f64.sqrt()).abs() < 1e-12 && d[1] == 0.0);
-        let n = vertex_normals(&p, &t);
-        assert!(n[1].x > 0.0);
     }
 }

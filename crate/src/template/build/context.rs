@@ -5,7 +5,9 @@ use nalgebra::{Point3, Vector3};
 use super::super::error::TemplateError;
 use super::super::makehuman::MakeHumanModel;
 use super::super::segment::Segment;
-use super::super::topology::{signed_volume, vertex_neighbours, vertex_normals};
+use super::super::topology::signed_volume;
+use crate::mesh::normals::vertex_normals;
+use crate::mesh::topology::vertex_neighbours;
 use crate::mesh::Mesh;
 
 /// The body skin with per-vertex skinning and the joint positions, in the template frame.
@@ -91,6 +93,16 @@ impl<'a> BuildContext<'a> {
     }
 }
 
+/// Name prefixes of the MakeHuman arm bones (shoulder to fingertips), either side.
+pub const ARM_BONES: &[&str] = &[
+    "shoulder",
+    "upperarm",
+    "lowerarm",
+    "wrist",
+    "finger",
+    "metacarpal",
+];
+
 /// The segment a MakeHuman bone belongs to. Neck: `neck01` stays with the torso so that the
 /// head/torso boundary falls mid-neck (Cervicale in the torso, Gonion in the head).
 pub fn bone_segment(bone: &str) -> Segment {
@@ -98,14 +110,7 @@ pub fn bone_segment(bone: &str) -> Segment {
     let left = name.ends_with(".L");
     let right = name.ends_with(".R");
     let starts = |prefixes: &[&str]| prefixes.iter().any(|p| name.starts_with(p));
-    if starts(&[
-        "shoulder",
-        "upperarm",
-        "lowerarm",
-        "wrist",
-        "finger",
-        "metacarpal",
-    ]) {
+    if starts(ARM_BONES) {
         if right {
             return Segment::RightArm;
         }

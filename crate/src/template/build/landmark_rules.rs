@@ -13,7 +13,7 @@ use nalgebra::{Point3, Vector3};
 use super::super::error::TemplateError;
 use super::super::flags::RegionFlags;
 use super::super::segment::Segment;
-use super::context::BuildContext;
+use super::context::{BuildContext, ARM_BONES};
 use super::regions::ear_centre;
 
 /// |x| below which a vertex counts as on the midline (the MakeHuman mesh has exact x = 0 there).
@@ -47,6 +47,19 @@ impl Finder<'_, '_> {
             .ok_or_else(|| TemplateError::Landmark(what.into(), "empty search region".into()))
     }
 
+    /// Finds the left-side landmark `name` with [`Self::best`] (its errors say "Lt. name") and
+    /// appends it to `left`.
+    fn push_left<'n>(
+        &self,
+        left: &mut Vec<(&'n str, u32)>,
+        name: &'n str,
+        filter: impl Fn(u32, &Point3<f64>) -> bool,
+        score: impl Fn(&Point3<f64>) -> f64,
+    ) -> Result<(), TemplateError> {
+        left.push((name, self.best(&format!("Lt. {name}"), filter, score)?));
+        Ok(())
+    }
+
     /// Whether the outward normal at `v` points forward (+z) at more than ~70° from the side.
     fn front(&self, v: u32) -> bool {
         self.ctx.normals[v as usize].z > 0.3
@@ -61,18 +74,8 @@ impl Finder<'_, '_> {
     }
 
     fn arm_weight(&self, v: u32) -> f64 {
-        self.ctx.bone_weight(v, |b| {
-            [
-                "shoulder",
-                "upperarm",
-                "lowerarm",
-                "wrist",
-                "finger",
-                "metacarpal",
-            ]
-            .iter()
-            .any(|p| b.starts_with(p))
-        })
+        self.ctx
+            .bone_weight(v, |b| ARM_BONES.iter().any(|p| b.starts_with(p)))
     }
 
     fn mirror_nearest(&self, v: u32) -> u32 {
@@ -131,19 +134,17 @@ pub fn place_landmarks(
         },
         |p| p.z,
     )?);
-    left.push((
+    f.push_left(
+        &mut left,
         "Infraorbitale",
-        f.best(
-            "Lt. Infraorbitale",
-            |_, p| {
-                (p.x - eye.x).abs() < 0.006
-                    && p.y > eye.y - 0.025
-                    && p.y < eye.y - 0.012
-                    && p.z > eye.z - 0.03
-            },
-            |p| p.z,
-        )?,
-    ));
+        |_, p| {
+            (p.x - eye.x).abs() < 0.006
+                && p.y > eye.y - 0.025
+                && p.y < eye.y - 0.012
+                && p.z > eye.z - 0.03
+        },
+        |p| p.z,
+    )?;
     let pogonion = f.p(f.best(
         "chin",
         |v, p| {
@@ -170,36 +171,32 @@ pub fn place_landmarks(
         )?,
     ));
     let ear = f.p(ear_centre(ctx, hard, 1.0)?);
-    left.push((
+    f.push_left(
+        &mut left,
         "Tragion",
-        f.best(
-            "Lt. Tragion",
-            |v, p| {
-                f.is(v, Segment::Head)
-                    && p.x > 0.0
-                    && (p - ear).norm() < 0.035
-                    && (p.y - ear.y).abs() < 0.008
-                    && p.x > ear.x - 0.02
-            },
-            |p| p.z,
-        )?,
-    ));
+        |v, p| {
+            f.is(v, Segment::Head)
+                && p.x > 0.0
+                && (p - ear).norm() < 0.035
+                && (p.y - ear.y).abs() < 0.008
+                && p.x > ear.x - 0.02
+        },
+        |p| p.z,
+    )?;
     // The mandible's angle stands out laterally from the neck below and behind the cheek.
-    left.push((
+    f.push_left(
+        &mut left,
         "Gonion",
-        f.best(
-            "Lt. Gonion",
-            |v, p| {
-                f.is(v, Segment::Head)
-                    && p.x > 0.0
-                    && p.y > ear.y - 0.075
-                    && p.y < ear.y - 0.04
-                    && p.z > ear.z
-                    && p.z < ear.z + 0.045
-            },
-            |p| p.x,
-        )?,
-    ));
+        |v, p| {
+            f.is(v, Segment::Head)
+                && p.x > 0.0
+                && p.y > ear.y - 0.075
+                && p.y < ear.y - 0.04
+                && p.z > ear.z
+                && p.z < ear.z + 0.045
+        },
+        |p| p.x,
+    )?;
     mid.push((
         "Nuchale",
         f.best(
@@ -216,16 +213,12 @@ pub fn place_landmarks(
 
     // Torso, front.
     let clav = f.j("clavicle.L____head")?;
-    left.push((
+    f.push_left(
+        &mut left,
         "Clavicale",
-        f.best(
-            "Lt. Clavicale",
-            |_, p| {
-                p.x > clav.x + 0.005 && p.x < clav.x + 0.02 && (p.y - (clav.y + 0.01)).abs() < 0.01
-            },
-            |p| p.z,
-        )?,
-    ));
+        |_, p| p.x > clav.x + 0.005 && p.x < clav.x + 0.02 && (p.y - (clav.y + 0.01)).abs() < 0.01,
+        |p| p.z,
+    )?;
     mid.push((
         "Suprasternale",
         f.best(
@@ -290,18 +283,14 @@ pub fn place_landmarks(
     let knee = f.j("lowerleg01.L____head")?;
     let a_thigh = (knee - hip).normalize();
     let lat_thigh = perp(x, &a_thigh);
-    left.push((
+    f.push_left(
+        &mut left,
         "Trochanterion",
-        f.best(
-            "Lt. Trochanterion",
-            |v, p| {
-                p.x > 0.0
-                    && (-0.01..0.03).contains(&(p - hip).dot(&a_thigh))
-                    && f.arm_weight(v) < 0.05
-            },
-            |p| p.coords.dot(&lat_thigh),
-        )?,
-    ));
+        |v, p| {
+            p.x > 0.0 && (-0.01..0.03).contains(&(p - hip).dot(&a_thigh)) && f.arm_weight(v) < 0.05
+        },
+        |p| p.coords.dot(&lat_thigh),
+    )?;
 
     // Torso, back.
     let neck = f.j("neck01____head")?;
@@ -319,14 +308,12 @@ pub fn place_landmarks(
             |p| -p.z,
         )?,
     ));
-    left.push((
+    f.push_left(
+        &mut left,
         "PSIS",
-        f.best(
-            "Lt. PSIS",
-            |v, p| (p.x - 0.045).abs() < 0.01 && (p.y - f.p(asis).y).abs() < 0.008 && f.back(v),
-            |p| -p.z,
-        )?,
-    ));
+        |v, p| (p.x - 0.045).abs() < 0.01 && (p.y - f.p(asis).y).abs() < 0.008 && f.back(v),
+        |p| -p.z,
+    )?;
     let y_waist = narrowest_waist(&f, f.p(ilio).y, f.p(rib).y);
     mid.push((
         "Waist, Preferred, Post.",
@@ -351,150 +338,120 @@ pub fn place_landmarks(
     let wr = f.j("wrist.L____head")?;
     let a_up = (el - sh).normalize();
     let a_fore = (wr - el).normalize();
-    left.push((
+    f.push_left(
+        &mut left,
         "Acromion",
-        f.best(
-            "Lt. Acromion",
-            |_, p| (p - sh).norm() < 0.09 && (p.z - sh.z).abs() < 0.03 && p.y > sh.y,
-            |p| (p.x - sh.x) + 1.5 * (p.y - sh.y),
-        )?,
-    ));
+        |_, p| (p - sh).norm() < 0.09 && (p.z - sh.z).abs() < 0.03 && p.y > sh.y,
+        |p| (p.x - sh.x) + 1.5 * (p.y - sh.y),
+    )?;
     let pit = |v: u32, p: &Point3<f64>| {
         let w = f.arm_weight(v);
         p.x > 0.0 && (0.25..=0.75).contains(&w) && p.y < sh.y - 0.04 && p.x < sh.x + 0.02
     };
     let armpit = f.p(f.best("Lt. Axilla", pit, |p| -p.y)?);
-    left.push((
+    f.push_left(
+        &mut left,
         "Axilla, Ant.",
-        f.best(
-            "Lt. Axilla, Ant.",
-            |v, p| pit(v, p) && p.y < armpit.y + 0.04,
-            |p| p.z,
-        )?,
-    ));
-    left.push((
+        |v, p| pit(v, p) && p.y < armpit.y + 0.04,
+        |p| p.z,
+    )?;
+    f.push_left(
+        &mut left,
         "Axilla, Post.",
-        f.best(
-            "Lt. Axilla, Post.",
-            |v, p| pit(v, p) && p.y < armpit.y + 0.04,
-            |p| -p.z,
-        )?,
-    ));
+        |v, p| pit(v, p) && p.y < armpit.y + 0.04,
+        |p| -p.z,
+    )?;
     let near_elbow = |p: &Point3<f64>| (p - el).norm() < 0.05;
-    left.push((
+    f.push_left(
+        &mut left,
         "Olecranon",
-        f.best(
-            "Lt. Olecranon",
-            |_, p| near_elbow(p),
-            |p| (p - el).dot(&a_up) - (p - el).dot(&a_fore),
-        )?,
-    ));
+        |_, p| near_elbow(p),
+        |p| (p - el).dot(&a_up) - (p - el).dot(&a_fore),
+    )?;
     let lat_up = perp(x, &a_up);
     let epi = |p: &Point3<f64>| near_elbow(p) && (p - el).dot(&a_up).abs() < 0.015;
-    left.push((
+    f.push_left(
+        &mut left,
         "Humeral Lateral Epicn",
-        f.best(
-            "Lt. Humeral Lateral Epicn",
-            |_, p| epi(p),
-            |p| p.coords.dot(&lat_up),
-        )?,
-    ));
-    left.push((
+        |_, p| epi(p),
+        |p| p.coords.dot(&lat_up),
+    )?;
+    f.push_left(
+        &mut left,
         "Humeral Medial Epicn",
-        f.best(
-            "Lt. Humeral Medial Epicn",
-            |_, p| epi(p),
-            |p| -p.coords.dot(&lat_up),
-        )?,
-    ));
+        |_, p| epi(p),
+        |p| -p.coords.dot(&lat_up),
+    )?;
     let lat_fore = perp(x, &a_fore);
-    left.push((
+    f.push_left(
+        &mut left,
         "Radiale",
-        f.best(
-            "Lt. Radiale",
-            |_, p| (p - el).norm() < 0.07 && (0.015..0.03).contains(&(p - el).dot(&a_fore)),
-            |p| p.coords.dot(&lat_fore),
-        )?,
-    ));
+        |_, p| (p - el).norm() < 0.07 && (0.015..0.03).contains(&(p - el).dot(&a_fore)),
+        |p| p.coords.dot(&lat_fore),
+    )?;
     let thumb = perp(f.j("finger1-1.L____head")? - wr, &a_fore);
     let styloid =
         |p: &Point3<f64>| (p - wr).norm() < 0.05 && (-0.02..0.0).contains(&(p - wr).dot(&a_fore));
-    left.push((
+    f.push_left(
+        &mut left,
         "Radial Styloid",
-        f.best(
-            "Lt. Radial Styloid",
-            |_, p| styloid(p),
-            |p| p.coords.dot(&thumb),
-        )?,
-    ));
-    left.push((
+        |_, p| styloid(p),
+        |p| p.coords.dot(&thumb),
+    )?;
+    f.push_left(
+        &mut left,
         "Ulnar Styloid",
-        f.best(
-            "Lt. Ulnar Styloid",
-            |_, p| styloid(p),
-            |p| -p.coords.dot(&thumb),
-        )?,
-    ));
+        |_, p| styloid(p),
+        |p| -p.coords.dot(&thumb),
+    )?;
     let f2 = f.j("finger2-1.L____head")?;
     let f5 = f.j("finger5-1.L____head")?;
     let radial = (f2 - f5).normalize();
-    left.push((
+    f.push_left(
+        &mut left,
         "Metacarpal Phal. II",
-        f.best(
-            "Lt. Metacarpal Phal. II",
-            |_, p| (p - f2).norm() < 0.02,
-            |p| p.coords.dot(&radial),
-        )?,
-    ));
-    left.push((
+        |_, p| (p - f2).norm() < 0.02,
+        |p| p.coords.dot(&radial),
+    )?;
+    f.push_left(
+        &mut left,
         "Metacarpal Phal. V",
-        f.best(
-            "Lt. Metacarpal Phal. V",
-            |_, p| (p - f5).norm() < 0.02,
-            |p| -p.coords.dot(&radial),
-        )?,
-    ));
+        |_, p| (p - f5).norm() < 0.02,
+        |p| -p.coords.dot(&radial),
+    )?;
     let hand_axis = (f.j("finger3-3.L____tail")? - wr).normalize();
-    left.push((
+    f.push_left(
+        &mut left,
         "Dactylion",
-        f.best(
-            "Lt. Dactylion",
-            |v, p| p.x > 0.0 && ctx.bone_weight(v, |b| b.starts_with("finger3")) > 0.5,
-            |p| p.coords.dot(&hand_axis),
-        )?,
-    ));
+        |v, p| p.x > 0.0 && ctx.bone_weight(v, |b| b.starts_with("finger3")) > 0.5,
+        |p| p.coords.dot(&hand_axis),
+    )?;
 
     // Leg.
     let ankle = f.j("foot.L____head")?;
     let a_shin = (ankle - knee).normalize();
-    left.push((
+    f.push_left(
+        &mut left,
         "Knee Crease",
-        f.best(
-            "Lt. Knee Crease",
-            |_, p| (p - knee).norm() < 0.08 && (p - knee).dot(&a_shin).abs() < 0.01,
-            |p| -p.z,
-        )?,
-    ));
+        |_, p| (p - knee).norm() < 0.08 && (p - knee).dot(&a_shin).abs() < 0.01,
+        |p| -p.z,
+    )?;
     let lat_knee = perp(x, &a_shin);
     let condyle = |p: &Point3<f64>| {
         (p - knee).norm() < 0.09 && (-0.02..0.0).contains(&(p - knee).dot(&a_shin))
     };
-    left.push((
+    f.push_left(
+        &mut left,
         "Femoral Lateral Epicn",
-        f.best(
-            "Lt. Femoral Lateral Epicn",
-            |_, p| condyle(p),
-            |p| p.coords.dot(&lat_knee),
-        )?,
-    ));
-    left.push((
+        |_, p| condyle(p),
+        |p| p.coords.dot(&lat_knee),
+    )?;
+    f.push_left(
+        &mut left,
         "Femoral Medial Epicn",
-        f.best(
-            "Lt. Femoral Medial Epicn",
-            |_, p| condyle(p) && p.x > 0.0,
-            |p| -p.coords.dot(&lat_knee),
-        )?,
-    ));
+        |_, p| condyle(p) && p.x > 0.0,
+        |p| -p.coords.dot(&lat_knee),
+    )?;
     let malleolus = |p: &Point3<f64>, dy: f64| {
         (p - ankle).norm() < 0.07
             && (p.y - (ankle.y + dy)).abs() < 0.012
@@ -511,55 +468,43 @@ pub fn place_landmarks(
     )?;
     left.push(("Medial Malleolus", med_mall));
     let mm = f.p(med_mall);
-    left.push((
+    f.push_left(
+        &mut left,
         "Sphyrion",
-        f.best(
-            "Lt. Sphyrion",
-            |_, p| {
-                p.x > 0.0
-                    && (p - ankle).norm() < 0.08
-                    && (p.y - (mm.y - 0.02)).abs() < 0.006
-                    && (p.z - mm.z).abs() < 0.02
-            },
-            |p| -p.x,
-        )?,
-    ));
+        |_, p| {
+            p.x > 0.0
+                && (p - ankle).norm() < 0.08
+                && (p.y - (mm.y - 0.02)).abs() < 0.006
+                && (p.z - mm.z).abs() < 0.02
+        },
+        |p| -p.x,
+    )?;
     let t1 = f.j("toe1-1.L____head")?;
     let t5 = f.j("toe5-1.L____head")?;
-    left.push((
+    f.push_left(
+        &mut left,
         "Metatarsal Phal. I",
-        f.best(
-            "Lt. Metatarsal Phal. I",
-            |_, p| (p - t1).norm() < 0.025,
-            |p| -p.x,
-        )?,
-    ));
-    left.push((
+        |_, p| (p - t1).norm() < 0.025,
+        |p| -p.x,
+    )?;
+    f.push_left(
+        &mut left,
         "Metatarsal Phal. V",
-        f.best(
-            "Lt. Metatarsal Phal. V",
-            |_, p| (p - t5).norm() < 0.025,
-            |p| p.x,
-        )?,
-    ));
-    left.push((
+        |_, p| (p - t5).norm() < 0.025,
+        |p| p.x,
+    )?;
+    f.push_left(
+        &mut left,
         "Calcaneous, Post.",
-        f.best(
-            "Lt. Calcaneous, Post.",
-            |v, p| {
-                p.x > 0.0 && p.y < ankle.y && ctx.bone_weight(v, |b| b.starts_with("foot")) > 0.5
-            },
-            |p| -p.z,
-        )?,
-    ));
-    left.push((
+        |v, p| p.x > 0.0 && p.y < ankle.y && ctx.bone_weight(v, |b| b.starts_with("foot")) > 0.5,
+        |p| -p.z,
+    )?;
+    f.push_left(
+        &mut left,
         "Digit II",
-        f.best(
-            "Lt. Digit II",
-            |v, p| p.x > 0.0 && ctx.bone_weight(v, |b| b.starts_with("toe2")) > 0.3,
-            |p| p.z,
-        )?,
-    ));
+        |v, p| p.x > 0.0 && ctx.bone_weight(v, |b| b.starts_with("toe2")) > 0.3,
+        |p| p.z,
+    )?;
 
     let mut out: Vec<(String, u32)> = mid.iter().map(|(n, v)| (n.to_string(), *v)).collect();
     let mut mirror_error = Vec::new();

@@ -14,6 +14,7 @@ use nalgebra::{Point3, Vector3};
 use super::super::flags::RegionFlags;
 use super::super::segment::Segment;
 use super::context::BuildContext;
+use crate::mesh::ray::ray_triangle;
 use crate::template::TemplateError;
 
 /// Parameters of the region flags.
@@ -150,26 +151,8 @@ fn orthonormal(n: &Vector3<f64>) -> (Vector3<f64>, Vector3<f64>) {
     (u, n.cross(&u))
 }
 
-/// Möller–Trumbore: whether the ray `o + t d`, `1e-6 < t < max`, crosses the triangle.
+/// Whether the ray `o + t d`, `1e-6 < t < max`, crosses the triangle.
 fn ray_hits(o: &Point3<f64>, d: &Vector3<f64>, t: &[Point3<f64>; 3], max: f64) -> bool {
-    let e1 = t[1] - t[0];
-    let e2 = t[2] - t[0];
-    let p = d.cross(&e2);
-    let det = e1.dot(&p);
-    if det.abs() < 1e-14 {
-        return false;
-    }
-    let inv = 1.0 / det;
-    let s = o - t[0];
-    let u = s.dot(&p) * inv;
-    if !(0.0..=1.0).contains(&u) {
-        return false;
-    }
-    let q = s.cross(&e1);
-    let v = d.dot(&q) * inv;
-    if v < 0.0 || u + v > 1.0 {
-        return false;
-    }
-    let dist = e2.dot(&q) * inv;
-    dist > 1e-6 && dist < max
+    ray_triangle(o, d, [&t[0], &t[1], &t[2]], 1e-14)
+        .is_some_and(|(dist, ..)| dist > 1e-6 && dist < max)
 }

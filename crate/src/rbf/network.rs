@@ -1,5 +1,6 @@
-//! Evaluating a fitted RBF network at many points: the warp loop of paper §3.1.2 ("new
-//! positions of those non-feature vertices are calculated by using this RBF network").
+//! The fitted RBF network f: R³ → R³ ([`RbfNetwork`], built by [`super::fit`]) and its
+//! evaluation at many points: the warp loop of paper §3.1.2 ("new positions of those non-feature
+//! vertices are calculated by using this RBF network").
 //!
 //! Centres are stored in blocks of [`LANES`] so the loop vectorises; the Gaussian and the
 //! thin-plate spline use the branch-free exp/ln of [`super::fast_math`]; on x86-64 an AVX2+FMA
@@ -8,10 +9,32 @@
 use nalgebra::{DMatrix, Point3};
 
 use super::fast_math;
-use super::fit::RbfNetwork;
 use super::kernel::Kernel;
+use crate::mesh::bounding_box;
+
+/// A fitted RBF network mapping R³ → R³.
+#[derive(Debug, Clone, PartialEq)]
+pub struct RbfNetwork {
+    pub(super) kernel: Kernel,
+    /// Centres p_j and weights w_j per coordinate, in vectorisable blocks.
+    pub(super) blocks: Vec<Block>,
+    /// Affine part: row 0 the constant a_0, rows 1..4 the linear map (x, y, z → output).
+    /// All zero when the fit had no affine term.
+    pub(super) affine: [[f64; 3]; 4],
+    pub(super) rcond: f64,
+}
 
 impl RbfNetwork {
+    /// The kernel the network was fitted with.
+    pub fn kernel(&self) -> Kernel {
+        self.kernel
+    }
+
+    /// Reciprocal 1-norm condition number of the fitted system (1 = perfect, ~1e-16 = singular).
+    pub fn rcond(&self) -> f64 {
+        self.rcond
+    }
+
     /// f(x) for one point.
     pub fn evaluate(&self, x: &Point3<f64>) -> Point3<f64> {
         let mut out = [Point3::origin()];
@@ -77,10 +100,9 @@ impl RbfNetwork {
             .chunks(GAUSSIAN_CHUNK)
             .zip(out.chunks_mut(GAUSSIAN_CHUNK))
         {
-            let Some(first) = p.first() else { continue };
-            let (lo, hi) = p
-                .iter()
-                .fold((*first, *first), |(lo, hi), q| (lo.inf(q), hi.sup(q)));
+            let Some((lo, hi)) = bounding_box(p) else {
+                continue;
+            };
             near.clear();
             let mut block: Option<Block> = None;
             let mut lane = 0;
