@@ -71,11 +71,10 @@ pub struct WarpReport {
     pub lambda: f64,
     pub affine: bool,
     pub virtual_landmarks: bool,
-    /// Landmark pairs the fit used, in template order.
+    /// Landmark names (as in `RbfWarp`): the pairs the fit used in template order, those present
+    /// on one side only, and the virtual landmarks whose snap rule found no scan surface point.
     pub used: Vec<String>,
-    /// Names present on one side only.
     pub skipped: Vec<String>,
-    /// Virtual landmarks whose snap rule found no scan surface point.
     pub virtual_off_surface: Vec<String>,
     /// One per used landmark, in `used` order.
     pub residuals: Vec<ResidualMm>,

@@ -70,7 +70,7 @@ pub enum AlignError {
         /// The value given.
         value: f64,
         /// What range is allowed.
-        reason: &'static str,
+        reason: String,
     },
     /// The template has no vertices or no triangles.
     #[error(

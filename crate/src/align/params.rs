@@ -130,92 +130,76 @@ impl Default for FineAlignParams {
 }
 
 impl FineAlignParams {
-    /// Checks every parameter's range; the first bad one is reported.
+    /// Checks every parameter's range; the first bad one is reported. Lengths are metres.
     pub fn validate(&self) -> Result<(), AlignError> {
-        let bad = |name, value: f64, reason| AlignError::BadParameter {
+        let p = self;
+        positive("a", p.a)?;
+        positive("b", p.b)?;
+        positive("reference_edge_length", p.reference_edge_length)?;
+        within(
+            "iterations_per_round",
+            p.iterations_per_round as f64,
+            1.0,
+            1e9,
+        )?;
+        within("lbfgs_memory", p.lbfgs_memory as f64, 1.0, 64.0)?;
+        at_least("relative_tolerance", p.relative_tolerance, 0.0)?;
+        at_least("displacement_tolerance", p.displacement_tolerance, 0.0)?;
+        within("max_normal_angle_deg", p.max_normal_angle_deg, 0.0, 180.0)?;
+        within("candidates", p.candidates as f64, 1.0, 256.0)?;
+        positive_or_infinite("max_match_distance", p.max_match_distance)?;
+        at_least("initial_stiffness", p.initial_stiffness, 1.0)?;
+        within("stiffness_decay", p.stiffness_decay, f64::MIN_POSITIVE, 1.0)?;
+        at_least("landmark_weight", p.landmark_weight, 0.0)?;
+        at_least("scan_term_weight", p.scan_term_weight, 0.0)?;
+        at_least("scan_term_from_stiffness", p.scan_term_from_stiffness, 1.0)?;
+        positive_or_infinite("scan_term_max_distance", p.scan_term_max_distance)
+    }
+}
+
+/// `Ok` when `ok`, else the error naming the parameter, its value and `reason()`.
+fn check(
+    name: &'static str,
+    value: f64,
+    ok: bool,
+    reason: impl FnOnce() -> String,
+) -> Result<(), AlignError> {
+    match ok {
+        true => Ok(()),
+        false => Err(AlignError::BadParameter {
             name,
             value,
-            reason,
-        };
-        if !(self.a.is_finite() && self.a > 0.0) {
-            return Err(bad("a", self.a, "must be finite and > 0"));
-        }
-        if !(self.b.is_finite() && self.b > 0.0) {
-            return Err(bad("b", self.b, "must be finite and > 0"));
-        }
-        if !(self.reference_edge_length.is_finite() && self.reference_edge_length > 0.0) {
-            let v = self.reference_edge_length;
-            return Err(bad(
-                "reference_edge_length",
-                v,
-                "must be finite and > 0 (metres)",
-            ));
-        }
-        if self.iterations_per_round == 0 {
-            return Err(bad("iterations_per_round", 0.0, "must be ≥ 1"));
-        }
-        if self.lbfgs_memory == 0 || self.lbfgs_memory > 64 {
-            let v = self.lbfgs_memory as f64;
-            return Err(bad("lbfgs_memory", v, "must be in 1..=64"));
-        }
-        if !(self.relative_tolerance.is_finite() && self.relative_tolerance >= 0.0) {
-            let v = self.relative_tolerance;
-            return Err(bad("relative_tolerance", v, "must be finite and ≥ 0"));
-        }
-        if !(self.displacement_tolerance.is_finite() && self.displacement_tolerance >= 0.0) {
-            let v = self.displacement_tolerance;
-            return Err(bad(
-                "displacement_tolerance",
-                v,
-                "must be finite and ≥ 0 (metres)",
-            ));
-        }
-        if !(0.0..=180.0).contains(&self.max_normal_angle_deg) {
-            let v = self.max_normal_angle_deg;
-            return Err(bad("max_normal_angle_deg", v, "must be in 0..=180 degrees"));
-        }
-        if self.candidates == 0 || self.candidates > 256 {
-            let v = self.candidates as f64;
-            return Err(bad("candidates", v, "must be in 1..=256"));
-        }
-        if self.max_match_distance.is_nan() || self.max_match_distance <= 0.0 {
-            let v = self.max_match_distance;
-            return Err(bad(
-                "max_match_distance",
-                v,
-                "must be > 0 (metres) or infinity",
-            ));
-        }
-        if !(self.initial_stiffness.is_finite() && self.initial_stiffness >= 1.0) {
-            let v = self.initial_stiffness;
-            return Err(bad("initial_stiffness", v, "must be finite and ≥ 1"));
-        }
-        if !(self.stiffness_decay > 0.0 && self.stiffness_decay <= 1.0) {
-            let v = self.stiffness_decay;
-            return Err(bad("stiffness_decay", v, "must be in (0, 1]"));
-        }
-        if !(self.landmark_weight.is_finite() && self.landmark_weight >= 0.0) {
-            let v = self.landmark_weight;
-            return Err(bad("landmark_weight", v, "must be finite and ≥ 0"));
-        }
-        if !(self.scan_term_weight.is_finite() && self.scan_term_weight >= 0.0) {
-            let v = self.scan_term_weight;
-            return Err(bad("scan_term_weight", v, "must be finite and ≥ 0"));
-        }
-        if !(self.scan_term_from_stiffness.is_finite() && self.scan_term_from_stiffness >= 1.0) {
-            let v = self.scan_term_from_stiffness;
-            return Err(bad("scan_term_from_stiffness", v, "must be finite and ≥ 1"));
-        }
-        if self.scan_term_max_distance.is_nan() || self.scan_term_max_distance <= 0.0 {
-            let v = self.scan_term_max_distance;
-            return Err(bad(
-                "scan_term_max_distance",
-                v,
-                "must be > 0 (metres) or infinity",
-            ));
-        }
-        Ok(())
+            reason: reason(),
+        }),
     }
+}
+
+/// `value` is finite and > 0.
+fn positive(name: &'static str, value: f64) -> Result<(), AlignError> {
+    let ok = value.is_finite() && value > 0.0;
+    check(name, value, ok, || "must be finite and > 0".into())
+}
+
+/// `value` is finite and ≥ `min`.
+fn at_least(name: &'static str, value: f64, min: f64) -> Result<(), AlignError> {
+    let ok = value.is_finite() && value >= min;
+    check(name, value, ok, || format!("must be finite and ≥ {min}"))
+}
+
+/// `lo` ≤ `value` ≤ `hi` (`lo` = `f64::MIN_POSITIVE` reads as "> 0").
+fn within(name: &'static str, value: f64, lo: f64, hi: f64) -> Result<(), AlignError> {
+    check(name, value, (lo..=hi).contains(&value), || {
+        match lo == f64::MIN_POSITIVE {
+            true => format!("must be > 0 and ≤ {hi}"),
+            false => format!("must be ≥ {lo} and ≤ {hi}"),
+        }
+    })
+}
+
+/// `value` is > 0, infinity allowed.
+fn positive_or_infinite(name: &'static str, value: f64) -> Result<(), AlignError> {
+    let ok = !value.is_nan() && value > 0.0;
+    check(name, value, ok, || "must be > 0 or infinity".into())
 }
 
 /// The schedule of the fine stage. Its energy (a, b, the treatments, the landmark and

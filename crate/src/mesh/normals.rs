@@ -148,13 +148,13 @@ mod tests {
 
     #[test]
     fn flat_square_points_up_and_isolated_vertex_is_zero() {
-        let p = points(&[
+        let square = [
             [0.0, 0.0, 0.0],
             [1.0, 0.0, 0.0],
             [1.0, 1.0, 0.0],
             [0.0, 1.0, 0.0],
-            [5.0, 5.0, 5.0],
-        ]);
+        ];
+        let p = points(&[square.as_slice(), &[[5.0, 5.0, 5.0]]].concat());
         let t = [[0, 1, 2], [0, 2, 3], [0, 0, 1]];
         let n = vertex_normals(&p, &t);
         for (v, normal) in n.iter().enumerate().take(4) {

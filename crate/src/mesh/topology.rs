@@ -254,17 +254,25 @@ mod tests {
         assert_eq!(components(&mesh), 1);
     }
 
+    /// A mesh from corner coordinates and triangles.
+    fn mesh(xyz: &[[f64; 3]], triangles: &[[u32; 3]]) -> Mesh {
+        Mesh::new(
+            xyz.iter().map(|&p| Point3::from(p)).collect(),
+            triangles.to_vec(),
+        )
+    }
+
     #[test]
     fn an_edge_shared_by_three_triangles_is_not_a_boundary_edge() {
-        let mesh = Mesh::new(
-            vec![
-                Point3::origin(),
-                Point3::new(1.0, 0.0, 0.0),
-                Point3::new(0.0, 1.0, 0.0),
-                Point3::new(0.0, -1.0, 0.0),
-                Point3::new(0.0, 0.0, 1.0),
-            ],
-            vec![[0, 1, 2], [1, 0, 3], [0, 1, 4]],
+        let corners = [
+            [0.0, 0.0, 0.0],
+            [1.0, 0.0, 0.0],
+            [0.0, 1.0, 0.0],
+            [0.0, -1.0, 0.0],
+        ];
+        let mesh = mesh(
+            &[corners.as_slice(), &[[0.0, 0.0, 1.0]]].concat(),
+            &[[0, 1, 2], [1, 0, 3], [0, 1, 4]],
         );
         let edges = boundary_edges(mesh.positions.len(), &mesh.triangles);
         assert!(!edges
@@ -289,13 +297,9 @@ mod tests {
 
     #[test]
     fn single_triangle_is_one_loop_of_three() {
-        let mesh = Mesh::new(
-            vec![
-                Point3::origin(),
-                Point3::new(1.0, 0.0, 0.0),
-                Point3::new(0.0, 1.0, 0.0),
-            ],
-            vec![[0, 1, 2]],
+        let mesh = mesh(
+            &[[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]],
+            &[[0, 1, 2]],
         );
         assert_eq!(boundary_loops(&mesh), vec![vec![0, 1, 2]]);
     }
