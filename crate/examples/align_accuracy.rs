@@ -193,7 +193,8 @@ mod native {
         let truth: Vec<Point3<f64>> = truth.positions.iter().map(|p| p * to_m).collect();
         alignment.compare_with_truth(base, &truth);
         if let Some(dir) = &options.export {
-            let anchors = landmark_anchors(base, &alignment.warped, &alignment.report.warp.used);
+            let anchors =
+                landmark_anchors(base, &alignment.warped, &alignment.report.warp.pairing.used);
             export_start(dir, id, &alignment.warped, base, &anchors)?;
         }
         // The ground truth's own distance to the scan: the noise floor of the RMS column.

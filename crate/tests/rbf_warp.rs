@@ -91,8 +91,8 @@ fn the_warp_lands_every_landmark_and_follows_the_subject() {
     )
     .unwrap();
     assert_eq!(w.positions.len(), c.template.positions.len());
-    assert_eq!(w.used.len(), 73 + VIRTUAL_LANDMARK_COUNT);
-    assert!(w.skipped.is_empty() && w.virtual_off_surface.is_empty());
+    assert_eq!(w.pairing.used.len(), 73 + VIRTUAL_LANDMARK_COUNT);
+    assert!(w.pairing.skipped.is_empty() && w.pairing.virtual_off_surface.is_empty());
     let body_size_mm = 1.06 * 1800.0;
     for r in &w.residuals {
         assert!(r.after < 1e-8 * body_size_mm, "{}: {}", r.name, r.after);
@@ -133,8 +133,8 @@ fn missing_scan_landmarks_are_skipped_and_reported() {
         &RbfParams::default(),
     )
     .unwrap();
-    assert_eq!(w.skipped, gone);
-    assert_eq!(w.used.len(), 73 + VIRTUAL_LANDMARK_COUNT - 3);
+    assert_eq!(w.pairing.skipped, gone);
+    assert_eq!(w.pairing.used.len(), 73 + VIRTUAL_LANDMARK_COUNT - 3);
     assert!(w.positions.iter().all(|p| p.iter().all(|v| v.is_finite())));
 }
 
@@ -183,5 +183,5 @@ fn virtual_landmarks_lie_on_the_surface_or_say_they_do_not() {
         &RbfParams::default(),
     )
     .unwrap();
-    assert_eq!(w.virtual_off_surface, ["virtual: top of head"]);
+    assert_eq!(w.pairing.virtual_off_surface, ["virtual: top of head"]);
 }

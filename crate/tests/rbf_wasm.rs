@@ -87,7 +87,7 @@ fn rbf_warp_follows_the_subject_in_wasm() {
         &RbfParams::default(),
     )
     .unwrap();
-    assert_eq!(w.used.len(), 85);
+    assert_eq!(w.pairing.used.len(), 85);
     assert!(w.residuals.iter().all(|r| r.after < 1e-8 * 1908.0));
     let mean = w
         .positions

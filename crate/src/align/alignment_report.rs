@@ -11,7 +11,7 @@ use super::correspondence::CorrespondenceReport;
 use super::params::AlignParams;
 use super::report::{AlignReport, DistanceStats};
 use crate::mesh::units::Units;
-use crate::rbf::{RbfParams, RbfWarp};
+use crate::rbf::{LandmarkPairing, RbfParams, RbfWarp};
 
 /// The whole run.
 #[derive(Debug, Clone, PartialEq, Serialize)]
@@ -71,12 +71,10 @@ pub struct WarpReport {
     pub lambda: f64,
     pub affine: bool,
     pub virtual_landmarks: bool,
-    /// Landmark names (as in `RbfWarp`): the pairs the fit used in template order, those present
-    /// on one side only, and the virtual landmarks whose snap rule found no scan surface point.
-    pub used: Vec<String>,
-    pub skipped: Vec<String>,
-    pub virtual_off_surface: Vec<String>,
-    /// One per used landmark, in `used` order.
+    /// The landmarks used, skipped and off the scan surface (written as three fields).
+    #[serde(flatten)]
+    pub pairing: LandmarkPairing,
+    /// One per used landmark, in `pairing.used` order.
     pub residuals: Vec<ResidualMm>,
     pub max_residual_before_mm: f64,
     pub max_residual_after_mm: f64,
@@ -105,9 +103,7 @@ impl WarpReport {
             lambda: params.lambda,
             affine: params.affine,
             virtual_landmarks: params.virtual_landmarks,
-            used: warp.used.clone(),
-            skipped: warp.skipped.clone(),
-            virtual_off_surface: warp.virtual_off_surface.clone(),
+            pairing: warp.pairing.clone(),
             max_residual_before_mm: max(|r| r.before_mm),
             max_residual_after_mm: max(|r| r.after_mm),
             residuals,

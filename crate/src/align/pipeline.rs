@@ -131,7 +131,7 @@ pub fn align_scan(
         &params.rbf,
     )?;
     let rough_ms = now_ms() - started;
-    let anchors = landmark_anchors(&warped_template, &warp.positions, &warp.used);
+    let anchors = landmark_anchors(&warped_template, &warp.positions, &warp.pairing.used);
     let mut report = AlignmentReport {
         template_resolution: template.resolution().name(),
         coarse_to_fine: coarse_to_fine.is_some(),

@@ -33,4 +33,4 @@ pub use crate::landmarks::virtual_landmarks;
 pub use crate::landmarks::virtual_landmarks::{
     virtual_landmarks_detailed, VirtualLandmark, VIRTUAL_LANDMARK_COUNT,
 };
-pub use warp::{rbf_warp, rbf_warp_mesh, LandmarkResidual, RbfWarp};
+pub use warp::{rbf_warp, rbf_warp_mesh, LandmarkPairing, LandmarkResidual, RbfWarp};

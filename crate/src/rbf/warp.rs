@@ -31,18 +31,25 @@ pub struct LandmarkResidual {
     pub after: f64,
 }
 
-/// What `rbf_warp` produced.
-#[derive(Debug, Clone)]
-pub struct RbfWarp {
-    /// `#V` warped template vertices, scan frame and units, template vertex order.
-    pub positions: Vec<Point3<f64>>,
+/// Which landmarks a warp paired, by name.
+#[derive(Debug, Clone, Default, PartialEq, Serialize)]
+pub struct LandmarkPairing {
     /// Names of the landmark pairs the fit used, in template order.
     pub used: Vec<String>,
     /// Names present on one side only (missing on the scan, or unknown to the template).
     pub skipped: Vec<String>,
     /// Virtual landmarks whose snap rule found no surface point (constructed point kept).
     pub virtual_off_surface: Vec<String>,
-    /// One residual per used landmark, in `used` order.
+}
+
+/// What `rbf_warp` produced.
+#[derive(Debug, Clone)]
+pub struct RbfWarp {
+    /// `#V` warped template vertices, scan frame and units, template vertex order.
+    pub positions: Vec<Point3<f64>>,
+    /// The landmarks paired, skipped and off the surface.
+    pub pairing: LandmarkPairing,
+    /// One residual per used landmark, in `pairing.used` order.
     pub residuals: Vec<LandmarkResidual>,
     /// Template → scan similarity from Procrustes.
     pub similarity: Similarity,
@@ -99,9 +106,11 @@ pub fn rbf_warp(
         .collect();
     Ok(RbfWarp {
         positions,
-        used,
-        skipped,
-        virtual_off_surface: Vec::new(),
+        pairing: LandmarkPairing {
+            used,
+            skipped,
+            virtual_off_surface: Vec::new(),
+        },
         residuals,
         similarity,
         kernel: params.kernel,
@@ -140,6 +149,6 @@ pub fn rbf_warp_mesh(
         t.retain(|l| !l.name.starts_with(VIRTUAL_PREFIX));
     }
     let mut warp = rbf_warp(&template.positions, &t, &s, params)?;
-    warp.virtual_off_surface = off_surface;
+    warp.pairing.virtual_off_surface = off_surface;
     Ok(warp)
 }
