@@ -25,7 +25,7 @@
 mod native {
     use bodyspace::align::{
         align_scan, landmark_anchors, scan_to_template_distances, AlignInput, AlignParams,
-        DistanceStats, ScanIndex,
+        DistanceStats, SurfaceIndex,
     };
     use bodyspace::io::{read_landmarks, read_scan, write_ply};
     use bodyspace::mesh::Mesh;
@@ -202,7 +202,7 @@ mod native {
             scan.positions.iter().map(|p| p * to_m).collect(),
             scan.triangles.clone(),
         );
-        let index = ScanIndex::new(&scan_m).map_err(|e| e.to_string())?;
+        let index = SurfaceIndex::new(&scan_m).map_err(|e| e.to_string())?;
         let truth_stats = DistanceStats::of(
             scan_to_template_distances(&truth, &base.mesh().triangles, &index)
                 .map_err(|e| e.to_string())?,

@@ -7,7 +7,7 @@
 //! slightly misplaced version (as after the RBF warp).
 
 use bodyspace::align::{
-    fine_align, CorrespondenceMode, FineAlignInput, FineAlignParams, MatchQuery, ScanIndex,
+    fine_align, CorrespondenceMode, FineAlignInput, FineAlignParams, MatchQuery, SurfaceIndex,
 };
 use bodyspace::mesh::Mesh;
 use nalgebra::{Point3, Vector3};
@@ -88,7 +88,7 @@ fn main() {
     );
 
     let t = Instant::now();
-    let index = match ScanIndex::new(&scan) {
+    let index = match SurfaceIndex::new(&scan) {
         Ok(index) => index,
         Err(e) => {
             eprintln!("{e}");
@@ -215,7 +215,7 @@ scan→template RMS {:.3} mm mean {:+.3} mm sd {:.3} mm; template→scan RMS {:.
 }
 
 /// Time/accuracy trade-off of the schedule (VertexOneRing): iterations per round × limit.
-fn schedules(template: &Mesh, index: &ScanIndex) {
+fn schedules(template: &Mesh, index: &SurfaceIndex) {
     let weights = vec![1.0; template.positions.len()];
     for (per_round, limit) in [(10, 60), (10, 100), (20, 100), (20, 200), (40, 200)] {
         let params = FineAlignParams {

@@ -4,12 +4,12 @@
 
 mod align_support;
 
-use bodyspace::align::{fine_align, FineAlignInput, FineAlignParams, ScanIndex};
+use bodyspace::align::{fine_align, FineAlignInput, FineAlignParams, SurfaceIndex};
 
 #[test]
 fn fine_align_lands_on_the_known_sphere_natively() {
     let (scan, template) = align_support::agreement_case();
-    let index = ScanIndex::new(&scan).unwrap();
+    let index = SurfaceIndex::new(&scan).unwrap();
     let weights = vec![1.0; template.positions.len()];
     let result = fine_align(
         &FineAlignInput::of_mesh(&template, &index, &weights),

@@ -15,7 +15,7 @@ use bodyspace::align::lbfgs::{Lbfgs, Objective, Step};
 use bodyspace::align::scan_term::ScanSample;
 use bodyspace::align::{
     fine_align, CorrespondenceMode, FineAlignInput, FineAlignParams, MatchQuery, Progress,
-    ScanIndex,
+    SurfaceIndex,
 };
 use bodyspace::mesh::topology::unique_edges;
 use nalgebra::{Point3, Vector3};
@@ -144,7 +144,7 @@ fn lbfgs_iterations_on_the_energy_allocate_nothing() {
 #[test]
 fn iterations_within_a_round_of_fine_align_allocate_nothing() {
     let (scan, template) = agreement_case();
-    let index = ScanIndex::new(&scan).unwrap();
+    let index = SurfaceIndex::new(&scan).unwrap();
     let weights = vec![1.0; template.positions.len()];
     // Several iterations per round, so there are pairs of iterations without a search between.
     let params = FineAlignParams {
@@ -181,7 +181,7 @@ fn iterations_within_a_round_of_fine_align_allocate_nothing() {
 #[test]
 fn closest_point_queries_with_a_compatible_nearest_vertex_allocate_nothing() {
     let scan = map(&uv_sphere(40, 80), |p| Point3::from(p.coords * 0.2));
-    let index = ScanIndex::new(&scan).unwrap();
+    let index = SurfaceIndex::new(&scan).unwrap();
     let queries: Vec<(Point3<f64>, Vector3<f64>)> = uv_sphere(12, 24)
         .positions
         .iter()

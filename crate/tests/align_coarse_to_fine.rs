@@ -5,7 +5,7 @@ use std::ops::ControlFlow;
 
 use bodyspace::align::{
     coarse_to_fine_align, data_weights, AlignObserver, CoarseToFineInput, FineAlignInput,
-    FineAlignParams, FineStageParams, Progress, ScanIndex, Stage,
+    FineAlignParams, FineStageParams, Progress, Stage, SurfaceIndex,
 };
 use bodyspace::mesh::Mesh;
 use bodyspace::rbf::{rbf_warp_mesh, RbfParams};
@@ -25,7 +25,7 @@ fn subject(p: &Point3<f64>) -> Point3<f64> {
 struct Case {
     fine: Template,
     base: Template,
-    scan: ScanIndex,
+    scan: SurfaceIndex,
     /// The base template warped onto the scan by the RBF (paper §3.1): where the fit starts.
     starting: Vec<Point3<f64>>,
 }
@@ -52,7 +52,7 @@ fn case() -> Case {
     )
     .unwrap();
     Case {
-        scan: ScanIndex::new(&scan).unwrap(),
+        scan: SurfaceIndex::new(&scan).unwrap(),
         fine,
         base,
         starting: warp.positions,
@@ -67,7 +67,7 @@ fn mean_distance(a: &[Point3<f64>], b: &[Point3<f64>]) -> f64 {
 fn input<'a>(
     starting: &'a [Point3<f64>],
     base: &'a Template,
-    scan: &'a ScanIndex,
+    scan: &'a SurfaceIndex,
     refinement: &'a Subdivision,
     weights: &'a [f64],
 ) -> CoarseToFineInput<'a> {

@@ -3,7 +3,7 @@
 mod align_support;
 
 use align_support::{ellipsoid_point, map, uv_sphere, Rng};
-use bodyspace::align::{fine_align, FineAlignInput, FineAlignParams, Progress, ScanIndex};
+use bodyspace::align::{fine_align, FineAlignInput, FineAlignParams, Progress, SurfaceIndex};
 use bodyspace::mesh::Mesh;
 use nalgebra::{Point3, Vector3};
 use std::ops::ControlFlow;
@@ -36,7 +36,7 @@ fn subject() -> (Mesh, Mesh) {
 #[test]
 fn converges_onto_bumpy_noisy_ellipsoid() {
     let (scan, template) = subject();
-    let index = ScanIndex::new(&scan).unwrap();
+    let index = SurfaceIndex::new(&scan).unwrap();
     let weights = vec![1.0; template.positions.len()];
     let mut last_rms = f64::INFINITY;
     let result = fine_align(
@@ -79,7 +79,7 @@ fn converges_onto_bumpy_noisy_ellipsoid() {
 #[test]
 fn break_after_three_iterations_cancels_with_finite_state() {
     let (scan, template) = subject();
-    let index = ScanIndex::new(&scan).unwrap();
+    let index = SurfaceIndex::new(&scan).unwrap();
     let weights = vec![1.0; template.positions.len()];
     let mut seen = 0;
     let result = fine_align(
@@ -112,7 +112,7 @@ fn zero_weights_leave_vertices_to_smoothness() {
     // an affine map with E_s = 0 — and the cap without data must follow it through smoothness.
     let scan = map(&uv_sphere(50, 100), |p| Point3::from(p.coords * 0.165));
     let template = map(&uv_sphere(20, 40), |p| Point3::from(p.coords * 0.15));
-    let index = ScanIndex::new(&scan).unwrap();
+    let index = SurfaceIndex::new(&scan).unwrap();
     let weights: Vec<f64> = template
         .positions
         .iter()
@@ -159,7 +159,7 @@ fn zero_weights_leave_vertices_to_smoothness() {
 #[test]
 fn bad_inputs_are_errors_not_panics() {
     let (scan, template) = subject();
-    let index = ScanIndex::new(&scan).unwrap();
+    let index = SurfaceIndex::new(&scan).unwrap();
     let mut go = |_: &bodyspace::align::Progress| ControlFlow::Continue(());
     let params = FineAlignParams::default();
     let short = vec![1.0; 3];
@@ -190,5 +190,5 @@ fn bad_inputs_are_errors_not_panics() {
         &mut go,
     )
     .is_err());
-    assert!(ScanIndex::new(&Mesh::new(scan.positions.clone(), vec![])).is_err());
+    assert!(SurfaceIndex::new(&Mesh::new(scan.positions.clone(), vec![])).is_err());
 }

@@ -5,12 +5,12 @@
 mod align_support;
 
 use align_support::agreement_case;
-use bodyspace::align::{fine_align, FineAlignInput, FineAlignParams, ScanIndex};
+use bodyspace::align::{fine_align, FineAlignInput, FineAlignParams, SurfaceIndex};
 use nalgebra::Point3;
 
 fn fit_with_threads(threads: usize) -> Vec<Point3<f64>> {
     let (scan, template) = agreement_case();
-    let index = ScanIndex::new(&scan).unwrap();
+    let index = SurfaceIndex::new(&scan).unwrap();
     let weights = vec![1.0; template.positions.len()];
     let pool = rayon::ThreadPoolBuilder::new()
         .num_threads(threads)

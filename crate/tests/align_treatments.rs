@@ -3,12 +3,14 @@
 mod align_support;
 
 use align_support::{map, merge, tube, uv_sphere};
-use bodyspace::align::{fine_align, FineAlignInput, FineAlignParams, FineAlignResult, ScanIndex};
+use bodyspace::align::{
+    fine_align, FineAlignInput, FineAlignParams, FineAlignResult, SurfaceIndex,
+};
 use bodyspace::mesh::Mesh;
 use nalgebra::Point3;
 
 fn run(template: &Mesh, scan: &Mesh, params: &FineAlignParams) -> FineAlignResult {
-    let index = ScanIndex::new(scan).unwrap();
+    let index = SurfaceIndex::new(scan).unwrap();
     let weights = vec![1.0; template.positions.len()];
     fine_align(
         &FineAlignInput::of_mesh(template, &index, &weights),

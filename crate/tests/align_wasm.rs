@@ -4,7 +4,7 @@
 
 mod align_support;
 
-use bodyspace::align::{fine_align, FineAlignInput, FineAlignParams, ScanIndex};
+use bodyspace::align::{fine_align, FineAlignInput, FineAlignParams, SurfaceIndex};
 use wasm_bindgen_test::*;
 
 wasm_bindgen_test_configure!(run_in_browser);
@@ -12,7 +12,7 @@ wasm_bindgen_test_configure!(run_in_browser);
 #[wasm_bindgen_test]
 fn fine_align_lands_on_the_known_sphere_in_wasm() {
     let (scan, template) = align_support::agreement_case();
-    let index = ScanIndex::new(&scan).unwrap();
+    let index = SurfaceIndex::new(&scan).unwrap();
     let weights = vec![1.0; template.positions.len()];
     let result = fine_align(
         &FineAlignInput::of_mesh(&template, &index, &weights),

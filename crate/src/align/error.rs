@@ -2,7 +2,7 @@
 
 use thiserror::Error;
 
-/// Why [`crate::align::fine_align`] or [`crate::align::ScanIndex::new`] refused to run.
+/// Why [`crate::align::fine_align`] or [`crate::align::SurfaceIndex::new`] refused to run.
 #[derive(Debug, Error, Clone, PartialEq)]
 pub enum AlignError {
     /// The scan has no triangles (a point cloud): normals, holes and closest points on the

@@ -21,8 +21,8 @@ use super::params::FineAlignParams;
 use super::report::{
     scan_to_template_distances, template_to_scan_distances, AlignReport, CurvePoint, DistanceStats,
 };
-use super::scan_index::{validate_mesh, MatchQuery};
 use super::scan_term::ScanTerm;
+use super::surface_index::{validate_mesh, MatchQuery};
 use crate::mesh::normals::vertex_normals_into;
 use crate::mesh::topology::unique_edges;
 use crate::utils::now_ms;

@@ -3,7 +3,7 @@
 
 use nalgebra::Point3;
 
-use super::scan_index::ScanIndex;
+use super::surface_index::SurfaceIndex;
 use crate::mesh::Mesh;
 
 /// The template to fit and what it is fitted to.
@@ -13,8 +13,8 @@ pub struct FineAlignInput<'a> {
     pub positions: &'a [Point3<f64>],
     /// `#F` template triangles.
     pub triangles: &'a [[u32; 3]],
-    /// The scan's [`ScanIndex`], built once per scan.
-    pub scan: &'a ScanIndex,
+    /// The scan's [`SurfaceIndex`], built once per scan.
+    pub scan: &'a SurfaceIndex,
     /// `#V` data weights w_i ≥ 0 (1 normally, 0.1 hands and ears, 0 unseen regions).
     pub weights: &'a [f64],
     /// Landmark anchors `(vertex, target)` (metres, scan frame; usually where the RBF warp put
@@ -27,7 +27,7 @@ pub struct FineAlignInput<'a> {
 
 impl<'a> FineAlignInput<'a> {
     /// The input for a template `mesh` without anchors.
-    pub fn of_mesh(mesh: &'a Mesh, scan: &'a ScanIndex, weights: &'a [f64]) -> Self {
+    pub fn of_mesh(mesh: &'a Mesh, scan: &'a SurfaceIndex, weights: &'a [f64]) -> Self {
         Self {
             positions: &mesh.positions,
             triangles: &mesh.triangles,

@@ -9,7 +9,7 @@
 //! * [`energy`] — E_d, E_s (paper eq. 6–8) and their analytic gradient.
 //! * [`scan_term`] — the scan-to-template term E_r (not in the paper; switchable).
 //! * [`lbfgs`] — allocation-free L-BFGS with exact line search on the quadratic inner problem.
-//! * [`ScanIndex`] (`scan_index.rs`) — closest points on a triangle mesh, built once per mesh.
+//! * [`SurfaceIndex`] (`surface_index.rs`) — closest points on a triangle mesh, built once per mesh.
 //! * [`surface`] — closest point on a triangle, one-rings.
 //! * [`weights`] — the per-vertex data weights from the template's region flags.
 //! * [`anchors`] — landmark anchors (optional, weight 0 by default).
@@ -33,9 +33,9 @@ pub mod observer;
 pub mod params;
 pub mod pipeline;
 pub mod report;
-pub mod scan_index;
 pub mod scan_term;
 pub mod surface;
+pub mod surface_index;
 pub mod weights;
 
 pub use alignment_report::{AlignmentReport, FineReport, WarpReport};
@@ -51,5 +51,5 @@ pub use pipeline::{align_scan, AlignInput, Alignment, PipelineError};
 pub use report::{
     scan_to_template_distances, template_to_scan_distances, AlignReport, CurvePoint, DistanceStats,
 };
-pub use scan_index::{FaceMatch, Match, MatchQuery, ScanIndex};
+pub use surface_index::{FaceMatch, Match, MatchQuery, SurfaceIndex};
 pub use weights::{data_weights, HAND_EAR_WEIGHT};

@@ -22,7 +22,7 @@ use super::fine_align::fine_align;
 use super::fine_input::FineAlignInput;
 use super::observer::AlignObserver;
 use super::params::AlignParams;
-use super::scan_index::ScanIndex;
+use super::surface_index::SurfaceIndex;
 use super::weights::data_weights;
 use crate::landmarks::LandmarkSet;
 use crate::mesh::bounding_extent;
@@ -159,7 +159,7 @@ pub fn align_scan(
     }
 
     let index_start = now_ms();
-    let index = ScanIndex::new(&scan).map_err(PipelineError::Scan)?;
+    let index = SurfaceIndex::new(&scan).map_err(PipelineError::Scan)?;
     report.index_ms = now_ms() - index_start;
     let weights = data_weights(template);
     let base_input = FineAlignInput {

@@ -3,7 +3,7 @@
 
 use super::error::AlignError;
 use super::params::CorrespondenceMode;
-use super::scan_index::{MatchQuery, ScanIndex};
+use super::surface_index::{MatchQuery, SurfaceIndex};
 use crate::mesh::normals::vertex_normals;
 use nalgebra::Point3;
 use serde::Serialize;
@@ -102,7 +102,7 @@ const EXACT: MatchQuery = MatchQuery {
 pub fn template_to_scan_distances(
     fitted: &[Point3<f64>],
     triangles: &[[u32; 3]],
-    scan: &ScanIndex,
+    scan: &SurfaceIndex,
 ) -> Vec<f64> {
     let normals = vertex_normals(fitted, triangles);
     fitted
@@ -123,9 +123,9 @@ pub fn template_to_scan_distances(
 pub fn scan_to_template_distances(
     fitted: &[Point3<f64>],
     triangles: &[[u32; 3]],
-    scan: &ScanIndex,
+    scan: &SurfaceIndex,
 ) -> Result<Vec<f64>, AlignError> {
-    let template = ScanIndex::from_parts("fitted template", fitted, triangles)?;
+    let template = SurfaceIndex::from_parts("fitted template", fitted, triangles)?;
     Ok(scan
         .surface_vertices()
         .map(|s| match template.closest(s, None, &EXACT) {

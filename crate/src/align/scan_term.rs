@@ -20,7 +20,7 @@
 use super::error::AlignError;
 use super::fine_input::FineAlignInput;
 use super::params::FineAlignParams;
-use super::scan_index::{MatchQuery, ScanIndex};
+use super::surface_index::{MatchQuery, SurfaceIndex};
 use nalgebra::{Point3, Vector3};
 
 /// One scan point's pull on the template surface for one round.
@@ -41,7 +41,7 @@ pub struct ScanSample {
 #[derive(Default)]
 pub struct ScanTerm {
     sample_vertices: Vec<u32>,
-    template: Option<ScanIndex>,
+    template: Option<SurfaceIndex>,
     samples: Vec<ScanSample>,
     /// γ before the corner weight: a·κ·ρ·Σw_i / #samples, so the samples together weigh ρ times
     /// the template vertices' data terms.
@@ -54,7 +54,7 @@ impl ScanTerm {
     /// The term for one alignment onto `scan`; `data_scale` = a·κ, `weights` the template's data
     /// weights. Switched off (no samples ever) when `params.scan_term_weight` is 0.
     pub fn new(
-        scan: &ScanIndex,
+        scan: &SurfaceIndex,
         params: &FineAlignParams,
         data_scale: f64,
         weights: &[f64],
@@ -103,7 +103,7 @@ impl ScanTerm {
             }
             None => self
                 .template
-                .insert(ScanIndex::from_parts("template", positions, triangles)?),
+                .insert(SurfaceIndex::from_parts("template", positions, triangles)?),
         };
         let settings = ScanTermSettings {
             query,
@@ -125,7 +125,7 @@ impl ScanTerm {
 
 /// Which scan vertices are sampled: every `stride`-th vertex used by a triangle, so at most
 /// `max_samples` (deterministic, spread over the scan in its vertex order).
-pub fn sample_scan_vertices(scan: &ScanIndex, max_samples: usize) -> Vec<u32> {
+pub fn sample_scan_vertices(scan: &SurfaceIndex, max_samples: usize) -> Vec<u32> {
     let all = scan.surface_vertex_indices();
     if max_samples == 0 || all.is_empty() {
         return Vec::new();
@@ -155,9 +155,9 @@ pub struct ScanTermSettings<'a> {
 /// fills `out` in the order of `sample_vertices` (natively the search runs on all cores; the
 /// result does not depend on their number); returns the number kept.
 pub fn find_scan_samples(
-    scan: &ScanIndex,
+    scan: &SurfaceIndex,
     sample_vertices: &[u32],
-    template: &ScanIndex,
+    template: &SurfaceIndex,
     settings: &ScanTermSettings<'_>,
     out: &mut Vec<ScanSample>,
 ) -> usize {
@@ -169,9 +169,9 @@ pub fn find_scan_samples(
 
 /// The sample of scan vertex `s`, or `None` when the treatments drop it this round.
 fn sample_of(
-    scan: &ScanIndex,
+    scan: &SurfaceIndex,
     s: usize,
-    template: &ScanIndex,
+    template: &SurfaceIndex,
     settings: &ScanTermSettings<'_>,
 ) -> Option<ScanSample> {
     let p = scan.positions()[s];
@@ -214,9 +214,9 @@ mod tests {
 
     #[test]
     fn samples_interpolate_the_closest_template_point() {
-        let scan = ScanIndex::new(&square(0.1)).unwrap();
+        let scan = SurfaceIndex::new(&square(0.1)).unwrap();
         let template_mesh = square(0.0);
-        let template = ScanIndex::new(&template_mesh).unwrap();
+        let template = SurfaceIndex::new(&template_mesh).unwrap();
         let weights = vec![1.0; 5];
         let settings = ScanTermSettings {
             query: MatchQuery {

@@ -1,4 +1,6 @@
-//! The spatial index over a scan, built once per scan and queried every correspondence round.
+//! A closest-point index over a triangle surface (the scan, or the moving template for the
+//! scan-to-template term): a k-d tree of its vertices with their normals and rim flags, one-rings,
+//! and on demand a triangle BVH. Built once per surface and queried every correspondence round.
 
 use super::error::AlignError;
 use super::params::CorrespondenceMode;
@@ -54,7 +56,7 @@ pub struct MatchQuery {
 /// A scan prepared for closest-point queries: a k-d tree over its vertices (`kiddo`), vertex and
 /// face normals, one-rings, boundary flags, and — built on first use — a BVH over its triangles
 /// (`parry3d-f64`). Build it once per scan; [`crate::align::fine_align`] only reads it.
-pub struct ScanIndex {
+pub struct SurfaceIndex {
     positions: Vec<Point3<f64>>,
     triangles: Vec<[u32; 3]>,
     vertex_normals: Vec<Vector3<f64>>,
@@ -69,9 +71,9 @@ pub struct ScanIndex {
     bvh: OnceLock<Option<TriMesh>>,
 }
 
-impl std::fmt::Debug for ScanIndex {
+impl std::fmt::Debug for SurfaceIndex {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.debug_struct("ScanIndex")
+        f.debug_struct("SurfaceIndex")
             .field("vertices", &self.positions.len())
             .field("triangles", &self.triangles.len())
             .finish()
@@ -103,7 +105,7 @@ pub(crate) fn validate_mesh(
     Ok(())
 }
 
-impl ScanIndex {
+impl SurfaceIndex {
     /// Indexes `scan` (metres). Fails on a point cloud, bad indices or non-finite coordinates.
     pub fn new(scan: &Mesh) -> Result<Self, AlignError> {
         Self::from_parts("scan", &scan.positions, &scan.triangles)
