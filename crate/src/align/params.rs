@@ -5,7 +5,6 @@
 
 use super::error::AlignError;
 use crate::rbf::RbfParams;
-use crate::template::Resolution;
 use serde::{Deserialize, Serialize};
 
 /// How the closest point on the scan is found for a template vertex.
@@ -275,16 +274,5 @@ impl AlignParams {
     pub fn validate(&self) -> Result<(), AlignError> {
         self.fine.validate()?;
         self.fine_stage.around(&self.fine).validate()
-    }
-
-    /// The most iterations a run with these parameters can report at `resolution`.
-    pub fn max_iterations(&self, resolution: Resolution) -> usize {
-        match resolution {
-            Resolution::Base => self.fine.max_iterations,
-            _ => self
-                .fine
-                .max_iterations
-                .saturating_add(self.fine_stage.max_iterations),
-        }
     }
 }
