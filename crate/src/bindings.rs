@@ -3,6 +3,12 @@
 //!
 //! Every array handed to JavaScript is a copy (`Float32Array::from(&[f32])`), never a view into
 //! WASM memory, so a later allocation cannot invalidate it.
+//!
+//! * this file: `coreVersion`, `caesarLandmarkNames`, `parseScan` ([`ParsedScan`]: counts,
+//!   positions, triangles, normals, summary), `parseLandmarks`;
+//! * `template.rs`: `loadTemplate` ([`TemplateHandle`]);
+//! * `align.rs`: `alignDefaults`, [`ScanWithLandmarks`], `rbfWarp`, `alignScan`, `exportMesh`;
+//! * `model.rs`: `loadShapeModel` ([`ShapeSpace`]); `model_build.rs`: `buildShapeModel`.
 
 mod align;
 mod template;

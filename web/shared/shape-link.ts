@@ -1,5 +1,5 @@
 // The shareable link of a body in a shape space: model location, every coefficient, the segment
-// view and the camera, in the URL hash. Format documented in docs/links.md. No DOM.
+// view, the camera and the resolution, in the URL hash. Format documented in docs/links.md. No DOM.
 import { SEGMENTS, type SegmentName, type ShapeCoefficients } from './shape-results';
 
 /** Slider values are held on this grid, so a link restores exactly the same body. */

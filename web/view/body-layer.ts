@@ -1,5 +1,6 @@
-// One body in the scene: a smooth-shaded triangle mesh and its landmark markers. Scans and the
-// template are both shown through this.
+// One body in the scene: a smooth-shaded triangle mesh (with the vertex normals the core sends;
+// three.js computes them for meshes sent without, such as an alignment's per-round positions) and
+// its landmark markers. Scans, the template, fits and shape-space bodies are all shown this way.
 import * as THREE from 'three';
 import { LandmarkMarkers, type LandmarkPoints } from './landmark-markers';
 

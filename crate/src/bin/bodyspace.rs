@@ -28,8 +28,9 @@ mod native {
 
     #[derive(Subcommand)]
     enum Command {
-        /// Align the template onto a scan: `--rough-only` runs the RBF warp (paper §3.1) and
-        /// writes the warped template (template vertex order, scan frame) plus a JSON report.
+        /// Align the template onto a scan: the RBF warp (paper §3.1), then fine alignment (§3.2),
+        /// coarse to fine at `--resolution fine`; writes the fit (template vertex order, scan frame
+        /// and units) and prints the JSON report. `--rough-only` stops after the warp.
         Align(bodyspace::cli::align::AlignArgs),
         /// Print vertex/triangle counts, bounding box, units, holes, components (and landmarks) as JSON.
         Info(bodyspace::cli::info::InfoArgs),

@@ -1,8 +1,9 @@
-//! `alignDefaults`, `rbfWarp` and `alignScan`: the core's alignment pipeline
-//! ([`crate::align::align_scan`]) on a scan sent from the page. Everything crosses in metres; the
-//! scan and the landmarks are checked here, then trusted by the core. Parameters cross as one JSON
-//! object of the core's [`AlignParams`] (absent fields keep the core's defaults), progress as one
-//! object per iteration (the core's [`Progress`]), reports as the core's
+//! `alignDefaults`, `ScanWithLandmarks`, `rbfWarp` and `alignScan`: the core's alignment pipeline
+//! ([`crate::align::align_scan`]) on a scan sent from the page; `exportMesh` writes a fitted
+//! template as PLY or OBJ. Everything crosses in metres; the scan and the landmarks are checked
+//! once, when the `ScanWithLandmarks` is made, then trusted by the core. Parameters cross as one
+//! JSON object of the core's [`AlignParams`] (absent fields keep the core's defaults), progress as
+//! one object per iteration (the core's [`Progress`]), reports as the core's
 //! [`crate::align::AlignmentReport`] in JSON.
 
 use std::ops::ControlFlow;

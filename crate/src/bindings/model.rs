@@ -1,5 +1,6 @@
-//! Shape models for JavaScript: load a model file (`model_build.rs` builds one from fits), morph the stitched
-//! body shown as sliders move, measure it, and export CSV / GLB / the model file.
+//! Shape models for JavaScript: load a model file (`model_build.rs` builds one from fits), morph
+//! the stitched body shown as sliders move, give its vertex normals, measure it, and export CSV /
+//! GLB / the model file.
 //!
 //! A [`ShapeSpace`] lives in the worker for as long as the model is shown. It holds the loaded
 //! model, optionally that model mapped to the template's `fine` resolution

@@ -2,10 +2,11 @@
 //! horizontal plane sections, arm length and inseam from landmark vertices.
 //!
 //! Girth, like a tape measure: the mesh (restricted to the caller's triangles, normally the
-//! torso segment so arms are not crossed) is cut by the plane "up = h"; the cut segments are
-//! chained into loops through the mesh edges they cross; the loop enclosing the largest area is
-//! the body's, and its girth is the perimeter of its convex hull in the plane (a tape spans
-//! concavities such as the cleft between the breasts). The raw loop length is reported too.
+//! torso and leg segments of [`girth_triangles`] so arms are not crossed) is cut by the plane
+//! "up = h"; the cut segments are chained into loops through the mesh edges they cross; the loop
+//! enclosing the largest area is the body's, and its girth is the perimeter of its convex hull in
+//! the plane (a tape spans concavities such as the cleft between the breasts). The raw loop
+//! length is reported too.
 
 use super::error::PcaError;
 use serde::{Deserialize, Serialize};

@@ -7,9 +7,12 @@
 //! * [`fit`] — fitting f(p_i) = q_i (eq. 1–2) with optional affine term, LU solve,
 //!   conditioning checks.
 //! * [`checks`] — input checks naming the offending landmarks; [`fast_math`] — exp/ln for the loop.
-//! * [`procrustes`] — similarity pre-alignment so the scan's frame and units do not matter.
-//! * [`virtual_landmarks`] — the 12 automatically made landmarks (n = 73 + 12 = 85).
-//! * [`warp`] — `rbf_warp`: Procrustes, fit, warp every template vertex.
+//! * [`procrustes`] — similarity pre-alignment so the scan's frame and units do not matter (the
+//!   checked entry to [`crate::mesh::similarity`]).
+//! * [`virtual_landmarks`] — the 12 automatically made landmarks (n = 73 + 12 = 85), re-exported
+//!   from [`crate::landmarks`].
+//! * [`warp`] — `rbf_warp`, `rbf_warp_mesh`: Procrustes, fit, warp every template vertex;
+//!   [`LandmarkPairing`] (used, skipped, off-surface names) and the residuals.
 //! * [`params`], [`error`] — the params struct with its documented defaults, the error enum.
 
 pub mod checks;

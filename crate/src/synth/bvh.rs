@@ -1,9 +1,9 @@
 //! A bounding-volume hierarchy over a triangle mesh for ray casting (the virtual scanner's rays).
 //!
-//! Hand-written rather than `parry3d-f64`: the scanner needs only the first hit of a ray with its
-//! triangle and barycentrics, and ~100 lines keep the dependency tree (and the shared machine's
-//! build time) small. Median split on the longest centroid axis, leaves of ≤ 4 triangles;
-//! Möller–Trumbore ray/triangle test.
+//! Its own tree rather than `parry3d-f64`'s (which the aligner's closest-point index uses): the
+//! scanner needs only the first hit of a ray with its triangle and barycentrics. Median split on
+//! the longest centroid axis, leaves of ≤ 4 triangles; the ray/triangle test is
+//! [`crate::mesh::ray`]'s Möller–Trumbore.
 
 use nalgebra::{Point3, Vector3};
 
