@@ -17,6 +17,10 @@ import { TopBar } from './ui/top-bar';
 import { Viewer } from './view/viewer';
 
 const client = new CoreClient();
+// Long jobs that Cancel may stop (the RBF warp and alignment) run in a worker of their own:
+// cancelling or losing it never touches the template, the scan read or the shape model, which live
+// in the main core worker.
+const alignClient = new CoreClient();
 const session = new Session();
 const viewer = new Viewer(byId('viewport'));
 const banner = new ErrorBanner();
@@ -27,8 +31,8 @@ const emptyHint = byId('empty-hint');
 const body = document.body;
 const showError = (message: string) => banner.show([message]);
 const templateView = new TemplateView(client, viewer, showError);
-const warpStep = new WarpStep(client, viewer, session, templateView, showError);
-const alignStep = new AlignStep(client, viewer, session, templateView, warpStep, showError);
+const warpStep = new WarpStep(alignClient, viewer, session, templateView, showError);
+const alignStep = new AlignStep(alignClient, viewer, session, templateView, warpStep, showError);
 // Another template resolution: the warp and the fit were made with the old one.
 templateView.onLoaded(() => {
   if (!warpStep.ready) return;
@@ -43,7 +47,7 @@ void shapeSpace.start(location.hash);
 
 acceptDrops((files) => void open(files));
 
-Promise.all([client.call({ type: 'version' }), client.call({ type: 'caesarNames' }), client.call({ type: 'alignDefaults' })])
+Promise.all([client.call({ type: 'version' }), client.call({ type: 'caesarNames' }), alignClient.call({ type: 'alignDefaults' })])
   .then(([version, names, defaults]) => {
     warpStep.panel.setDefaults(defaults);
     landmarksPanel.setCaesarNames(names);

@@ -1,13 +1,7 @@
-import { expect, test, type Page } from '@playwright/test';
+import { expect, test } from '@playwright/test';
 import { dropFiles, waitForLoads, type TestFile } from './fixtures';
 import { sampleFile, sampleSubject } from './samples';
-
-async function openWithSample(page: Page, files: TestFile[] = sampleSubject()): Promise<void> {
-  await page.goto('./');
-  await expect(page.locator('body')).toHaveAttribute('data-template-ready', 'true', { timeout: 60_000 });
-  await dropFiles(page, files);
-  await waitForLoads(page, 1);
-}
+import { alignAndCancelAtFirstProgress, openWithSample } from './steps';
 
 test('the RBF warp lands every used landmark and reports residuals before and after', async ({ page }) => {
   await openWithSample(page);
@@ -85,16 +79,7 @@ test('Cancel keeps the last good state, flagged with its iteration, and the scan
   test.setTimeout(300_000);
   await openWithSample(page);
   await expect(page.locator('body')).toHaveAttribute('data-rbf-state', 'done', { timeout: 60_000 });
-  // Cancel as soon as the first progress arrives (in the page, so a fast run cannot finish first).
-  await page.evaluate(() => {
-    new MutationObserver((_, observer) => {
-      if (Number(document.body.dataset.alignIteration ?? '0') < 1) return;
-      observer.disconnect();
-      document.querySelector<HTMLButtonElement>('[data-testid="align-cancel"]')!.click();
-    }).observe(document.body, { attributes: true, attributeFilter: ['data-align-iteration'] });
-  });
-  await page.getByTestId('align-run').click();
-  await expect(page.locator('body')).toHaveAttribute('data-align-state', 'cancelled', { timeout: 120_000 });
+  await alignAndCancelAtFirstProgress(page);
   const note = page.getByTestId('align-cancelled');
   await expect(note).toContainText(/Cancelled at iteration \d+/);
   expect(Number(await note.getAttribute('data-iteration'))).toBeGreaterThanOrEqual(1);

@@ -2,13 +2,10 @@
 // its readings, a copied link reproduces the same body elsewhere, and bad inputs say what is wrong.
 import { readFileSync } from 'node:fs';
 import { expect, test, type Page } from '@playwright/test';
+import { shapeReady, slide } from './steps';
 
 const READINGS = ['measure-stature', 'measure-chest', 'measure-waist', 'measure-hip', 'measure-arm', 'measure-inseam'];
 
-async function ready(page: Page): Promise<void> {
-  await expect(page.locator('body')).toHaveAttribute('data-shape-ready', 'true');
-  await expect(page.locator('body')).toHaveAttribute('data-shape-settled', 'true');
-}
 
 /** The `c=` (camera) part of a link. */
 function camera(url: string): string | undefined {
@@ -19,17 +16,10 @@ async function readings(page: Page): Promise<string[]> {
   return Promise.all(READINGS.map((id) => page.getByTestId(id).innerText()));
 }
 
-/** Moves a slider as a drag would end: sets its value and fires `input`, then waits for the body. */
-async function slide(page: Page, mode: number, sigma: number): Promise<void> {
-  const bodies = Number(await page.locator('body').getAttribute('data-shape-bodies'));
-  await page.getByTestId(`shape-slider-${mode}`).fill(String(sigma));
-  await expect(page.locator('body')).not.toHaveAttribute('data-shape-bodies', String(bodies));
-  await ready(page);
-}
 
 test('the demo model opens at its mean with readings', async ({ page }) => {
   await page.goto('/');
-  await ready(page);
+  await shapeReady(page);
   await expect(page.getByTestId('shape-model-name')).toHaveText('models/demo.bsm');
   await expect(page.getByTestId('shape-slider-0')).toBeVisible();
   const stature = Number(await page.locator('body').getAttribute('data-shape-stature'));
@@ -45,7 +35,7 @@ test('the demo model opens at its mean with readings', async ({ page }) => {
 
 test('a slider changes the stature; the copied link shows the same body in a new page', async ({ page, context }) => {
   await page.goto('/');
-  await ready(page);
+  await shapeReady(page);
   const before = await page.getByTestId('measure-stature').innerText();
   await slide(page, 0, 2.5);
   await expect(page.getByTestId('measure-stature')).not.toHaveText(before);
@@ -75,7 +65,7 @@ test('a slider changes the stature; the copied link shows the same body in a new
   const other = await context.newPage();
   await other.goto(link);
   await expect(other.locator('body')).toHaveAttribute('data-link-restored', 'true');
-  await ready(other);
+  await shapeReady(other);
   await expect(other.locator('body')).toHaveAttribute('data-shape-checksum', checksum!);
   expect(await readings(other)).toEqual(values);
   await expect(other.getByTestId('shape-segment')).toHaveValue('torso');
@@ -86,7 +76,7 @@ test('a slider changes the stature; the copied link shows the same body in a new
 
 test('a corrupted model file gives the documented message and the demo model keeps working', async ({ page }) => {
   await page.goto('/');
-  await ready(page);
+  await shapeReady(page);
   const bytes = readFileSync('public/models/demo.bsm');
   const corrupted = Buffer.from(bytes);
   corrupted[corrupted.length - 100] = corrupted[corrupted.length - 100]! ^ 0xff;
@@ -103,12 +93,12 @@ test('a corrupted model file gives the documented message and the demo model kee
 
 test('a link with bad parameters opens the default state and says what was ignored', async ({ page }) => {
   await page.goto('/');
-  await ready(page);
+  await shapeReady(page);
   const mean = await page.locator('body').getAttribute('data-shape-checksum');
 
   await page.goto('/#m=..%2F..%2Fetc%2Fpasswd&w=!!&v=elbow&zoom=3');
   await page.reload();
-  await ready(page);
+  await shapeReady(page);
   await expect(page.locator('body')).toHaveAttribute('data-link-ignored', 'true');
   const message = page.getByTestId('error-text');
   await expect(message).toContainText('The link was ignored');
@@ -121,7 +111,7 @@ test('a link with bad parameters opens the default state and says what was ignor
 
 test('fitted meshes dropped in template order build a model in the app; its bodies have no link', async ({ page }) => {
   await page.goto('/');
-  await ready(page);
+  await shapeReady(page);
   await page.getByTestId('fits-input').setInputFiles(['public/samples/truth_001.ply.gz', 'public/samples/truth_002.ply.gz']);
   await expect(page.getByTestId('shape-subjects')).toContainText('2 subjects in this session (0 aligned, 2 dropped');
   await page.getByTestId('build-variance').fill('100');
@@ -129,7 +119,7 @@ test('fitted meshes dropped in template order build a model in the app; its bodi
   await page.getByTestId('build-model').click();
   await expect(page.getByTestId('shape-model-name')).toHaveText('model of 2 subjects');
   await expect(page.locator('body')).not.toHaveAttribute('data-shape-bodies', String(bodies));
-  await ready(page);
+  await shapeReady(page);
   // Two subjects span one mode.
   await expect(page.locator('body')).toHaveAttribute('data-shape-modes', '1');
   await expect(page.getByTestId('shape-link')).toHaveValue('');
@@ -138,7 +128,7 @@ test('fitted meshes dropped in template order build a model in the app; its bodi
 
 test('exports: body PLY/OBJ/glTF, bodies along a mode, the model with morph targets, CSVs', async ({ page }) => {
   await page.goto('/');
-  await ready(page);
+  await shapeReady(page);
   const save = async (testid: string) => {
     const [download] = await Promise.all([page.waitForEvent('download'), page.getByTestId(testid).click()]);
     const path = await download.path();
@@ -178,12 +168,12 @@ test('exports: body PLY/OBJ/glTF, bodies along a mode, the model with morph targ
 
 test('at fine the 214,050-vertex body follows whole-body and segment sliders by rank-1 updates', async ({ page }) => {
   await page.goto('/');
-  await ready(page);
+  await shapeReady(page);
   const body = page.locator('body');
   await page.getByTestId('shape-resolution').selectOption('fine');
   await expect(body).toHaveAttribute('data-shape-resolution', 'fine');
   await expect(body).toHaveAttribute('data-shape-vertices', '214050');
-  await ready(page);
+  await shapeReady(page);
   // The mesh in the scene has the fine template's vertices.
   await expect(page.locator('#viewport')).toHaveAttribute('data-shape-vertices', '214050');
   await expect(page.getByTestId('shape-vertices')).toHaveText('214050');
@@ -214,7 +204,7 @@ test('at fine the 214,050-vertex body follows whole-body and segment sliders by 
   await page.getByTestId('copy-link').click();
   // Copying rebuilds a body made by rank-1 updates, so sender and receiver hold the same bits.
   await expect(body).toHaveAttribute('data-shape-rebuilt', 'true');
-  await ready(page);
+  await shapeReady(page);
   const link = await page.getByTestId('shape-link').inputValue();
   expect(link).toContain('r=fine');
   const checksum = await body.getAttribute('data-shape-checksum');
@@ -222,7 +212,7 @@ test('at fine the 214,050-vertex body follows whole-body and segment sliders by 
   await other.goto(link);
   await expect(other.locator('body')).toHaveAttribute('data-link-restored', 'true');
   await expect(other.locator('body')).toHaveAttribute('data-shape-vertices', '214050');
-  await ready(other);
+  await shapeReady(other);
   await expect(other.locator('body')).toHaveAttribute('data-shape-resolution', 'fine');
   await expect(other.locator('body')).toHaveAttribute('data-shape-checksum', checksum!);
   await expect(other.getByTestId('shape-resolution')).toHaveValue('fine');
@@ -232,6 +222,6 @@ test('at fine the 214,050-vertex body follows whole-body and segment sliders by 
   const readingsAtFine = await readings(page);
   await page.getByTestId('shape-resolution').selectOption('base');
   await expect(body).toHaveAttribute('data-shape-vertices', '13380');
-  await ready(page);
+  await shapeReady(page);
   expect(await readings(page)).toEqual(readingsAtFine);
 });

@@ -7,7 +7,7 @@ import type { CoreEvent } from '../shared/messages';
 import { AlignPanel } from '../ui/align-panel';
 import { heatColours } from '../view/heat-colours';
 import type { Viewer } from '../view/viewer';
-import { download } from './download';
+import { download } from '../ui/download';
 import { scanInput, scanTransfer } from './scan-input';
 import type { Session } from './session';
 import { subjects } from './subjects';
@@ -159,7 +159,7 @@ export class AlignStep {
         triangles: template.triangles.slice(),
         format,
       });
-      download(bytes, `${baseName(this.session.scan?.fileName ?? 'scan')}-fitted.${format}`);
+      download(`${baseName(this.session.scan?.fileName ?? 'scan')}-fitted.${format}`, bytes);
     } catch (error) {
       this.onError(`Export: ${error instanceof Error ? error.message : String(error)}`);
     }

@@ -1,7 +1,6 @@
 // Downloads of the shape-space panel: the body shown (PLY, OBJ, GLB), bodies along a mode, the
 // model as GLB with morph targets (whole body, or all seven models), the model file, CSVs.
 import type { CoreClient } from '../client/core-client';
-import { objText, plyBytes } from '../shared/mesh-export';
 import type { LoadedModel, ModelCsv, ModelGlbParts, ReconstructedBody, ShapeCoefficients } from '../shared/shape-results';
 import { download } from '../ui/download';
 import { bodiesGlb } from '../view/gltf-export';
@@ -13,12 +12,12 @@ export async function csv(client: CoreClient, kind: ModelCsv): Promise<void> {
   download(`${kind}.csv`, text, 'text/csv');
 }
 
-/** The body shown, at the resolution shown (`triangles` are its own); `label` names the model. */
-export async function body(shown: ReconstructedBody, triangles: Uint32Array, format: BodyFormat, label: string): Promise<void> {
-  const comment = `BodySpace body of ${label}`;
-  if (format === 'ply') download('body.ply', plyBytes(shown.positions, triangles, comment));
-  else if (format === 'obj') download('body.obj', objText(shown.positions, triangles, comment), 'text/plain');
-  else download('body.glb', await bodiesGlb([{ name: 'body', positions: shown.positions, normals: shown.normals, triangles }]), 'model/gltf-binary');
+/** The body shown, at the resolution shown (`triangles` are its own); PLY and OBJ by the core's writers. */
+export async function body(client: CoreClient, shown: ReconstructedBody, triangles: Uint32Array, format: BodyFormat): Promise<void> {
+  if (format === 'ply' || format === 'obj') {
+    const bytes = await client.call({ type: 'exportMesh', positions: shown.positions.slice(), triangles: triangles.slice(), format });
+    download(`body.${format}`, bytes, format === 'obj' ? 'text/plain' : 'application/octet-stream');
+  } else download('body.glb', await bodiesGlb([{ name: 'body', positions: shown.positions, normals: shown.normals, triangles }]), 'model/gltf-binary');
 }
 
 /** One GLB with a body per σ step along whole-body mode `mode` (other values as they are). */

@@ -1,7 +1,7 @@
 // The shape-space workflow: loads the demo model (or the one a link names), keeps the slider
 // values, morphs through the MorphQueue, and runs exports, CSV, links and in-app model builds.
 import type { CoreClient } from '../client/core-client';
-import { positionsChecksum } from '../shared/mesh-export';
+import { positionsChecksum } from '../shared/checksum';
 import { decodeShapeLink, encodeShapeLink, isShareableModel, quantiseSigma, type ShapeLink } from '../shared/shape-link';
 import {
   SEGMENTS,
@@ -347,8 +347,7 @@ export class ShapeSpace {
 
   private async exportBody(format: BodyFormat): Promise<void> {
     if (!this.body || !this.triangles) return;
-    const label = `${this.page.dataset.shapeModel ?? 'a shape model'} (${this.resolution})`;
-    await shapeExports.body(this.body, this.triangles, format, label);
+    await shapeExports.body(this.client, this.body, this.triangles, format);
   }
 
   private async exportMode(mode: number, steps: number[]): Promise<void> {
