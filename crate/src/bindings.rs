@@ -31,7 +31,9 @@ pub use model_build::build_shape_model;
 use crate::io::{read_landmarks, read_scan};
 use crate::landmarks::report::{report, LandmarkReport};
 use crate::landmarks::CAESAR_LANDMARKS;
+use crate::mesh::bounding_extent;
 use crate::mesh::summary::{summarise, MeshSummary};
+use crate::mesh::units::{detect_units, Units};
 use crate::mesh::Mesh;
 
 /// The core's version, so the front end can show what it runs.
@@ -121,11 +123,15 @@ struct ParsedLandmarks {
     /// Units the file format fixes (`"millimetres"` for CAESAR `.lnd`), else `null`: the
     /// landmarks then follow the scan's units.
     units: Option<&'static str>,
+    /// The units the landmarks' own extent suggests (the scan rule of `mesh::units`), for a file
+    /// opened without a scan.
+    detected_units: Units,
     report: LandmarkReport,
 }
 
 /// Reads a landmark file (CSV, CAESAR `.lnd` or JSON; names mapped to canonical CAESAR names) and
-/// returns it as JSON: `{names, positions, units, report: {found, missing, unknown}}`.
+/// returns it as JSON: `{names, positions, units, detected_units, report: {found, missing,
+/// unknown}}`.
 #[wasm_bindgen(js_name = parseLandmarks)]
 pub fn parse_landmarks(bytes: &[u8], file_name: &str) -> Result<String, JsError> {
     let file_name = checked_file_name(file_name)?;
@@ -138,6 +144,9 @@ pub fn parse_landmarks(bytes: &[u8], file_name: &str) -> Result<String, JsError>
             .flat_map(|l| [l.position.x, l.position.y, l.position.z])
             .collect(),
         units: fixed_units(file_name),
+        detected_units: detect_units(bounding_extent(
+            &set.landmarks.iter().map(|l| l.position).collect::<Vec<_>>(),
+        )),
         report: report(&set),
     };
     serde_json::to_string(&parsed).map_err(|e| JsError::new(&e.to_string()))

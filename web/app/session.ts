@@ -1,7 +1,6 @@
 // What is loaded: the scan, its chosen units, and the landmarks. Derives what the view and the
 // panels show; a failed load never touches it.
 import { METRES_PER_UNIT, type MeshSummary, type ParsedLandmarks, type ParsedScan, type Units } from '../shared/results';
-import { guessUnitsFromExtent } from '../shared/units';
 
 export class Session {
   scan: ParsedScan | null = null;
@@ -45,7 +44,7 @@ export class Session {
     if (!set) return null;
     if (set.units) return set.units;
     if (this.scan) return this.scanUnits;
-    return guessUnitsFromExtent(extent(set.positions));
+    return set.detected_units;
   }
 
   /** Landmark positions in metres. */
@@ -55,19 +54,4 @@ export class Session {
     const k = METRES_PER_UNIT[this.landmarkUnits ?? 'metres'];
     return Float32Array.from(set.positions, (v) => v * k);
   }
-}
-
-/** Largest side of the axis-aligned box around `#L·3` positions. */
-function extent(positions: number[]): number {
-  let largest = 0;
-  for (let axis = 0; axis < 3; axis++) {
-    let lo = Infinity;
-    let hi = -Infinity;
-    for (let i = axis; i < positions.length; i += 3) {
-      lo = Math.min(lo, positions[i]!);
-      hi = Math.max(hi, positions[i]!);
-    }
-    if (hi > lo) largest = Math.max(largest, hi - lo);
-  }
-  return largest;
 }

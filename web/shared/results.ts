@@ -52,5 +52,7 @@ export interface ParsedLandmarks {
   positions: number[];
   /** Units the file format fixes (CAESAR `.lnd`: millimetres), or null to follow the scan. */
   units: Units | null;
+  /** The units the landmarks' own extent suggests (the core's rule for scans). */
+  detected_units: Units;
   report: LandmarkReport;
 }
