@@ -6,6 +6,7 @@
 //! thin-plate spline use the branch-free exp/ln of [`super::fast_math`]; on x86-64 an AVX2+FMA
 //! build of the loop is chosen at run time; natively the points are split over the cores.
 
+use crate::utils::parallel::for_each_chunk_pair;
 use nalgebra::{DMatrix, Point3};
 
 use super::fast_math;
@@ -51,25 +52,12 @@ impl RbfNetwork {
 
     /// f applied to every point of `points`, written to `out` (same length; extra entries of
     /// either are ignored). No allocation per vertex; the kernel is matched once, outside the
-    /// loop. Natively the points are split over the available cores (scoped std threads).
+    /// loop. Natively the points are split over the available cores (`utils::parallel`).
     pub fn warp_into(&self, points: &[Point3<f64>], out: &mut [Point3<f64>]) {
         let len = points.len().min(out.len());
         let (points, out) = (&points[..len], &mut out[..len]);
-        #[cfg(not(target_arch = "wasm32"))]
-        {
-            // Below ~20K points a thread costs more than it saves.
-            let threads = std::thread::available_parallelism().map_or(1, |n| n.get());
-            if threads > 1 && len >= 20_000 {
-                let chunk = len.div_ceil(threads);
-                std::thread::scope(|scope| {
-                    for (p, o) in points.chunks(chunk).zip(out.chunks_mut(chunk)) {
-                        scope.spawn(move || self.warp_serial(p, o));
-                    }
-                });
-                return;
-            }
-        }
-        self.warp_serial(points, out);
+        // Below ~20K points a thread costs more than it saves.
+        for_each_chunk_pair(points, out, 20_000, |p, o| self.warp_serial(p, o));
     }
 
     /// [`Self::warp_into`] on the calling thread only (for benchmarks and single-threaded hosts).

@@ -50,6 +50,31 @@ where
     out.extend(items.iter().filter_map(f));
 }
 
+/// Calls `f(a_part, b_part)` on matching parts of two slices of equal length: natively one part
+/// per core when they hold at least `min_len` items (below that a thread costs more than it
+/// saves), otherwise — and always on wasm32 — once on the whole slices.
+pub fn for_each_chunk_pair<A, B, F>(a: &[A], b: &mut [B], min_len: usize, f: F)
+where
+    A: Sync,
+    B: Send,
+    F: Fn(&[A], &mut [B]) + Sync + Send,
+{
+    #[cfg(not(target_arch = "wasm32"))]
+    {
+        use rayon::prelude::*;
+        let threads = rayon::current_num_threads();
+        if threads > 1 && a.len() >= min_len {
+            let chunk = a.len().div_ceil(threads);
+            a.par_chunks(chunk)
+                .zip(b.par_chunks_mut(chunk))
+                .for_each(|(x, y)| f(x, y));
+            return;
+        }
+    }
+    let _ = min_len;
+    f(a, b);
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -64,6 +89,18 @@ mod tests {
         });
         assert!(a.iter().enumerate().all(|(i, x)| *x == i));
         assert!(b.iter().enumerate().all(|(i, y)| *y == i as f64 * 0.5));
+    }
+
+    #[test]
+    fn chunk_pairs_cover_both_slices_in_step() {
+        let a: Vec<u32> = (0..50_000).collect();
+        let mut b = vec![0u32; 50_000];
+        for_each_chunk_pair(&a, &mut b, 1_000, |x, y| {
+            for (p, q) in x.iter().zip(y.iter_mut()) {
+                *q = p * 2;
+            }
+        });
+        assert!(b.iter().enumerate().all(|(i, v)| *v == 2 * i as u32));
     }
 
     #[test]
