@@ -1,7 +1,9 @@
 // The shape-space workflow: loads the demo model (or the one a link names), keeps the slider
 // values, morphs through the MorphQueue, and runs exports, CSV, links and in-app model builds.
 import type { CoreClient } from '../client/core-client';
+import { fetchBounded, foreignHost, MODEL_DOWNLOAD_LIMIT } from '../shared/bounded-fetch';
 import { positionsChecksum } from '../shared/checksum';
+import { HostPrompt } from '../ui/host-prompt';
 import { decodeShapeLink, encodeShapeLink, isShareableModel, quantiseSigma, type ShapeLink } from '../shared/shape-link';
 import {
   SEGMENTS,
@@ -39,6 +41,7 @@ export class ShapeSpace {
   private readonly panel: ShapePanel;
   private readonly morph: MorphQueue;
   private readonly page = document.body;
+  private readonly hostPrompt = new HostPrompt();
   private bodies = 0;
   /** Set while a scan is being looked at: the shape body stays out of the view until asked for. */
   private suppressed = false;
@@ -84,6 +87,7 @@ export class ShapeSpace {
     if (link) this.resolution = link.resolution;
     const loaded = await this.fetchModel(link?.model ?? DEMO_MODEL);
     if (!loaded && link && link.model !== DEMO_MODEL) await this.fetchModel(DEMO_MODEL);
+    this.page.dataset.shapeStarted = 'true';
     if (link && loaded) this.restore(link);
     else this.redraw(true, true);
   }
@@ -108,11 +112,19 @@ export class ShapeSpace {
     await this.load(bytes, file.name, null);
   }
 
+  /**
+   * Loads the model at `location`. A model on another host is fetched only when the person agrees
+   * (the prompt names the host); every download has a size limit, and the bytes are checked by the
+   * core like a dropped file.
+   */
   private async fetchModel(location: string): Promise<boolean> {
+    const host = foreignHost(new URL(location, document.baseURI).href, window.location.origin);
+    if (host && !(await this.hostPrompt.ask(host, 'shape model'))) {
+      this.page.dataset.shapeForeignDeclined = host;
+      return false;
+    }
     try {
-      const response = await fetch(location);
-      if (!response.ok) throw new Error(`${location}: the server answered ${response.status} ${response.statusText}`);
-      return await this.load(await response.arrayBuffer(), location, location);
+      return await this.load(await fetchBounded(location, MODEL_DOWNLOAD_LIMIT), location, location);
     } catch (error) {
       this.banner.show([`The shape model could not be loaded: ${error instanceof Error ? error.message : String(error)}`]);
       return false;

@@ -16,6 +16,15 @@ export function h<K extends keyof HTMLElementTagNameMap>(
   return element;
 }
 
+/**
+ * `element` with its background set through the CSS object model: the page's
+ * Content-Security-Policy allows no inline `style` attributes, but script-set styles are fine.
+ */
+export function withBackground<E extends HTMLElement>(element: E, background: string): E {
+  element.style.background = background;
+  return element;
+}
+
 /** Finds a required element of the page. */
 export function byId<T extends HTMLElement = HTMLElement>(id: string): T {
   const element = document.getElementById(id);

@@ -1,7 +1,7 @@
 // The template: resolution, counts, and how it is shown (segment colours, visibility).
 import { SEGMENT_NAMES, type TemplateResolution } from '../shared/template-data';
 import { SEGMENT_COLOURS } from '../view/segment-colours';
-import { byId, h } from './dom';
+import { byId, h, withBackground } from './dom';
 import { formatCount } from './format';
 
 export interface TemplateFacts {
@@ -60,7 +60,7 @@ export class TemplatePanel {
       'ul',
       { class: 'swatches', 'data-testid': 'segment-legend' },
       ...SEGMENT_NAMES.map((name, i) =>
-        h('li', {}, h('span', { class: 'swatch', style: `background:#${SEGMENT_COLOURS[i]!.toString(16).padStart(6, '0')}` }), name),
+        h('li', {}, withBackground(h('span', { class: 'swatch' }), `#${SEGMENT_COLOURS[i]!.toString(16).padStart(6, '0')}`), name),
       ),
     );
     legend.hidden = !this.segmentColours;
