@@ -43,6 +43,11 @@ let lastReadMs = 0;
 let loads = 0;
 
 const shapeSpace = new ShapeSpace(client, viewer, banner);
+// `?debug` lets the crash-recovery test trap either worker's core as a bug would.
+if (new URLSearchParams(location.search).has('debug')) {
+  const trap = (which: 'core' | 'align') => (which === 'core' ? client : alignClient).call({ type: 'trap' }).catch(() => undefined);
+  (window as unknown as { bodyspaceDebug: unknown }).bodyspaceDebug = { trap };
+}
 void shapeSpace.start(location.hash);
 
 acceptDrops((files) => void open(files));

@@ -42,6 +42,14 @@ pub fn core_version() -> String {
     env!("CARGO_PKG_VERSION").to_string()
 }
 
+/// Traps the WebAssembly instance on purpose, exactly as a bug in the core would (a panic is an
+/// `unreachable` trap in the browser): the app's crash-recovery test uses it to check that a
+/// trapped worker is replaced and that the page keeps its state.
+#[wasm_bindgen(js_name = trapForTest)]
+pub fn trap_for_test() {
+    panic!("deliberate trap (the crash-recovery test)");
+}
+
 /// The 73 canonical CAESAR landmark names in `.lnd` file order.
 #[wasm_bindgen(js_name = caesarLandmarkNames)]
 pub fn caesar_landmark_names() -> Vec<String> {

@@ -42,6 +42,8 @@ export class ShapeSpace {
   private readonly morph: MorphQueue;
   private readonly page = document.body;
   private readonly hostPrompt = new HostPrompt();
+  /** A copy of the model file in view, so a replaced worker (its core trapped) can be given it again. */
+  private modelFile: { bytes: ArrayBuffer; fileName: string } | null = null;
   private bodies = 0;
   /** Set while a scan is being looked at: the shape body stays out of the view until asked for. */
   private suppressed = false;
@@ -69,6 +71,7 @@ export class ShapeSpace {
       onAddFits: (files) => void this.addFits(files),
       onOpenModel: (files) => void this.openModelFiles(files),
     });
+    client.onRestart(() => void this.recover());
     subjects.subscribe((all) => {
       const dropped = all.filter((s) => s.source === 'dropped').length;
       this.panel.showSubjects(all.length - dropped, dropped);
@@ -90,6 +93,28 @@ export class ShapeSpace {
     this.page.dataset.shapeStarted = 'true';
     if (link && loaded) this.restore(link);
     else this.redraw(true, true);
+  }
+
+  /**
+   * The worker was replaced after its core trapped: gives the new one the model in view again and
+   * rebuilds the body shown, with every slider value and the resolution kept, and says so.
+   */
+  private async recover(): Promise<void> {
+    const file = this.modelFile;
+    if (!file) return;
+    this.page.dataset.shapeRecovered = 'false';
+    try {
+      await this.client.call({ type: 'loadModel', bytes: file.bytes.slice(0), fileName: file.fileName });
+      const wanted = this.resolution;
+      if (wanted === 'fine' && this.model?.info.template.resolution === 'base') {
+        await this.client.call({ type: 'shapeResolution', resolution: 'fine' });
+      }
+      this.redraw(false, true);
+      this.banner.show([`The core stopped unexpectedly and was restarted; the shape model (${file.fileName}) was loaded again and the body shown was rebuilt with every slider value.`]);
+      this.page.dataset.shapeRecovered = 'true';
+    } catch (error) {
+      this.banner.show([`The core stopped unexpectedly and the shape model could not be loaded again: ${error instanceof Error ? error.message : String(error)}`]);
+    }
   }
 
   /** Takes the shape body out of the view (a scan was opened); any shape action brings it back. */
@@ -134,8 +159,10 @@ export class ShapeSpace {
   /** Loads a model; on failure the banner shows the core's message and the old model stays. */
   private async load(bytes: ArrayBuffer, fileName: string, source: string | null): Promise<boolean> {
     this.page.dataset.shapeBusy = 'true';
+    const copy = bytes.slice(0);
     try {
       const loaded = await this.client.call({ type: 'loadModel', bytes, fileName }, { transfer: [bytes] });
+      this.modelFile = { bytes: copy, fileName };
       const wanted = this.resolution;
       this.adopt(loaded, source, fileName);
       await this.keepResolution(wanted);
@@ -404,6 +431,7 @@ export class ShapeSpace {
         { transfer: [positions.buffer], onProgress: (f, label) => this.panel.showBuildStatus(`${label} (${Math.round(f * 100)} %)`) },
       );
       this.adopt(built, null, built.fileName);
+      this.modelFile = { bytes: (await this.client.call({ type: 'modelFile' })).slice().buffer, fileName: built.fileName };
       this.panel.showBuildStatus(`Built from ${all.length} subjects.`);
       await this.keepResolution(wanted);
       this.redraw(true, true);

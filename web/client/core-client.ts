@@ -45,6 +45,7 @@ export class CoreClient {
   private readonly pending = new Map<number, Pending>();
   private readonly queue: Queued[] = [];
   private running: number | null = null;
+  private readonly restartListeners: (() => void)[] = [];
 
   constructor(private readonly makeWorker: () => Worker = defaultWorker) {
     this.worker = this.start();
@@ -76,6 +77,14 @@ export class CoreClient {
     this.worker = this.start();
   }
 
+  /**
+   * Called after a worker whose core trapped was replaced by a fresh one (not after `cancel()`):
+   * whatever state the old worker held (a loaded model, a template) is gone and must be sent again.
+   */
+  onRestart(listener: () => void): void {
+    this.restartListeners.push(listener);
+  }
+
   /** Whether a call is running or waiting. */
   get busy(): boolean {
     return this.pending.size > 0;
@@ -85,6 +94,7 @@ export class CoreClient {
   private restart(): void {
     this.worker.terminate();
     this.worker = this.start();
+    for (const listener of this.restartListeners) listener();
   }
 
   private start(): Worker {

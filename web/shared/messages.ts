@@ -33,7 +33,9 @@ export type CoreRequestBody =
   | { type: 'shapeResolution'; resolution: TemplateResolution }
   | { type: 'modelCsv'; kind: ModelCsv }
   | { type: 'modelGlb'; modes: number; parts: ModelGlbParts }
-  | { type: 'modelFile' };
+  | { type: 'modelFile' }
+  /** Traps the core as a bug would (the crash-recovery test); never resolves with a result. */
+  | { type: 'trap' };
 
 /** A request to the worker; `id` pairs it with its replies. */
 export type CoreRequest = CoreRequestBody & { id: number };
@@ -57,6 +59,7 @@ export interface CoreResults {
   modelCsv: string;
   modelGlb: Uint8Array;
   modelFile: Uint8Array;
+  trap: never;
 }
 
 /** The result type of a request body. */

@@ -1,6 +1,6 @@
 // The only code that imports the WASM core. Runs every core call off the UI thread; arrays come
 // out of WASM memory as copies and go back to the UI thread transferred, never copied again.
-import init, { caesarLandmarkNames, coreVersion, parseLandmarks, parseScan } from '../pkg/bodyspace.js';
+import init, { caesarLandmarkNames, coreVersion, parseLandmarks, parseScan, trapForTest } from '../pkg/bodyspace.js';
 import type { CoreReply, CoreRequest } from '../shared/messages';
 import type { MeshSummary, ParsedLandmarks, ParsedScan } from '../shared/results';
 import { runAlign, runAlignDefaults, runExport, runRbfWarp } from './align-handlers';
@@ -131,6 +131,9 @@ self.onmessage = async (event: MessageEvent<CoreRequest>) => {
         post({ id: request.id, type: 'result', result: glb }, [glb.buffer]);
         break;
       }
+      case 'trap':
+        trapForTest();
+        break;
       case 'modelFile': {
         const file = models.modelFile();
         post({ id: request.id, type: 'result', result: file }, [file.buffer]);
