@@ -580,7 +580,8 @@ pub fn run(args: &BatchArgs) -> Result<(), String> {
             "manifest": manifest_path.display().to_string(),
         })
     );
-    if ok + flagged == 0 {
+    // An empty share (more tasks than subjects) has nothing to do, which is not a failure.
+    if !records.is_empty() && ok + flagged == 0 {
         return Err(format!(
             "no subject was fitted; {} lists each reason",
             manifest_path.display()
