@@ -161,6 +161,17 @@ fn batch_records_every_subject_resumes_shards_and_pools_fits() {
     assert_eq!(modified(&fit), before);
     assert_eq!(manifest(&out), rows);
 
+    // A run killed after writing scan_002's fit but before its report (and one that left a
+    // temporary file): the next run aligns scan_002 again; the temporary file is never read
+    // (nor by build-model below).
+    std::fs::remove_file(out.join("reports").join("scan_002.json")).unwrap();
+    let stray = out.join("fits").join(".scan_003.ply.999.tmp");
+    std::fs::write(&stray, b"ply\nhalf").unwrap();
+    let third = batch(&scans, &out, COARSE);
+    assert_eq!(third["skipped"], 3);
+    assert_eq!(third["aligned"], 3);
+    assert_eq!(manifest(&out), rows);
+
     // 3. Two shards cover every subject exactly once.
     let shards: Vec<PathBuf> = ["1/2", "2/2"]
         .iter()
