@@ -281,10 +281,8 @@ fn align_and_write(
         landmarks: &landmarks,
         units: None,
     };
-    let alignment = align_scan(&input, &ctx.params, &mut ()).map_err(|e| match e {
-        crate::align::PipelineError::Scan(e) => format!("{scan_name}: {e}"),
-        e => format!("{scan_name}: {e}"),
-    })?;
+    let alignment =
+        align_scan(&input, &ctx.params, &mut ()).map_err(|e| format!("{scan_name}: {e}"))?;
     let quality = assess(&alignment, ctx.base_triangles, &ctx.thresholds);
     record.rms_mm = quality.rms_mm;
     record.flags = quality.flags.iter().map(|f| f.name().to_string()).collect();
