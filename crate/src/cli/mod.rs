@@ -2,6 +2,7 @@
 
 pub mod align;
 pub mod batch;
+pub mod batch_subjects;
 pub mod build_model;
 pub mod export_gltf;
 pub mod info;
