@@ -118,6 +118,9 @@ export interface FineReport {
   scan_vertices: number;
   scan_to_template: DistanceStatsMm;
   template_to_scan: DistanceStatsMm;
+  /** Of the `template_to_scan.count` weighted template vertices, those with a usable scan match
+   * in the last correspondence round. */
+  matched_vertices: number;
   iterations: number;
   rounds: number;
   converged: boolean;

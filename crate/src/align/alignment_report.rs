@@ -159,6 +159,9 @@ pub struct FineReport {
     pub scan_to_template: DistanceStatsMm,
     /// Every template vertex with a data weight to the scan.
     pub template_to_scan: DistanceStatsMm,
+    /// Of the `template_to_scan.count` weighted template vertices, those with a usable scan
+    /// match in the last correspondence round (the rest had no data term at the end).
+    pub matched_vertices: usize,
     pub iterations: usize,
     pub rounds: usize,
     pub converged: bool,
@@ -192,6 +195,7 @@ impl FineReport {
             scan_vertices: r.scan_vertices,
             scan_to_template: (&r.scan_to_template).into(),
             template_to_scan: (&r.template_to_scan).into(),
+            matched_vertices: r.matched_vertices,
             iterations: r.iterations,
             rounds: r.rounds,
             converged: r.converged,

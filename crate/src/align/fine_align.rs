@@ -157,6 +157,7 @@ pub fn fine_align(
     let (mut iteration, mut rounds) = (0usize, 0usize);
     let (mut cancelled, mut converged) = (false, false);
     let mut last_stiffness = f64::NAN;
+    let mut matched_vertices = 0usize;
     let mut scan_term = ScanTerm::new(scan, params, data_scale, weights);
 
     'rounds: while iteration < params.max_iterations {
@@ -194,6 +195,7 @@ pub fn fine_align(
             *target = m.point - centroid;
             *coefficient = data_scale * weights[i];
         });
+        matched_vertices = coefficients.iter().filter(|c| **c > 0.0).count();
         let anchor_coefficient = data_scale * params.landmark_weight;
         if anchor_coefficient > 0.0 {
             for (i, target) in anchors {
@@ -283,6 +285,7 @@ pub fn fine_align(
             scan_vertices: scan.vertex_count(),
             scan_to_template,
             template_to_scan,
+            matched_vertices,
             iterations: iteration,
             rounds,
             elapsed_ms,

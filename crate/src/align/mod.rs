@@ -16,6 +16,7 @@
 //! * [`report`] — the paper's Table 1 statistics, per-vertex distances, the convergence curve.
 //! * [`alignment_report`] — the pipeline's serialisable report (lengths in mm).
 //! * [`correspondence`] — correspondence error against a ground truth.
+//! * [`quality`] — quality flags of a finished alignment (RMS, unmatched vertices, fold-overs).
 //! * [`FineAlignInput`] (`fine_input.rs`) — what fine alignment works on.
 //! * [`AlignParams`], [`FineAlignParams`], [`FineStageParams`] (`params.rs`) — every parameter
 //!   with its default; [`AlignError`] (`error.rs`).
@@ -32,6 +33,7 @@ pub mod lbfgs;
 pub mod observer;
 pub mod params;
 pub mod pipeline;
+pub mod quality;
 pub mod report;
 pub mod scan_term;
 pub mod surface;
@@ -48,6 +50,7 @@ pub use fine_input::FineAlignInput;
 pub use observer::{AlignObserver, Progress, Stage};
 pub use params::{AlignParams, CorrespondenceMode, FineAlignParams, FineStageParams};
 pub use pipeline::{align_scan, AlignInput, Alignment, PipelineError};
+pub use quality::{assess, folded_triangles, QualityFlag, QualityReport, QualityThresholds};
 pub use report::{
     scan_to_template_distances, template_to_scan_distances, AlignReport, CurvePoint, DistanceStats,
 };

@@ -74,6 +74,10 @@ pub struct AlignReport {
     /// Distance of every template vertex with a non-zero data weight to the scan surface, signed
     /// by the template vertex normal.
     pub template_to_scan: DistanceStats,
+    /// Template vertices with a data weight that had a usable scan match (compatible normal, not
+    /// on a hole rim, near enough) in the last correspondence round; the others had no data
+    /// term there (`template_to_scan.count` − this = vertices without a data match).
+    pub matched_vertices: usize,
     /// L-BFGS iterations done.
     pub iterations: usize,
     /// Correspondence rounds done.

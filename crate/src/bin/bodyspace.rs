@@ -32,6 +32,9 @@ mod native {
         /// coarse to fine at `--resolution fine`; writes the fit (template vertex order, scan frame
         /// and units) and prints the JSON report. `--rough-only` stops after the warp.
         Align(bodyspace::cli::align::AlignArgs),
+        /// Align every scan of a folder, several at once, resumably: fits, reports with quality
+        /// flags and a manifest (`batch --scans DIR --out OUT [--jobs N] [--shard K/N]`).
+        Batch(bodyspace::cli::batch::BatchArgs),
         /// Print vertex/triangle counts, bounding box, units, holes, components (and landmarks) as JSON.
         Info(bodyspace::cli::info::InfoArgs),
         /// The generic template: export it (`--resolution base|fine --export DIR`) or rebuild it
@@ -55,6 +58,7 @@ mod native {
         let cli = Cli::parse();
         let result = match cli.command {
             Command::Align(args) => bodyspace::cli::align::run(&args),
+            Command::Batch(args) => bodyspace::cli::batch::run(&args),
             Command::Info(args) => bodyspace::cli::info::run(&args),
             Command::Template(args) => bodyspace::cli::template::run(&args),
             Command::Synth(args) => bodyspace::cli::synth::run(&args),

@@ -1,6 +1,7 @@
-//! `bodyspace build-model --fits DIR --out MODEL [--variance 0.99 | --modes N] [--scale] [--f16]
-//! [--csv DIR] [--gltf FILE.glb]`.
+//! `bodyspace build-model --fits DIR[,DIR…] --out MODEL [--exclude-flagged] [--variance 0.99 |
+//! --modes N] [--scale] [--f16] [--csv DIR] [--gltf FILE.glb]`.
 
+use super::manifest::{read_manifest, Status};
 use super::model::{read_fit, template_for_vertex_count, template_identity};
 use crate::pca::export::{eigenvalues_csv, quality_csv, scores_csv};
 use crate::pca::file::{write_model, BasisPrecision};
@@ -8,14 +9,21 @@ use crate::pca::{
     build_body_model, BuildParams, GpaParams, PoseRemoval, QualityParams, TrainingSet,
 };
 use crate::template::Segment;
-use std::path::PathBuf;
+use std::collections::{BTreeMap, HashSet};
+use std::path::{Path, PathBuf};
 
 /// Arguments of `bodyspace build-model`.
 #[derive(clap::Args, Debug)]
 pub struct BuildModelArgs {
-    /// Directory of fitted meshes (PLY, OBJ, STL, optionally .gz) in template vertex order; all are used.
+    /// Directory of fitted meshes (PLY, OBJ, STL, optionally .gz) in template vertex order; all
+    /// are used. Repeat the flag or give a comma list to pool several folders (e.g. the shards
+    /// of a `bodyspace batch`); subjects are taken in file-name order whatever the folder.
+    #[arg(long, required = true, value_delimiter = ',')]
+    pub fits: Vec<PathBuf>,
+    /// Leave out subjects that `bodyspace batch` flagged or failed: each fits folder must sit in
+    /// a batch output beside its manifest.csv (`OUT/fits` → `OUT/manifest.csv`).
     #[arg(long)]
-    pub fits: PathBuf,
+    pub exclude_flagged: bool,
     /// The model file to write.
     #[arg(long)]
     pub out: PathBuf,
@@ -55,29 +63,47 @@ pub struct BuildModelArgs {
 
 /// Runs `bodyspace build-model`; the error is the one-line message for stderr.
 pub fn run(args: &BuildModelArgs) -> Result<(), String> {
-    let dir = &args.fits;
-    let mut files: Vec<PathBuf> = std::fs::read_dir(dir)
-        .map_err(|e| format!("{}: {e}", dir.display()))?
-        .filter_map(|e| e.ok().map(|e| e.path()))
-        .filter(|p| {
-            let ext = p
-                .extension()
-                .and_then(|e| e.to_str())
-                .unwrap_or("")
-                .to_ascii_lowercase();
-            let name = p.to_string_lossy().to_ascii_lowercase();
-            ["ply", "obj", "stl"].contains(&ext.as_str())
-                || [".ply.gz", ".obj.gz", ".stl.gz"]
-                    .iter()
-                    .any(|e| name.ends_with(e))
-        })
-        .collect();
-    files.sort();
+    let mut files: Vec<PathBuf> = Vec::new();
+    for dir in &args.fits {
+        let excluded = if args.exclude_flagged {
+            flagged_subjects(dir)?
+        } else {
+            HashSet::new()
+        };
+        files.extend(
+            fit_files(dir)?
+                .into_iter()
+                .filter(|f| !excluded.contains(&subject_of(f))),
+        );
+    }
+    // By file name, then folder: one folder's order as before, and pooled shards in the order
+    // of their union.
+    files.sort_by(|a, b| a.file_name().cmp(&b.file_name()).then(a.cmp(b)));
+    let mut seen: BTreeMap<String, &PathBuf> = BTreeMap::new();
+    for f in &files {
+        if let Some(other) = seen.insert(subject_of(f), f) {
+            return Err(format!(
+                "{} and {}: the same subject twice; pass each fits folder once",
+                other.display(),
+                f.display()
+            ));
+        }
+    }
+    let folders = args
+        .fits
+        .iter()
+        .map(|d| d.display().to_string())
+        .collect::<Vec<_>>()
+        .join(", ");
     if files.len() < 2 {
         return Err(format!(
-            "{}: {} PLY/OBJ fits found, a model needs at least 2",
-            dir.display(),
-            files.len()
+            "{folders}: {} PLY/OBJ fits found{}, a model needs at least 2",
+            files.len(),
+            if args.exclude_flagged {
+                " (without flagged ones)"
+            } else {
+                ""
+            }
         ));
     }
     let mut shapes = Vec::with_capacity(files.len());
@@ -205,4 +231,60 @@ pub fn run(args: &BuildModelArgs) -> Result<(), String> {
     });
     println!("{summary}");
     Ok(())
+}
+
+/// The fit files (PLY, OBJ, STL, optionally .gz) in `dir`.
+fn fit_files(dir: &Path) -> Result<Vec<PathBuf>, String> {
+    Ok(std::fs::read_dir(dir)
+        .map_err(|e| format!("{}: {e}", dir.display()))?
+        .filter_map(|e| e.ok().map(|e| e.path()))
+        .filter(|p| {
+            let ext = p
+                .extension()
+                .and_then(|e| e.to_str())
+                .unwrap_or("")
+                .to_ascii_lowercase();
+            let name = p.to_string_lossy().to_ascii_lowercase();
+            ["ply", "obj", "stl"].contains(&ext.as_str())
+                || [".ply.gz", ".obj.gz", ".stl.gz"]
+                    .iter()
+                    .any(|e| name.ends_with(e))
+        })
+        .collect())
+}
+
+/// A fit's subject name: its file name without extensions (`a.ply.gz` → `a`), as
+/// `bodyspace batch` names subjects.
+fn subject_of(fit: &Path) -> String {
+    let name = fit
+        .file_name()
+        .map(|n| n.to_string_lossy().into_owned())
+        .unwrap_or_default();
+    let name = name.strip_suffix(".gz").unwrap_or(&name);
+    match name.rfind('.') {
+        Some(dot) if dot > 0 => name[..dot].to_string(),
+        _ => name.to_string(),
+    }
+}
+
+/// Subjects of the batch whose fits are in `fits` (`OUT/fits`) that its manifest
+/// (`OUT/manifest.csv`) lists as flagged or failed.
+fn flagged_subjects(fits: &Path) -> Result<HashSet<String>, String> {
+    let manifest = fits
+        .canonicalize()
+        .map_err(|e| format!("{}: {e}", fits.display()))?
+        .parent()
+        .map(|out| out.join("manifest.csv"))
+        .filter(|m| m.is_file())
+        .ok_or_else(|| {
+            format!(
+                "{}: --exclude-flagged needs the batch manifest beside this fits folder (../manifest.csv); point --fits at a `bodyspace batch` OUT/fits",
+                fits.display()
+            )
+        })?;
+    Ok(read_manifest(&manifest)?
+        .into_iter()
+        .filter(|row| row.status != Status::Ok)
+        .map(|row| row.subject)
+        .collect())
 }
