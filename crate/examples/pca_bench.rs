@@ -23,8 +23,8 @@ use bodyspace::pca::random::NormalRng;
 use bodyspace::pca::segments::segment_subsets;
 use bodyspace::pca::subdivide::{subdivide_model, FineTemplate};
 use bodyspace::pca::{
-    build_body_model, BodyModel, BuildParams, Coefficients, ModeTarget, Morph, QualityCurves,
-    ShapeModel, TemplateIdentity, TrainingSet,
+    build_body_model, BodyModel, BuildParams, Coefficients, ModeDelta, ModeTarget, Morph,
+    QualityCurves, ShapeModel, TemplateIdentity, TrainingSet,
 };
 use bodyspace::template::{Resolution, Segment, Template};
 use nalgebra::{Point3, Rotation3, Vector3};
@@ -100,20 +100,42 @@ fn slider_bench(label: &str, weights: Vec<[f32; 6]>) {
     let plan_whole = model.stitch_plan([false; 6]);
     let plan_all = model.stitch_plan([true; 6]);
     let t_delta = median_ms(
-        || drop(model.apply_delta(&plan_whole, ModeTarget::Whole, 3, 0.01, &mut out)),
+        || {
+            drop(model.apply_delta(
+                &plan_whole,
+                ModeDelta {
+                    target: ModeTarget::Whole,
+                    mode: 3,
+                    delta: 0.01,
+                },
+                &mut out,
+            ))
+        },
         51,
     );
     let t_delta_mixed = median_ms(
-        || drop(model.apply_delta(&plan_all, ModeTarget::Whole, 3, 0.01, &mut out)),
+        || {
+            drop(model.apply_delta(
+                &plan_all,
+                ModeDelta {
+                    target: ModeTarget::Whole,
+                    mode: 3,
+                    delta: 0.01,
+                },
+                &mut out,
+            ))
+        },
         51,
     );
     let t_delta_torso = median_ms(
         || {
             drop(model.apply_delta(
                 &plan_all,
-                ModeTarget::Segment(Segment::Torso),
-                3,
-                0.01,
+                ModeDelta {
+                    target: ModeTarget::Segment(Segment::Torso),
+                    mode: 3,
+                    delta: 0.01,
+                },
                 &mut out,
             ))
         },

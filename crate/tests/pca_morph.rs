@@ -5,7 +5,9 @@ mod pca_support;
 
 use bodyspace::pca::morph::MAX_DELTAS;
 use bodyspace::pca::random::NormalRng;
-use bodyspace::pca::{build_body_model, BodyModel, BuildParams, Coefficients, ModeTarget, Morph};
+use bodyspace::pca::{
+    build_body_model, BodyModel, BuildParams, Coefficients, ModeDelta, ModeTarget, Morph,
+};
 use bodyspace::template::Segment;
 
 fn model() -> BodyModel {
@@ -77,7 +79,15 @@ fn thousands_of_slider_moves_stay_within_a_micrometre_of_a_full_reconstruction()
         let old = values[k];
         values[k] = t * sds[k];
         model
-            .apply_delta(&plan, target, k, values[k] - old, &mut plain)
+            .apply_delta(
+                &plan,
+                ModeDelta {
+                    target,
+                    mode: k,
+                    delta: values[k] - old,
+                },
+                &mut plain,
+            )
             .unwrap();
         let update = morph.update(&model, &c).unwrap();
         assert!(

@@ -2,7 +2,9 @@
 
 mod pca_support;
 
-use bodyspace::pca::{build_body_model, BodyModel, BuildParams, Coefficients, ModeTarget};
+use bodyspace::pca::{
+    build_body_model, BodyModel, BuildParams, Coefficients, ModeDelta, ModeTarget,
+};
 use bodyspace::template::Segment;
 
 fn model(variance: f64) -> (BodyModel, Vec<Vec<nalgebra::Point3<f64>>>) {
@@ -149,10 +151,26 @@ fn fast_path_and_incremental_updates_match_the_reference() {
     moved.whole[0] += 0.5;
     moved.whole[2] -= 0.25;
     model
-        .apply_delta(&plan, ModeTarget::Whole, 0, 0.5, &mut out)
+        .apply_delta(
+            &plan,
+            ModeDelta {
+                target: ModeTarget::Whole,
+                mode: 0,
+                delta: 0.5,
+            },
+            &mut out,
+        )
         .unwrap();
     model
-        .apply_delta(&plan, ModeTarget::Whole, 2, -0.25, &mut out)
+        .apply_delta(
+            &plan,
+            ModeDelta {
+                target: ModeTarget::Whole,
+                mode: 2,
+                delta: -0.25,
+            },
+            &mut out,
+        )
         .unwrap();
     assert!(max_abs_diff(&model.reconstruct(&moved).unwrap(), &out) < 1e-5);
 
@@ -162,14 +180,24 @@ fn fast_path_and_incremental_updates_match_the_reference() {
     let plan = model.reconstruct_into(&mixed, &mut out).unwrap();
     assert!(max_abs_diff(&model.reconstruct(&mixed).unwrap(), &out) < 1e-5);
     model
-        .apply_delta(&plan, ModeTarget::Whole, 1, 0.3, &mut out)
+        .apply_delta(
+            &plan,
+            ModeDelta {
+                target: ModeTarget::Whole,
+                mode: 1,
+                delta: 0.3,
+            },
+            &mut out,
+        )
         .unwrap();
     model
         .apply_delta(
             &plan,
-            ModeTarget::Segment(Segment::Torso),
-            0,
-            -0.4,
+            ModeDelta {
+                target: ModeTarget::Segment(Segment::Torso),
+                mode: 0,
+                delta: -0.4,
+            },
             &mut out,
         )
         .unwrap();
@@ -190,9 +218,11 @@ fn fast_path_and_incremental_updates_match_the_reference() {
     model
         .apply_delta(
             &plan_all,
-            ModeTarget::Segment(Segment::Head),
-            0,
-            0.2,
+            ModeDelta {
+                target: ModeTarget::Segment(Segment::Head),
+                mode: 0,
+                delta: 0.2,
+            },
             &mut out,
         )
         .unwrap();
@@ -201,10 +231,26 @@ fn fast_path_and_incremental_updates_match_the_reference() {
 
     // A segment that is not overridden in the plan cannot be moved incrementally.
     assert!(model
-        .apply_delta(&plan, ModeTarget::Segment(Segment::Head), 0, 1.0, &mut out)
+        .apply_delta(
+            &plan,
+            ModeDelta {
+                target: ModeTarget::Segment(Segment::Head),
+                mode: 0,
+                delta: 1.0
+            },
+            &mut out
+        )
         .is_err());
     assert!(model
-        .apply_delta(&plan, ModeTarget::Whole, 99, 1.0, &mut out)
+        .apply_delta(
+            &plan,
+            ModeDelta {
+                target: ModeTarget::Whole,
+                mode: 99,
+                delta: 1.0
+            },
+            &mut out
+        )
         .is_err());
     assert!(model.reconstruct_into(&mixed, &mut out[..3]).is_err());
     let too_long = Coefficients {

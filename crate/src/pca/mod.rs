@@ -44,4 +44,4 @@ pub use morph::{Morph, MorphUpdate};
 pub use params::BuildParams;
 pub use procrustes_gpa::{GpaParams, PoseRemoval};
 pub use shape_model::{ShapeModel, TemplateIdentity};
-pub use stitch::{Coefficients, ModeTarget, SeamReport, StitchPlan};
+pub use stitch::{Coefficients, ModeDelta, ModeTarget, SeamReport, StitchPlan};

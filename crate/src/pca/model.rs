@@ -11,8 +11,8 @@ use super::params::BuildParams;
 use super::procrustes_gpa::{rigid_align, PoseRemoval};
 use super::shape_model::{ShapeModel, TemplateIdentity};
 use super::stitch::{
-    add_modes, axpy, kahan_add, nonzero_modes, scatter_axpy, Coefficients, ModeTarget, SeamReport,
-    StitchPlan,
+    add_modes, axpy, kahan_add, nonzero_modes, scatter_axpy, Coefficients, ModeDelta, ModeTarget,
+    SeamReport, StitchPlan,
 };
 use crate::mesh::similarity::Similarity;
 use crate::template::Segment;
@@ -258,14 +258,12 @@ impl BodyModel {
     pub fn apply_delta(
         &self,
         plan: &StitchPlan,
-        target: ModeTarget,
-        mode: usize,
-        delta: f64,
+        change: ModeDelta,
         out: &mut [f32],
     ) -> Result<(), PcaError> {
         self.check_out(out)?;
-        let d = delta as f32;
-        match self.delta_pass(plan, target, mode)? {
+        let d = change.delta as f32;
+        match self.delta_pass(plan, change.target, change.mode)? {
             DeltaPass::Contiguous(phi) => axpy(d, phi, out),
             DeltaPass::Weighted(phi, weight) => {
                 for ((xyz, p), &w) in out.chunks_exact_mut(3).zip(phi.chunks_exact(3)).zip(weight) {
@@ -288,16 +286,14 @@ impl BodyModel {
     pub fn apply_delta_compensated(
         &self,
         plan: &StitchPlan,
-        target: ModeTarget,
-        mode: usize,
-        delta: f64,
+        change: ModeDelta,
         out: &mut [f32],
         carry: &mut [f32],
     ) -> Result<(), PcaError> {
         self.check_out(out)?;
         self.check_out(carry)?;
-        let d = delta as f32;
-        match self.delta_pass(plan, target, mode)? {
+        let d = change.delta as f32;
+        match self.delta_pass(plan, change.target, change.mode)? {
             DeltaPass::Contiguous(phi) => {
                 for ((x, c), &p) in out.iter_mut().zip(carry.iter_mut()).zip(phi) {
                     kahan_add(x, c, d * p);

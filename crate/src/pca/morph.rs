@@ -16,7 +16,7 @@
 
 use super::error::PcaError;
 use super::model::BodyModel;
-use super::stitch::{Coefficients, ModeTarget, StitchPlan};
+use super::stitch::{Coefficients, ModeDelta, ModeTarget, StitchPlan};
 use crate::template::Segment;
 use serde::Serialize;
 
@@ -111,9 +111,11 @@ impl Morph {
         for &(target, k, delta) in &changes {
             model.apply_delta_compensated(
                 &self.plan,
-                target,
-                k,
-                delta,
+                ModeDelta {
+                    target,
+                    mode: k,
+                    delta,
+                },
                 &mut self.positions,
                 &mut self.carry,
             )?;

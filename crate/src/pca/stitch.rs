@@ -39,6 +39,14 @@ pub enum ModeTarget {
     Segment(Segment),
 }
 
+/// One slider move: coefficient `mode` of the `target` model changes by `delta` (model units).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ModeDelta {
+    pub target: ModeTarget,
+    pub mode: usize,
+    pub delta: f64,
+}
+
 /// Per-vertex weights for one set of overridden segments, cached between slider moves.
 #[derive(Debug, Clone, PartialEq)]
 pub struct StitchPlan {
