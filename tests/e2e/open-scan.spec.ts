@@ -9,6 +9,7 @@ import {
   subjectLnd,
   truncated,
   waitForLoads,
+  type TestFile,
 } from './fixtures';
 
 async function openApp(page: Page): Promise<void> {
@@ -106,4 +107,36 @@ test('a gzip-compressed scan opens like the plain one, picked with the button', 
   await expect(byTestId(page, 'scan-triangles')).toHaveText('14');
   await expect(byTestId(page, 'scan-holes')).toHaveText('1');
   await expect(byTestId(page, 'scan-bbox-max')).toHaveText('(0.200, 1.700, 0.150)');
+});
+
+/** A broken file of every kind the app reads, each with what its message must name. */
+const BROKEN: { file: TestFile; problem: RegExp }[] = [
+  { file: truncated(holedBoxPly(), 'cut.ply'), problem: /declares .* but the file ends/ },
+  { file: { name: 'ascii.ply', bytes: Buffer.from('ply\nformat ascii 1.0\nelement vertex 2\nproperty float x\nproperty float y\nproperty float z\nend_header\n1 2 3\n4 five 6\n') }, problem: /vertex 1: cannot read "five" as a number/ },
+  { file: { name: 'bad-index.obj', bytes: Buffer.from('v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n') }, problem: /refers to vertex 9 but the file has 3 vertices/ },
+  { file: { name: 'cut.stl', bytes: Buffer.concat([Buffer.alloc(80), Buffer.from([10, 0, 0, 0]), Buffer.alloc(100)]) }, problem: /declares 10 triangles but the file ends/ },
+  { file: { name: 'corrupt.ply.gz', bytes: Buffer.from([0x1f, 0x8b, 8, 0, 0, 0, 0, 0, 0, 3, 1, 2, 3, 4, 5]) }, problem: /gzip data is corrupt .*re-compress/ },
+  { file: { name: 'broken.lnd', bytes: Buffer.from('SUBJECT_ID = 1\r\nAUX =\r\n1 0 0 0.5 10 x 30 Sellion\r\nEND =\r\n') }, problem: /line 3: cannot read "x" as a number/ },
+  { file: { name: 'broken.csv', bytes: Buffer.from('name,x,y,z\nSellion,1,two,3\n') }, problem: /cannot read "two" as a coordinate .*expected name,x,y,z/ },
+  { file: { name: 'broken.json', bytes: Buffer.from('{"Sellion": [1, 2]}') }, problem: /expected \{"name": \[x, y, z\]/ },
+];
+
+test('a broken file of every kind is named with its problem, and the scan and landmarks stay', async ({ page }) => {
+  await openApp(page);
+  await dropFiles(page, [holedBoxPly(), subjectLnd()]);
+  await waitForLoads(page, 1);
+  await expect(byTestId(page, 'scan-triangles')).toHaveText('14');
+  let loads = 1;
+  for (const { file, problem } of BROKEN) {
+    await dropFiles(page, [file]);
+    await waitForLoads(page, ++loads);
+    const text = byTestId(page, 'error-text');
+    await expect(text, file.name).toContainText(file.name);
+    await expect(text, file.name).toContainText(problem);
+    // What was loaded before is still there.
+    await expect(byTestId(page, 'scan-file')).toHaveText('subject.ply');
+    await expect(byTestId(page, 'scan-triangles')).toHaveText('14');
+    await expect(byTestId(page, 'landmarks-file')).toHaveText('subject.lnd');
+    await byTestId(page, 'error-dismiss').click();
+  }
 });
