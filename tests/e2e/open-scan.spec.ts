@@ -133,6 +133,7 @@ test('a broken file of every kind is named with its problem, and the scan and la
     const text = byTestId(page, 'error-text');
     await expect(text, file.name).toContainText(file.name);
     await expect(text, file.name).toContainText(problem);
+    await expect(text, file.name).toContainText(/drop (it|the file) again/);
     // What was loaded before is still there.
     await expect(byTestId(page, 'scan-file')).toHaveText('subject.ply');
     await expect(byTestId(page, 'scan-triangles')).toHaveText('14');

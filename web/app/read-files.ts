@@ -38,7 +38,7 @@ export async function readFiles(
       );
       outcome.scans.push({ scan, roundTripMs: performance.now() - t0 });
     } catch (error) {
-      outcome.errors.push(messageFor(file.name, error));
+      outcome.errors.push(messageFor(file.name, error, SCAN_ADVICE));
     }
   }
   for (const file of landmarks) {
@@ -49,14 +49,23 @@ export async function readFiles(
         await client.call({ type: 'parseLandmarks', bytes, fileName: file.name }, { transfer: [bytes] }),
       );
     } catch (error) {
-      outcome.errors.push(messageFor(file.name, error));
+      outcome.errors.push(messageFor(file.name, error, LANDMARK_ADVICE));
     }
   }
   return outcome;
 }
 
-/** The core's message, which starts with the file name; prefixed with it when it does not. */
-function messageFor(fileName: string, error: unknown): string {
+/** What a person can do about a scan the core refused, after its own message. */
+const SCAN_ADVICE = 'Nothing else was changed. Export the scan again from the scanner software (PLY, OBJ or STL, complete and uncompressed if in doubt) and drop it again.';
+
+/** What a person can do about a landmark file the core refused. */
+const LANDMARK_ADVICE = 'Nothing else was changed. Fix the line named above, or export the landmarks as CSV (name,x,y,z), CAESAR .lnd or JSON, and drop the file again.';
+
+/**
+ * The core's message (which says what is wrong and starts with the file name; prefixed with it
+ * when it does not), then what to do.
+ */
+function messageFor(fileName: string, error: unknown, advice: string): string {
   const message = error instanceof Error ? error.message : String(error);
-  return message.startsWith(fileName) ? message : `${fileName}: ${message}`;
+  return `${message.startsWith(fileName) ? message : `${fileName}: ${message}`}. ${advice}`;
 }

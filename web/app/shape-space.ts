@@ -169,7 +169,8 @@ export class ShapeSpace {
       this.redraw(true, true);
       return true;
     } catch (error) {
-      this.banner.show([error instanceof Error ? error.message : String(error)]);
+      const message = error instanceof Error ? error.message : String(error);
+      this.banner.show([`${message}. The model shown before stays; download the model file again (or build it again) and open it.`]);
       this.page.dataset.shapeLoadFailed = String(Number(this.page.dataset.shapeLoadFailed ?? '0') + 1);
       return false;
     } finally {
