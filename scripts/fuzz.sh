@@ -42,6 +42,10 @@ for t in $TARGETS; do
   end=$(date +%s.%N)
   secs=$(awk -v a="$start" -v b="$end" 'BEGIN { printf "%.0f", b - a }')
   execs=$(grep -o 'stat::number_of_executed_units: *[0-9]*' "$log" | grep -o '[0-9]*$' | tail -1)
+  # libFuzzer's own time for the runs (the wall time above also counts a rebuild, if any).
+  fuzz_secs=$(grep -o 'Done [0-9]* runs in [0-9]* second' "$log" | grep -o 'in [0-9]*' | grep -o '[0-9]*' | tail -1)
+  rate=$(grep -o 'stat::average_exec_per_sec: *[0-9]*' "$log" | grep -o '[0-9]*$' | tail -1)
+  rss=$(grep -o 'stat::peak_rss_mb: *[0-9]*' "$log" | grep -o '[0-9]*$' | tail -1)
   cov=$(grep -o 'cov: [0-9]* ft: [0-9]*' "$log" | tail -1)
   if [ $status -ne 0 ]; then
     failed=1
@@ -50,12 +54,13 @@ for t in $TARGETS; do
   else
     result="ok"
   fi
-  line=$(printf '%-15s %10s execs %6ss %-22s %s' "$t" "${execs:-?}" "$secs" "${cov:-cov: ?}" "$result")
+  line=$(printf '%-15s %10s %6ss %6ss %8s/s %6s MB  %-22s %s' "$t" "${execs:-?}" "${fuzz_secs:-?}" "$secs" \
+    "${rate:-?}" "${rss:-?}" "${cov:-cov: ?}" "$result")
   echo "$line"
   summary+=("$line")
 done
 
 echo
-echo "target            executions   time  coverage (final)       result"
+echo "target          executions   fuzz   wall    execs/s  peak RSS  coverage (final)       result"
 printf '%s\n' "${summary[@]}"
 exit $failed
