@@ -18,9 +18,33 @@ pub enum IoError {
     )]
     Gzip { file: String, detail: String },
 
-    /// The decompressed data would exceed the size cap (a zip bomb or a wrong file).
-    #[error("{file}: decompresses to more than {limit_bytes} bytes, which is far larger than any body scan")]
+    /// The decompressed data would exceed [`super::limits::MAX_INFLATED_BYTES`], the largest scan
+    /// accepted; refused as soon as the inflated bytes pass it.
+    #[error("{file}: decompresses to more than {limit_bytes} bytes, the largest scan accepted; crop or decimate the scan (see Limits in the README)")]
     TooLarge { file: String, limit_bytes: u64 },
+
+    /// The compressed data inflates far more than any real scan compresses
+    /// ([`super::limits::MAX_INFLATE_RATIO`]): a decompression bomb or a damaged file. Refused as
+    /// soon as the inflated bytes pass `limit_bytes`.
+    #[error("{file}: {compressed_bytes} compressed bytes inflate to more than {limit_bytes} bytes, over {ratio} times their size, which no real scan does; this is a decompression bomb or a damaged file: decompress and check it yourself, or send it uncompressed")]
+    InflatesTooMuch {
+        file: String,
+        compressed_bytes: u64,
+        limit_bytes: u64,
+        ratio: u64,
+    },
+
+    /// The header declares (or the file holds) more vertices or triangles than the largest scan
+    /// accepted ([`super::limits::MAX_SCAN_VERTICES`], [`super::limits::MAX_SCAN_TRIANGLES`]);
+    /// refused before memory for them is reserved.
+    #[error("{file}: {found} {what}, more than the {limit} {what} of the largest scan accepted; crop or decimate the scan (see Limits in the README)")]
+    TooManyElements {
+        file: String,
+        what: String,
+        /// "the header declares 4294967295" or "the file holds more than 40000000".
+        found: String,
+        limit: u64,
+    },
 
     /// The file does not follow its format; `at` names the line or record.
     #[error("{file}: {at}: {detail}")]

@@ -4,26 +4,26 @@
 use std::borrow::Cow;
 use std::io::Read;
 
+use super::limits::{inflated_limit, MAX_INFLATED_BYTES, MAX_INFLATE_RATIO};
 use super::IoError;
-
-/// Largest decompressed size accepted: a dense full-body scan is a few hundred megabytes at most,
-/// so anything larger is a wrong file or a decompression bomb.
-pub const MAX_DECOMPRESSED_BYTES: u64 = 2 * 1024 * 1024 * 1024;
 
 /// Whether `bytes` start with the gzip magic number.
 pub fn is_gzip(bytes: &[u8]) -> bool {
     bytes.len() >= 2 && bytes[0] == 0x1f && bytes[1] == 0x8b
 }
 
-/// `bytes` decompressed if they are gzip (all members), else borrowed unchanged.
+/// `bytes` decompressed if they are gzip (all members), else borrowed unchanged. The inflated size
+/// is capped by [`inflated_limit`]: at most [`MAX_INFLATE_RATIO`] times the compressed size (above
+/// a small floor) and never more than [`MAX_INFLATED_BYTES`], so a decompression bomb is refused
+/// after a bounded amount of output rather than after it has filled memory.
 pub fn maybe_gunzip<'a>(bytes: &'a [u8], file: &str) -> Result<Cow<'a, [u8]>, IoError> {
     if !is_gzip(bytes) {
         return Ok(Cow::Borrowed(bytes));
     }
-    gunzip_limited(bytes, file, MAX_DECOMPRESSED_BYTES).map(Cow::Owned)
+    gunzip_limited(bytes, file, inflated_limit(bytes.len() as u64)).map(Cow::Owned)
 }
 
-/// Decompresses a gzip stream, failing once more than `limit` bytes come out.
+/// Decompresses a gzip stream, failing as soon as more than `limit` bytes come out.
 pub fn gunzip_limited(bytes: &[u8], file: &str, limit: u64) -> Result<Vec<u8>, IoError> {
     let decoder = flate2::read::MultiGzDecoder::new(bytes);
     let mut out = Vec::new();
@@ -35,9 +35,18 @@ pub fn gunzip_limited(bytes: &[u8], file: &str, limit: u64) -> Result<Vec<u8>, I
             detail: e.to_string(),
         })?;
     if out.len() as u64 > limit {
-        return Err(IoError::TooLarge {
-            file: file.to_string(),
-            limit_bytes: limit,
+        return Err(if limit >= MAX_INFLATED_BYTES {
+            IoError::TooLarge {
+                file: file.to_string(),
+                limit_bytes: limit,
+            }
+        } else {
+            IoError::InflatesTooMuch {
+                file: file.to_string(),
+                compressed_bytes: bytes.len() as u64,
+                limit_bytes: limit,
+                ratio: MAX_INFLATE_RATIO,
+            }
         });
     }
     Ok(out)
@@ -78,7 +87,7 @@ mod tests {
     fn caps_the_decompressed_size() {
         let packed = gz(&vec![0u8; 10_000]);
         let err = gunzip_limited(&packed, "bomb.ply.gz", 1000).unwrap_err();
-        assert!(matches!(err, IoError::TooLarge { .. }));
+        assert!(matches!(err, IoError::InflatesTooMuch { .. }));
         assert!(err.to_string().starts_with("bomb.ply.gz: "));
     }
 

@@ -6,6 +6,8 @@
 //! has too small an extent to guess from, so the caller should take the units of the scan the
 //! landmarks were placed on (`crate::mesh::summary::summarise(&scan).units_detected`).
 
+use std::collections::HashSet;
+
 use super::gzip::{inner_name, maybe_gunzip};
 use super::landmark_raw::RawLandmark;
 use super::{landmarks_csv, landmarks_json, lnd, IoError};
@@ -52,20 +54,21 @@ pub fn read_landmarks(bytes: &[u8], file_name: &str) -> Result<LandmarkSet, IoEr
 /// Normalises names, rejects duplicates and splits present / missing / unknown.
 fn assemble(raw: Vec<RawLandmark>, file: &str) -> Result<LandmarkSet, IoError> {
     let mut set = LandmarkSet::default();
-    let mut seen: Vec<String> = Vec::with_capacity(raw.len());
+    // A set, not a list: a file of many thousand distinct names must not cost quadratic time.
+    let mut seen: HashSet<String> = HashSet::with_capacity(raw.len());
     let mut duplicates: Vec<String> = Vec::new();
+    let mut reported: HashSet<String> = HashSet::new();
     for entry in raw {
         let canonical = canonical_name(&entry.name);
         let name = canonical
             .map(str::to_string)
             .unwrap_or_else(|| entry.name.trim().to_string());
-        if seen.contains(&name) {
-            if !duplicates.contains(&name) {
+        if !seen.insert(name.clone()) {
+            if reported.insert(name.clone()) {
                 duplicates.push(name);
             }
             continue;
         }
-        seen.push(name.clone());
         if canonical.is_none() {
             set.unknown.push(name.clone());
         }

@@ -8,7 +8,8 @@
 //!   [`landmarks_csv`], [`landmarks_json`], [`lnd`] (CAESAR `.lnd`), [`landmark_raw`] (the record
 //!   the three readers produce).
 //! * Writers: [`ply_write`], [`obj_write`], [`glb_write`] (the binary glTF container).
-//! * [`error`]: [`IoError`], the one error type of every reader.
+//! * [`error`]: [`IoError`], the one error type of every reader; [`limits`]: the largest input
+//!   accepted (inflated size, vertices, triangles), checked before memory is reserved.
 
 pub mod error;
 pub mod glb_write;
@@ -17,6 +18,7 @@ pub mod landmark_raw;
 pub mod landmarks_csv;
 pub mod landmarks_json;
 pub mod landmarks_read;
+pub mod limits;
 pub mod lnd;
 pub mod obj_read;
 pub mod obj_write;

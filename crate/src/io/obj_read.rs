@@ -9,6 +9,7 @@
 
 use nalgebra::Point3;
 
+use super::limits::{MAX_SCAN_TRIANGLES, MAX_SCAN_VERTICES};
 use super::text_xyz::parse_xyz;
 use super::IoError;
 use crate::mesh::Mesh;
@@ -48,6 +49,9 @@ pub fn read_obj(bytes: &[u8], file: &str) -> Result<Mesh, IoError> {
                 let p = parse_xyz(&mut words, file, at, "v", || {
                     format!("vertex {} (line {at})", mesh.positions.len() + 1)
                 })?;
+                if mesh.positions.len() as u64 >= MAX_SCAN_VERTICES {
+                    return Err(too_many(file, "vertices", MAX_SCAN_VERTICES));
+                }
                 mesh.positions.push(Point3::new(p[0], p[1], p[2]));
             }
             Some("f") => {
@@ -93,6 +97,9 @@ pub fn read_obj(bytes: &[u8], file: &str) -> Result<Mesh, IoError> {
                         ),
                     ));
                 }
+                if (mesh.triangles.len() + polygon.len()) as u64 > MAX_SCAN_TRIANGLES + 2 {
+                    return Err(too_many(file, "triangles", MAX_SCAN_TRIANGLES));
+                }
                 for k in 1..polygon.len() - 1 {
                     mesh.triangles
                         .push([polygon[0], polygon[k], polygon[k + 1]]);
@@ -118,4 +125,13 @@ pub fn read_obj(bytes: &[u8], file: &str) -> Result<Mesh, IoError> {
         });
     }
     Ok(mesh)
+}
+
+fn too_many(file: &str, what: &str, limit: u64) -> IoError {
+    IoError::TooManyElements {
+        file: file.to_string(),
+        what: what.to_string(),
+        found: format!("the file holds more than {limit}"),
+        limit,
+    }
 }

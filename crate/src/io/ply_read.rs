@@ -8,6 +8,7 @@
 
 use nalgebra::Point3;
 
+use super::limits::{MAX_SCAN_TRIANGLES, MAX_SCAN_VERTICES};
 use super::ply_fast::{fixed_vertices, uchar_int_faces};
 use super::ply_header::{parse_header, Element, PlyFormat, PropertyKind, ScalarType};
 use super::ply_source::{Ascii, Binary, Fail, Source};
@@ -60,6 +61,7 @@ fn read_body<S: Source>(elements: &[Element], mut src: S, file: &str) -> Result<
     let mut mesh = Mesh::default();
     for element in elements {
         check_fits(element, &src, file)?;
+        check_limit(element, &src, file)?;
         let capacity = capacity_for(element, &src);
         let result = match element.name.as_str() {
             "vertex" => {
@@ -100,6 +102,38 @@ fn read_body<S: Source>(elements: &[Element], mut src: S, file: &str) -> Result<
         }
     }
     Ok(mesh)
+}
+
+/// Refuses an element of more vertices or faces than the largest scan accepted (a face counts as at
+/// least one triangle) before anything is reserved. A header whose count the remaining bytes
+/// cannot hold is left to the reader, which reserves only what fits and reports the truncation.
+fn check_limit<S: Source>(element: &Element, src: &S, file: &str) -> Result<(), IoError> {
+    let limit = match element.name.as_str() {
+        "vertex" => MAX_SCAN_VERTICES,
+        "face" => MAX_SCAN_TRIANGLES,
+        _ => return Ok(()),
+    };
+    let min = min_record_bytes::<S>(element) as u64;
+    let could_fit = element.count.saturating_mul(min) <= src.remaining() as u64;
+    if element.count > limit && could_fit {
+        return Err(IoError::TooManyElements {
+            file: file.to_string(),
+            what: element.plural(),
+            found: format!("the header declares {}", element.count),
+            limit,
+        });
+    }
+    Ok(())
+}
+
+/// The error for fan triangulation passing [`MAX_SCAN_TRIANGLES`].
+pub(super) fn too_many_triangles(file: &str) -> IoError {
+    IoError::TooManyElements {
+        file: file.to_string(),
+        what: "triangles".to_string(),
+        found: format!("the faces make more than {MAX_SCAN_TRIANGLES}"),
+        limit: MAX_SCAN_TRIANGLES,
+    }
 }
 
 /// Minimum bytes one record of `element` needs in this source.
@@ -276,6 +310,9 @@ fn read_faces<S: Source>(
             }
         }
         // Fan triangulation; faces with fewer than three corners (points, edges) carry no surface.
+        if (triangles.len() + polygon.len()) as u64 > MAX_SCAN_TRIANGLES + 2 {
+            return Err(too_many_triangles(file));
+        }
         for k in 1..polygon.len().saturating_sub(1) {
             triangles.push([polygon[0], polygon[k], polygon[k + 1]]);
         }
@@ -316,6 +353,10 @@ fn read_polygon<S: Source>(
 }
 
 fn skip_element<S: Source>(element: &Element, src: &mut S) -> RecordResult {
+    if element.properties.is_empty() {
+        // Records without properties occupy no bytes, however many the header declares.
+        return Ok(());
+    }
     for r in 0..element.count {
         for property in &element.properties {
             let step = match property.kind {

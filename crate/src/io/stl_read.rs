@@ -7,10 +7,12 @@
 //! Hand-written rather than `stl_io`: that crate decides by the `solid` prefix alone and its
 //! errors do not name the file position.
 
+use std::collections::hash_map::Entry;
 use std::collections::HashMap;
 
 use nalgebra::Point3;
 
+use super::limits::{MAX_SCAN_TRIANGLES, MAX_SCAN_VERTICES};
 use super::text_xyz::parse_xyz;
 use super::IoError;
 use crate::mesh::Mesh;
@@ -75,19 +77,52 @@ impl Welder {
         }
     }
 
-    fn vertex(&mut self, p: [f64; 3]) -> u32 {
+    /// The index of the vertex at `p`, added if new; `None` once the scan would pass
+    /// [`MAX_SCAN_VERTICES`].
+    fn vertex(&mut self, p: [f64; 3]) -> Option<u32> {
         // `+ 0.0` turns −0 into +0 so the two spellings of zero merge.
         let key = p.map(|c| (c + 0.0).to_bits());
         let positions = &mut self.mesh.positions;
-        *self.index.entry(key).or_insert_with(|| {
-            positions.push(Point3::new(p[0], p[1], p[2]));
-            (positions.len() - 1) as u32
-        })
+        match self.index.entry(key) {
+            Entry::Occupied(e) => Some(*e.get()),
+            Entry::Vacant(e) => {
+                if positions.len() as u64 >= MAX_SCAN_VERTICES {
+                    return None;
+                }
+                positions.push(Point3::new(p[0], p[1], p[2]));
+                Some(*e.insert((positions.len() - 1) as u32))
+            }
+        }
+    }
+
+    fn push_triangle(&mut self, t: [u32; 3], file: &str) -> Result<(), IoError> {
+        if self.mesh.triangles.len() as u64 >= MAX_SCAN_TRIANGLES {
+            return Err(too_many(file, "triangles", MAX_SCAN_TRIANGLES));
+        }
+        self.mesh.triangles.push(t);
+        Ok(())
+    }
+}
+
+fn too_many(file: &str, what: &str, limit: u64) -> IoError {
+    IoError::TooManyElements {
+        file: file.to_string(),
+        what: what.to_string(),
+        found: format!("the file holds more than {limit}"),
+        limit,
     }
 }
 
 fn read_binary(bytes: &[u8], file: &str) -> Result<Mesh, IoError> {
     let n = (bytes.len() - 84) / 50;
+    if n as u64 > MAX_SCAN_TRIANGLES {
+        return Err(IoError::TooManyElements {
+            file: file.to_string(),
+            what: "triangles".to_string(),
+            found: format!("the header declares {n}"),
+            limit: MAX_SCAN_TRIANGLES,
+        });
+    }
     let mut welder = Welder::with_capacity(n);
     for (t, record) in bytes[84..].chunks_exact(50).enumerate() {
         let mut corners = [0u32; 3];
@@ -105,9 +140,11 @@ fn read_binary(bytes: &[u8], file: &str) -> Result<Mesh, IoError> {
                     what: format!("triangle {t} corner {k}"),
                 });
             }
-            *corner = welder.vertex(p);
+            *corner = welder
+                .vertex(p)
+                .ok_or_else(|| too_many(file, "vertices", MAX_SCAN_VERTICES))?;
         }
-        welder.mesh.triangles.push(corners);
+        welder.push_triangle(corners, file)?;
     }
     Ok(welder.mesh)
 }
@@ -131,7 +168,10 @@ fn read_ascii(bytes: &[u8], file: &str) -> Result<Mesh, IoError> {
                 let p = parse_xyz(&mut words, file, line_no, "vertex", || {
                     format!("facet {facet} (line {line_no})")
                 })?;
-                polygon.push(welder.vertex(p));
+                let v = welder
+                    .vertex(p)
+                    .ok_or_else(|| too_many(file, "vertices", MAX_SCAN_VERTICES))?;
+                polygon.push(v);
             }
             Some("endloop") => {
                 if polygon.len() < 3 {
@@ -142,10 +182,7 @@ fn read_ascii(bytes: &[u8], file: &str) -> Result<Mesh, IoError> {
                     ));
                 }
                 for k in 1..polygon.len() - 1 {
-                    welder
-                        .mesh
-                        .triangles
-                        .push([polygon[0], polygon[k], polygon[k + 1]]);
+                    welder.push_triangle([polygon[0], polygon[k], polygon[k + 1]], file)?;
                 }
                 polygon.clear();
                 facet += 1;

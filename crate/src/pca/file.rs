@@ -28,6 +28,12 @@ use serde::{Deserialize, Serialize};
 pub const MAGIC: &[u8; 8] = b"BSPCAMDL";
 /// The format version this build writes and reads.
 pub const FORMAT_VERSION: u32 = 1;
+/// Largest model file accepted: 1 GiB. Reading converts every array to `f32` (twice the bytes for
+/// an f16 basis), so a model of this size needs about 2–3 GiB, what a browser tab (wasm32, 4 GiB)
+/// can hold. The demo model is a few MB; a `fine` model with 20 modes per part is about 110 MB.
+/// Every array is checked against the bytes of the data section before it is read, so memory stays
+/// in proportion to the file whatever its header declares.
+pub const MAX_MODEL_BYTES: u64 = 1 << 30;
 
 /// Precision of the stored basis.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, Default)]
@@ -247,9 +253,15 @@ impl DataReader<'_> {
     }
 }
 
-/// Parses a model file. Errors: [`PcaError::BadMagic`], [`PcaError::UnsupportedVersion`],
+/// Parses a model file. Errors: [`PcaError::TooLarge`], [`PcaError::BadMagic`], [`PcaError::UnsupportedVersion`],
 /// [`PcaError::Truncated`], [`PcaError::Corrupted`] (bad header, inconsistent arrays, checksum).
 pub fn read_model(bytes: &[u8]) -> Result<BodyModel, PcaError> {
+    if bytes.len() as u64 > MAX_MODEL_BYTES {
+        return Err(PcaError::TooLarge {
+            bytes: bytes.len() as u64,
+            limit: MAX_MODEL_BYTES,
+        });
+    }
     if bytes.len() < 8 || &bytes[..8] != MAGIC {
         return Err(if bytes.len() < 8 && MAGIC.starts_with(bytes) {
             PcaError::Truncated(format!("{} bytes, not even the magic", bytes.len()))
