@@ -10,6 +10,8 @@
 //! leave four times that headroom and still fit a browser tab: 20 million vertices (480 MB as
 //! `f64` positions) and 40 million triangles (480 MB), from at most 1 GiB of inflated bytes.
 
+use super::error::IoError;
+
 /// Largest decompressed (inflated) size of a gzip-compressed scan or landmark file: 1 GiB.
 pub const MAX_INFLATED_BYTES: u64 = 1 << 30;
 
@@ -29,6 +31,33 @@ pub const MAX_SCAN_VERTICES: u64 = 20_000_000;
 
 /// Most triangles in one scan (after fan triangulation of polygons): 40 million.
 pub const MAX_SCAN_TRIANGLES: u64 = 40_000_000;
+
+/// The error for a scan that holds more `what` than `limit`; `found` says how many it holds
+/// (or that it holds more).
+pub fn too_many(file: &str, what: &str, found: String, limit: u64) -> IoError {
+    IoError::TooManyElements {
+        file: file.to_string(),
+        what: what.to_string(),
+        found,
+        limit,
+    }
+}
+
+/// The error for a file found, while reading, to hold more `what` than `limit`.
+pub fn more_than(file: &str, what: &str, limit: u64) -> IoError {
+    too_many(
+        file,
+        what,
+        format!("the file holds more than {limit}"),
+        limit,
+    )
+}
+
+/// The error for polygon faces that triangulate to more than [`MAX_SCAN_TRIANGLES`].
+pub fn too_many_triangles(file: &str) -> IoError {
+    let found = format!("the faces make more than {MAX_SCAN_TRIANGLES}");
+    too_many(file, "triangles", found, MAX_SCAN_TRIANGLES)
+}
 
 /// Largest number of bytes `compressed_len` compressed bytes may inflate to.
 pub fn inflated_limit(compressed_len: u64) -> u64 {

@@ -9,7 +9,7 @@
 
 use nalgebra::Point3;
 
-use super::limits::{MAX_SCAN_TRIANGLES, MAX_SCAN_VERTICES};
+use super::limits::{more_than, MAX_SCAN_TRIANGLES, MAX_SCAN_VERTICES};
 use super::text_xyz::parse_xyz;
 use super::IoError;
 use crate::mesh::Mesh;
@@ -50,7 +50,7 @@ pub fn read_obj(bytes: &[u8], file: &str) -> Result<Mesh, IoError> {
                     format!("vertex {} (line {at})", mesh.positions.len() + 1)
                 })?;
                 if mesh.positions.len() as u64 >= MAX_SCAN_VERTICES {
-                    return Err(too_many(file, "vertices", MAX_SCAN_VERTICES));
+                    return Err(more_than(file, "vertices", MAX_SCAN_VERTICES));
                 }
                 mesh.positions.push(Point3::new(p[0], p[1], p[2]));
             }
@@ -98,7 +98,7 @@ pub fn read_obj(bytes: &[u8], file: &str) -> Result<Mesh, IoError> {
                     ));
                 }
                 if (mesh.triangles.len() + polygon.len()) as u64 > MAX_SCAN_TRIANGLES + 2 {
-                    return Err(too_many(file, "triangles", MAX_SCAN_TRIANGLES));
+                    return Err(more_than(file, "triangles", MAX_SCAN_TRIANGLES));
                 }
                 for k in 1..polygon.len() - 1 {
                     mesh.triangles
@@ -125,13 +125,4 @@ pub fn read_obj(bytes: &[u8], file: &str) -> Result<Mesh, IoError> {
         });
     }
     Ok(mesh)
-}
-
-fn too_many(file: &str, what: &str, limit: u64) -> IoError {
-    IoError::TooManyElements {
-        file: file.to_string(),
-        what: what.to_string(),
-        found: format!("the file holds more than {limit}"),
-        limit,
-    }
 }

@@ -5,7 +5,7 @@
 
 use nalgebra::Point3;
 
-use super::limits::MAX_SCAN_TRIANGLES;
+use super::limits::{too_many_triangles, MAX_SCAN_TRIANGLES};
 use super::ply_header::{Element, PropertyKind, ScalarType};
 use super::IoError;
 
@@ -158,7 +158,7 @@ pub(super) fn uchar_int_faces(
                 return out_of_range(v);
             }
             if triangles.len() as u64 >= MAX_SCAN_TRIANGLES {
-                return Some(Err(super::ply_read::too_many_triangles(file)));
+                return Some(Err(too_many_triangles(file)));
             }
             triangles.push(t.map(|v| v as u32));
             continue;
@@ -172,7 +172,7 @@ pub(super) fn uchar_int_faces(
             polygon.push(v as u32);
         }
         if (triangles.len() + n) as u64 > MAX_SCAN_TRIANGLES + 2 {
-            return Some(Err(super::ply_read::too_many_triangles(file)));
+            return Some(Err(too_many_triangles(file)));
         }
         for k in 1..n.saturating_sub(1) {
             triangles.push([polygon[0], polygon[k], polygon[k + 1]]);

@@ -8,7 +8,7 @@
 
 use nalgebra::Point3;
 
-use super::limits::{MAX_SCAN_TRIANGLES, MAX_SCAN_VERTICES};
+use super::limits::{too_many_triangles, MAX_SCAN_TRIANGLES, MAX_SCAN_VERTICES};
 use super::ply_fast::{fixed_vertices, uchar_int_faces};
 use super::ply_header::{parse_header, Element, PlyFormat, PropertyKind, ScalarType};
 use super::ply_source::{Ascii, Binary, Fail, Source};
@@ -124,16 +124,6 @@ fn check_limit<S: Source>(element: &Element, src: &S, file: &str) -> Result<(), 
         });
     }
     Ok(())
-}
-
-/// The error for fan triangulation passing [`MAX_SCAN_TRIANGLES`].
-pub(super) fn too_many_triangles(file: &str) -> IoError {
-    IoError::TooManyElements {
-        file: file.to_string(),
-        what: "triangles".to_string(),
-        found: format!("the faces make more than {MAX_SCAN_TRIANGLES}"),
-        limit: MAX_SCAN_TRIANGLES,
-    }
 }
 
 /// Minimum bytes one record of `element` needs in this source.

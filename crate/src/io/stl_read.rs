@@ -12,7 +12,7 @@ use std::collections::HashMap;
 
 use nalgebra::Point3;
 
-use super::limits::{MAX_SCAN_TRIANGLES, MAX_SCAN_VERTICES};
+use super::limits::{more_than, MAX_SCAN_TRIANGLES, MAX_SCAN_VERTICES};
 use super::text_xyz::parse_xyz;
 use super::IoError;
 use crate::mesh::Mesh;
@@ -97,19 +97,10 @@ impl Welder {
 
     fn push_triangle(&mut self, t: [u32; 3], file: &str) -> Result<(), IoError> {
         if self.mesh.triangles.len() as u64 >= MAX_SCAN_TRIANGLES {
-            return Err(too_many(file, "triangles", MAX_SCAN_TRIANGLES));
+            return Err(more_than(file, "triangles", MAX_SCAN_TRIANGLES));
         }
         self.mesh.triangles.push(t);
         Ok(())
-    }
-}
-
-fn too_many(file: &str, what: &str, limit: u64) -> IoError {
-    IoError::TooManyElements {
-        file: file.to_string(),
-        what: what.to_string(),
-        found: format!("the file holds more than {limit}"),
-        limit,
     }
 }
 
@@ -142,7 +133,7 @@ fn read_binary(bytes: &[u8], file: &str) -> Result<Mesh, IoError> {
             }
             *corner = welder
                 .vertex(p)
-                .ok_or_else(|| too_many(file, "vertices", MAX_SCAN_VERTICES))?;
+                .ok_or_else(|| more_than(file, "vertices", MAX_SCAN_VERTICES))?;
         }
         welder.push_triangle(corners, file)?;
     }
@@ -170,7 +161,7 @@ fn read_ascii(bytes: &[u8], file: &str) -> Result<Mesh, IoError> {
                 })?;
                 let v = welder
                     .vertex(p)
-                    .ok_or_else(|| too_many(file, "vertices", MAX_SCAN_VERTICES))?;
+                    .ok_or_else(|| more_than(file, "vertices", MAX_SCAN_VERTICES))?;
                 polygon.push(v);
             }
             Some("endloop") => {

@@ -148,12 +148,8 @@ mod tests {
 
     #[test]
     fn flat_square_points_up_and_isolated_vertex_is_zero() {
-        let square = [
-            [0.0, 0.0, 0.0],
-            [1.0, 0.0, 0.0],
-            [1.0, 1.0, 0.0],
-            [0.0, 1.0, 0.0],
-        ];
+        #[rustfmt::skip]
+        let square = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [1.0, 1.0, 0.0], [0.0, 1.0, 0.0]];
         let p = points(&[square.as_slice(), &[[5.0, 5.0, 5.0]]].concat());
         let t = [[0, 1, 2], [0, 2, 3], [0, 0, 1]];
         let n = vertex_normals(&p, &t);

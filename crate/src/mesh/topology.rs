@@ -264,12 +264,8 @@ mod tests {
 
     #[test]
     fn an_edge_shared_by_three_triangles_is_not_a_boundary_edge() {
-        let corners = [
-            [0.0, 0.0, 0.0],
-            [1.0, 0.0, 0.0],
-            [0.0, 1.0, 0.0],
-            [0.0, -1.0, 0.0],
-        ];
+        #[rustfmt::skip]
+        let corners = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, -1.0, 0.0]];
         let mesh = mesh(
             &[corners.as_slice(), &[[0.0, 0.0, 1.0]]].concat(),
             &[[0, 1, 2], [1, 0, 3], [0, 1, 4]],
