@@ -1,3 +1,4 @@
+import { gzipSync } from 'node:zlib';
 import { expect, test, type Page } from '@playwright/test';
 import {
   LND_FOUND,
@@ -140,4 +141,20 @@ test('a broken file of every kind is named with its problem, and the scan and la
     await expect(byTestId(page, 'landmarks-file')).toHaveText('subject.lnd');
     await byTestId(page, 'error-dismiss').click();
   }
+});
+
+test('a small gzip file that would inflate far beyond any scan is refused, and the tab keeps working', async ({ page }) => {
+  await openApp(page);
+  await dropFiles(page, [holedBoxPly()]);
+  await waitForLoads(page, 1);
+  // 256 MB of zeros behind a PLY header, gzip-compressed to about 250 KB.
+  const header = Buffer.from('ply\nformat binary_little_endian 1.0\nelement vertex 22000000\nproperty float x\nproperty float y\nproperty float z\nend_header\n');
+  const bomb = gzipSync(Buffer.concat([header, Buffer.alloc(256 * 1024 * 1024)]));
+  expect(bomb.length).toBeLessThan(1024 * 1024);
+  await dropFiles(page, [{ name: 'bomb.ply.gz', bytes: bomb }]);
+  await waitForLoads(page, 2);
+  await expect(byTestId(page, 'error-text')).toContainText('bomb.ply.gz');
+  await expect(byTestId(page, 'error-text')).toContainText(/decompression bomb|inflate/);
+  await expect(byTestId(page, 'scan-file')).toHaveText('subject.ply');
+  await expect(byTestId(page, 'scan-triangles')).toHaveText('14');
 });
