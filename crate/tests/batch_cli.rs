@@ -66,17 +66,22 @@ fn scans_folder(root: &Path) -> PathBuf {
 /// default 3 mm), so the unmatched flag's threshold is raised for these scans (docs/batch.md).
 const COARSE: &[&str] = &["--jobs", "2", "--max-unmatched", "0.9"];
 
-/// Runs a batch; returns its JSON summary (the run must succeed).
-fn batch(scans: &Path, out: &Path, extra: &[&str]) -> serde_json::Value {
-    let mut args = vec!["batch", "--scans", path(scans), "--out", path(out)];
-    args.extend_from_slice(extra);
-    let run = bodyspace(&args);
+/// Runs `bodyspace` with `args`, which must succeed.
+fn succeed(args: &[&str]) -> Output {
+    let run = bodyspace(args);
     assert!(
         run.status.success(),
         "{}",
         String::from_utf8_lossy(&run.stderr)
     );
-    serde_json::from_slice(&run.stdout).unwrap()
+    run
+}
+
+/// Runs a batch; returns its JSON summary (the run must succeed).
+fn batch(scans: &Path, out: &Path, extra: &[&str]) -> serde_json::Value {
+    let mut args = vec!["batch", "--scans", path(scans), "--out", path(out)];
+    args.extend_from_slice(extra);
+    serde_json::from_slice(&succeed(&args).stdout).unwrap()
 }
 
 /// subject → (status, reason) of a manifest.
@@ -196,12 +201,7 @@ fn batch_records_every_subject_resumes_shards_and_pools_fits() {
             args.extend_from_slice(&["--fits", f]);
         }
         args.extend_from_slice(extra);
-        let run = bodyspace(&args);
-        assert!(
-            run.status.success(),
-            "{}",
-            String::from_utf8_lossy(&run.stderr)
-        );
+        succeed(&args);
         std::fs::read(model).unwrap()
     };
     let (s1, s2, all) = (
