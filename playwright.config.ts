@@ -1,5 +1,8 @@
 import { defineConfig } from '@playwright/test';
 
+// PORT lets several checkouts run their tests side by side (each serves its own build).
+const port = Number(process.env.PORT ?? 4173);
+
 // Debian's Chromium: Playwright cannot download a browser here. The flags keep Chromium from
 // reaching for the network, which this machine does not have.
 export default defineConfig({
@@ -10,7 +13,7 @@ export default defineConfig({
   workers: 1,
   reporter: [['list']],
   use: {
-    baseURL: 'http://127.0.0.1:4173/',
+    baseURL: `http://127.0.0.1:${port}/`,
     launchOptions: {
       executablePath: process.env.CHROMIUM_PATH ?? '/usr/bin/chromium',
       args: [
@@ -27,8 +30,8 @@ export default defineConfig({
     },
   },
   webServer: {
-    command: 'npx vite preview --host 127.0.0.1 --port 4173 --strictPort',
-    url: 'http://127.0.0.1:4173/',
+    command: `npx vite preview --host 127.0.0.1 --port ${port} --strictPort`,
+    url: `http://127.0.0.1:${port}/`,
     reuseExistingServer: !process.env.CI,
     timeout: 60_000,
   },
