@@ -177,16 +177,43 @@ fn batch_records_every_subject_resumes_shards_and_pools_fits() {
     assert_eq!(third["aligned"], 3);
     assert_eq!(manifest(&out), rows);
 
-    // 3. Two shards cover every subject exactly once.
+    // 3. Two shards cover every subject exactly once. The first also compares its fits with the
+    // synthetic ground truth (`truth_ID.ply` beside the synth output).
+    let synth = root.join("synth");
     let shards: Vec<PathBuf> = ["1/2", "2/2"]
         .iter()
         .enumerate()
         .map(|(i, shard)| {
             let dir = root.join(format!("shard{}", i + 1));
-            batch(&scans, &dir, &[COARSE, &["--shard", shard]].concat());
+            let truth: &[&str] = if i == 0 {
+                &["--truth", path(&synth)]
+            } else {
+                &[]
+            };
+            batch(&scans, &dir, &[COARSE, &["--shard", shard], truth].concat());
             dir
         })
         .collect();
+    let with_truth = manifest(&shards[0]);
+    let fitted_with_truth: Vec<&String> = with_truth
+        .iter()
+        .filter(|(_, (status, _))| status != "failed")
+        .map(|(subject, _)| subject)
+        .collect();
+    assert!(!fitted_with_truth.is_empty());
+    for subject in fitted_with_truth {
+        let report: serde_json::Value = serde_json::from_slice(
+            &std::fs::read(shards[0].join("reports").join(format!("{subject}.json"))).unwrap(),
+        )
+        .unwrap();
+        let fitted = &report["correspondence"]["fitted"];
+        assert_eq!(fitted["vertices"], 13_380, "{subject}");
+        let mean = fitted["mean_mm"].as_f64().unwrap();
+        assert!(
+            mean > 0.0 && mean < 25.0,
+            "{subject}: correspondence {mean} mm"
+        );
+    }
     let mut covered: Vec<String> = shards
         .iter()
         .flat_map(|d| manifest(d).into_keys())

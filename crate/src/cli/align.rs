@@ -4,11 +4,11 @@
 //! as PLY in template vertex order, in the scan's frame and units, and prints the
 //! [`crate::align::AlignmentReport`] as JSON.
 
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 use std::str::FromStr;
 
-use nalgebra::Point3;
-
+use super::read_file;
+use super::truth::read_truth;
 use crate::align::{align_scan, AlignInput, AlignParams, FineAlignParams, FineStageParams};
 use crate::io::{read_landmarks, read_scan, write_ply};
 use crate::mesh::Mesh;
@@ -177,24 +177,4 @@ pub fn run(args: &AlignArgs) -> Result<(), String> {
     }
     println!("{text}");
     Ok(())
-}
-
-fn read_file(path: &Path) -> Result<Vec<u8>, String> {
-    std::fs::read(path).map_err(|e| format!("{}: cannot read the file: {e}", path.display()))
-}
-
-/// Ground truth in metres; `expected` lists the vertex counts accepted (the base vertices, which
-/// come first at every resolution, or all template vertices).
-fn read_truth(path: &Path, expected: &[usize], to_metres: f64) -> Result<Vec<Point3<f64>>, String> {
-    let name = path.display().to_string();
-    let mesh = read_scan(&read_file(path)?, &name).map_err(|e| e.to_string())?;
-    if !expected.contains(&mesh.positions.len()) {
-        return Err(format!(
-            "{name}: {} vertices but the template has {} ({} at base); ground truth must be in template vertex order",
-            mesh.positions.len(),
-            expected[expected.len() - 1],
-            expected[0],
-        ));
-    }
-    Ok(mesh.positions.iter().map(|p| p * to_metres).collect())
 }

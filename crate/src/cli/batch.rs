@@ -19,6 +19,8 @@ use serde::Serialize;
 
 use super::batch_subjects::{list_subjects, Shard, Subject};
 use super::manifest::{manifest_csv, write_atomically, Status, SubjectRecord};
+use super::read_file;
+use super::truth::{find_truth_file, read_truth};
 use crate::align::{
     align_scan, assess, AlignInput, AlignParams, AlignmentReport, FineAlignParams, QualityReport,
     QualityThresholds,
@@ -72,6 +74,11 @@ pub struct BatchArgs {
     /// Flag fits where more than this fraction of template triangles folded over.
     #[arg(long, default_value_t = QualityThresholds::default().max_folded_fraction)]
     pub max_folded: f64,
+    /// Folder of ground truths of synthetic subjects (`truth_ID.ply` for `scan_ID`, as
+    /// `bodyspace synth` writes, else `<subject>.ply`): adds the correspondence error to each report, as
+    /// `align --truth` does. A subject without its truth fails.
+    #[arg(long)]
+    pub truth: Option<PathBuf>,
 }
 
 /// What every job shares.
@@ -84,6 +91,7 @@ struct Context<'a> {
     resolution: &'static str,
     fits: PathBuf,
     reports: PathBuf,
+    truth: Option<&'a Path>,
 }
 
 /// A subject's report file: the alignment report's fields, `quality` and `batch`.
@@ -102,10 +110,6 @@ fn landmarks_of(subject: &Subject) -> Result<crate::landmarks::LandmarkSet, Stri
     let path = subject.landmarks.as_ref().ok_or(NO_LANDMARKS)?;
     let bytes = read_file(path)?;
     read_landmarks(&bytes, &path.display().to_string()).map_err(|e| e.to_string())
-}
-
-fn read_file(path: &Path) -> Result<Vec<u8>, String> {
-    std::fs::read(path).map_err(|e| format!("{}: cannot read the file: {e}", path.display()))
 }
 
 /// Aligns one subject and writes its fit and report; the record says how it went. Nothing here
@@ -175,8 +179,24 @@ fn align_and_write(
         landmarks: &landmarks,
         units: None,
     };
-    let alignment =
+    let mut alignment =
         align_scan(&input, &ctx.params, &mut ()).map_err(|e| format!("{scan_name}: {e}"))?;
+    if let Some(folder) = ctx.truth {
+        let path = find_truth_file(&subject.name, folder).ok_or_else(|| {
+            format!(
+                "{}: no ground truth for {} (--truth wants truth_ID.ply for scan_ID, else {}.ply)",
+                folder.display(),
+                subject.name,
+                subject.name
+            )
+        })?;
+        let expected = [
+            ctx.template.base_vertex_count(),
+            ctx.template.mesh().positions.len(),
+        ];
+        let truth = read_truth(&path, &expected, alignment.scale_to_metres)?;
+        alignment.compare_with_truth(ctx.template, &truth);
+    }
     let quality = assess(&alignment, ctx.base_triangles, &ctx.thresholds);
     record.rms_mm = quality.rms_mm;
     record.flags = quality.flags.iter().map(|f| f.name().to_string()).collect();
@@ -403,6 +423,7 @@ pub fn run(args: &BatchArgs) -> Result<(), String> {
             resolution: resolution_name,
             fits: fits.clone(),
             reports: reports.clone(),
+            truth: args.truth.as_deref(),
         };
         eprintln!(
             "bodyspace batch: {} subjects to align ({skipped} done before), {jobs} at a time, {threads_per_job} thread(s) each",

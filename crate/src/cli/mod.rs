@@ -12,3 +12,9 @@ pub mod project;
 pub mod reconstruct;
 pub mod synth;
 pub mod template;
+pub mod truth;
+
+/// The bytes of a file the user named, or the one-line message for stderr.
+pub fn read_file(path: &std::path::Path) -> Result<Vec<u8>, String> {
+    std::fs::read(path).map_err(|e| format!("{}: cannot read the file: {e}", path.display()))
+}
