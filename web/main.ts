@@ -51,8 +51,10 @@ let loads = 0;
 const shapeSpace = new ShapeSpace(client, viewer, banner);
 
 // The batch aligns in a pool of workers of its own, with the template resolution and RBF settings
-// of the panels; its table redraws at most once a frame however fast progress comes.
+// of the panels; its table redraws at once on a change of state, and for progress at most once a
+// frame however fast it comes.
 let batchDrawn = false;
+const drawBatch = () => batchPanel.render(batch.all, batch.summary());
 const batch = new Batch(
   client,
   () => {
@@ -60,12 +62,13 @@ const batch = new Batch(
     const rbf = warpStep.panel.current;
     return resolution ? { resolution, params: rbf ? { rbf: rbfParams(rbf) } : {} } : null;
   },
-  () => {
+  (progress) => {
+    if (!progress) return drawBatch();
     if (batchDrawn) return;
     batchDrawn = true;
     requestAnimationFrame(() => {
       batchDrawn = false;
-      batchPanel.render(batch.all, batch.summary());
+      drawBatch();
     });
   },
   (messages) => banner.show(messages),
@@ -83,6 +86,8 @@ const batchPanel = new BatchPanel({
   },
 });
 void batch.restore();
+// Subjects dropped before the template was ready start when it is.
+templateView.onLoaded(() => batch.pump());
 
 /** Shows a batch subject's fit on the template view with its distance heat map. */
 function showBatchFit(subject: string): void {

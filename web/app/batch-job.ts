@@ -1,7 +1,7 @@
 // One subject of the batch in one pool worker: read its scan and landmarks with the core, then the
 // core's one pipeline (`align`: RBF warp + fine alignment) with the page's settings. The units
 // rules are the single alignment's (Session, scanInput).
-import type { CoreClient } from '../client/core-client';
+import { CancelledError, type CoreClient } from '../client/core-client';
 import type { AlignParams, AlignResult } from '../shared/align-types';
 import type { ParsedLandmarks, ParsedScan } from '../shared/results';
 import type { TemplateResolution } from '../shared/template-data';
@@ -14,19 +14,30 @@ export interface SubjectInput {
   landmarks: File | null;
 }
 
-/** Aligns one subject in `client`; `onProgress(fraction, label)` after each iteration. */
+/**
+ * Aligns one subject in `client`; `onProgress(fraction, label)` after each iteration. Cancelling
+ * terminates the client's worker, which rejects the call under way; `cancelled` stops the job
+ * between calls too (a cancel that came when no call was under way).
+ */
 export async function alignSubject(
   client: CoreClient,
   input: SubjectInput,
   resolution: TemplateResolution,
   params: AlignParams,
   onProgress: (fraction: number, label: string) => void,
+  cancelled: AbortSignal,
 ): Promise<AlignResult> {
+  const go = () => {
+    if (cancelled.aborted) throw new CancelledError();
+  };
   const bytes = await input.scan.arrayBuffer();
+  go();
   const scan = await client.call({ type: 'parseScan', bytes, fileName: input.scan.name }, { transfer: [bytes] });
   const session = new Session();
   session.setScan(scan);
+  go();
   session.setLandmarks(await landmarksOf(client, input, scan));
+  go();
   const aligned = scanInput(session, resolution);
   if (!aligned) throw new Error('the scan or its landmarks could not be read');
   return client.call(

@@ -34,6 +34,13 @@ export interface BatchSummary {
   workers: number;
 }
 
+/** A running subject: its pool slot and worker, and its cancel signal. */
+interface Job {
+  slot: number;
+  client: CoreClient;
+  cancel: AbortController;
+}
+
 const ENDED = new Set(['ok', 'flagged', 'failed', 'cancelled', 'interrupted']);
 
 export class Batch {
@@ -41,7 +48,7 @@ export class Batch {
   private readonly store = new BatchStore();
   private pool: WorkerPool | null = null;
   /** The running subjects' pool slots and clients. */
-  private readonly running = new Map<string, { slot: number; client: CoreClient }>();
+  private readonly running = new Map<string, Job>();
   /** Most subjects aligned at once; null: the pool's size (cores, memory). */
   workerLimit: number | null = null;
   /** Start of the current run and the work finished in it, for the ETA. */
@@ -53,7 +60,8 @@ export class Batch {
   constructor(
     private readonly pairing: CoreClient,
     private readonly settings: () => BatchSettings | null,
-    private readonly onChange: () => void,
+    /** `progress`: only a running subject's progress moved (the page may draw it at the next frame). */
+    private readonly onChange: (progress?: boolean) => void,
     private readonly onError: (messages: string[]) => void,
   ) {}
 
@@ -152,8 +160,11 @@ export class Batch {
     const row = this.rows.get(subject);
     if (!row) return;
     const job = this.running.get(subject);
-    // Terminates that worker only (a fresh one takes its slot); the job's promise then rejects.
-    if (job) job.client.cancel();
+    // Terminates that worker only (a fresh one takes its slot); the job's call under way rejects.
+    if (job) {
+      job.cancel.abort();
+      job.client.cancel();
+    }
     else if (row.status === 'queued') void this.finish(row, 'cancelled', 'cancelled before it started');
   }
 
@@ -195,18 +206,13 @@ export class Batch {
     this.onChange();
   }
 
-  /** The crash-isolation test: the client of a running subject's worker. */
-  clientOf(subject: string): CoreClient | null {
-    return this.running.get(subject)?.client ?? null;
-  }
-
   private workers(): number {
     const size = this.pool?.size ?? browserPoolSize(this.settings()?.resolution ?? 'base');
     return Math.min(size, this.workerLimit ?? size);
   }
 
-  /** Starts queued subjects while workers are free. */
-  private pump(): void {
+  /** Starts queued subjects while workers are free (and once the page has its settings). */
+  pump(): void {
     const settings = this.settings();
     if (!settings) return;
     this.pool ??= new WorkerPool(browserPoolSize(settings.resolution));
@@ -219,12 +225,12 @@ export class Batch {
         this.runStart = performance.now();
         this.finishedInRun = 0;
       }
-      void this.runJob(row, taken, settings);
+      void this.runJob(row, { ...taken, cancel: new AbortController() }, settings);
     }
     if (this.running.size === 0) this.runStart = null;
   }
 
-  private async runJob(row: BatchRow, job: { slot: number; client: CoreClient }, settings: BatchSettings): Promise<void> {
+  private async runJob(row: BatchRow, job: Job, settings: BatchSettings): Promise<void> {
     this.running.set(row.subject, job);
     Object.assign(row, { status: 'aligning', progress: 0, progressLabel: 'reading', resolution: settings.resolution });
     void this.save(row);
@@ -239,12 +245,14 @@ export class Batch {
       const result = await alignSubject(job.client, { scan: row.scan, landmarks: row.landmarks }, settings.resolution, settings.params, (fraction, label) => {
         row.progress = fraction;
         row.progressLabel = label;
-        this.onChange();
-      });
+        this.onChange(true);
+      }, job.cancel.signal);
       row.seconds = (performance.now() - t0) / 1e3;
       row.rmsMm = result.report.fine.scan_to_template.rms_mm;
       row.fit = { positions: result.positions, distances: result.distances, report: result.report, quality: result.quality };
-      document.body.dataset.batchWasmMemoryMib = String(Math.round(result.wasmMemoryBytes / 2 ** 20));
+      // The largest worker memory seen, for the pool's per-job estimate (docs/batch.md).
+      const mib = Math.round(result.wasmMemoryBytes / 2 ** 20);
+      document.body.dataset.batchWasmMemoryMib = String(Math.max(mib, Number(document.body.dataset.batchWasmMemoryMib ?? 0)));
       const flags = result.quality.flags;
       await this.finish(row, flags.length ? 'flagged' : 'ok', flags.length ? flagReason(result.quality) : '', job);
     } catch (error) {
@@ -254,7 +262,7 @@ export class Batch {
     }
   }
 
-  private async finish(row: BatchRow, status: BatchRow['status'], reason: string, job?: { slot: number; client: CoreClient }): Promise<void> {
+  private async finish(row: BatchRow, status: BatchRow['status'], reason: string, job?: Job): Promise<void> {
     Object.assign(row, { status, reason, progress: 0, progressLabel: '' });
     if (job) {
       if (this.running.get(row.subject) === job) this.running.delete(row.subject);

@@ -4,11 +4,12 @@
 import { CoreClient } from './core-client';
 
 /**
- * Peak memory of one batch job (a worker's WASM memory after aligning a subject at `base`, plus
- * the worker's own), MiB. Measured: the WASM memory of a worker after aligning synthetic subjects
- * (docs/batch.md, "In the browser"); the fine template takes more, so the pool is sized for it.
+ * Peak memory of one batch job, MiB: the worker's WASM memory after aligning a subject, measured
+ * with `npm run bench` (batch part) on 116K–185K-vertex synthetic scans — 88 MiB at `base`, 455 MiB
+ * at `fine` — rounded up for the worker's own JavaScript heap and the scan copies in flight (that
+ * margin is an allowance, not a measurement). docs/batch.md, "In the browser".
  */
-export const JOB_MEMORY_MIB = { base: 160, fine: 900 } as const;
+export const JOB_MEMORY_MIB = { base: 120, fine: 500 } as const;
 
 /** The share of the device's memory the pool may take (the page, the view and the other workers keep the rest). */
 const MEMORY_SHARE = 0.5;
@@ -23,7 +24,7 @@ export function poolSize(cores: number | undefined, deviceMemoryGib: number | un
   return Math.max(1, Math.min(byCores, Math.floor((deviceMemoryGib * 1024 * MEMORY_SHARE) / jobMib)));
 }
 
-/** The pool size for this browser at `resolution`. */
+/** The pool size for this browser at `resolution` (the pool is sized once, at the batch's first start). */
 export function browserPoolSize(resolution: keyof typeof JOB_MEMORY_MIB): number {
   const nav = navigator as Navigator & { deviceMemory?: number };
   return poolSize(nav.hardwareConcurrency, nav.deviceMemory, JOB_MEMORY_MIB[resolution]);
@@ -54,10 +55,5 @@ export class WorkerPool {
 
   give(slot: number): void {
     if (!this.free.includes(slot)) this.free.push(slot);
-  }
-
-  /** The client of a slot (for the crash-isolation test's trap). */
-  client(slot: number): CoreClient | null {
-    return this.clients[slot] ?? null;
   }
 }
