@@ -2,25 +2,22 @@
 import './style.css';
 import { AlignStep } from './app/align-step';
 import { Batch } from './app/batch';
+import { startBatch } from './app/batch-view';
 import { Session } from './app/session';
 import { TemplateView } from './app/template-view';
 import { WarpStep } from './app/warp-step';
 import { readFiles } from './app/read-files';
 import { ShapeSpace } from './app/shape-space';
 import { CoreClient } from './client/core-client';
-import { rbfParams } from './shared/align-types';
 import { classifyFile } from './shared/file-kind';
 import { METRES_PER_UNIT, type Units } from './shared/results';
-import { BatchPanel } from './ui/batch-panel';
 import { acceptDrops } from './ui/drop-overlay';
 import { byId } from './ui/dom';
 import { ErrorBanner } from './ui/error-banner';
 import { LandmarksPanel } from './ui/landmarks-panel';
 import { ScanPanel } from './ui/scan-panel';
 import { TopBar } from './ui/top-bar';
-import { distanceHeat } from './view/heat-colours';
 import { Viewer } from './view/viewer';
-import { uprightTransform } from './app/display-frame';
 
 const client = new CoreClient();
 // Long jobs that Cancel may stop (the RBF warp and alignment) run in a worker of their own:
@@ -50,67 +47,8 @@ let loads = 0;
 
 const shapeSpace = new ShapeSpace(client, viewer, banner);
 
-// The batch aligns in a pool of workers of its own, with the template resolution and RBF settings
-// of the panels; its table redraws at once on a change of state, and for progress at most once a
-// frame however fast it comes.
-let batchDrawn = false;
-const drawBatch = () => batchPanel.render(batch.all, batch.summary());
-const batch = new Batch(
-  client,
-  () => {
-    const resolution = templateView.data?.resolution;
-    const rbf = warpStep.panel.current;
-    return resolution ? { resolution, params: rbf ? { rbf: rbfParams(rbf) } : {} } : null;
-  },
-  (progress) => {
-    if (!progress) return drawBatch();
-    if (batchDrawn) return;
-    batchDrawn = true;
-    requestAnimationFrame(() => {
-      batchDrawn = false;
-      drawBatch();
-    });
-  },
-  (messages) => banner.show(messages),
-);
-const batchPanel = new BatchPanel({
-  onSelect: (subject) => showBatchFit(subject),
-  onCancel: (subject) => batch.cancel(subject),
-  onRetry: (subject) => batch.retry(subject),
-  onExclude: (subject, excluded) => batch.setExcluded(subject, excluded),
-  onCancelAll: () => batch.cancelAll(),
-  onBuild: () => void shapeSpace.buildFrom(batch.kept(), (text) => batchPanel.showBuildStatus(text)),
-  onClear: () => {
-    batchPanel.select(null);
-    void batch.clear();
-  },
-});
-void batch.restore();
-// Subjects dropped before the template was ready start when it is.
-templateView.onLoaded(() => batch.pump());
-
-/** Shows a batch subject's fit on the template view with its distance heat map. */
-function showBatchFit(subject: string): void {
-  const fit = batch.row(subject)?.fit;
-  const template = templateView.data;
-  if (!fit || !template || fit.positions.length !== template.positions.length) {
-    banner.show([`${subject}: its fit is at another template resolution than the one loaded; choose that resolution in the Template panel to see it.`]);
-    return;
-  }
-  const heat = distanceHeat(fit.distances);
-  shapeSpace.hide();
-  alignStep.reset();
-  templateView.setShown(false);
-  for (const key of ['scan', 'warped']) viewer.showBody(key, { visible: false });
-  viewer.showBody(
-    'fitted',
-    { mesh: { positions: fit.positions, triangles: template.triangles }, colour: 0x8fd19e, vertexColours: heat.colours, transform: uprightTransform(fit.report.warp.similarity), visible: true },
-    true,
-  );
-  emptyHint.hidden = true;
-  batchPanel.select(subject, heat.maxMm);
-  body.dataset.batchShown = subject;
-}
+// The batch aligns in a pool of workers of its own.
+const batch = startBatch({ client, viewer, templateView, warpStep, alignStep, shapeSpace, banner });
 
 // `?debug` lets the crash-recovery tests trap a worker's core as a bug would: the main or align
 // worker now, or the next batch job's worker when it starts.

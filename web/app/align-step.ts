@@ -14,7 +14,8 @@ import { baseName, subjects } from './subjects';
 import type { TemplateView } from './template-view';
 import { SCAN_OPACITY, type WarpStep } from './warp-step';
 
-const FITTED_COLOUR = 0x8fd19e;
+/** The fitted template's colour where no heat map is drawn on it. */
+export const FITTED_COLOUR = 0x8fd19e;
 
 export class AlignStep {
   readonly panel: AlignPanel;
