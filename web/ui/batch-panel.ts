@@ -20,9 +20,9 @@ type Column = 'subject' | 'status' | 'rms' | 'flags' | 'time';
 const COLUMNS: { key: Column; label: string }[] = [
   { key: 'subject', label: 'Subject' },
   { key: 'status', label: 'Status' },
-  { key: 'rms', label: 'RMS (mm)' },
+  { key: 'rms', label: 'RMS mm' },
   { key: 'flags', label: 'Flags' },
-  { key: 'time', label: 'Time (s)' },
+  { key: 'time', label: 'Time s' },
 ];
 
 /** The status as the table writes it: `excluded` over the fit's own, progress while aligning. */
@@ -122,7 +122,7 @@ export class BatchPanel {
     );
   }
 
-  private table(rows: BatchRow[], button: (text: string, testid: string, run: () => void) => HTMLButtonElement): HTMLTableElement {
+  private table(rows: BatchRow[], button: (text: string, testid: string, run: () => void) => HTMLButtonElement): HTMLElement {
     const { column, descending } = this.sort;
     const sorted = [...rows].sort((a, b) => {
       const [x, y] = [sortValue(a, column), sortValue(b, column)];
@@ -144,7 +144,7 @@ export class BatchPanel {
     );
     const body = sorted.map((row) => {
       const status = h('td', { 'data-testid': 'batch-status', title: row.reason || row.progressLabel }, statusText(row));
-      const flags = row.fit?.quality.flags.join(', ') ?? (row.status === 'failed' ? row.reason : '');
+      const flags = row.fit?.quality.flags.map((f) => f.replace('_', ' ')).join(', ') ?? (row.status === 'failed' ? row.reason : '');
       const tr = h(
         'tr',
         {
@@ -163,7 +163,7 @@ export class BatchPanel {
       if (row.fit) tr.addEventListener('click', () => this.actions.onSelect(row.subject));
       return tr;
     });
-    return h('table', { class: 'batch-table', 'data-testid': 'batch-table' }, h('thead', {}, head), h('tbody', {}, ...body));
+    return h('div', { class: 'batch-scroll' }, h('table', { class: 'batch-table', 'data-testid': 'batch-table' }, h('thead', {}, head), h('tbody', {}, ...body)));
   }
 
   private rowActions(row: BatchRow, button: (text: string, testid: string, run: () => void) => HTMLButtonElement): HTMLButtonElement[] {
