@@ -7,11 +7,14 @@
 #          worker inside Chromium and natively (crate/examples/pca_bench.rs morph)
 #   align  alignment vs trimesh nricp_amberg (scripts/bench-align.sh), and of a ≈ 201K-vertex
 #          scan in the browser worker at base and fine (scripts/bench-align-browser.sh)
-# BENCH_PARTS picks some (default: "parse shape align"); RUNS / SHAPE_RUNS set the repetitions.
+#   batch  20 synthetic subjects (`bodyspace synth --n 20 --seed 7`, as the CLI batch benchmark)
+#          picked at once in the app: wall time to the built model with the worker pool and with
+#          one worker (bench/batch-bench.mjs; BATCH_RUNS rounds, default 2)
+# BENCH_PARTS picks some (default: "parse shape align batch"); RUNS / SHAPE_RUNS set the repetitions.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 export PATH="$HOME/.cargo/bin:$PATH"
-parts="${BENCH_PARTS:-parse shape align}"
+parts="${BENCH_PARTS:-parse shape align batch}"
 runs="${RUNS:-7}"
 port="${BENCH_PORT:-4179}"
 work="$(mktemp -d)"
@@ -60,4 +63,13 @@ if wants align; then
   echo
   echo "== alignment in the browser worker (≈ 201K-vertex synthetic subject, base and fine)"
   bash scripts/bench-align-browser.sh
+fi
+if wants batch; then
+  echo
+  echo "== batch in the browser: 20 synthetic subjects, worker pool vs one worker"
+  cargo build --quiet --release --manifest-path crate/Cargo.toml --bin bodyspace
+  crate/target/release/bodyspace synth --n 20 --seed 7 --out "$work/batch" >/dev/null
+  echo "load average before: $(cut -d' ' -f1-3 /proc/loadavg)"
+  node bench/batch-bench.mjs "http://127.0.0.1:$port/" "$work/batch" "${BATCH_RUNS:-2}"
+  echo "load average after: $(cut -d' ' -f1-3 /proc/loadavg)"
 fi

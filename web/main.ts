@@ -1,12 +1,15 @@
 // Wires the page: the core client, the viewer, the panels, and file drops / picks.
 import './style.css';
 import { AlignStep } from './app/align-step';
+import { Batch } from './app/batch';
+import { startBatch } from './app/batch-view';
 import { Session } from './app/session';
 import { TemplateView } from './app/template-view';
 import { WarpStep } from './app/warp-step';
 import { readFiles } from './app/read-files';
 import { ShapeSpace } from './app/shape-space';
 import { CoreClient } from './client/core-client';
+import { classifyFile } from './shared/file-kind';
 import { METRES_PER_UNIT, type Units } from './shared/results';
 import { acceptDrops } from './ui/drop-overlay';
 import { byId } from './ui/dom';
@@ -43,10 +46,19 @@ let lastReadMs = 0;
 let loads = 0;
 
 const shapeSpace = new ShapeSpace(client, viewer, banner);
-// `?debug` lets the crash-recovery test trap either worker's core as a bug would.
+
+// The batch aligns in a pool of workers of its own.
+const batch = startBatch({ client, viewer, templateView, warpStep, alignStep, shapeSpace, banner });
+
+// `?debug` lets the crash-recovery tests trap a worker's core as a bug would: the main or align
+// worker now, or the next batch job's worker when it starts.
 if (new URLSearchParams(location.search).has('debug')) {
-  const trap = (which: 'core' | 'align') => (which === 'core' ? client : alignClient).call({ type: 'trap' }).catch(() => undefined);
-  (window as unknown as { bodyspaceDebug: unknown }).bodyspaceDebug = { trap };
+  const trap = (which: 'core' | 'align' | 'batch') => {
+    if (which === 'batch') batch.trapNext = true;
+    else void (which === 'core' ? client : alignClient).call({ type: 'trap' }).catch(() => undefined);
+  };
+  const setBatchWorkers = (n: number | null) => (batch.workerLimit = n);
+  (window as unknown as { bodyspaceDebug: unknown }).bodyspaceDebug = { trap, setBatchWorkers };
 }
 void shapeSpace.start(location.hash);
 
@@ -73,6 +85,12 @@ async function open(all: File[]): Promise<void> {
   if (models.length) await shapeSpace.openModelFiles(models);
   const files = all.filter((f) => !ShapeSpace.isModelFile(f.name));
   if (files.length === 0) return;
+  if (Batch.wants(files, (name) => classifyFile(name) === 'scan')) {
+    await batch.add(files);
+    topBar.setStatus(`Added ${files.length} files to the batch.`);
+    body.dataset.loads = String(++loads);
+    return;
+  }
   body.dataset.busy = 'true';
   const outcome = await readFiles(client, files, (text) => topBar.setStatus(text));
   const scan = outcome.scans.at(-1);

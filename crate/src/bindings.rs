@@ -5,7 +5,7 @@
 //! WASM memory, so a later allocation cannot invalidate it.
 //!
 //! * this file: `coreVersion`, `caesarLandmarkNames`, `parseScan` ([`ParsedScan`]: counts,
-//!   positions, triangles, normals, summary), `parseLandmarks`;
+//!   positions, triangles, normals, summary), `parseLandmarks`, `pairSubjectFiles`;
 //! * `template.rs`: `loadTemplate` ([`TemplateHandle`]);
 //! * `align.rs`: `alignDefaults`, [`ScanWithLandmarks`], `rbfWarp`, `alignScan`, `exportMesh`;
 //! * `model.rs`: `loadShapeModel` ([`ShapeSpace`]); `model_build.rs`: `buildShapeModel`.
@@ -28,6 +28,7 @@ mod model_build;
 pub use model::{load_shape_model, ShapeSpace};
 pub use model_build::build_shape_model;
 
+use crate::io::subject_files::pair_subject_files;
 use crate::io::{read_landmarks, read_scan};
 use crate::landmarks::report::{report, LandmarkReport};
 use crate::landmarks::CAESAR_LANDMARKS;
@@ -158,6 +159,17 @@ pub fn parse_landmarks(bytes: &[u8], file_name: &str) -> Result<String, JsError>
         report: report(&set),
     };
     serde_json::to_string(&parsed).map_err(|e| JsError::new(&e.to_string()))
+}
+
+/// The subjects among files given together (a drop or a folder), by the batch's pairing rule
+/// ([`crate::io::subject_files`]), as JSON: `{subjects: [{subject, scan, landmarks}],
+/// duplicates: [index]}`, where `scan` and `landmarks` (or `null`) index `file_names` and
+/// `duplicates` are further scans of a subject already listed.
+#[wasm_bindgen(js_name = pairSubjectFiles)]
+pub fn pair_subject_files_js(file_names: Vec<String>) -> Result<String, JsError> {
+    let (subjects, duplicates) = pair_subject_files(&file_names);
+    serde_json::to_string(&serde_json::json!({ "subjects": subjects, "duplicates": duplicates }))
+        .map_err(|e| JsError::new(&e.to_string()))
 }
 
 /// The file name as given, or an error naming the problem when it is blank.

@@ -2,7 +2,9 @@
 //! bytes go through the same calls the worker makes, and the numbers that come out are checked.
 #![cfg(target_arch = "wasm32")]
 
-use bodyspace::bindings::{caesar_landmark_names, core_version, parse_landmarks, parse_scan};
+use bodyspace::bindings::{
+    caesar_landmark_names, core_version, pair_subject_files_js, parse_landmarks, parse_scan,
+};
 use wasm_bindgen_test::*;
 
 wasm_bindgen_test_configure!(run_in_browser);
@@ -133,6 +135,32 @@ END =\r\n";
         Some(71)
     );
     assert_eq!(parsed["report"]["unknown"], serde_json::json!([]));
+}
+
+#[wasm_bindgen_test]
+fn dropped_files_pair_by_base_name_as_the_cli_pairs_them() {
+    let names = [
+        "b.ply",
+        "scan_7.stl.gz",
+        "landmarks_7.csv",
+        "b.lnd",
+        "b.obj",
+        "lone.json",
+    ]
+    .map(String::from)
+    .to_vec();
+    let json = pair_subject_files_js(names).unwrap_or_else(|_| panic!("pairs"));
+    let parsed: serde_json::Value = serde_json::from_str(&json).unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(
+        parsed,
+        serde_json::json!({
+            "subjects": [
+                {"subject": "b", "scan": 0, "landmarks": 3},
+                {"subject": "scan_7", "scan": 1, "landmarks": 2},
+            ],
+            "duplicates": [4],
+        })
+    );
 }
 
 #[wasm_bindgen_test]

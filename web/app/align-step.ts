@@ -5,16 +5,17 @@ import { CancelledError, type CoreClient } from '../client/core-client';
 import { rbfParams, type AlignResult } from '../shared/align-types';
 import type { CoreEvent } from '../shared/messages';
 import { AlignPanel } from '../ui/align-panel';
-import { heatColours } from '../view/heat-colours';
+import { distanceHeat } from '../view/heat-colours';
 import type { Viewer } from '../view/viewer';
 import { download } from '../ui/download';
 import { scanInput, scanTransfer } from './scan-input';
 import type { Session } from './session';
-import { subjects } from './subjects';
+import { baseName, subjects } from './subjects';
 import type { TemplateView } from './template-view';
 import { SCAN_OPACITY, type WarpStep } from './warp-step';
 
-const FITTED_COLOUR = 0x8fd19e;
+/** The fitted template's colour where no heat map is drawn on it. */
+export const FITTED_COLOUR = 0x8fd19e;
 
 export class AlignStep {
   readonly panel: AlignPanel;
@@ -93,9 +94,9 @@ export class AlignStep {
       );
       recordTimings(result, performance.now() - posted);
       this.result = result;
-      const distancesMm = Float32Array.from(result.distances, (d) => d * 1e3);
-      this.legendMaxMm = legendMax(distancesMm);
-      this.showFitted({ positions: result.positions, triangles, normals: result.normals }, heatColours(distancesMm, 0, this.legendMaxMm));
+      const heat = distanceHeat(result.distances);
+      this.legendMaxMm = heat.maxMm;
+      this.showFitted({ positions: result.positions, triangles, normals: result.normals }, heat.colours);
       // The see-through scan would speckle the heat map it coincides with; its toggle brings it back.
       this.warp.show('scan', false);
       this.panel.render({ state: 'done', report: result.report, legendMaxMm: this.legendMaxMm, kept: false });
@@ -197,13 +198,3 @@ function recordTimings(result: AlignResult, roundTripMs: number): void {
   data.alignTemplateVertices = String(report.fine.template_vertices);
 }
 
-/** The heat scale's top: the 98th percentile (a few outliers must not wash out the rest), ≥ 1 mm. */
-function legendMax(valuesMm: Float32Array): number {
-  const sorted = Float32Array.from(valuesMm).sort();
-  const p = sorted[Math.floor(0.98 * (sorted.length - 1))] ?? 1;
-  return Math.max(1, Math.ceil(p));
-}
-
-function baseName(fileName: string): string {
-  return fileName.replace(/\.gz$/i, '').replace(/\.[^.]+$/, '');
-}

@@ -23,7 +23,7 @@ import { MorphQueue } from './morph-queue';
 import * as shapeExports from './shape-exports';
 import type { BodyFormat } from './shape-exports';
 import { readFits } from './read-fits';
-import { subjects } from './subjects';
+import { subjects, type AlignedSubject } from './subjects';
 
 /** Where the app finds its embedded model, relative to the page. */
 const DEMO_MODEL = 'models/demo.bsm';
@@ -411,16 +411,28 @@ export class ShapeSpace {
     if (errors.length) this.banner.show(errors);
   }
 
-  private async build(variance: number): Promise<void> {
-    const all = subjects.all;
+  /**
+   * Builds a model from `list` (the batch's kept subjects) with the panel's variance, shows it and
+   * reports each step through `onStatus`; resolves with whether a model was built.
+   */
+  async buildFrom(list: readonly AlignedSubject[], onStatus: (text: string) => void): Promise<boolean> {
+    this.suppressed = false;
+    return this.build(this.panel.buildVariance, list, onStatus);
+  }
+
+  private async build(
+    variance: number,
+    all: readonly AlignedSubject[] = subjects.all,
+    onStatus: (text: string) => void = (text) => this.panel.showBuildStatus(text),
+  ): Promise<boolean> {
     if (all.length < 2) {
-      this.panel.showBuildStatus('A model needs at least 2 aligned subjects; add fitted meshes or align scans first.');
-      return;
+      onStatus('A model needs at least 2 aligned subjects; add fitted meshes or align scans first.');
+      return false;
     }
     const v = all[0]!.positions.length;
     if (all.some((s) => s.positions.length !== v)) {
-      this.panel.showBuildStatus('The subjects are at different template resolutions; a model needs one.');
-      return;
+      onStatus('The subjects are at different template resolutions; a model needs one.');
+      return false;
     }
     const positions = new Float32Array(v * all.length);
     all.forEach((s, i) => positions.set(s.positions, i * v));
@@ -429,16 +441,18 @@ export class ShapeSpace {
       const wanted = this.resolution;
       const built = await this.client.call(
         { type: 'buildModel', positions, names: all.map((s) => s.name), variance },
-        { transfer: [positions.buffer], onProgress: (f, label) => this.panel.showBuildStatus(`${label} (${Math.round(f * 100)} %)`) },
+        { transfer: [positions.buffer], onProgress: (f, label) => onStatus(`${label} (${Math.round(f * 100)} %)`) },
       );
       this.adopt(built, null, built.fileName);
       this.modelFile = { bytes: (await this.client.call({ type: 'modelFile' })).slice().buffer, fileName: built.fileName };
-      this.panel.showBuildStatus(`Built from ${all.length} subjects.`);
+      onStatus(`Built from ${all.length} subjects.`);
       await this.keepResolution(wanted);
       this.redraw(true, true);
+      return true;
     } catch (error) {
-      this.panel.showBuildStatus('');
+      onStatus('');
       this.banner.show([error instanceof Error ? error.message : String(error)]);
+      return false;
     } finally {
       this.page.dataset.shapeBuilding = 'false';
     }

@@ -9,8 +9,8 @@ export interface AlignedSubject {
   positions: Float32Array;
   /** Template resolution the fit was made at ("base" or "fine"). */
   resolution: string;
-  /** Where it came from: aligned in this session or dropped as a fitted mesh. */
-  source: 'aligned' | 'dropped';
+  /** Where it came from: aligned in this session, dropped as a fitted mesh, or fitted by the batch. */
+  source: 'aligned' | 'dropped' | 'batch';
   /** Scan-to-template RMS of the fit in metres, when known. */
   rmsMetres?: number;
 }
@@ -49,3 +49,8 @@ export class SubjectStore {
 
 /** The one store of the page. */
 export const subjects = new SubjectStore();
+
+/** A subject's name from its file name: without the extension (and a `.gz` after it). */
+export function baseName(fileName: string): string {
+  return fileName.replace(/\.gz$/i, '').replace(/\.[^.]+$/, '');
+}

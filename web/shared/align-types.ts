@@ -160,8 +160,28 @@ export interface AlignResult {
   normals: Float32Array;
   distances: Float32Array;
   report: AlignReport;
+  /** The core's quality flags of the fit (`align/quality.rs`, its default thresholds). */
+  quality: QualityReport;
   /** The whole core call in the worker: inputs in, alignment, outputs copied out. */
   workerMs: number;
+  /** The worker's WASM memory after the call: its peak, since WASM memory never shrinks. */
+  wasmMemoryBytes: number;
+}
+
+/** A reason to look at a fit again (`align/quality.rs` `QualityFlag`, docs/batch.md). */
+export type QualityFlag = 'high_rms' | 'unmatched' | 'fold_overs';
+
+/** The core's `QualityReport`: the measures behind the flags and the flags raised. */
+export interface QualityReport {
+  rms_mm: number | null;
+  weighted_vertices: number;
+  unmatched_vertices: number;
+  unmatched_fraction: number;
+  compared_triangles: number;
+  folded_triangles: number;
+  folded_fraction: number;
+  flags: QualityFlag[];
+  thresholds: { max_rms_mm: number; max_unmatched_fraction: number; max_folded_fraction: number };
 }
 
 /** Sent after every L-BFGS iteration: the core's `Progress`. */

@@ -1,6 +1,6 @@
 // Messages between the UI thread and the core worker. No DOM here: shared by both threads.
 import type { AlignDefaults, AlignParams, AlignProgress, AlignResult, ScanInput, WarpResult } from './align-types';
-import type { ParsedLandmarks, ParsedScan } from './results';
+import type { ParsedLandmarks, ParsedScan, SubjectPairing } from './results';
 import type { TemplateData, TemplateResolution } from './template-data';
 import type { ExportBody, LoadedModel, ModelCsv, ModelGlbParts, ReconstructedBody, ShapeCoefficients, ShownResolution } from './shape-results';
 
@@ -11,6 +11,8 @@ export type CoreRequestBody =
   /** `bytes` is transferred, not copied: the sender's buffer is detached afterwards. */
   | { type: 'parseScan'; bytes: ArrayBuffer; fileName: string }
   | { type: 'parseLandmarks'; bytes: ArrayBuffer; fileName: string }
+  /** Which of `fileNames` make one subject: the batch's pairing rule (`io/subject_files.rs`). */
+  | { type: 'pairSubjectFiles'; fileNames: string[] }
   | { type: 'loadTemplate'; resolution: TemplateResolution }
   /** The core's alignment parameters with their defaults. */
   | { type: 'alignDefaults' }
@@ -46,6 +48,7 @@ export interface CoreResults {
   caesarNames: string[];
   parseScan: ParsedScan;
   parseLandmarks: ParsedLandmarks;
+  pairSubjectFiles: SubjectPairing;
   loadTemplate: TemplateData;
   alignDefaults: AlignDefaults;
   rbfWarp: WarpResult;

@@ -56,3 +56,12 @@ export interface ParsedLandmarks {
   detected_units: Units;
   report: LandmarkReport;
 }
+
+/**
+ * The subjects among files given together (`pairSubjectFiles`): `scan` and `landmarks` index the
+ * file names given; `duplicates` are further scans of a subject already listed.
+ */
+export interface SubjectPairing {
+  subjects: { subject: string; scan: number; landmarks: number | null }[];
+  duplicates: number[];
+}

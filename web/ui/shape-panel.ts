@@ -54,6 +54,7 @@ export class ShapePanel {
   private readonly resolutionStatus = h('p', { class: 'note', 'data-testid': 'shape-resolution-status' });
   private readonly resolutionNote = h('p', { class: 'note', 'data-testid': 'shape-resolution-note' });
   private readonly inputs: HTMLInputElement[] = [];
+  private readonly varianceInput = h('input', { type: 'number', min: '50', max: '100', step: '0.5', value: '99', 'data-testid': 'build-variance', class: 'small-input', 'aria-label': 'Variance to keep (%)' });
   private parts: ModelPart[] = [];
   private view: PartName = 'whole';
 
@@ -84,7 +85,7 @@ export class ShapePanel {
     const modeSelect = h('select', { 'data-testid': 'export-mode', 'aria-label': 'Mode to export' });
     parts[0]?.variances.forEach((_, k) => modeSelect.append(h('option', { value: String(k) }, `Mode ${k + 1}`)));
     const steps = h('input', { type: 'text', value: '-3,-1.5,0,1.5,3', 'data-testid': 'export-steps', 'aria-label': 'σ steps', class: 'small-input' });
-    const variance = h('input', { type: 'number', min: '50', max: '100', step: '0.5', value: '99', 'data-testid': 'build-variance', class: 'small-input', 'aria-label': 'Variance to keep (%)' });
+    const variance = this.varianceInput;
     const fits = h('input', { type: 'file', multiple: '', hidden: '', accept: '.ply,.obj,.gz', 'data-testid': 'fits-input' });
     fits.addEventListener('change', () => {
       this.actions.onAddFits([...(fits.files ?? [])]);
@@ -218,6 +219,11 @@ export class ShapePanel {
 
   showSubjects(aligned: number, dropped: number): void {
     this.subjectsNote.textContent = `${aligned + dropped} subjects in this session (${aligned} aligned, ${dropped} dropped fitted meshes).`;
+  }
+
+  /** The share of variance a model built here keeps (the panel's field, a fraction). */
+  get buildVariance(): number {
+    return Number(this.varianceInput.value) / 100;
   }
 
   showBuildStatus(text: string): void {

@@ -1,4 +1,4 @@
-// The top bar: the "Open files…" button (a hidden file input) and the status line.
+// The top bar: the "Open files…" and "Open folder…" buttons (hidden file inputs) and the status line.
 import { ACCEPTED_EXTENSIONS } from '../shared/file-kind';
 import { byId } from './dom';
 
@@ -10,11 +10,16 @@ export class TopBar {
     const input = byId<HTMLInputElement>('file-input');
     input.accept = ACCEPTED_EXTENSIONS.join(',');
     byId('open-files').addEventListener('click', () => input.click());
-    input.addEventListener('change', () => {
-      const files = [...(input.files ?? [])];
-      input.value = '';
-      if (files.length > 0) onFiles(files);
-    });
+    // A folder's files (every file under it), for a batch.
+    const folder = byId<HTMLInputElement>('folder-input');
+    byId('open-folder').addEventListener('click', () => folder.click());
+    for (const picker of [input, folder]) {
+      picker.addEventListener('change', () => {
+        const files = [...(picker.files ?? [])];
+        picker.value = '';
+        if (files.length > 0) onFiles(files);
+      });
+    }
   }
 
   setStatus(text: string): void {

@@ -32,3 +32,14 @@ export function heatColours(values: Float32Array, min: number, max: number): Flo
 export function heatGradientCss(): string {
   return `linear-gradient(to right, ${HEAT_STOPS.join(', ')})`;
 }
+
+/**
+ * The heat map of a fit's per-vertex distances to its scan (`#V`, metres): colours from 0 mm to
+ * the scale's top, the 98th percentile (a few outliers must not wash out the rest), ≥ 1 mm.
+ */
+export function distanceHeat(distancesMetres: Float32Array): { colours: Float32Array; maxMm: number } {
+  const mm = Float32Array.from(distancesMetres, (d) => d * 1e3);
+  const sorted = Float32Array.from(mm).sort();
+  const maxMm = Math.max(1, Math.ceil(sorted[Math.floor(0.98 * (sorted.length - 1))] ?? 1));
+  return { colours: heatColours(mm, 0, maxMm), maxMm };
+}

@@ -2,7 +2,7 @@
 // out after every iteration and the template's positions after every round (transferred), so a
 // terminated worker loses nothing the page has not already got.
 import { alignDefaults, alignScan, exportMesh, rbfWarp, ScanWithLandmarks } from '../pkg/bodyspace.js';
-import type { AlignDefaults, AlignParams, AlignProgress, AlignReport, AlignResult, ScanInput, WarpResult } from '../shared/align-types';
+import type { AlignDefaults, AlignParams, AlignProgress, AlignReport, AlignResult, QualityReport, ScanInput, WarpResult } from '../shared/align-types';
 import type { CoreEvent } from '../shared/messages';
 import { templateHandle } from './template-handlers';
 
@@ -25,7 +25,11 @@ export function runRbfWarp(scan: ScanInput, params: AlignParams): WarpResult {
   }
 }
 
-export function runAlign(scan: ScanInput, params: AlignParams, emit: (event: CoreEvent, transfer?: Transferable[]) => void): AlignResult {
+export function runAlign(
+  scan: ScanInput,
+  params: AlignParams,
+  emit: (event: CoreEvent, transfer?: Transferable[]) => void,
+): Omit<AlignResult, 'wasmMemoryBytes'> {
   let lastIteration = 0;
   const onProgress = (progress: AlignProgress): boolean => {
     lastIteration = progress.iteration;
@@ -43,6 +47,7 @@ export function runAlign(scan: ScanInput, params: AlignParams, emit: (event: Cor
       normals: outcome.normals(),
       distances: outcome.distances(),
       report: JSON.parse(outcome.reportJson()) as AlignReport,
+      quality: JSON.parse(outcome.qualityJson()) as QualityReport,
       workerMs: performance.now() - t0,
     };
   } finally {

@@ -1,8 +1,9 @@
 // The only code that imports the WASM core. Runs every core call off the UI thread; arrays come
 // out of WASM memory as copies and go back to the UI thread transferred, never copied again.
-import init, { caesarLandmarkNames, coreVersion, parseLandmarks, parseScan, trapForTest } from '../pkg/bodyspace.js';
+import init, { caesarLandmarkNames, coreVersion, pairSubjectFiles, parseLandmarks, parseScan, trapForTest } from '../pkg/bodyspace.js';
+import type { AlignResult } from '../shared/align-types';
 import type { CoreReply, CoreRequest } from '../shared/messages';
-import type { MeshSummary, ParsedLandmarks, ParsedScan } from '../shared/results';
+import type { MeshSummary, ParsedLandmarks, ParsedScan, SubjectPairing } from '../shared/results';
 import { runAlign, runAlignDefaults, runExport, runRbfWarp } from './align-handlers';
 import { templateData, templateTransfer } from './template-handlers';
 import * as models from './model-handlers';
@@ -66,6 +67,9 @@ self.onmessage = async (event: MessageEvent<CoreRequest>) => {
       case 'parseLandmarks':
         post({ id: request.id, type: 'result', result: readLandmarks(request.bytes, request.fileName) });
         break;
+      case 'pairSubjectFiles':
+        post({ id: request.id, type: 'result', result: JSON.parse(pairSubjectFiles(request.fileNames)) as SubjectPairing });
+        break;
       case 'loadTemplate': {
         post({ id: request.id, type: 'progress', fraction: 0, label: `Loading the ${request.resolution} template` });
         const data = templateData(request.resolution);
@@ -82,9 +86,10 @@ self.onmessage = async (event: MessageEvent<CoreRequest>) => {
       }
       case 'align': {
         const id = request.id;
-        const result = runAlign(request.scan, request.params, (event, transfer) =>
+        const aligned = runAlign(request.scan, request.params, (event, transfer) =>
           post({ id, type: 'event', event }, transfer),
         );
+        const result: AlignResult = { ...aligned, wasmMemoryBytes: (await ready).memory.buffer.byteLength };
         post({ id, type: 'result', result }, [result.positions.buffer, result.normals.buffer, result.distances.buffer]);
         break;
       }

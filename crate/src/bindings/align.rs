@@ -15,7 +15,8 @@ use wasm_bindgen::prelude::*;
 
 use super::template::TemplateHandle;
 use crate::align::{
-    align_scan, AlignInput, AlignObserver, AlignParams, Alignment, Progress, Stage,
+    align_scan, assess, AlignInput, AlignObserver, AlignParams, Alignment, Progress,
+    QualityThresholds, Stage,
 };
 use crate::landmarks::{Landmark, LandmarkSet};
 use crate::mesh::units::Units;
@@ -104,13 +105,14 @@ pub fn align_scan_js(
 }
 
 /// The fitted (or warped) template: positions, normals, per-vertex distance to the scan (metres;
-/// empty after the warp alone) and the core's report as JSON.
+/// empty after the warp alone), the core's report and its quality flags as JSON.
 #[wasm_bindgen]
 pub struct AlignOutcome {
     positions: Vec<f32>,
     normals: Vec<f32>,
     distances: Vec<f32>,
     report: String,
+    quality: String,
 }
 
 #[wasm_bindgen]
@@ -132,9 +134,26 @@ impl AlignOutcome {
     pub fn report_json(&self) -> String {
         self.report.clone()
     }
+    /// The core's `QualityReport` of the fit as JSON (measures, flags raised, the default
+    /// thresholds of `align/quality.rs`); `null` after the warp alone.
+    #[wasm_bindgen(js_name = qualityJson)]
+    pub fn quality_json(&self) -> String {
+        self.quality.clone()
+    }
 }
 
 fn outcome(template: &TemplateHandle, alignment: Alignment) -> Result<AlignOutcome, JsError> {
+    // Fold-overs are counted on the base template's triangles, which index the warped template
+    // and the first vertices of a fit at either resolution (as `bodyspace batch` does).
+    let quality = alignment.report.fine.is_some().then(|| {
+        let base = template.base.as_ref().unwrap_or(&template.template);
+        assess(
+            &alignment,
+            &base.mesh().triangles,
+            &QualityThresholds::default(),
+        )
+    });
+    let json = |e: serde_json::Error| JsError::new(&e.to_string());
     let mesh = Mesh::new(
         alignment.positions,
         template.template.mesh().triangles.clone(),
@@ -147,8 +166,8 @@ fn outcome(template: &TemplateHandle, alignment: Alignment) -> Result<AlignOutco
             .iter()
             .map(|d| *d as f32)
             .collect(),
-        report: serde_json::to_string(&alignment.report)
-            .map_err(|e| JsError::new(&e.to_string()))?,
+        report: serde_json::to_string(&alignment.report).map_err(json)?,
+        quality: serde_json::to_string(&quality).map_err(json)?,
     })
 }
 

@@ -5,10 +5,7 @@ use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 use std::str::FromStr;
 
-/// Scan file extensions (each also with `.gz`).
-pub const SCAN_EXTENSIONS: [&str; 3] = ["ply", "obj", "stl"];
-/// Landmark file extensions, in the order they are looked for.
-pub const LANDMARK_EXTENSIONS: [&str; 3] = ["lnd", "csv", "json"];
+use crate::io::subject_files;
 
 /// The K-th (1-based) of N shares.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -49,34 +46,25 @@ pub struct Subject {
     pub landmarks: Option<PathBuf>,
 }
 
-/// The subject name of a scan file (`a.ply.gz` → `a`), or `None` when it is not a scan file.
+/// The subject name of a scan file path, or `None` when it is not a scan file.
 fn subject_name(path: &Path) -> Option<String> {
-    let name = path.file_name()?.to_str()?;
-    let lower = name.to_ascii_lowercase();
-    let stem_len = SCAN_EXTENSIONS.iter().find_map(|ext| {
-        [format!(".{ext}"), format!(".{ext}.gz")]
-            .iter()
-            .find(|suffix| lower.ends_with(suffix.as_str()))
-            .map(|suffix| name.len() - suffix.len())
-    })?;
-    (stem_len > 0 && !name.starts_with('.')).then(|| name[..stem_len].to_string())
+    subject_files::subject_name(path.file_name()?.to_str()?).map(str::to_string)
 }
 
-/// The landmark file of `subject` in `folders` (searched in order): `<subject>.lnd`, `.csv`,
-/// `.json`, then for `scan_ID` the same names of `landmarks_ID`.
+/// The landmark file of `subject` in `folders`, by [`subject_files::landmark_file_names`]: each
+/// base name in all folders (in order) before the next base name.
 fn find_landmark_file(subject: &str, folders: &[&Path]) -> Option<PathBuf> {
-    let mut stems = vec![subject.to_string()];
-    if let Some(id) = subject.strip_prefix("scan_") {
-        stems.push(format!("landmarks_{id}"));
-    }
-    stems.iter().find_map(|stem| {
-        folders.iter().find_map(|dir| {
-            LANDMARK_EXTENSIONS
-                .iter()
-                .map(|ext| dir.join(format!("{stem}.{ext}")))
-                .find(|p| p.is_file())
+    let names = subject_files::landmark_file_names(subject);
+    names
+        .chunks(subject_files::LANDMARK_EXTENSIONS.len())
+        .find_map(|same_stem| {
+            folders.iter().find_map(|dir| {
+                same_stem
+                    .iter()
+                    .map(|name| dir.join(name))
+                    .find(|p| p.is_file())
+            })
         })
-    })
 }
 
 /// Every scan in `scans` with its landmark file, sorted by subject name. Two scans with the same
@@ -130,17 +118,5 @@ mod tests {
         for bad in ["0/3", "4/3", "3", "a/b", "1/0"] {
             assert!(bad.parse::<Shard>().is_err(), "{bad}");
         }
-    }
-
-    #[test]
-    fn subject_names_drop_scan_extensions_only() {
-        let name = |s: &str| subject_name(Path::new(s));
-        assert_eq!(name("dir/scan_001.ply").as_deref(), Some("scan_001"));
-        assert_eq!(name("A.B.PLY.gz").as_deref(), Some("A.B"));
-        assert_eq!(name("x.stl").as_deref(), Some("x"));
-        assert_eq!(name("x.lnd"), None);
-        assert_eq!(name("x.ply.tmp"), None);
-        assert_eq!(name(".x.ply"), None);
-        assert_eq!(name(".ply"), None);
     }
 }

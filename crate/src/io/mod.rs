@@ -8,6 +8,7 @@
 //!   [`landmarks_csv`], [`landmarks_json`], [`lnd`] (CAESAR `.lnd`), [`landmark_raw`] (the record
 //!   the three readers produce).
 //! * Writers: [`ply_write`], [`obj_write`], [`glb_write`] (the binary glTF container).
+//! * [`subject_files`]: which scan and landmark files make one subject of a batch.
 //! * [`error`]: [`IoError`], the one error type of every reader; [`limits`]: the largest input
 //!   accepted (inflated size, vertices, triangles), checked before memory is reserved.
 
@@ -29,6 +30,7 @@ pub mod ply_source;
 pub mod ply_write;
 pub mod scan;
 pub mod stl_read;
+pub mod subject_files;
 pub mod text_xyz;
 
 pub use error::IoError;

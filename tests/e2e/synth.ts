@@ -1,0 +1,35 @@
+// Synthetic subjects made by the core's own generator (`bodyspace synth`, the native CLI that
+// the test command builds before the browser tests), read from disk as a person would drop them.
+import { execFileSync } from 'node:child_process';
+import { existsSync, mkdtempSync, readdirSync, readFileSync, rmSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
+import { fileURLToPath } from 'node:url';
+import type { TestFile } from './fixtures';
+
+const TARGET = fileURLToPath(new URL('../../crate/target/', import.meta.url));
+
+/** The native CLI: BODYSPACE_BIN, else the release build, else the debug build. */
+function bodyspaceBinary(): string {
+  const candidates = [process.env.BODYSPACE_BIN, join(TARGET, 'release/bodyspace'), join(TARGET, 'debug/bodyspace')];
+  const found = candidates.find((p): p is string => Boolean(p && existsSync(p)));
+  if (!found) throw new Error('no bodyspace binary: run `cargo build --manifest-path crate/Cargo.toml` first');
+  return found;
+}
+
+/**
+ * `n` synthetic subjects of population `seed`, scanned every `stepMm` (20 mm: ≈ 3,500-vertex
+ * scans, quick to align): `scan_00i.ply` and `landmarks_00i.lnd` for each.
+ */
+export function synthSubjects(n: number, seed: number, stepMm = 20): TestFile[] {
+  const out = mkdtempSync(join(tmpdir(), 'bodyspace-synth-'));
+  try {
+    execFileSync(bodyspaceBinary(), ['synth', '--n', String(n), '--seed', String(seed), '--step', String(stepMm), '--out', out], { stdio: 'ignore' });
+    return readdirSync(out)
+      .filter((name) => /^(scan_\d+\.ply|landmarks_\d+\.lnd)$/.test(name))
+      .sort()
+      .map((name) => ({ name, bytes: readFileSync(join(out, name)) }));
+  } finally {
+    rmSync(out, { recursive: true, force: true });
+  }
+}

@@ -1,0 +1,92 @@
+// The batch on the page: the Batch panel wired to the batch, its table drawn at once on a change
+// of state and at most once a frame for progress, and a batch fit shown on the template view
+// with its distance heat map.
+import type { CoreClient } from '../client/core-client';
+import { rbfParams } from '../shared/align-types';
+import { BatchPanel } from '../ui/batch-panel';
+import type { ErrorBanner } from '../ui/error-banner';
+import { distanceHeat } from '../view/heat-colours';
+import type { Viewer } from '../view/viewer';
+import { FITTED_COLOUR, type AlignStep } from './align-step';
+import { Batch } from './batch';
+import { uprightTransform } from './display-frame';
+import type { ShapeSpace } from './shape-space';
+import type { TemplateView } from './template-view';
+import type { WarpStep } from './warp-step';
+
+export interface BatchPage {
+  /** The main core worker (pairing); the batch's own workers are its pool's. */
+  client: CoreClient;
+  viewer: Viewer;
+  templateView: TemplateView;
+  warpStep: WarpStep;
+  alignStep: AlignStep;
+  shapeSpace: ShapeSpace;
+  banner: ErrorBanner;
+}
+
+/** Makes the page's batch, with the Template panel's resolution and the RBF panel's settings. */
+export function startBatch(page: BatchPage): Batch {
+  const { viewer, templateView, banner } = page;
+  let drawScheduled = false;
+  const draw = () => panel.render(batch.all, batch.summary());
+  const batch = new Batch(
+    page.client,
+    () => {
+      const resolution = templateView.data?.resolution;
+      const rbf = page.warpStep.panel.current;
+      return resolution ? { resolution, params: rbf ? { rbf: rbfParams(rbf) } : {} } : null;
+    },
+    (progress) => {
+      if (!progress) return draw();
+      if (drawScheduled) return;
+      drawScheduled = true;
+      requestAnimationFrame(() => {
+        drawScheduled = false;
+        draw();
+      });
+    },
+    (messages) => banner.show(messages),
+  );
+  const panel = new BatchPanel({
+    onSelect: (subject) => showFit(subject),
+    onCancel: (subject) => batch.cancel(subject),
+    onRetry: (subject) => batch.retry(subject),
+    onExclude: (subject, excluded) => batch.setExcluded(subject, excluded),
+    onCancelAll: () => batch.cancelAll(),
+    onBuild: () => void page.shapeSpace.buildFrom(batch.kept(), (text) => panel.showBuildStatus(text)),
+    onClear: () => {
+      panel.select(null);
+      void batch.clear();
+    },
+  });
+
+  /** Shows a subject's fit alone, upright, coloured by its distance to its scan. */
+  function showFit(subject: string): void {
+    const fit = batch.row(subject)?.fit;
+    const template = templateView.data;
+    if (!fit || !template || fit.positions.length !== template.positions.length) {
+      banner.show([`${subject}: its fit is at another template resolution than the one loaded; choose that resolution in the Template panel to see it.`]);
+      return;
+    }
+    const heat = distanceHeat(fit.distances);
+    page.shapeSpace.hide();
+    page.alignStep.reset();
+    templateView.setShown(false);
+    // The next scan opened shows itself again (the warp step's reset).
+    for (const key of ['scan', 'warped']) viewer.showBody(key, { visible: false });
+    viewer.showBody(
+      'fitted',
+      { mesh: { positions: fit.positions, triangles: template.triangles }, colour: FITTED_COLOUR, vertexColours: heat.colours, transform: uprightTransform(fit.report.warp.similarity), visible: true },
+      true,
+    );
+    document.getElementById('empty-hint')!.hidden = true;
+    panel.select(subject, heat.maxMm);
+    document.body.dataset.batchShown = subject;
+  }
+
+  void batch.restore();
+  // Subjects dropped before the template was ready start when it is.
+  templateView.onLoaded(() => batch.pump());
+  return batch;
+}

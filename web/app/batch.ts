@@ -1,0 +1,296 @@
+// The batch: many subjects dropped at once, aligned by a pool of workers, every state kept in
+// IndexedDB so a reload loses nothing, and a model built from the kept fits. Scans and landmark
+// files are paired by the core's rule (`pairSubjectFiles`); the fits are screened by the core's
+// quality flags (`align/quality.rs`, returned with each alignment).
+import { CancelledError, type CoreClient } from '../client/core-client';
+import { browserPoolSize, WorkerPool } from '../client/worker-pool';
+import type { AlignParams, QualityReport } from '../shared/align-types';
+import type { TemplateResolution } from '../shared/template-data';
+import { alignSubject } from './batch-job';
+import { BatchStore, type BatchRecord } from './batch-store';
+import type { AlignedSubject } from './subjects';
+
+/** What the batch needs of the page at each start: the template resolution and the settings. */
+export interface BatchSettings {
+  resolution: TemplateResolution;
+  params: AlignParams;
+}
+
+/** A subject as the table shows it: its record and, while aligning, its progress. */
+export interface BatchRow extends BatchRecord {
+  progress: number;
+  progressLabel: string;
+}
+
+/** Overall progress: subjects finished (any end state) of all, and the estimated time left. */
+export interface BatchSummary {
+  total: number;
+  finished: number;
+  running: number;
+  /** Fraction of the work done, counting the running subjects' progress. */
+  fraction: number;
+  /** Seconds left at the pace so far; null before anything finished. */
+  etaSeconds: number | null;
+  workers: number;
+}
+
+/** A running subject: its pool slot and worker, and its cancel signal. */
+interface Job {
+  slot: number;
+  client: CoreClient;
+  cancel: AbortController;
+}
+
+const ENDED = new Set(['ok', 'flagged', 'failed', 'cancelled', 'interrupted']);
+
+export class Batch {
+  private readonly rows = new Map<string, BatchRow>();
+  private readonly store = new BatchStore();
+  private pool: WorkerPool | null = null;
+  /** The running subjects' pool slots and clients. */
+  private readonly running = new Map<string, Job>();
+  /** Most subjects aligned at once; null: the pool's size (cores, memory). */
+  workerLimit: number | null = null;
+  /** Start of the current run and the work finished in it, for the ETA. */
+  private runStart: number | null = null;
+  private finishedInRun = 0;
+  /** `?debug`: the next job traps its worker's core instead of aligning (the crash-isolation test). */
+  trapNext = false;
+
+  constructor(
+    private readonly pairing: CoreClient,
+    private readonly settings: () => BatchSettings | null,
+    /** `progress`: only a running subject's progress moved (the page may draw it at the next frame). */
+    private readonly onChange: (progress?: boolean) => void,
+    private readonly onError: (messages: string[]) => void,
+  ) {}
+
+  /** Brings back the stored batch: subjects queued or aligning when the page went away are interrupted. */
+  async restore(): Promise<void> {
+    try {
+      for (const record of await this.store.all()) {
+        if (record.status === 'queued' || record.status === 'aligning') {
+          record.status = 'interrupted';
+          record.reason = record.scan ? 'interrupted by a reload; retry' : 'interrupted by a reload; drop its scan again';
+        }
+        this.rows.set(record.subject, { ...record, progress: 0, progressLabel: '' });
+      }
+    } catch (error) {
+      this.onError([`The stored batch could not be read: ${error instanceof Error ? error.message : String(error)}`]);
+    }
+    this.onChange();
+  }
+
+  /** Whether `files` make a batch: more than one scan dropped or picked at once. */
+  static wants(files: File[], isScan: (name: string) => boolean): boolean {
+    return files.filter((f) => isScan(f.name)).length > 1;
+  }
+
+  /** Adds the subjects among `files` (a subject already in the batch is replaced) and starts them. */
+  async add(files: File[]): Promise<void> {
+    const pairing = await this.pairing.call({ type: 'pairSubjectFiles', fileNames: files.map((f) => f.name) });
+    const errors = pairing.duplicates.map((i) => `${files[i]!.name}: another scan of the same subject was dropped with it; this one was left out`);
+    const used = new Set<number>();
+    let order = Math.max(-1, ...[...this.rows.values()].map((r) => r.order)) + 1;
+    const settings = this.settings();
+    for (const s of pairing.subjects) {
+      used.add(s.scan);
+      if (s.landmarks !== null) used.add(s.landmarks);
+      const old = this.rows.get(s.subject);
+      if (old && this.running.has(s.subject)) this.cancel(s.subject);
+      const row: BatchRow = {
+        subject: s.subject,
+        order: old?.order ?? order++,
+        status: 'queued',
+        excluded: false,
+        reason: '',
+        rmsMm: null,
+        seconds: null,
+        resolution: settings?.resolution ?? 'base',
+        scan: files[s.scan]!,
+        landmarks: s.landmarks === null ? null : files[s.landmarks]!,
+        fit: null,
+        progress: 0,
+        progressLabel: '',
+      };
+      this.rows.set(s.subject, row);
+      await this.save(row);
+    }
+    const unpaired = files.filter((f, i) => !used.has(i) && !pairing.duplicates.includes(i));
+    if (unpaired.length) errors.push(`${unpaired.map((f) => f.name).join(', ')}: no scan of the same base name among the files dropped; left out`);
+    if (errors.length) this.onError(errors);
+    this.onChange();
+    this.pump();
+  }
+
+  get all(): BatchRow[] {
+    return [...this.rows.values()].sort((a, b) => a.order - b.order);
+  }
+
+  row(subject: string): BatchRow | undefined {
+    return this.rows.get(subject);
+  }
+
+  summary(): BatchSummary {
+    const rows = this.all;
+    const finished = rows.filter((r) => ENDED.has(r.status)).length;
+    const inFlight = rows.filter((r) => r.status === 'aligning').reduce((sum, r) => sum + r.progress, 0);
+    const work = rows.filter((r) => r.status === 'queued' || r.status === 'aligning').length;
+    const doneInRun = this.finishedInRun + inFlight;
+    const elapsed = this.runStart === null ? 0 : (performance.now() - this.runStart) / 1e3;
+    const left = work - inFlight;
+    return {
+      total: rows.length,
+      finished,
+      running: this.running.size,
+      fraction: rows.length ? (finished + inFlight) / rows.length : 0,
+      etaSeconds: work > 0 && this.finishedInRun > 0 ? (elapsed / doneInRun) * left : null,
+      workers: this.workers(),
+    };
+  }
+
+  /** The subjects a model is built from: ok or flagged, not excluded, with a fit. */
+  kept(): AlignedSubject[] {
+    return this.all
+      .filter((r) => (r.status === 'ok' || r.status === 'flagged') && !r.excluded && r.fit)
+      .map((r) => ({ name: r.subject, positions: r.fit!.positions, resolution: r.resolution, source: 'batch', rmsMetres: (r.rmsMm ?? NaN) / 1e3 }));
+  }
+
+  cancel(subject: string): void {
+    const row = this.rows.get(subject);
+    if (!row) return;
+    const job = this.running.get(subject);
+    // Terminates that worker only (a fresh one takes its slot); the job's call under way rejects.
+    if (job) {
+      job.cancel.abort();
+      job.client.cancel();
+    }
+    else if (row.status === 'queued') void this.finish(row, 'cancelled', 'cancelled before it started');
+  }
+
+  cancelAll(): void {
+    for (const row of this.all) if (row.status === 'queued' || row.status === 'aligning') this.cancel(row.subject);
+  }
+
+  retry(subject: string): void {
+    const row = this.rows.get(subject);
+    if (!row || this.running.has(subject) || row.status === 'queued') return;
+    if (!row.scan) {
+      this.onError([`${subject}: its scan is not stored in this browser; drop it again to align it`]);
+      return;
+    }
+    Object.assign(row, { status: 'queued', reason: '', rmsMm: null, seconds: null, fit: null, progress: 0 });
+    void this.save(row);
+    this.onChange();
+    this.pump();
+  }
+
+  setExcluded(subject: string, excluded: boolean): void {
+    const row = this.rows.get(subject);
+    if (!row) return;
+    row.excluded = excluded;
+    void this.save(row);
+    this.onChange();
+  }
+
+  /** Cancels everything and forgets the batch, here and in the browser's storage. */
+  async clear(): Promise<void> {
+    this.cancelAll();
+    this.rows.clear();
+    this.runStart = null;
+    try {
+      await this.store.clear();
+    } catch (error) {
+      this.onError([`The stored batch could not be cleared: ${error instanceof Error ? error.message : String(error)}`]);
+    }
+    this.onChange();
+  }
+
+  private workers(): number {
+    const size = this.pool?.size ?? browserPoolSize(this.settings()?.resolution ?? 'base');
+    return Math.min(size, this.workerLimit ?? size);
+  }
+
+  /** Starts queued subjects while workers are free (and once the page has its settings). */
+  pump(): void {
+    const settings = this.settings();
+    if (!settings) return;
+    this.pool ??= new WorkerPool(browserPoolSize(settings.resolution));
+    for (const row of this.all) {
+      if (row.status !== 'queued') continue;
+      if (this.running.size >= this.workers()) break;
+      const taken = this.pool.take();
+      if (!taken) break;
+      if (this.runStart === null) {
+        this.runStart = performance.now();
+        this.finishedInRun = 0;
+      }
+      void this.runJob(row, { ...taken, cancel: new AbortController() }, settings);
+    }
+    if (this.running.size === 0) this.runStart = null;
+  }
+
+  private async runJob(row: BatchRow, job: Job, settings: BatchSettings): Promise<void> {
+    this.running.set(row.subject, job);
+    Object.assign(row, { status: 'aligning', progress: 0, progressLabel: 'reading', resolution: settings.resolution });
+    void this.save(row);
+    this.onChange();
+    const t0 = performance.now();
+    try {
+      if (!row.scan) throw new Error('its scan is not stored in this browser; drop it again');
+      if (this.trapNext) {
+        this.trapNext = false;
+        await job.client.call({ type: 'trap' });
+      }
+      const result = await alignSubject(job.client, { scan: row.scan, landmarks: row.landmarks }, settings.resolution, settings.params, (fraction, label) => {
+        row.progress = fraction;
+        row.progressLabel = label;
+        this.onChange(true);
+      }, job.cancel.signal);
+      row.seconds = (performance.now() - t0) / 1e3;
+      row.rmsMm = result.report.fine.scan_to_template.rms_mm;
+      row.fit = { positions: result.positions, distances: result.distances, report: result.report, quality: result.quality };
+      // The largest worker memory seen, for the pool's per-job estimate (docs/batch.md).
+      const mib = Math.round(result.wasmMemoryBytes / 2 ** 20);
+      document.body.dataset.batchWasmMemoryMib = String(Math.max(mib, Number(document.body.dataset.batchWasmMemoryMib ?? 0)));
+      const flags = result.quality.flags;
+      await this.finish(row, flags.length ? 'flagged' : 'ok', flags.length ? flagReason(result.quality) : '', job);
+    } catch (error) {
+      row.seconds = (performance.now() - t0) / 1e3;
+      if (error instanceof CancelledError) await this.finish(row, 'cancelled', 'cancelled', job);
+      else await this.finish(row, 'failed', error instanceof Error ? error.message : String(error), job);
+    }
+  }
+
+  private async finish(row: BatchRow, status: BatchRow['status'], reason: string, job?: Job): Promise<void> {
+    Object.assign(row, { status, reason, progress: 0, progressLabel: '' });
+    if (job) {
+      if (this.running.get(row.subject) === job) this.running.delete(row.subject);
+      this.pool?.give(job.slot);
+      this.finishedInRun++;
+    }
+    // A subject cleared or replaced meanwhile is not written back.
+    if (this.rows.get(row.subject) === row) await this.save(row);
+    this.onChange();
+    this.pump();
+  }
+
+  private async save(row: BatchRow): Promise<void> {
+    const { progress: _p, progressLabel: _l, ...record } = row;
+    try {
+      await this.store.put(record);
+    } catch (error) {
+      this.onError([`${row.subject}: could not be stored in this browser (${error instanceof Error ? error.message : String(error)}); it will not come back after a reload`]);
+    }
+  }
+}
+
+/** What the raised flags mean, with the measures behind them. */
+function flagReason(q: QualityReport): string {
+  const t = q.thresholds;
+  const parts: string[] = [];
+  if (q.flags.includes('high_rms')) parts.push(`RMS ${q.rms_mm?.toFixed(2)} mm > ${t.max_rms_mm} mm`);
+  if (q.flags.includes('unmatched')) parts.push(`${(q.unmatched_fraction * 100).toFixed(0)} % unmatched > ${t.max_unmatched_fraction * 100} %`);
+  if (q.flags.includes('fold_overs')) parts.push(`${(q.folded_fraction * 100).toFixed(1)} % folded > ${t.max_folded_fraction * 100} %`);
+  return parts.join('; ');
+}

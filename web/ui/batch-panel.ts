@@ -1,0 +1,175 @@
+// The Batch panel: one row per subject (status with progress, RMS, flags, time), sortable by any
+// column; a click on a row shows that fit; overall progress with the ETA; cancel, retry, exclude,
+// build the model, clear the batch.
+import type { BatchRow, BatchSummary } from '../app/batch';
+import { byId, h } from './dom';
+import { heatLegend } from './heat-legend';
+
+export interface BatchActions {
+  onSelect(subject: string): void;
+  onCancel(subject: string): void;
+  onRetry(subject: string): void;
+  onExclude(subject: string, excluded: boolean): void;
+  onCancelAll(): void;
+  onBuild(): void;
+  onClear(): void;
+}
+
+type Column = 'subject' | 'status' | 'rms' | 'flags' | 'time';
+
+const COLUMNS: { key: Column; label: string }[] = [
+  { key: 'subject', label: 'Subject' },
+  { key: 'status', label: 'Status' },
+  { key: 'rms', label: 'RMS mm' },
+  { key: 'flags', label: 'Flags' },
+  { key: 'time', label: 'Time s' },
+];
+
+/** The status as the table writes it: `excluded` over the fit's own, progress while aligning. */
+export function statusText(row: BatchRow): string {
+  if (row.excluded) return 'excluded';
+  if (row.status === 'aligning') return `aligning ${Math.round(row.progress * 100)} %`;
+  if (row.status === 'interrupted') return 'interrupted — retry';
+  return row.status;
+}
+
+function sortValue(row: BatchRow, column: Column): string | number {
+  switch (column) {
+    case 'subject':
+      return row.subject;
+    case 'status':
+      return statusText(row);
+    case 'rms':
+      return row.rmsMm ?? Infinity;
+    case 'flags':
+      return row.fit?.quality.flags.join(' ') ?? '';
+    case 'time':
+      return row.seconds ?? Infinity;
+  }
+}
+
+function formatSeconds(s: number): string {
+  return s < 90 ? `${Math.round(s)} s` : `${Math.floor(s / 60)} min ${Math.round(s % 60)} s`;
+}
+
+export class BatchPanel {
+  private readonly root = byId('batch-panel');
+  private sort: { column: Column; descending: boolean } = { column: 'subject', descending: false };
+  private selected: { subject: string; legendMaxMm: number } | null = null;
+  private buildStatus = '';
+  private last: { rows: BatchRow[]; summary: BatchSummary } | null = null;
+
+  constructor(private readonly actions: BatchActions) {}
+
+  /** Marks `subject` as the fit in view, with its heat map's top (mm). */
+  select(subject: string | null, legendMaxMm = 0): void {
+    this.selected = subject ? { subject, legendMaxMm } : null;
+    this.redraw();
+  }
+
+  showBuildStatus(text: string): void {
+    this.buildStatus = text;
+    this.redraw();
+  }
+
+  render(rows: BatchRow[], summary: BatchSummary): void {
+    this.last = { rows, summary };
+    const data = document.body.dataset;
+    data.batchTotal = String(summary.total);
+    data.batchFinished = String(summary.finished);
+    data.batchRunning = String(summary.running);
+    data.batchWorkers = String(summary.workers);
+    this.redraw();
+  }
+
+  private redraw(): void {
+    const last = this.last;
+    this.root.hidden = !last || last.rows.length === 0;
+    if (!last || last.rows.length === 0) {
+      this.root.replaceChildren();
+      return;
+    }
+    const { rows, summary } = last;
+    const button = (text: string, testid: string, run: () => void, disabled = false) => {
+      const b = h('button', { class: 'button', type: 'button', 'data-testid': testid, disabled: disabled ? '' : undefined }, text);
+      b.addEventListener('click', (e) => {
+        e.stopPropagation();
+        run();
+      });
+      return b;
+    };
+    const active = summary.running > 0 || rows.some((r) => r.status === 'queued');
+    const eta = summary.etaSeconds === null ? '' : ` · about ${formatSeconds(summary.etaSeconds)} left`;
+    const kept = rows.filter((r) => (r.status === 'ok' || r.status === 'flagged') && !r.excluded && r.fit).length;
+    this.root.replaceChildren(
+      h('h2', {}, 'Batch'),
+      h(
+        'p',
+        { class: 'note', 'data-testid': 'batch-summary' },
+        `${summary.finished} of ${summary.total} finished, ${summary.running} aligning on ${summary.workers} worker${summary.workers === 1 ? '' : 's'}${eta}.`,
+      ),
+      h('progress', { max: '1', value: summary.fraction.toFixed(3), class: 'batch-progress', 'data-testid': 'batch-progress' }),
+      h(
+        'div',
+        { class: 'row' },
+        button('Cancel all', 'batch-cancel-all', () => this.actions.onCancelAll(), !active),
+        button(`Build model (${kept})`, 'batch-build', () => this.actions.onBuild(), kept < 2),
+        button('Clear batch', 'batch-clear', () => this.actions.onClear()),
+      ),
+      h('p', { class: 'note', 'data-testid': 'batch-build-status' }, this.buildStatus),
+      this.table(rows, button),
+      ...(this.selected ? [heatLegend(0, this.selected.legendMaxMm, `${this.selected.subject}: distance of each template vertex to its scan`)] : []),
+    );
+  }
+
+  private table(rows: BatchRow[], button: (text: string, testid: string, run: () => void) => HTMLButtonElement): HTMLElement {
+    const { column, descending } = this.sort;
+    const sorted = [...rows].sort((a, b) => {
+      const [x, y] = [sortValue(a, column), sortValue(b, column)];
+      const order = typeof x === 'number' && typeof y === 'number' ? x - y : String(x).localeCompare(String(y));
+      return descending ? -order : order;
+    });
+    const head = h(
+      'tr',
+      {},
+      ...COLUMNS.map(({ key, label }) => {
+        const th = h('th', { 'data-testid': `batch-sort-${key}`, 'aria-sort': key === column ? (descending ? 'descending' : 'ascending') : undefined }, label);
+        th.addEventListener('click', () => {
+          this.sort = { column: key, descending: key === column ? !descending : false };
+          this.redraw();
+        });
+        return th;
+      }),
+      h('th', {}, ''),
+    );
+    const body = sorted.map((row) => {
+      const status = h('td', { 'data-testid': 'batch-status', title: row.reason || row.progressLabel }, statusText(row));
+      const flags = row.fit?.quality.flags.map((f) => f.replace('_', ' ')).join(', ') ?? (row.status === 'failed' ? row.reason : '');
+      const tr = h(
+        'tr',
+        {
+          'data-testid': 'batch-row',
+          'data-subject': row.subject,
+          'data-status': row.excluded ? 'excluded' : row.status,
+          class: this.selected?.subject === row.subject ? 'selected' : undefined,
+        },
+        h('td', {}, row.subject),
+        status,
+        h('td', { 'data-testid': 'batch-rms' }, row.rmsMm === null ? '—' : row.rmsMm.toFixed(2)),
+        h('td', { class: 'batch-flags', title: row.reason }, flags),
+        h('td', {}, row.seconds === null ? '—' : row.seconds.toFixed(1)),
+        h('td', { class: 'batch-actions' }, ...this.rowActions(row, button)),
+      );
+      if (row.fit) tr.addEventListener('click', () => this.actions.onSelect(row.subject));
+      return tr;
+    });
+    return h('div', { class: 'batch-scroll' }, h('table', { class: 'batch-table', 'data-testid': 'batch-table' }, h('thead', {}, head), h('tbody', {}, ...body)));
+  }
+
+  private rowActions(row: BatchRow, button: (text: string, testid: string, run: () => void) => HTMLButtonElement): HTMLButtonElement[] {
+    const s = row.subject;
+    if (row.status === 'queued' || row.status === 'aligning') return [button('Cancel', 'batch-cancel', () => this.actions.onCancel(s))];
+    if (row.status === 'failed' || row.status === 'cancelled' || row.status === 'interrupted') return [button('Retry', 'batch-retry', () => this.actions.onRetry(s))];
+    return [button(row.excluded ? 'Include' : 'Exclude', 'batch-exclude', () => this.actions.onExclude(s, !row.excluded))];
+  }
+}
