@@ -3,6 +3,7 @@
 // the last good state on screen. The result is shown as a distance heat map.
 import { CancelledError, type CoreClient } from '../client/core-client';
 import { rbfParams, type AlignResult } from '../shared/align-types';
+import { baseName } from '../shared/file-kind';
 import type { CoreEvent } from '../shared/messages';
 import { AlignPanel } from '../ui/align-panel';
 import { heatColours } from '../view/heat-colours';
@@ -202,8 +203,4 @@ function legendMax(valuesMm: Float32Array): number {
   const sorted = Float32Array.from(valuesMm).sort();
   const p = sorted[Math.floor(0.98 * (sorted.length - 1))] ?? 1;
   return Math.max(1, Math.ceil(p));
-}
-
-function baseName(fileName: string): string {
-  return fileName.replace(/\.gz$/i, '').replace(/\.[^.]+$/, '');
 }

@@ -5,11 +5,11 @@ import type { ScanInput } from '../shared/align-types';
 import type { TemplateResolution } from '../shared/template-data';
 import type { Session } from './session';
 
-/** The scan and landmarks of `session` in metres, or null until both are loaded. */
+/** The scan and the current landmark set of `session` in metres, or null until both are there. */
 export function scanInput(session: Session, resolution: TemplateResolution): ScanInput | null {
   const scan = session.scan;
-  const set = session.landmarks;
-  if (!scan || !set) return null;
+  const set = session.edits?.placed();
+  if (!scan || !set || set.names.length === 0) return null;
   const k = session.scanScale;
   const positions = k === 1 ? scan.positions.slice() : Float32Array.from(scan.positions, (v) => v * k);
   return {
@@ -17,7 +17,7 @@ export function scanInput(session: Session, resolution: TemplateResolution): Sca
     positions,
     triangles: scan.triangles.slice(),
     landmarkNames: set.names,
-    landmarkPositions: Float64Array.from(session.landmarkPositionsMetres()),
+    landmarkPositions: set.positions,
   };
 }
 

@@ -18,6 +18,11 @@ export type CoreRequestBody =
   /** RBF warp then fine alignment; replies with `alignProgress` and `alignRound` events. */
   | { type: 'align'; scan: ScanInput; params: AlignParams }
   | { type: 'exportMesh'; positions: Float32Array; triangles: Uint32Array; format: 'ply' | 'obj' }
+  /**
+   * A landmark set as a file by the core's writer of `format`: `names` with `positions` (`#L·3`,
+   * written as given; all three NaN for an absent landmark).
+   */
+  | { type: 'writeLandmarks'; names: string[]; positions: Float64Array; format: 'lnd' | 'csv' | 'json'; subjectId: string }
   /** Shape models: the worker keeps one; a failed load or build leaves the previous one. */
   | { type: 'loadModel'; bytes: ArrayBuffer; fileName: string }
   /** `positions`: the subjects' bodies concatenated (template order, metres). */
@@ -51,6 +56,7 @@ export interface CoreResults {
   rbfWarp: WarpResult;
   align: AlignResult;
   exportMesh: Uint8Array;
+  writeLandmarks: Uint8Array;
   loadModel: LoadedModel;
   buildModel: LoadedModel;
   morph: ReconstructedBody;

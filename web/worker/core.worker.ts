@@ -1,6 +1,6 @@
 // The only code that imports the WASM core. Runs every core call off the UI thread; arrays come
 // out of WASM memory as copies and go back to the UI thread transferred, never copied again.
-import init, { caesarLandmarkNames, coreVersion, parseLandmarks, parseScan, trapForTest } from '../pkg/bodyspace.js';
+import init, { caesarLandmarkNames, coreVersion, parseLandmarks, parseScan, trapForTest, writeLandmarks } from '../pkg/bodyspace.js';
 import type { CoreReply, CoreRequest } from '../shared/messages';
 import type { MeshSummary, ParsedLandmarks, ParsedScan } from '../shared/results';
 import { runAlign, runAlignDefaults, runExport, runRbfWarp } from './align-handlers';
@@ -90,6 +90,11 @@ self.onmessage = async (event: MessageEvent<CoreRequest>) => {
       }
       case 'exportMesh': {
         const bytes = runExport(request.positions, request.triangles, request.format);
+        post({ id: request.id, type: 'result', result: bytes }, [bytes.buffer]);
+        break;
+      }
+      case 'writeLandmarks': {
+        const bytes = writeLandmarks(request.names.join('\n'), request.positions, request.format, request.subjectId);
         post({ id: request.id, type: 'result', result: bytes }, [bytes.buffer]);
         break;
       }
