@@ -8,14 +8,17 @@
 //!   positions, triangles, normals, summary), `parseLandmarks`;
 //! * `template.rs`: `loadTemplate` ([`TemplateHandle`]);
 //! * `align.rs`: `alignDefaults`, [`ScanWithLandmarks`], `rbfWarp`, `alignScan`, `exportMesh`;
+//! * `landmarks.rs`: `estimateLandmarks` ([`LandmarkEstimate`]), `flagSuspicious`;
 //! * `model.rs`: `loadShapeModel` ([`ShapeSpace`]); `model_build.rs`: `buildShapeModel`.
 
 mod align;
+mod landmarks;
 mod template;
 
 pub use align::{
     align_defaults, align_scan_js, export_mesh, rbf_warp_js, AlignOutcome, ScanWithLandmarks,
 };
+pub use landmarks::{estimate_landmarks_js, flag_suspicious_js, LandmarkEstimate};
 pub use template::{load_template, TemplateHandle};
 
 use js_sys::{Float32Array, Uint32Array};
