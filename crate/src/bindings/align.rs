@@ -41,8 +41,8 @@ pub fn align_defaults() -> Result<String, JsError> {
 /// metres, `triangles` `#F·3`, `landmark_names` one per line, `landmark_positions` `#L·3` metres.
 #[wasm_bindgen]
 pub struct ScanWithLandmarks {
-    scan: Mesh,
-    landmarks: LandmarkSet,
+    pub(super) scan: Mesh,
+    pub(super) landmarks: LandmarkSet,
 }
 
 #[wasm_bindgen]
@@ -97,7 +97,7 @@ pub fn align_scan_js(
         &params,
         &mut JsObserver {
             on_progress,
-            on_round,
+            on_round: Some(on_round),
         },
     )?;
     outcome(template, alignment)
@@ -152,10 +152,10 @@ fn outcome(template: &TemplateHandle, alignment: Alignment) -> Result<AlignOutco
     })
 }
 
-/// The page's callbacks as the core's observer.
-struct JsObserver<'a> {
-    on_progress: &'a Function,
-    on_round: &'a Function,
+/// The page's callbacks as the core's observer (`on_round` optional).
+pub(super) struct JsObserver<'a> {
+    pub(super) on_progress: &'a Function,
+    pub(super) on_round: Option<&'a Function>,
 }
 
 impl AlignObserver for JsObserver<'_> {
@@ -171,11 +171,14 @@ impl AlignObserver for JsObserver<'_> {
     }
 
     fn round(&mut self, stage: Stage, round: usize, positions: &[Point3<f64>]) {
+        let Some(on_round) = self.on_round else {
+            return;
+        };
         let flat: Vec<f32> = positions
             .iter()
             .flat_map(|p| [p.x as f32, p.y as f32, p.z as f32])
             .collect();
-        let _ = self.on_round.call3(
+        let _ = on_round.call3(
             &JsValue::NULL,
             &JsValue::from(stage.name()),
             &JsValue::from(round as u32),
