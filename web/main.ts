@@ -21,6 +21,8 @@ const client = new CoreClient();
 // cancelling or losing it never touches the template, the scan read or the shape model, which live
 // in the main core worker.
 const alignClient = new CoreClient();
+// The landmark estimate and its checks run in a third worker: cancelling an estimate stops only it.
+const landmarkClient = new CoreClient();
 let caesarNames: string[] = [];
 const session = new Session(() => caesarNames);
 const viewer = new Viewer(byId('viewport'));
@@ -34,9 +36,9 @@ const templateView = new TemplateView(client, viewer, showError);
 const warpStep = new WarpStep(alignClient, viewer, session, templateView, showError);
 const alignStep = new AlignStep(alignClient, viewer, session, templateView, warpStep, showError);
 // An edited landmark set invalidates the warp and the fit as a new landmark file does, but keeps the view.
-const landmarkStep = new LandmarkStep(client, viewer, session, () => caesarNames, () => {
+const landmarkStep = new LandmarkStep(client, landmarkClient, viewer, session, () => caesarNames, (keepView) => {
   alignStep.reset();
-  warpStep.reset(true);
+  warpStep.reset(keepView);
 }, showError);
 templateView.onLoaded((data) => landmarkStep.setTemplate(data));
 // Another template resolution: the warp and the fit were made with the old one.
@@ -99,6 +101,7 @@ async function open(all: File[]): Promise<void> {
     // The scan and the shape body would stand in the same place: the scan takes the view.
     shapeSpace.hide();
     refresh(Boolean(scan) || !session.scan);
+    landmarkStep.afterLoad();
   }
 
   if (outcome.errors.length > 0) banner.show(outcome.errors);

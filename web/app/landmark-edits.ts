@@ -42,9 +42,12 @@ export class LandmarkEdits {
     return this.entries[this.names.indexOf(name)];
   }
 
-  /** Landmarks with a position: names and `#L·3` positions in metres, as the core takes them. */
-  placed(): { names: string[]; positions: Float64Array } {
-    const present = this.entries.filter((e) => e.position);
+  /**
+   * Landmarks with a position (of the states `which` accepts: all by default): names and `#L·3`
+   * positions in metres, as the core takes them.
+   */
+  placed(which: (state: LandmarkState) => boolean = () => true): { names: string[]; positions: Float64Array } {
+    const present = this.entries.filter((e) => e.position && which(e.state));
     return { names: present.map((e) => e.name), positions: Float64Array.from(present.flatMap((e) => e.position!)) };
   }
 
@@ -54,16 +57,19 @@ export class LandmarkEdits {
   }
 
   /**
-   * Fills in the core's estimate (`positions` `#L·3` metres, NaN where it placed nothing) for
-   * every landmark not given or edited; not an undo step (it starts the editing).
+   * Takes the core's estimate (`positions` `#L·3` metres, NaN where it placed nothing; `given[i]`
+   * 1 where it kept what it was given) for every landmark neither given nor edited here; a
+   * landmark it could not place becomes absent. Not an undo step: it starts the editing.
    */
-  fillEstimate(names: readonly string[], positions: ArrayLike<number>, confidence: ArrayLike<number>): void {
+  fillEstimate(names: readonly string[], positions: ArrayLike<number>, confidence: ArrayLike<number>, given: ArrayLike<number>): void {
     const at = new Map(names.map((n, i) => [n, i]));
     this.entries = this.entries.map((e) => {
       const i = at.get(e.name);
-      if (i === undefined || e.state === 'given' || e.state === 'edited') return e;
+      if (i === undefined || given[i] === 1 || e.state === 'given' || e.state === 'edited') return e;
       const p = pointAt(positions, i);
-      return p.some(Number.isNaN) ? e : { ...e, position: p, state: 'estimated', confidence: confidence[i] ?? null };
+      return p.some(Number.isNaN)
+        ? { ...e, position: null, state: 'absent', confidence: null }
+        : { ...e, position: p, state: 'estimated', confidence: confidence[i] ?? null };
     });
   }
 

@@ -16,11 +16,14 @@ export class Session {
   /** `caesarNames`: the 73 CAESAR landmark names in file order (from the core). */
   constructor(private readonly caesarNames: () => readonly string[]) {}
 
-  /** A new scan; the landmarks (of a file or being edited) stay, or start all absent. */
+  /**
+   * A new scan. The landmarks of a file opened before stay (with their edits), as a file does
+   * for the scan dropped after it; landmarks estimated or placed on the old scan go.
+   */
   setScan(scan: ParsedScan): void {
     this.scan = scan;
     this.scanUnits = scan.summary.units_detected;
-    this.edits ??= new LandmarkEdits(this.caesarNames());
+    if (!this.landmarks || !this.edits) this.edits = new LandmarkEdits(this.caesarNames());
   }
 
   /** A landmark file replaces the set being edited: its landmarks given, the rest absent. */

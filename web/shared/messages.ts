@@ -1,5 +1,6 @@
 // Messages between the UI thread and the core worker. No DOM here: shared by both threads.
 import type { AlignDefaults, AlignParams, AlignProgress, AlignResult, ScanInput, WarpResult } from './align-types';
+import type { LandmarkEstimate, SuspiciousLandmark } from './landmark-entry';
 import type { ParsedLandmarks, ParsedScan } from './results';
 import type { TemplateData, TemplateResolution } from './template-data';
 import type { ExportBody, LoadedModel, ModelCsv, ModelGlbParts, ReconstructedBody, ShapeCoefficients, ShownResolution } from './shape-results';
@@ -17,6 +18,10 @@ export type CoreRequestBody =
   | { type: 'rbfWarp'; scan: ScanInput; params: AlignParams }
   /** RBF warp then fine alignment; replies with `alignProgress` and `alignRound` events. */
   | { type: 'align'; scan: ScanInput; params: AlignParams }
+  /** The 73 CAESAR landmarks of a scan with a partial or empty set (kept as given); replies with progress. */
+  | { type: 'estimateLandmarks'; scan: ScanInput }
+  /** The suspicious landmarks of the scan's set. */
+  | { type: 'flagSuspicious'; scan: ScanInput }
   | { type: 'exportMesh'; positions: Float32Array; triangles: Uint32Array; format: 'ply' | 'obj' }
   /**
    * A landmark set as a file by the core's writer of `format`: `names` with `positions` (`#L·3`,
@@ -55,6 +60,8 @@ export interface CoreResults {
   alignDefaults: AlignDefaults;
   rbfWarp: WarpResult;
   align: AlignResult;
+  estimateLandmarks: LandmarkEstimate;
+  flagSuspicious: SuspiciousLandmark[];
   exportMesh: Uint8Array;
   writeLandmarks: Uint8Array;
   loadModel: LoadedModel;

@@ -92,7 +92,7 @@ export class LandmarkTools {
     if (e.state === 'cancelled')
       return [h('p', { class: 'warn-note', 'data-testid': 'estimate-cancelled' }, 'Estimate cancelled: the scan and the landmarks placed so far are kept.')];
     if (e.state === 'error')
-      return [h('p', { class: 'error-note', 'data-testid': 'estimate-error' }, `The estimate failed: ${e.message}. The scan and the landmarks placed so far are kept; place the landmarks by hand or try again.`)];
+      return [h('p', { class: 'error-note', 'data-testid': 'estimate-error' }, `The estimate failed: ${sentence(e.message)} The scan and the landmarks placed so far are kept; place the landmarks by hand or try again.`)];
     return [];
   }
 }
@@ -118,4 +118,9 @@ function suspiciousParts(list: SuspiciousLandmark[] | null): HTMLElement[] {
       ),
     ),
   ];
+}
+
+/** `message` ending in a full stop (or the question or exclamation mark it has). */
+export function sentence(message: string): string {
+  return /[.?!]$/.test(message) ? message : `${message}.`;
 }

@@ -51,7 +51,7 @@ export function runAlign(scan: ScanInput, params: AlignParams, emit: (event: Cor
 }
 
 /** Runs `f` on the scan and its landmarks copied into the core, freeing the copy afterwards. */
-function withScan<T>(scan: ScanInput, f: (input: ScanWithLandmarks) => T): T {
+export function withScan<T>(scan: ScanInput, f: (input: ScanWithLandmarks) => T): T {
   const input = new ScanWithLandmarks(scan.positions, scan.triangles, scan.landmarkNames.join('\n'), scan.landmarkPositions);
   try {
     return f(input);

@@ -4,6 +4,7 @@ import init, { caesarLandmarkNames, coreVersion, parseLandmarks, parseScan, trap
 import type { CoreReply, CoreRequest } from '../shared/messages';
 import type { MeshSummary, ParsedLandmarks, ParsedScan } from '../shared/results';
 import { runAlign, runAlignDefaults, runExport, runRbfWarp } from './align-handlers';
+import { runEstimate, runFlagSuspicious } from './landmark-handlers';
 import { templateData, templateTransfer } from './template-handlers';
 import * as models from './model-handlers';
 
@@ -88,6 +89,16 @@ self.onmessage = async (event: MessageEvent<CoreRequest>) => {
         post({ id, type: 'result', result }, [result.positions.buffer, result.normals.buffer, result.distances.buffer]);
         break;
       }
+      case 'estimateLandmarks': {
+        const id = request.id;
+        post({ id, type: 'progress', fraction: 0, label: 'Estimating the landmarks: finding the frame' });
+        const estimate = runEstimate(request.scan, (fraction, label) => post({ id, type: 'progress', fraction, label }));
+        post({ id, type: 'result', result: estimate }, [estimate.positions.buffer, estimate.confidence.buffer, estimate.given.buffer]);
+        break;
+      }
+      case 'flagSuspicious':
+        post({ id: request.id, type: 'result', result: runFlagSuspicious(request.scan) });
+        break;
       case 'exportMesh': {
         const bytes = runExport(request.positions, request.triangles, request.format);
         post({ id: request.id, type: 'result', result: bytes }, [bytes.buffer]);
