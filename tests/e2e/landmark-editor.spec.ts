@@ -44,6 +44,22 @@ function parseLnd(text: string): { count: number; at: Map<string, number[] | nul
   return { count: end - start, at };
 }
 
+/**
+ * Clicks Align, waits for the fit and checks its scan→template RMS lies in `rmsRange` (mm); then
+ * exports the landmarks as .lnd and returns the file's name and its parsed content.
+ */
+async function alignThenExportLnd(page: Page, rmsRange: [number, number]): Promise<{ fileName: string } & ReturnType<typeof parseLnd>> {
+  await page.getByTestId('align-run').click();
+  await expect(body(page)).toHaveAttribute('data-align-state', 'done', { timeout: 240_000 });
+  const rms = Number(await page.getByTestId('align-rms').getAttribute('data-rms-mm'));
+  expect(rms).toBeGreaterThan(rmsRange[0]);
+  expect(rms).toBeLessThan(rmsRange[1]);
+  const download = page.waitForEvent('download');
+  await page.getByTestId('landmarks-export-lnd').click();
+  const file = await download;
+  return { fileName: file.suggestedFilename(), ...parseLnd(readFileSync((await file.path())!, 'latin1')) };
+}
+
 /** The sample's true landmarks (`landmarks_001.csv`, millimetres) by name. */
 function truth(): Map<string, number[]> {
   const [, ...lines] = sampleFile('landmarks_001.csv').bytes.toString('utf8').trim().split('\n');
@@ -91,16 +107,8 @@ test('a scan without landmarks gets an estimate; move one by clicking, align, ex
   expect(Math.hypot(...moved.map((v, i) => v - before[i]!))).toBeGreaterThan(1);
   await expect(body(page)).toHaveAttribute('data-rbf-state', 'done', { timeout: 60_000 });
 
-  await page.getByTestId('align-run').click();
-  await expect(body(page)).toHaveAttribute('data-align-state', 'done', { timeout: 240_000 });
-  const rms = Number(await page.getByTestId('align-rms').getAttribute('data-rms-mm'));
-  // 1.01 mm on 2026-11-24; 0.92 mm with the sample's true landmarks (rbf-align.spec.ts).
-  expect(rms).toBeGreaterThan(0.7);
-  expect(rms).toBeLessThan(1.3);
-
-  const download = page.waitForEvent('download');
-  await page.getByTestId('landmarks-export-lnd').click();
-  const lnd = parseLnd(readFileSync((await (await download).path())!, 'latin1'));
+  // Align: 1.01 mm RMS on 2026-11-24; 0.92 mm with the sample's true landmarks (rbf-align.spec.ts).
+  const lnd = await alignThenExportLnd(page, [0.7, 1.3]);
   expect(lnd.count).toBe(73);
   expect([...lnd.at.values()].filter((p) => p === null)).toHaveLength(0);
   lnd.at.get('Substernale')!.forEach((v, i) => expect(v).toBeCloseTo(moved[i]!, 2));
@@ -161,21 +169,11 @@ test('edit a partial landmark set on the scan, align with it and export it as .l
   await expect(body(page)).toHaveAttribute('data-rbf-state', 'done', { timeout: 60_000 });
   await expect(page.getByTestId('rbf-skipped')).toContainText('Rt. Radial Styloid');
 
-  // Align with the edited set: the RMS shown is the fit's.
-  await page.getByTestId('align-run').click();
-  await expect(body(page)).toHaveAttribute('data-align-state', 'done', { timeout: 240_000 });
-  const rms = Number(await page.getByTestId('align-rms').getAttribute('data-rms-mm'));
-  // With the full file this sample fits to 0.92 mm (rbf-align.spec.ts); with half the landmarks
-  // and one moved, 1.04 mm on 2026-11-24.
-  expect(rms).toBeGreaterThan(0.7);
-  expect(rms).toBeLessThan(1.3);
-
-  // Export as .lnd: 73 lines in CAESAR order, −999 for the absent ones, the moved one where it is now.
-  const download = page.waitForEvent('download');
-  await page.getByTestId('landmarks-export-lnd').click();
-  const file = await download;
-  expect(file.suggestedFilename()).toBe('scan_001-landmarks.lnd');
-  const lnd = parseLnd(readFileSync((await file.path())!, 'latin1'));
+  // Align with the edited set: with the full file this sample fits to 0.92 mm RMS
+  // (rbf-align.spec.ts); with half the landmarks and one moved, 1.04 mm on 2026-11-24. Then export
+  // as .lnd: 73 lines in CAESAR order, −999 for the absent ones, the moved one where it is now.
+  const lnd = await alignThenExportLnd(page, [0.7, 1.3]);
+  expect(lnd.fileName).toBe('scan_001-landmarks.lnd');
   expect(lnd.count).toBe(73);
   expect([...lnd.at.values()].filter((p) => p === null)).toHaveLength(37);
   expect(lnd.at.get('Rt. Radial Styloid')).toBeNull();

@@ -238,19 +238,30 @@ fn scan_mesh(positions: &[f32], triangles: &[u32]) -> Result<Mesh, JsError> {
     Ok(Mesh::new(points, faces))
 }
 
-fn scan_landmarks(names: &str, positions: &[f64]) -> Result<LandmarkSet, JsError> {
+/// The landmark names of `names` (one per line, none for an empty string), checked against
+/// `positions` (`#L·3`); the message starts with `what`.
+pub(super) fn landmark_names<'a>(
+    names: &'a str,
+    positions: &[f64],
+    what: &str,
+) -> Result<Vec<&'a str>, String> {
     let names: Vec<&str> = if names.is_empty() {
         Vec::new()
     } else {
         names.split('\n').collect()
     };
     if positions.len() != names.len() * 3 {
-        return Err(JsError::new(&format!(
-            "landmarks: {} names but {} coordinates (3 per landmark expected)",
+        return Err(format!(
+            "{what}: {} names but {} coordinates (3 per landmark expected)",
             names.len(),
             positions.len()
-        )));
+        ));
     }
+    Ok(names)
+}
+
+fn scan_landmarks(names: &str, positions: &[f64]) -> Result<LandmarkSet, JsError> {
+    let names = landmark_names(names, positions, "landmarks").map_err(|e| JsError::new(&e))?;
     let landmarks = names
         .iter()
         .zip(positions.chunks_exact(3))

@@ -4,6 +4,7 @@
 use nalgebra::Point3;
 use wasm_bindgen::prelude::*;
 
+use super::align::landmark_names;
 use crate::io::{write_landmarks_csv, write_landmarks_json, write_lnd};
 use crate::landmarks::{Landmark, LandmarkSet};
 
@@ -31,18 +32,7 @@ pub fn write_landmarks(
 
 /// The set `names` / `positions` describe, absent landmarks (all-NaN) listed as missing.
 fn landmark_set(names: &str, positions: &[f64]) -> Result<LandmarkSet, String> {
-    let names: Vec<&str> = if names.is_empty() {
-        Vec::new()
-    } else {
-        names.split('\n').collect()
-    };
-    if positions.len() != names.len() * 3 {
-        return Err(format!(
-            "landmark export: {} names but {} coordinates (3 per landmark expected)",
-            names.len(),
-            positions.len()
-        ));
-    }
+    let names = landmark_names(names, positions, "landmark export")?;
     let mut set = LandmarkSet::default();
     for (name, p) in names.iter().zip(positions.chunks_exact(3)) {
         if p.iter().all(|v| v.is_nan()) {
