@@ -51,5 +51,7 @@ export class LandmarkList {
         return row;
       }),
     );
+    // A landmark picked on the scan scrolls into view (the list scrolls on its own, under the tools).
+    this.element.querySelector<HTMLElement>('li[data-selected="true"]')?.scrollIntoView({ block: 'nearest' });
   }
 }
