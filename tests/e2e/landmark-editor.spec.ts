@@ -246,3 +246,24 @@ test('a failed estimate says why and keeps the scan; a cancelled one can be run 
   await expect(body(page)).toHaveAttribute('data-estimate-state', 'done', { timeout: 120_000 });
   await expect(page.getByTestId('landmark-list').locator('li[data-state="estimated"]')).toHaveCount(73);
 });
+
+test('changing the scan units carries the placed landmarks and those that follow the scan', async ({ page }) => {
+  test.setTimeout(120_000);
+  await page.goto('./');
+  await expect(body(page)).toHaveAttribute('data-template-ready', 'true', { timeout: 60_000 });
+  await dropFiles(page, [sampleFile('scan_001.ply.gz'), sampleFile('landmarks_001.csv')]);
+  await waitForLoads(page, 1);
+  await expect(body(page)).toHaveAttribute('data-rbf-state', 'done', { timeout: 60_000 });
+  const marker = await pickMarker(page, 'Substernale');
+  await page.mouse.click(marker.x + 9, marker.y + 7);
+  await expect(row(page, 'Substernale')).toHaveAttribute('data-state', 'edited');
+  const moved = await positionMm(page, 'Substernale');
+  const given = await positionMm(page, 'Sellion');
+
+  // Read as metres, the scan is 1000 times larger: so are the clicked point and the CSV's landmarks.
+  await page.getByTestId('scan-units').selectOption('metres');
+  await expect(body(page)).toHaveAttribute('data-scan-units', 'metres');
+  (await positionMm(page, 'Substernale')).forEach((v, i) => expect(v).toBeCloseTo(moved[i]! * 1000, 1));
+  (await positionMm(page, 'Sellion')).forEach((v, i) => expect(v).toBeCloseTo(given[i]! * 1000, 1));
+  await expect(row(page, 'Substernale')).toHaveAttribute('data-state', 'edited');
+});
