@@ -5,6 +5,7 @@ import { readFileSync } from 'node:fs';
 import { expect, test, type Page } from '@playwright/test';
 import { dropFiles, waitForLoads, type TestFile } from './fixtures';
 import { sampleFile } from './samples';
+import { openWithSample } from './steps';
 
 const body = (page: Page) => page.locator('body');
 const row = (page: Page, name: string) => page.getByTestId('landmark-list').locator(`li[data-name="${name}"]`);
@@ -73,10 +74,7 @@ function truth(): Map<string, number[]> {
 
 test('a scan without landmarks gets an estimate; move one by clicking, align, export the .lnd', async ({ page }) => {
   test.setTimeout(300_000);
-  await page.goto('./');
-  await expect(body(page)).toHaveAttribute('data-template-ready', 'true', { timeout: 60_000 });
-  await dropFiles(page, [sampleFile('scan_001.ply.gz')]);
-  await waitForLoads(page, 1);
+  await openWithSample(page, [sampleFile('scan_001.ply.gz')]);
   await expect(body(page)).toHaveAttribute('data-estimate-state', 'done', { timeout: 120_000 });
   // The sample is z-up, facing −y, in millimetres: the panel says what was assumed.
   await expect(page.getByTestId('estimate-assumed')).toContainText("up is the scan's +z axis");
@@ -116,11 +114,8 @@ test('a scan without landmarks gets an estimate; move one by clicking, align, ex
 
 test('edit a partial landmark set on the scan, align with it and export it as .lnd', async ({ page }) => {
   test.setTimeout(300_000);
-  await page.goto('./');
-  await expect(body(page)).toHaveAttribute('data-template-ready', 'true', { timeout: 60_000 });
   // Every second landmark of the sample's 73 (37 given, 36 absent), as a file clicked by hand might hold.
-  await dropFiles(page, [sampleFile('scan_001.ply.gz'), partialCsv((_, i) => i % 2 === 0)]);
-  await waitForLoads(page, 1);
+  await openWithSample(page, [sampleFile('scan_001.ply.gz'), partialCsv((_, i) => i % 2 === 0)]);
   await expect(body(page)).toHaveAttribute('data-rbf-state', 'done', { timeout: 60_000 });
   await expect(page.getByTestId('landmark-list').locator('li[data-state="given"]')).toHaveCount(37);
   await expect(page.getByTestId('landmark-list').locator('li[data-state="absent"]')).toHaveCount(36);
@@ -216,13 +211,10 @@ test('the edited set survives a trap of the alignment worker and a failed landma
 
 test('a failed estimate says why and keeps the scan; a cancelled one can be run again', async ({ page }) => {
   test.setTimeout(180_000);
-  await page.goto('./');
-  await expect(body(page)).toHaveAttribute('data-template-ready', 'true', { timeout: 60_000 });
   // A sliver of a triangle is no body: the core finds nothing to fit, and the scan stays.
   const ply = ['ply', 'format ascii 1.0', 'element vertex 3', 'property float x', 'property float y', 'property float z'];
   ply.push('element face 1', 'property list uchar int vertex_indices', 'end_header', '0 0 0', '0 0 0', '0 1700 0', '3 0 1 2', '');
-  await dropFiles(page, [{ name: 'sliver.ply', bytes: Buffer.from(ply.join('\n')) }]);
-  await waitForLoads(page, 1);
+  await openWithSample(page, [{ name: 'sliver.ply', bytes: Buffer.from(ply.join('\n')) }]);
   await expect(body(page)).toHaveAttribute('data-estimate-state', 'error', { timeout: 60_000 });
   await expect(page.getByTestId('estimate-error')).toContainText('is this a whole body?');
   await expect(page.getByTestId('error-text')).toContainText('Landmark estimate');
@@ -249,10 +241,7 @@ test('a failed estimate says why and keeps the scan; a cancelled one can be run 
 
 test('changing the scan units carries the placed landmarks and those that follow the scan', async ({ page }) => {
   test.setTimeout(120_000);
-  await page.goto('./');
-  await expect(body(page)).toHaveAttribute('data-template-ready', 'true', { timeout: 60_000 });
-  await dropFiles(page, [sampleFile('scan_001.ply.gz'), sampleFile('landmarks_001.csv')]);
-  await waitForLoads(page, 1);
+  await openWithSample(page);
   await expect(body(page)).toHaveAttribute('data-rbf-state', 'done', { timeout: 60_000 });
   const marker = await pickMarker(page, 'Substernale');
   await page.mouse.click(marker.x + 9, marker.y + 7);
