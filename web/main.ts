@@ -3,6 +3,7 @@ import './style.css';
 import { AlignStep } from './app/align-step';
 import { Batch } from './app/batch';
 import { startBatch } from './app/batch-view';
+import { LandmarkStep } from './app/landmark-step';
 import { Session } from './app/session';
 import { TemplateView } from './app/template-view';
 import { WarpStep } from './app/warp-step';
@@ -14,7 +15,6 @@ import { METRES_PER_UNIT, type Units } from './shared/results';
 import { acceptDrops } from './ui/drop-overlay';
 import { byId } from './ui/dom';
 import { ErrorBanner } from './ui/error-banner';
-import { LandmarksPanel } from './ui/landmarks-panel';
 import { ScanPanel } from './ui/scan-panel';
 import { TopBar } from './ui/top-bar';
 import { Viewer } from './view/viewer';
@@ -24,18 +24,26 @@ const client = new CoreClient();
 // cancelling or losing it never touches the template, the scan read or the shape model, which live
 // in the main core worker.
 const alignClient = new CoreClient();
-const session = new Session();
+// The landmark estimate and its checks run in a third worker: cancelling an estimate stops only it.
+const landmarkClient = new CoreClient();
+let caesarNames: string[] = [];
+const session = new Session(() => caesarNames);
 const viewer = new Viewer(byId('viewport'));
 const banner = new ErrorBanner();
 const topBar = new TopBar((files) => void open(files));
 const scanPanel = new ScanPanel(changeUnits);
-const landmarksPanel = new LandmarksPanel();
 const emptyHint = byId('empty-hint');
 const body = document.body;
 const showError = (message: string) => banner.show([message]);
 const templateView = new TemplateView(client, viewer, showError);
 const warpStep = new WarpStep(alignClient, viewer, session, templateView, showError);
 const alignStep = new AlignStep(alignClient, viewer, session, templateView, warpStep, showError);
+// An edited landmark set invalidates the warp and the fit as a new landmark file does, but keeps the view.
+const landmarkStep = new LandmarkStep(client, landmarkClient, viewer, session, () => caesarNames, (keepView) => {
+  alignStep.reset();
+  warpStep.reset(keepView);
+}, showError);
+templateView.onLoaded((data) => landmarkStep.setTemplate(data));
 // Another template resolution: the warp and the fit were made with the old one.
 templateView.onLoaded(() => {
   if (!warpStep.ready) return;
@@ -67,8 +75,8 @@ acceptDrops((files) => void open(files));
 Promise.all([client.call({ type: 'version' }), client.call({ type: 'caesarNames' }), alignClient.call({ type: 'alignDefaults' })])
   .then(([version, names, defaults]) => {
     warpStep.panel.setDefaults(defaults);
-    landmarksPanel.setCaesarNames(names);
-    landmarksPanel.render(null);
+    caesarNames = names;
+    landmarkStep.show(null);
     topBar.setStatus(`Core ${version} ready. Drop a scan and its landmarks anywhere on the page.`);
     body.dataset.coreReady = 'true';
     // A shared link brings its own camera: the template must not re-frame over it.
@@ -104,12 +112,14 @@ async function open(all: File[]): Promise<void> {
   const landmarks = outcome.landmarks.at(-1);
   if (landmarks) session.setLandmarks(landmarks);
   if (scan || landmarks) {
+    landmarkStep.reset();
     // Before the refresh, so the camera frames the new data, not the template beside it.
     alignStep.reset();
     warpStep.reset();
     // The scan and the shape body would stand in the same place: the scan takes the view.
     shapeSpace.hide();
     refresh(Boolean(scan) || !session.scan);
+    landmarkStep.afterLoad();
   }
 
   if (outcome.errors.length > 0) banner.show(outcome.errors);
@@ -123,7 +133,7 @@ async function open(all: File[]): Promise<void> {
 }
 
 function changeUnits(units: Units): void {
-  session.scanUnits = units;
+  session.setScanUnits(units);
   refresh(true);
   alignStep.reset();
   warpStep.reset();
@@ -133,25 +143,13 @@ function changeUnits(units: Units): void {
 function refresh(frame: boolean): void {
   const scan = session.scan;
   const set = session.landmarks;
-  viewer.showBody(
-    'scan',
-    {
-      mesh: scan,
-      meshScale: session.scanScale,
-      landmarks: set
-        ? { names: set.names, positions: session.landmarkPositionsMetres(), flagged: new Set(set.report.unknown) }
-        : null,
-    },
-    frame,
-  );
+  viewer.showBody('scan', { mesh: scan, meshScale: session.scanScale, landmarks: landmarkStep.markers() }, frame);
   emptyHint.hidden = Boolean(scan || set) || body.dataset.shapeShown === 'true';
   const summary = session.scanSummary;
   scanPanel.render(
     scan && summary ? { fileName: scan.fileName, summary, units: session.scanUnits, readMs: lastReadMs } : null,
   );
-  landmarksPanel.render(
-    set ? { fileName: set.fileName, report: set.report, unitsNote: landmarkUnitsNote(set.units) } : null,
-  );
+  landmarkStep.show(set ? { fileName: set.fileName, report: set.report, unitsNote: landmarkUnitsNote(set.units) } : null);
   body.dataset.scanLoaded = String(Boolean(scan));
   body.dataset.landmarksLoaded = String(Boolean(set));
   body.dataset.scanUnits = session.scanUnits;

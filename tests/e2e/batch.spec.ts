@@ -1,5 +1,6 @@
-// The batch in the browser: six synthetic subjects (and a scan without landmarks) dropped at once
-// are aligned by the worker pool, survive a reload, and make a model; a worker whose core traps
+// The batch in the browser: six synthetic subjects, a scan without landmarks (its landmarks are
+// estimated) and a broken scan dropped at once are aligned by the worker pool, survive a reload,
+// and make a model; a worker whose core traps
 // mid-batch, or a cancelled one, leaves the others and the shape model alone.
 import { expect, test, type Page } from '@playwright/test';
 import { dropFiles, waitForLoads } from './fixtures';
@@ -23,15 +24,17 @@ async function waitForBatch(page: Page, total: number): Promise<void> {
 test('six subjects dropped at once are aligned, come back after a reload and build a model', async ({ page }) => {
   test.setTimeout(420_000);
   const files = synthSubjects(7, 13);
-  // Subject 7 comes without its landmarks.
-  const dropped = files.filter((f) => f.name !== 'landmarks_007.lnd');
+  // Subject 7 comes without its landmarks; a broken scan comes with subject 1's.
+  const broken = { name: 'broken.ply', bytes: Buffer.from('ply\nformat ascii 1.0\nelement vertex 3\nend_header\n1 2\n') };
+  const brokenLandmarks = { name: 'broken.lnd', bytes: files.find((f) => f.name === 'landmarks_001.lnd')!.bytes };
+  const dropped = [...files.filter((f) => f.name !== 'landmarks_007.lnd'), broken, brokenLandmarks];
   await openApp(page);
   await dropFiles(page, dropped);
   await waitForLoads(page, 1);
-  await waitForBatch(page, 7);
+  await waitForBatch(page, 8);
   expect(Number(await body(page).getAttribute('data-batch-workers'))).toBeGreaterThanOrEqual(1);
 
-  const subjects = ['scan_001', 'scan_002', 'scan_003', 'scan_004', 'scan_005', 'scan_006'];
+  const subjects = ['scan_001', 'scan_002', 'scan_003', 'scan_004', 'scan_005', 'scan_006', 'scan_007'];
   const before: Record<string, { status: string; rms: string }> = {};
   for (const s of subjects) {
     const status = (await row(page, s).getAttribute('data-status'))!;
@@ -42,18 +45,18 @@ test('six subjects dropped at once are aligned, come back after a reload and bui
     expect(Number(rms)).toBeLessThan(10);
     before[s] = { status, rms };
   }
-  await expect(row(page, 'scan_007')).toHaveAttribute('data-status', 'failed');
-  await expect(row(page, 'scan_007')).toContainText('no landmark file');
+  await expect(row(page, 'broken')).toHaveAttribute('data-status', 'failed');
+  await expect(row(page, 'broken')).toContainText('broken.ply');
 
   // Sorting by RMS puts the rows in RMS order (the failed subject, without one, last).
   await page.getByTestId('batch-sort-rms').click();
   const sorted = await page.locator('[data-testid="batch-row"]').evaluateAll((rows) => rows.map((r) => r.getAttribute('data-subject')!));
-  expect(sorted.at(-1)).toBe('scan_007');
+  expect(sorted.at(-1)).toBe('broken');
   const shown = sorted.slice(0, -1).map((s) => Number(before[s]!.rms));
   expect(shown).toEqual([...shown].sort((a, b) => a - b));
   await page.getByTestId('batch-sort-rms').click();
   const descending = await page.locator('[data-testid="batch-row"]').evaluateAll((rows) => rows.map((r) => r.getAttribute('data-subject')!));
-  expect(descending[0]).toBe('scan_007');
+  expect(descending[0]).toBe('broken');
 
   // A click on a row shows that fit with its heat map.
   await row(page, 'scan_003').click();
@@ -61,25 +64,25 @@ test('six subjects dropped at once are aligned, come back after a reload and bui
   await expect(page.locator('#viewport')).toHaveAttribute('data-fitted-coloured', 'true');
   await expect(page.getByTestId('batch-panel').getByTestId('heat-legend')).toBeVisible();
 
-  // Excluding one leaves five for the model.
+  // Excluding one leaves six for the model.
   await row(page, 'scan_006').getByTestId('batch-exclude').click();
   await expect(row(page, 'scan_006')).toHaveAttribute('data-status', 'excluded');
 
   await page.reload();
   await expect(body(page)).toHaveAttribute('data-template-ready', 'true', { timeout: 60_000 });
-  await expect(body(page)).toHaveAttribute('data-batch-total', '7');
-  for (const s of subjects.slice(0, 5)) {
+  await expect(body(page)).toHaveAttribute('data-batch-total', '8');
+  for (const s of subjects.filter((s) => s !== 'scan_006')) {
     await expect(row(page, s)).toHaveAttribute('data-status', before[s]!.status);
     await expect(row(page, s).getByTestId('batch-rms')).toHaveText(before[s]!.rms);
   }
   await expect(row(page, 'scan_006')).toHaveAttribute('data-status', 'excluded');
-  await expect(row(page, 'scan_007')).toHaveAttribute('data-status', 'failed');
+  await expect(row(page, 'broken')).toHaveAttribute('data-status', 'failed');
 
   await shapeReady(page);
   await page.getByTestId('batch-build').click();
-  await expect(page.getByTestId('batch-build-status')).toHaveText('Built from 5 subjects.', { timeout: 120_000 });
+  await expect(page.getByTestId('batch-build-status')).toHaveText('Built from 6 subjects.', { timeout: 120_000 });
   await expect(page.getByTestId('shape-model-name')).not.toHaveText('models/demo.bsm');
-  await expect(page.getByTestId('shape-panel')).toContainText('5 subjects');
+  await expect(page.getByTestId('shape-panel')).toContainText('6 subjects');
   await shapeReady(page);
 
   await page.getByTestId('batch-clear').click();

@@ -3,6 +3,7 @@
 // the last good state on screen. The result is shown as a distance heat map.
 import { CancelledError, type CoreClient } from '../client/core-client';
 import { rbfParams, type AlignResult } from '../shared/align-types';
+import { baseName } from '../shared/file-kind';
 import type { CoreEvent } from '../shared/messages';
 import { AlignPanel } from '../ui/align-panel';
 import { distanceHeat } from '../view/heat-colours';
@@ -10,7 +11,7 @@ import type { Viewer } from '../view/viewer';
 import { download } from '../ui/download';
 import { scanInput, scanTransfer } from './scan-input';
 import type { Session } from './session';
-import { baseName, subjects } from './subjects';
+import { subjects } from './subjects';
 import type { TemplateView } from './template-view';
 import { SCAN_OPACITY, type WarpStep } from './warp-step';
 

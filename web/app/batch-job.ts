@@ -1,11 +1,12 @@
-// One subject of the batch in one pool worker: read its scan and landmarks with the core, then the
-// core's one pipeline (`align`: RBF warp + fine alignment) with the page's settings. The units
-// rules are the single alignment's (Session, scanInput).
+// One subject of the batch in one pool worker: read its scan and landmarks with the core (a scan
+// dropped without a landmark file gets the core's estimate of them, as a single scan does), then
+// the core's one pipeline (`align`: RBF warp + fine alignment) with the page's settings. The
+// units rules are the single alignment's (Session, scanInput).
 import { CancelledError, type CoreClient } from '../client/core-client';
 import type { AlignParams, AlignResult } from '../shared/align-types';
-import type { ParsedLandmarks, ParsedScan } from '../shared/results';
+import type { ParsedLandmarks } from '../shared/results';
 import type { TemplateResolution } from '../shared/template-data';
-import { scanInput, scanTransfer } from './scan-input';
+import { estimateInput, scanInput, scanTransfer } from './scan-input';
 import { Session } from './session';
 
 /** The files of one subject; `landmarks` null when none was dropped with the scan. */
@@ -33,10 +34,12 @@ export async function alignSubject(
   const bytes = await input.scan.arrayBuffer();
   go();
   const scan = await client.call({ type: 'parseScan', bytes, fileName: input.scan.name }, { transfer: [bytes] });
-  const session = new Session();
+  const names = await client.call({ type: 'caesarNames' });
+  const session = new Session(() => names);
   session.setScan(scan);
   go();
-  session.setLandmarks(await landmarksOf(client, input, scan));
+  if (input.landmarks) session.setLandmarks(await readLandmarks(client, input.landmarks));
+  else await estimateLandmarks(client, session, onProgress);
   go();
   const aligned = scanInput(session, resolution);
   if (!aligned) throw new Error('the scan or its landmarks could not be read');
@@ -53,15 +56,18 @@ export async function alignSubject(
   );
 }
 
-/**
- * The subject's landmarks: its landmark file read by the core. A scan without one is where
- * estimated landmarks will come from once the core can estimate them (the landmark-free issue):
- * the one place to call the estimate. Until then it fails with that reason.
- */
-async function landmarksOf(client: CoreClient, input: SubjectInput, _scan: ParsedScan): Promise<ParsedLandmarks> {
-  if (!input.landmarks) {
-    throw new Error('no landmark file with the same base name was dropped (landmark estimation is not available yet); drop its .lnd, .csv or .json and retry');
-  }
-  const bytes = await input.landmarks.arrayBuffer();
-  return client.call({ type: 'parseLandmarks', bytes, fileName: input.landmarks.name }, { transfer: [bytes] });
+async function readLandmarks(client: CoreClient, file: File): Promise<ParsedLandmarks> {
+  const bytes = await file.arrayBuffer();
+  return client.call({ type: 'parseLandmarks', bytes, fileName: file.name }, { transfer: [bytes] });
+}
+
+/** A scan dropped without a landmark file: the core's estimate of all 73 (as the single scan gets). */
+async function estimateLandmarks(client: CoreClient, session: Session, onProgress: (fraction: number, label: string) => void): Promise<void> {
+  const input = estimateInput(session);
+  if (!input || !session.edits) throw new Error('the scan could not be read');
+  const estimate = await client.call(
+    { type: 'estimateLandmarks', scan: input },
+    { transfer: scanTransfer(input), onProgress: (fraction, label) => onProgress(0, `${label} (${Math.round(100 * fraction)} %)`) },
+  );
+  session.edits.fillEstimate(estimate.names, estimate.positions, estimate.confidence, estimate.given);
 }

@@ -5,11 +5,24 @@ import type { ScanInput } from '../shared/align-types';
 import type { TemplateResolution } from '../shared/template-data';
 import type { Session } from './session';
 
-/** The scan and landmarks of `session` in metres, or null until both are loaded. */
+/** The scan and the current landmark set of `session` in metres, or null until both are there. */
 export function scanInput(session: Session, resolution: TemplateResolution): ScanInput | null {
+  const set = session.edits?.placed();
+  return set && set.names.length > 0 ? withLandmarks(session, resolution, set) : null;
+}
+
+/**
+ * What the landmark estimate takes: the scan with the landmarks a person gave or placed (none,
+ * or a partial set), which it keeps as they are; null without a scan.
+ */
+export function estimateInput(session: Session): ScanInput | null {
+  const set = session.edits?.placed((state) => state === 'given' || state === 'edited') ?? { names: [], positions: new Float64Array() };
+  return withLandmarks(session, 'base', set);
+}
+
+function withLandmarks(session: Session, resolution: TemplateResolution, set: { names: string[]; positions: Float64Array }): ScanInput | null {
   const scan = session.scan;
-  const set = session.landmarks;
-  if (!scan || !set) return null;
+  if (!scan) return null;
   const k = session.scanScale;
   const positions = k === 1 ? scan.positions.slice() : Float32Array.from(scan.positions, (v) => v * k);
   return {
@@ -17,7 +30,7 @@ export function scanInput(session: Session, resolution: TemplateResolution): Sca
     positions,
     triangles: scan.triangles.slice(),
     landmarkNames: set.names,
-    landmarkPositions: Float64Array.from(session.landmarkPositionsMetres()),
+    landmarkPositions: set.positions,
   };
 }
 

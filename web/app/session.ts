@@ -1,20 +1,47 @@
-// What is loaded: the scan, its chosen units, and the landmarks. Derives what the view and the
-// panels show; a failed load never touches it.
+// What is loaded: the scan, its chosen units, the landmark file and the landmark set being edited
+// (which the warp and the alignment use). Derives what the view and the panels show; a failed load
+// never touches it.
 import { METRES_PER_UNIT, type MeshSummary, type ParsedLandmarks, type ParsedScan, type Units } from '../shared/results';
+import { LandmarkEdits } from './landmark-edits';
 
 export class Session {
   scan: ParsedScan | null = null;
   /** The scan's units as the user chose them (the detected units until overridden). */
   scanUnits: Units = 'metres';
+  /** The landmark file as read (its name, report and units), or null when none was opened. */
   landmarks: ParsedLandmarks | null = null;
+  /** The current landmark set: the file's, an estimate, and the edits made since. */
+  edits: LandmarkEdits | null = null;
 
+  /** `caesarNames`: the 73 CAESAR landmark names in file order (from the core). */
+  constructor(private readonly caesarNames: () => readonly string[]) {}
+
+  /**
+   * A new scan. The landmarks of a file opened before stay (with their edits), as a file does
+   * for the scan dropped after it; landmarks estimated or placed on the old scan go.
+   */
   setScan(scan: ParsedScan): void {
     this.scan = scan;
     this.scanUnits = scan.summary.units_detected;
+    if (!this.landmarks || !this.edits) this.edits = new LandmarkEdits(this.caesarNames());
   }
 
+  /** A landmark file replaces the set being edited: its landmarks given, the rest absent. */
   setLandmarks(landmarks: ParsedLandmarks): void {
     this.landmarks = landmarks;
+    this.edits = LandmarkEdits.fromFile(this.caesarNames(), landmarks.names, this.landmarkPositionsMetres());
+  }
+
+  /**
+   * Changes the scan's units: what was placed on the scan (estimated, edited) scales with it, and so
+   * do landmarks given in a file whose format fixes no units (they follow the scan).
+   */
+  setScanUnits(units: Units): void {
+    const before = this.scanScale;
+    this.scanUnits = units;
+    const factor = this.scanScale / before;
+    const givenFollows = !this.landmarks?.units;
+    this.edits?.rescale(factor, (state) => state !== 'given' || givenFollows);
   }
 
   /** Factor on the worker's positions (metres by the detected units) for the chosen units. */
@@ -47,7 +74,7 @@ export class Session {
     return set.detected_units;
   }
 
-  /** Landmark positions in metres. */
+  /** The landmark file's positions in metres. */
   landmarkPositionsMetres(): Float32Array {
     const set = this.landmarks;
     if (!set) return new Float32Array();

@@ -50,7 +50,3 @@ export class SubjectStore {
 /** The one store of the page. */
 export const subjects = new SubjectStore();
 
-/** A subject's name from its file name: without the extension (and a `.gz` after it). */
-export function baseName(fileName: string): string {
-  return fileName.replace(/\.gz$/i, '').replace(/\.[^.]+$/, '');
-}

@@ -39,25 +39,32 @@ export class WarpStep {
   }
 
   get ready(): boolean {
-    return Boolean(this.session.scan && this.session.landmarks);
+    return Boolean(this.session.scan && this.session.edits?.placed().names.length);
   }
 
-  /** A new scan or landmark file: forget the old warp, and warp again with the current settings. */
-  reset(): void {
+  /**
+   * A new scan or landmark file: forget the old warp, and warp again with the current settings.
+   * `keepView` (an edited landmark of the same scan): the scan stays where it is drawn and the
+   * camera where the person put it.
+   */
+  reset(keepView = false): void {
     this.last = null;
-    this.transform = null;
     this.viewer.removeBody('warped');
-    if (this.session.scan) this.viewer.showBody('scan', { transform: null, opacity: 1, visible: true });
-    this.panel.setShown('scan', true);
     this.panel.setShown('warped', true);
-    // The loaded data takes the stage; the template's toggle brings it back.
-    this.template.setShown(false);
+    if (!keepView) {
+      this.transform = null;
+      if (this.session.scan) this.viewer.showBody('scan', { transform: null, opacity: 1, visible: true });
+      this.panel.setShown('scan', true);
+      // The loaded data takes the stage; the template's toggle brings it back.
+      this.template.setShown(false);
+    } else this.show('scan', true);
     this.panel.render(this.ready, null, null);
     const settings = this.panel.current;
-    if (this.ready && settings) void this.run(settings);
+    if (this.ready && settings) void this.run(settings, !keepView);
   }
 
-  async run(settings: RbfSettings): Promise<void> {
+  /** Warps; `frame` aims the camera at the result. */
+  async run(settings: RbfSettings, frame = true): Promise<void> {
     const input = scanInput(this.session, this.template.resolution);
     if (!input) return;
     const body = document.body.dataset;
@@ -73,7 +80,7 @@ export class WarpStep {
       this.viewer.showBody('warped', { mesh: { positions: warp.positions, normals: warp.normals, triangles }, colour: 0x7fb8e6, transform: this.transform });
       this.show('warped', true);
       this.template.setShown(false);
-      this.viewer.frame();
+      if (frame) this.viewer.frame();
       for (const listener of this.listeners) listener(this.transform);
       this.panel.render(true, this.outcome(), null);
       body.rbfState = 'done';

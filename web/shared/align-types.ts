@@ -1,5 +1,6 @@
 // Inputs and results of the RBF warp (paper §3.1) and fine alignment (§3.2). No DOM here.
 import type { TemplateResolution } from './template-data';
+import type { Units } from './results';
 
 export type KernelName = 'gaussian' | 'thin-plate' | 'multiquadric';
 
@@ -51,9 +52,9 @@ export function rbfParams(settings: RbfSettings): NonNullable<AlignParams['rbf']
 /**
  * A fine template is aligned coarse to fine: the base template is fitted first ('base'), carried
  * to fine by the subdivision operator and fitted briefly there ('fine'). A base template has only
- * the 'base' stage.
+ * the 'base' stage. A landmark estimate on a bare scan reports its own 'estimate' stage.
  */
-export type AlignStage = 'base' | 'fine';
+export type AlignStage = 'base' | 'fine' | 'estimate';
 
 /** The scan and its landmarks as the core needs them, all in metres. */
 export interface ScanInput {
@@ -143,7 +144,7 @@ export interface AlignReport {
   coarse_to_fine: boolean;
   template_vertices: number;
   scan_vertices: number;
-  units: 'metres' | 'millimetres';
+  units: Units;
   units_detected: boolean;
   params: AlignDefaults['params'];
   warp: WarpReport;

@@ -26,3 +26,8 @@ export function classifyFile(fileName: string): FileKind | null {
 export function unsupportedMessage(fileName: string): string {
   return `${fileName}: unsupported file type; scans are .ply, .obj or .stl and landmarks .csv, .lnd or .json (each optionally .gz)`;
 }
+
+/** The name without its directory-free extension(s): `scan_001.ply.gz` → `scan_001`. */
+export function baseName(fileName: string): string {
+  return fileName.replace(/\.gz$/i, '').replace(/\.[^.]+$/, '');
+}

@@ -1,5 +1,6 @@
 // Messages between the UI thread and the core worker. No DOM here: shared by both threads.
 import type { AlignDefaults, AlignParams, AlignProgress, AlignResult, ScanInput, WarpResult } from './align-types';
+import type { LandmarkEstimate, SuspiciousLandmark } from './landmark-entry';
 import type { ParsedLandmarks, ParsedScan, SubjectPairing } from './results';
 import type { TemplateData, TemplateResolution } from './template-data';
 import type { ExportBody, LoadedModel, ModelCsv, ModelGlbParts, ReconstructedBody, ShapeCoefficients, ShownResolution } from './shape-results';
@@ -19,7 +20,16 @@ export type CoreRequestBody =
   | { type: 'rbfWarp'; scan: ScanInput; params: AlignParams }
   /** RBF warp then fine alignment; replies with `alignProgress` and `alignRound` events. */
   | { type: 'align'; scan: ScanInput; params: AlignParams }
+  /** The 73 CAESAR landmarks of a scan with a partial or empty set (kept as given); replies with progress. */
+  | { type: 'estimateLandmarks'; scan: ScanInput }
+  /** The suspicious landmarks of the scan's set. */
+  | { type: 'flagSuspicious'; scan: ScanInput }
   | { type: 'exportMesh'; positions: Float32Array; triangles: Uint32Array; format: 'ply' | 'obj' }
+  /**
+   * A landmark set as a file by the core's writer of `format`: `names` with `positions` (`#L·3`,
+   * written as given; all three NaN for an absent landmark).
+   */
+  | { type: 'writeLandmarks'; names: string[]; positions: Float64Array; format: 'lnd' | 'csv' | 'json'; subjectId: string }
   /** Shape models: the worker keeps one; a failed load or build leaves the previous one. */
   | { type: 'loadModel'; bytes: ArrayBuffer; fileName: string }
   /** `positions`: the subjects' bodies concatenated (template order, metres). */
@@ -53,7 +63,10 @@ export interface CoreResults {
   alignDefaults: AlignDefaults;
   rbfWarp: WarpResult;
   align: AlignResult;
+  estimateLandmarks: LandmarkEstimate;
+  flagSuspicious: SuspiciousLandmark[];
   exportMesh: Uint8Array;
+  writeLandmarks: Uint8Array;
   loadModel: LoadedModel;
   buildModel: LoadedModel;
   morph: ReconstructedBody;

@@ -1,8 +1,8 @@
 // What the core worker hands back. No DOM here: shared by both threads.
 
 /** Length units the core recognises, and what one unit is in metres. */
-export type Units = 'metres' | 'millimetres';
-export const METRES_PER_UNIT: Record<Units, number> = { metres: 1, millimetres: 0.001 };
+export type Units = 'metres' | 'centimetres' | 'millimetres';
+export const METRES_PER_UNIT: Record<Units, number> = { metres: 1, centimetres: 0.01, millimetres: 0.001 };
 
 /** The core's mesh summary (`bodyspace::mesh::summary::MeshSummary`), bounding box in metres. */
 export interface MeshSummary {

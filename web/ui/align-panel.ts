@@ -2,7 +2,7 @@
 // result — the paper's Table 1 numbers, the heat-map legend, export and "keep as aligned subject".
 import type { AlignReport, AlignStage } from '../shared/align-types';
 import type { TemplateResolution } from '../shared/template-data';
-import { byId, h } from './dom';
+import { button, byId, h } from './dom';
 import { EnergyChart } from './energy-chart';
 import { formatCount } from './format';
 import { heatLegend } from './heat-legend';
@@ -142,10 +142,4 @@ function iterationsText(r: AlignReport): string {
   const stages = r.fine.stages;
   const detail = stages ? `${stages.base.iterations} base + ${stages.fine_iterations} fine, ` : '';
   return `${r.fine.iterations} (${detail}${r.fine.rounds} rounds${r.fine.converged ? ', converged' : ''})`;
-}
-
-function button(testid: string, label: string, cls: string, onClick: () => void): HTMLButtonElement {
-  const b = h('button', { class: cls, type: 'button', 'data-testid': testid }, label);
-  b.addEventListener('click', onClick);
-  return b;
 }

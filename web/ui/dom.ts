@@ -16,6 +16,13 @@ export function h<K extends keyof HTMLElementTagNameMap>(
   return element;
 }
 
+/** A `<button>` of class `cls` that runs `onClick`. */
+export function button(testid: string, label: string, cls: string, onClick: () => void): HTMLButtonElement {
+  const b = h('button', { class: cls, type: 'button', 'data-testid': testid }, label);
+  b.addEventListener('click', onClick);
+  return b;
+}
+
 /**
  * `element` with its background set through the CSS object model: the page's
  * Content-Security-Policy allows no inline `style` attributes, but script-set styles are fine.

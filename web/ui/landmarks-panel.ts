@@ -1,6 +1,12 @@
-// The 73 CAESAR landmarks as found ✓ / missing ✗ in the loaded landmark file, then unknown names.
+// The Landmarks panel: the landmark file read (name, found / missing / unknown counts, units),
+// then the landmark editor (its controls, where the hovered landmark sits on the template, and the
+// 73 CAESAR landmarks of the current set), then the names that are not CAESAR landmarks.
+import type { LandmarkEntry } from '../shared/landmark-entry';
 import type { LandmarkReport } from '../shared/results';
 import { byId, h } from './dom';
+import { LandmarkList, type LandmarkListActions } from './landmark-list';
+import { LandmarkTools, type ToolsActions, type ToolsView } from './landmark-tools';
+import { TemplateGuide } from './template-guide';
 
 export interface LandmarkFacts {
   fileName: string;
@@ -9,42 +15,41 @@ export interface LandmarkFacts {
   unitsNote: string;
 }
 
+/** The editor's state: the current set, the picked landmark, the flagged ones, the controls. */
+export interface EditorView {
+  entries: readonly LandmarkEntry[];
+  selected: string | null;
+  flagged: ReadonlySet<string>;
+  tools: ToolsView;
+}
+
 export class LandmarksPanel {
   private readonly root = byId('landmarks-panel');
-  private caesarNames: string[] = [];
+  readonly guide = new TemplateGuide();
+  private readonly tools: LandmarkTools;
+  private readonly list: LandmarkList;
 
-  constructor() {
-    this.render(null);
+  constructor(actions: ToolsActions & LandmarkListActions) {
+    this.tools = new LandmarkTools(actions);
+    this.list = new LandmarkList(actions);
   }
 
-  /** The canonical names, in `.lnd` order, from the core. */
-  setCaesarNames(names: string[]): void {
-    this.caesarNames = names;
-  }
-
-  render(facts: LandmarkFacts | null): void {
-    const title = h('h2', {}, `CAESAR landmarks (${this.caesarNames.length})`);
-    const found = new Set(facts?.report.found ?? []);
-    const list = h('ul', { class: 'landmark-list', 'data-testid': 'landmark-list' });
-    for (const name of this.caesarNames) {
-      const status = found.has(name) ? 'found' : 'missing';
-      list.append(
-        h(
-          'li',
-          { 'data-status': status, 'data-name': name },
-          h('span', { class: 'mark', 'aria-label': status }, status === 'found' ? '✓' : '✗'),
-          h('span', { class: 'name' }, name),
-        ),
-      );
+  render(facts: LandmarkFacts | null, editor: EditorView | null): void {
+    const title = h('h2', {}, `CAESAR landmarks (${editor?.entries.length ?? 0})`);
+    if (editor) {
+      this.tools.render(editor.tools);
+      this.list.render(editor.entries, editor.selected, editor.flagged, editor.tools.hasScan);
     }
+    const editing = editor ? [h('h2', {}, 'Edit'), this.tools.element, this.guide.element, title, this.list.element] : [];
     if (!facts) {
       this.root.replaceChildren(
-        title,
-        h('p', { class: 'placeholder', 'data-testid': 'landmarks-empty' }, 'No landmark file yet (.lnd, .csv or .json).'),
-        list,
+        h('h2', {}, 'Landmarks'),
+        h('p', { class: 'placeholder', 'data-testid': 'landmarks-empty' }, editor?.tools.hasScan ? 'No landmark file: estimate them, or place them by hand.' : 'No landmark file yet (.lnd, .csv or .json).'),
+        ...editing,
       );
       return;
     }
+    const found = facts.report.found.length;
     const unknown = facts.report.unknown;
     const unknownSection = unknown.length
       ? [
@@ -65,14 +70,13 @@ export class LandmarksPanel {
       h(
         'div',
         { class: 'counts' },
-        h('span', { class: 'found' }, '✓ ', h('span', { 'data-testid': 'landmarks-found' }, String(found.size)), ' found'),
+        h('span', { class: 'found' }, '✓ ', h('span', { 'data-testid': 'landmarks-found' }, String(found)), ' found'),
         h('span', { class: 'missing' }, '✗ ', h('span', { 'data-testid': 'landmarks-missing' }, String(facts.report.missing.length)), ' missing'),
         h('span', { class: 'unknown' }, '? ', h('span', { 'data-testid': 'landmarks-unknown' }, String(unknown.length)), ' unknown'),
       ),
       h('p', { class: 'note', 'data-testid': 'landmarks-units' }, facts.unitsNote),
       ...unknownSection,
-      title,
-      list,
+      ...editing,
     );
   }
 }

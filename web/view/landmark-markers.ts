@@ -7,6 +7,10 @@ export interface LandmarkPoints {
   positions: Float32Array;
   /** Names drawn in the warning colour (e.g. not CAESAR landmarks). */
   flagged?: ReadonlySet<string>;
+  /** `#L·3` linear RGB per marker, instead of the two fixed colours. */
+  colours?: Float32Array;
+  /** A factor on each marker's radius (e.g. the selected one larger). */
+  sizes?: Float32Array;
 }
 
 const KNOWN_COLOUR = new THREE.Color(0xff6a3d);
@@ -29,11 +33,16 @@ export class LandmarkMarkers {
     this.object = new THREE.InstancedMesh(geometry, material, count);
     this.object.name = 'landmark-markers';
     const matrix = new THREE.Matrix4();
+    const colour = new THREE.Color();
+    const { colours, sizes } = points;
     for (let i = 0; i < count; i++) {
-      matrix.makeScale(radius, radius, radius);
+      const r = radius * (sizes?.[i] ?? 1);
+      matrix.makeScale(r, r, r);
       matrix.setPosition(points.positions[3 * i]!, points.positions[3 * i + 1]!, points.positions[3 * i + 2]!);
       this.object.setMatrixAt(i, matrix);
-      this.object.setColorAt(i, points.flagged?.has(points.names[i]!) ? FLAGGED_COLOUR : KNOWN_COLOUR);
+      if (colours) colour.setRGB(colours[3 * i]!, colours[3 * i + 1]!, colours[3 * i + 2]!);
+      else colour.copy(points.flagged?.has(points.names[i]!) ? FLAGGED_COLOUR : KNOWN_COLOUR);
+      this.object.setColorAt(i, colour);
     }
     this.object.instanceMatrix.needsUpdate = true;
     this.object.computeBoundingSphere();

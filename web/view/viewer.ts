@@ -3,11 +3,13 @@
 import * as THREE from 'three';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
 import { BodyLayer, type BodyContent } from './body-layer';
+import { MarkerEditing, type MarkerEditHandlers } from './marker-editing';
 import { addLights, makeGrid } from './stage';
 import { LandmarkTooltip } from './tooltip';
 
 export type { BodyContent, BodyMesh } from './body-layer';
 export type { LandmarkPoints } from './landmark-markers';
+export type { MarkerEditHandlers, SurfacePoint } from './marker-editing';
 
 /** Where a standing adult would be: what the camera frames before anything is loaded. */
 const EMPTY_SCENE_BOX = new THREE.Box3(new THREE.Vector3(-0.3, 0, -0.15), new THREE.Vector3(0.3, 1.75, 0.15));
@@ -82,6 +84,25 @@ export class Viewer {
     delete this.container.dataset[`${key}Visible`];
     this.placeGrid();
     this.requestRender();
+  }
+
+  /** Lets the markers of the body under `key` be placed on and dragged along its surface. */
+  editMarkers(key: string, handlers: MarkerEditHandlers): void {
+    new MarkerEditing(this.container, this.renderer.domElement, this.camera, this.controls, () => this.layers.get(key), handlers);
+  }
+
+  /**
+   * Where `point` (in the frame of the body under `key`, metres) is drawn on the canvas: CSS px
+   * from its top-left corner, or null when that body is not shown.
+   */
+  canvasPoint(key: string, point: [number, number, number]): [number, number] | null {
+    const layer = this.layers.get(key);
+    if (!layer?.visible) return null;
+    layer.group.updateMatrixWorld(true);
+    this.camera.updateMatrixWorld();
+    const p = layer.group.localToWorld(new THREE.Vector3(...point)).project(this.camera);
+    const { clientWidth: w, clientHeight: h } = this.renderer.domElement;
+    return [((p.x + 1) / 2) * w, ((1 - p.y) / 2) * h];
   }
 
   /** Points the camera at everything shown, from the front-right, the whole body in view. */

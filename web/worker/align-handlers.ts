@@ -56,7 +56,7 @@ export function runAlign(
 }
 
 /** Runs `f` on the scan and its landmarks copied into the core, freeing the copy afterwards. */
-function withScan<T>(scan: ScanInput, f: (input: ScanWithLandmarks) => T): T {
+export function withScan<T>(scan: ScanInput, f: (input: ScanWithLandmarks) => T): T {
   const input = new ScanWithLandmarks(scan.positions, scan.triangles, scan.landmarkNames.join('\n'), scan.landmarkPositions);
   try {
     return f(input);

@@ -1,10 +1,11 @@
 // The only code that imports the WASM core. Runs every core call off the UI thread; arrays come
 // out of WASM memory as copies and go back to the UI thread transferred, never copied again.
-import init, { caesarLandmarkNames, coreVersion, pairSubjectFiles, parseLandmarks, parseScan, trapForTest } from '../pkg/bodyspace.js';
+import init, { caesarLandmarkNames, coreVersion, pairSubjectFiles, parseLandmarks, parseScan, trapForTest, writeLandmarks } from '../pkg/bodyspace.js';
 import type { AlignResult } from '../shared/align-types';
 import type { CoreReply, CoreRequest } from '../shared/messages';
 import type { MeshSummary, ParsedLandmarks, ParsedScan, SubjectPairing } from '../shared/results';
 import { runAlign, runAlignDefaults, runExport, runRbfWarp } from './align-handlers';
+import { runEstimate, runFlagSuspicious } from './landmark-handlers';
 import { templateData, templateTransfer } from './template-handlers';
 import * as models from './model-handlers';
 
@@ -93,8 +94,23 @@ self.onmessage = async (event: MessageEvent<CoreRequest>) => {
         post({ id, type: 'result', result }, [result.positions.buffer, result.normals.buffer, result.distances.buffer]);
         break;
       }
+      case 'estimateLandmarks': {
+        const id = request.id;
+        post({ id, type: 'progress', fraction: 0, label: 'Estimating the landmarks: finding the frame' });
+        const estimate = runEstimate(request.scan, (fraction, label) => post({ id, type: 'progress', fraction, label }));
+        post({ id, type: 'result', result: estimate }, [estimate.positions.buffer, estimate.confidence.buffer, estimate.given.buffer]);
+        break;
+      }
+      case 'flagSuspicious':
+        post({ id: request.id, type: 'result', result: runFlagSuspicious(request.scan) });
+        break;
       case 'exportMesh': {
         const bytes = runExport(request.positions, request.triangles, request.format);
+        post({ id: request.id, type: 'result', result: bytes }, [bytes.buffer]);
+        break;
+      }
+      case 'writeLandmarks': {
+        const bytes = writeLandmarks(request.names.join('\n'), request.positions, request.format, request.subjectId);
         post({ id: request.id, type: 'result', result: bytes }, [bytes.buffer]);
         break;
       }

@@ -17,14 +17,18 @@ pub enum Stage {
     Base,
     /// The short fine alignment of the subdivided fit.
     Fine,
+    /// Estimating landmarks on a bare scan (`landmarks/estimate/`): frame candidates, the
+    /// segment-wise fit and its landmark-free fine alignment.
+    Estimate,
 }
 
 impl Stage {
-    /// "base" or "fine".
+    /// "base", "fine" or "estimate".
     pub fn name(self) -> &'static str {
         match self {
             Stage::Base => "base",
             Stage::Fine => "fine",
+            Stage::Estimate => "estimate",
         }
     }
 }

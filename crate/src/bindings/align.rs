@@ -42,8 +42,8 @@ pub fn align_defaults() -> Result<String, JsError> {
 /// metres, `triangles` `#F·3`, `landmark_names` one per line, `landmark_positions` `#L·3` metres.
 #[wasm_bindgen]
 pub struct ScanWithLandmarks {
-    scan: Mesh,
-    landmarks: LandmarkSet,
+    pub(super) scan: Mesh,
+    pub(super) landmarks: LandmarkSet,
 }
 
 #[wasm_bindgen]
@@ -98,7 +98,7 @@ pub fn align_scan_js(
         &params,
         &mut JsObserver {
             on_progress,
-            on_round,
+            on_round: Some(on_round),
         },
     )?;
     outcome(template, alignment)
@@ -171,10 +171,10 @@ fn outcome(template: &TemplateHandle, alignment: Alignment) -> Result<AlignOutco
     })
 }
 
-/// The page's callbacks as the core's observer.
-struct JsObserver<'a> {
-    on_progress: &'a Function,
-    on_round: &'a Function,
+/// The page's callbacks as the core's observer (`on_round` optional).
+pub(super) struct JsObserver<'a> {
+    pub(super) on_progress: &'a Function,
+    pub(super) on_round: Option<&'a Function>,
 }
 
 impl AlignObserver for JsObserver<'_> {
@@ -190,11 +190,14 @@ impl AlignObserver for JsObserver<'_> {
     }
 
     fn round(&mut self, stage: Stage, round: usize, positions: &[Point3<f64>]) {
+        let Some(on_round) = self.on_round else {
+            return;
+        };
         let flat: Vec<f32> = positions
             .iter()
             .flat_map(|p| [p.x as f32, p.y as f32, p.z as f32])
             .collect();
-        let _ = self.on_round.call3(
+        let _ = on_round.call3(
             &JsValue::NULL,
             &JsValue::from(stage.name()),
             &JsValue::from(round as u32),
@@ -254,19 +257,30 @@ fn scan_mesh(positions: &[f32], triangles: &[u32]) -> Result<Mesh, JsError> {
     Ok(Mesh::new(points, faces))
 }
 
-fn scan_landmarks(names: &str, positions: &[f64]) -> Result<LandmarkSet, JsError> {
+/// The landmark names of `names` (one per line, none for an empty string), checked against
+/// `positions` (`#L·3`); the message starts with `what`.
+pub(super) fn landmark_names<'a>(
+    names: &'a str,
+    positions: &[f64],
+    what: &str,
+) -> Result<Vec<&'a str>, String> {
     let names: Vec<&str> = if names.is_empty() {
         Vec::new()
     } else {
         names.split('\n').collect()
     };
     if positions.len() != names.len() * 3 {
-        return Err(JsError::new(&format!(
-            "landmarks: {} names but {} coordinates (3 per landmark expected)",
+        return Err(format!(
+            "{what}: {} names but {} coordinates (3 per landmark expected)",
             names.len(),
             positions.len()
-        )));
+        ));
     }
+    Ok(names)
+}
+
+fn scan_landmarks(names: &str, positions: &[f64]) -> Result<LandmarkSet, JsError> {
+    let names = landmark_names(names, positions, "landmarks").map_err(|e| JsError::new(&e))?;
     let landmarks = names
         .iter()
         .zip(positions.chunks_exact(3))

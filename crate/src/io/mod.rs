@@ -7,7 +7,8 @@
 //! * Landmarks: [`landmarks_read`] (`read_landmarks`, format dispatch and name normalisation),
 //!   [`landmarks_csv`], [`landmarks_json`], [`lnd`] (CAESAR `.lnd`), [`landmark_raw`] (the record
 //!   the three readers produce).
-//! * Writers: [`ply_write`], [`obj_write`], [`glb_write`] (the binary glTF container).
+//! * Writers: [`ply_write`], [`obj_write`], [`glb_write`] (the binary glTF container); landmark
+//!   sets: `write_lnd`, `write_landmarks_csv`, `write_landmarks_json`.
 //! * [`subject_files`]: which scan and landmark files make one subject of a batch.
 //! * [`error`]: [`IoError`], the one error type of every reader; [`limits`]: the largest input
 //!   accepted (inflated size, vertices, triangles), checked before memory is reserved.
@@ -35,6 +36,7 @@ pub mod text_xyz;
 
 pub use error::IoError;
 pub use landmarks_csv::write_landmarks_csv;
+pub use landmarks_json::write_landmarks_json;
 pub use landmarks_read::read_landmarks;
 pub use lnd::write_lnd;
 pub use obj_write::write_obj;

@@ -1,6 +1,8 @@
-//! Anatomical landmarks: the CAESAR list, name normalisation and landmark sets.
+//! Anatomical landmarks: the CAESAR list, name normalisation, landmark sets, and the estimate of
+//! the landmarks on a bare scan ([`estimate`]).
 
 pub mod caesar;
+pub mod estimate;
 pub mod names;
 pub mod report;
 pub mod set;

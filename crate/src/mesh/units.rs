@@ -1,19 +1,24 @@
 //! Length units of a scan, detected from the body's extent.
 //!
 //! An adult or child body is 0.5–2.5 m along its largest bounding-box side. A largest extent above
-//! [`MILLIMETRE_THRESHOLD`] cannot be metres (a 10 m body) but is a plausible 0.01–2.5 m in
-//! millimetres, so the file is taken to be in millimetres; anything smaller is taken as metres.
+//! [`CENTIMETRE_THRESHOLD`] cannot be metres (a 10 m body); up to [`MILLIMETRE_THRESHOLD`] it is
+//! a plausible 0.1–3 m in centimetres (50–250 for a body), above it 0.3 m or more in millimetres
+//! (500–2500 for a body). The three ranges of a real body do not overlap.
 
 use serde::{Deserialize, Serialize};
 
 /// Largest bounding-box extent (in file units) still read as metres.
-pub const MILLIMETRE_THRESHOLD: f64 = 10.0;
+pub const CENTIMETRE_THRESHOLD: f64 = 10.0;
+
+/// Largest bounding-box extent (in file units) still read as centimetres.
+pub const MILLIMETRE_THRESHOLD: f64 = 300.0;
 
 /// The length unit of a file.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "lowercase")]
 pub enum Units {
     Metres,
+    Centimetres,
     Millimetres,
 }
 
@@ -22,14 +27,16 @@ impl Units {
     pub fn scale_to_metres(self) -> f64 {
         match self {
             Units::Metres => 1.0,
+            Units::Centimetres => 1e-2,
             Units::Millimetres => 1e-3,
         }
     }
 
-    /// `"metres"` or `"millimetres"`, as serialised.
+    /// `"metres"`, `"centimetres"` or `"millimetres"`, as serialised.
     pub fn name(self) -> &'static str {
         match self {
             Units::Metres => "metres",
+            Units::Centimetres => "centimetres",
             Units::Millimetres => "millimetres",
         }
     }
@@ -39,6 +46,8 @@ impl Units {
 pub fn detect_units(extent: f64) -> Units {
     if extent > MILLIMETRE_THRESHOLD {
         Units::Millimetres
+    } else if extent > CENTIMETRE_THRESHOLD {
+        Units::Centimetres
     } else {
         Units::Metres
     }
@@ -56,6 +65,10 @@ mod tests {
         assert_eq!(detect_units(1750.0), Units::Millimetres);
         assert_eq!(detect_units(520.0), Units::Millimetres);
         assert_eq!(detect_units(0.0), Units::Metres);
+        assert_eq!(detect_units(175.0), Units::Centimetres);
+        assert_eq!(detect_units(52.0), Units::Centimetres);
+        assert_eq!(detect_units(240.0), Units::Centimetres);
+        assert_eq!(Units::Centimetres.scale_to_metres(), 1e-2);
         assert_eq!(Units::Millimetres.scale_to_metres(), 1e-3);
     }
 

@@ -1,0 +1,202 @@
+//! Accuracy and speed of the landmark estimate (issue 11) on synthetic subjects in the poses and
+//! frames of `tests/estimate_support` with the landmark files withheld.
+//!
+//! `cargo run --release --example landmarks_estimate -- [--n N] [--seed S] [--partial K]
+//!  [--align] [--quiet]`
+//!
+//! Subject i (1..=N) gets pose i mod 5 and frame (i / 5) mod 5 (so N = 25 covers every pair).
+//! Prints per subject the mean and worst landmark error and the time, then per landmark the mean
+//! and worst error over all subjects. `--partial K` gives the estimate K landmarks (spread over
+//! the body, see `PARTIAL`) and measures the others. `--align` also aligns each subject with the
+//! estimated and with the true landmarks (`align_scan`, defaults) and compares the mean
+//! correspondence error and the scan→template RMS.
+
+#[cfg(not(target_arch = "wasm32"))]
+#[path = "../tests/estimate_support/mod.rs"]
+mod support;
+
+#[cfg(not(target_arch = "wasm32"))]
+mod native {
+    use super::support::{case, frames, load, poses};
+    use bodyspace::align::{align_scan, AlignInput, AlignParams};
+    use bodyspace::landmarks::estimate::{estimate_landmarks, EstimateInput, EstimateParams};
+    use bodyspace::landmarks::{LandmarkSet, CAESAR_LANDMARKS};
+    use bodyspace::template::Template;
+    use nalgebra::Point3;
+
+    /// Ten landmarks a person would click first: head, neck, shoulders, wrists, knees, ankles.
+    pub const PARTIAL: [&str; 10] = [
+        "Sellion",
+        "Cervicale",
+        "Rt. Acromion",
+        "Lt. Acromion",
+        "Rt. Radial Styloid",
+        "Lt. Radial Styloid",
+        "Rt. Femoral Lateral Epicn",
+        "Lt. Femoral Lateral Epicn",
+        "Rt. Lateral Malleolus",
+        "Lt. Lateral Malleolus",
+    ];
+
+    pub fn main() {
+        let mut n = 10u64;
+        let mut seed = 2026u64;
+        let mut partial = 0usize;
+        let mut align = false;
+        let mut quiet = false;
+        let mut args = std::env::args().skip(1);
+        while let Some(a) = args.next() {
+            match a.as_str() {
+                "--n" => n = args.next().and_then(|v| v.parse().ok()).expect("--n N"),
+                "--seed" => seed = args.next().and_then(|v| v.parse().ok()).expect("--seed S"),
+                "--partial" => {
+                    partial = args
+                        .next()
+                        .and_then(|v| v.parse().ok())
+                        .expect("--partial K")
+                }
+                "--align" => align = true,
+                "--quiet" => quiet = true,
+                other => panic!("unknown option {other}"),
+            }
+        }
+        let (template, data) = load();
+        let (poses, frames) = (poses(), frames());
+        let mut per_landmark = vec![(0.0f64, 0.0f64, 0usize); CAESAR_LANDMARKS.len()];
+        let (mut sum_mean, mut worst, mut sum_ms, mut max_ms) = (0.0, 0.0f64, 0.0, 0.0f64);
+        let (mut est_corr, mut true_corr, mut est_rms, mut true_rms) = (0.0, 0.0, 0.0, 0.0);
+        for i in 1..=n {
+            let pose = &poses[(i as usize) % poses.len()];
+            let frame = &frames[(i as usize / poses.len()) % frames.len()];
+            let c = case(&data, &template, seed, i, pose, frame);
+            let given = LandmarkSet {
+                landmarks: c
+                    .landmarks
+                    .landmarks
+                    .iter()
+                    .filter(|l| PARTIAL[..partial.min(PARTIAL.len())].contains(&l.name.as_str()))
+                    .cloned()
+                    .collect(),
+                ..LandmarkSet::default()
+            };
+            let input = EstimateInput {
+                template: &template,
+                scan: &c.scan,
+                given: &given,
+                units: None,
+            };
+            let estimate = estimate_landmarks(&input, &EstimateParams::default(), &mut ()).unwrap();
+            let to_mm = estimate.scale_to_metres * 1000.0;
+            let mut errors = Vec::new();
+            for (k, l) in c.landmarks.landmarks.iter().enumerate() {
+                if estimate.given[k] {
+                    continue;
+                }
+                let e = estimate.positions[k]
+                    .map(|p| (p - l.position).norm() * to_mm)
+                    .unwrap_or(f64::INFINITY);
+                per_landmark[k].0 += e;
+                per_landmark[k].1 = per_landmark[k].1.max(e);
+                per_landmark[k].2 += 1;
+                errors.push(e);
+            }
+            let mean = errors.iter().sum::<f64>() / errors.len().max(1) as f64;
+            let max = errors.iter().cloned().fold(0.0, f64::max);
+            let ms = estimate.report.total_ms;
+            sum_mean += mean;
+            worst = worst.max(max);
+            sum_ms += ms;
+            max_ms = max_ms.max(ms);
+            let r = &estimate.report;
+            if !quiet {
+                println!(
+                    "subject {i:2} {:24} {:26} {:7} scan vertices: mean {mean:5.1} mm, worst {max:6.1} mm, frame up {} facing {}, segment RMS {:.1} mm, fit RMS {:.2} mm, flagged {}, {ms:6.0} ms (candidates {:.0}, segments {:.0}, fine {:.0})",
+                    pose.name,
+                    frame.name,
+                    c.scan.positions.len(),
+                    r.frame.up_axis,
+                    r.frame.facing_axis,
+                    r.segment_rms_mm,
+                    r.fit_rms_mm,
+                    r.flagged.len(),
+                    r.candidates_ms,
+                    r.segments_ms,
+                    r.fine_ms,
+                );
+            }
+            if align {
+                let (e, t) = compare_fits(
+                    &template,
+                    &c.scan,
+                    &estimate.to_set(),
+                    &c.landmarks,
+                    &c.truth,
+                );
+                if !quiet {
+                    println!(
+                        "           fit from estimate: correspondence {:.2} mm, RMS {:.3} mm; from true landmarks: {:.2} mm, {:.3} mm",
+                        e.0, e.1, t.0, t.1
+                    );
+                }
+                est_corr += e.0;
+                est_rms += e.1;
+                true_corr += t.0;
+                true_rms += t.1;
+            }
+        }
+        let nf = n as f64;
+        println!(
+            "\n{n} subjects, {partial} given: mean landmark error {:.1} mm, worst {worst:.1} mm; time mean {:.0} ms, max {max_ms:.0} ms",
+            sum_mean / nf,
+            sum_ms / nf
+        );
+        if align {
+            println!(
+                "fit from estimate: correspondence {:.2} mm, RMS {:.3} mm; from true landmarks: {:.2} mm, {:.3} mm; ratio {:.2}",
+                est_corr / nf,
+                est_rms / nf,
+                true_corr / nf,
+                true_rms / nf,
+                est_corr / true_corr
+            );
+        }
+        println!("\n| landmark | mean (mm) | worst (mm) |\n| --- | --- | --- |");
+        for (l, (sum, max, count)) in CAESAR_LANDMARKS.iter().zip(&per_landmark) {
+            if *count > 0 {
+                println!("| {} | {:.1} | {:.1} |", l.name, sum / *count as f64, max);
+            }
+        }
+    }
+
+    /// (mean correspondence error mm, scan→template RMS mm) of `align_scan` with the estimated
+    /// and with the true landmarks.
+    fn compare_fits(
+        template: &Template,
+        scan: &bodyspace::mesh::Mesh,
+        estimated: &LandmarkSet,
+        truth_landmarks: &LandmarkSet,
+        truth: &[Point3<f64>],
+    ) -> ((f64, f64), (f64, f64)) {
+        let run = |landmarks: &LandmarkSet| {
+            let input = AlignInput {
+                template,
+                base_template: None,
+                scan,
+                landmarks,
+                units: None,
+            };
+            let mut a = align_scan(&input, &AlignParams::default(), &mut ()).unwrap();
+            let truth_m: Vec<_> = truth.iter().map(|p| p * a.scale_to_metres).collect();
+            a.compare_with_truth(template, &truth_m);
+            let corr = a.report.correspondence.as_ref().unwrap().fitted.mean_mm;
+            let rms = a.report.fine.as_ref().unwrap().scan_to_template.rms_mm;
+            (corr, rms)
+        };
+        (run(estimated), run(truth_landmarks))
+    }
+}
+
+fn main() {
+    #[cfg(not(target_arch = "wasm32"))]
+    native::main();
+}

@@ -1,0 +1,204 @@
+//! The scan's frame, as candidates: the vertical of a standing body is the principal axis of
+//! largest extent, its side-to-side axis the second (shoulders and arms are wider than the body
+//! is deep). Which way is up and which way the body faces are ambiguous from the axes alone, so
+//! each of the four proper rotations (up ±, facing ±) is a candidate; the fit decides
+//! (`candidates.rs`).
+
+use nalgebra::{Matrix3, Point3, Vector3};
+use serde::Serialize;
+
+use crate::mesh::similarity::{centroid, Similarity};
+
+/// One guess of the scan's frame: the similarity that takes the template (metres, y up, facing
+/// +z) onto the scan (metres), from the axes and extents alone.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct FrameCandidate {
+    /// Template → scan.
+    pub start: Similarity,
+}
+
+/// The frame assumed, for the report: the scan directions of the template's up (+y) and facing
+/// (+z) axes, and the nearest coordinate axis of each (`"+z"`, `"-y"`, …).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct FrameReport {
+    pub up: [f64; 3],
+    pub up_axis: String,
+    pub facing: [f64; 3],
+    pub facing_axis: String,
+}
+
+impl FrameReport {
+    /// The frame of a template → scan similarity.
+    pub fn of(t: &Similarity) -> Self {
+        let up = t.rotation * Vector3::y();
+        let facing = t.rotation * Vector3::z();
+        Self {
+            up: up.into(),
+            up_axis: nearest_axis(&up),
+            facing: facing.into(),
+            facing_axis: nearest_axis(&facing),
+        }
+    }
+}
+
+/// `"+x"`, `"-y"`, … : the coordinate axis nearest to `v`.
+pub fn nearest_axis(v: &Vector3<f64>) -> String {
+    let k = v.iamax();
+    let sign = if v[k] < 0.0 { '-' } else { '+' };
+    format!("{sign}{}", ['x', 'y', 'z'][k])
+}
+
+/// The principal axes of `points` (`#P`), largest variance first, as the columns of a proper
+/// rotation; `None` for fewer than 3 points or a non-finite covariance.
+pub fn principal_axes(points: &[Point3<f64>]) -> Option<Matrix3<f64>> {
+    if points.len() < 3 {
+        return None;
+    }
+    let mu = centroid(points);
+    let mut cov = Matrix3::zeros();
+    for p in points {
+        let d = p.coords - mu;
+        cov += d * d.transpose();
+    }
+    if !cov.iter().all(|c| c.is_finite()) {
+        return None;
+    }
+    let eigen = cov.symmetric_eigen();
+    let mut order = [0usize, 1, 2];
+    order.sort_by(|&a, &b| eigen.eigenvalues[b].total_cmp(&eigen.eigenvalues[a]));
+    let e1 = eigen.eigenvectors.column(order[0]).into_owned();
+    let e2 = eigen.eigenvectors.column(order[1]).into_owned();
+    Some(Matrix3::from_columns(&[e1, e2, e1.cross(&e2)]))
+}
+
+/// The four frame candidates: template up (+y) along ±(first axis), template side (+x) along
+/// ±(second axis); scale from the extents along up, translation matching the middles of the
+/// extents along all three axes. `None` when the axes cannot be found.
+pub fn frame_candidates(
+    template: &[Point3<f64>],
+    scan: &[Point3<f64>],
+) -> Option<Vec<FrameCandidate>> {
+    let axes = principal_axes(scan)?;
+    let scan_mid = mid_of_extents(scan, &axes);
+    let scan_height = extent_along(scan, &axes.column(0).into_owned());
+    let template_height = extent_along(template, &Vector3::y());
+    if !(scan_height > 0.0 && template_height > 0.0) {
+        return None;
+    }
+    let scale = scan_height / template_height;
+    let template_mid = mid_of_extents(template, &Matrix3::identity());
+    let mut candidates = Vec::with_capacity(4);
+    for up_sign in [1.0, -1.0] {
+        for side_sign in [1.0, -1.0] {
+            let up = axes.column(0) * up_sign;
+            let side = axes.column(1) * side_sign;
+            // Columns: where the template's x, y, z go.
+            let rotation = Matrix3::from_columns(&[side, up, side.cross(&up)]);
+            let translation = scan_mid - scale * (rotation * template_mid);
+            candidates.push(FrameCandidate {
+                start: Similarity {
+                    scale,
+                    rotation,
+                    translation,
+                },
+            });
+        }
+    }
+    Some(candidates)
+}
+
+fn extent_along(points: &[Point3<f64>], axis: &Vector3<f64>) -> f64 {
+    let (lo, hi) = points
+        .iter()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), p| {
+            let t = p.coords.dot(axis);
+            (lo.min(t), hi.max(t))
+        });
+    hi - lo
+}
+
+/// The point whose coordinates along each axis (columns of `axes`) are the middles of the
+/// extents of `points` along it.
+fn mid_of_extents(points: &[Point3<f64>], axes: &Matrix3<f64>) -> Vector3<f64> {
+    let mut mid = Vector3::zeros();
+    for k in 0..3 {
+        let axis = axes.column(k).into_owned();
+        let (lo, hi) = points
+            .iter()
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), p| {
+                let t = p.coords.dot(&axis);
+                (lo.min(t), hi.max(t))
+            });
+        mid += axis * (0.5 * (lo + hi));
+    }
+    mid
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use nalgebra::Rotation3;
+
+    /// A box-shaped "body": 1.8 tall (y), 0.5 wide (x), 0.25 deep (z), sampled on a grid.
+    fn body() -> Vec<Point3<f64>> {
+        let mut pts = Vec::new();
+        for i in 0..10 {
+            for j in 0..37 {
+                for k in 0..6 {
+                    pts.push(Point3::new(
+                        i as f64 * 0.05 - 0.2,
+                        j as f64 * 0.05,
+                        k as f64 * 0.05 - 0.1,
+                    ));
+                }
+            }
+        }
+        pts
+    }
+
+    #[test]
+    fn principal_axes_are_ordered_and_proper() {
+        let axes = principal_axes(&body()).unwrap();
+        assert!(axes.column(0).y.abs() > 0.999, "{axes}");
+        assert!(axes.column(1).x.abs() > 0.999, "{axes}");
+        assert!((axes.determinant() - 1.0).abs() < 1e-9);
+        assert!(principal_axes(&body()[..2]).is_none());
+    }
+
+    #[test]
+    fn one_of_the_candidates_is_the_true_frame() {
+        let template = body();
+        let truth = Similarity {
+            scale: 1.1,
+            rotation: *Rotation3::from_euler_angles(1.2, -0.4, 2.5).matrix(),
+            translation: Vector3::new(3.0, -1.0, 0.5),
+        };
+        let scan: Vec<_> = template.iter().map(|p| truth.apply(p)).collect();
+        let candidates = frame_candidates(&template, &scan).unwrap();
+        assert_eq!(candidates.len(), 4);
+        let best = candidates
+            .iter()
+            .map(|c| {
+                (c.start.rotation - truth.rotation).norm()
+                    + (c.start.translation - truth.translation).norm()
+                    + (c.start.scale - truth.scale).abs()
+            })
+            .fold(f64::INFINITY, f64::min);
+        assert!(best < 1e-6, "{best}");
+        for c in &candidates {
+            assert!((c.start.rotation.determinant() - 1.0).abs() < 1e-9);
+        }
+    }
+
+    #[test]
+    fn report_names_the_nearest_axes() {
+        let t = Similarity {
+            scale: 1.0,
+            rotation: Matrix3::from_columns(&[Vector3::x(), Vector3::z(), -Vector3::y()]),
+            translation: Vector3::zeros(),
+        };
+        let r = FrameReport::of(&t);
+        assert_eq!(r.up_axis, "+z");
+        assert_eq!(r.facing_axis, "-y");
+    }
+}

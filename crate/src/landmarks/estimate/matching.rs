@@ -1,0 +1,63 @@
+//! Closest compatible scan points for a set of template vertices, the step both ICP stages of
+//! the estimate repeat (`candidates.rs`, `segments.rs`).
+
+use nalgebra::{Point3, Vector3};
+
+use crate::align::{CorrespondenceMode, MatchQuery, SurfaceIndex};
+use crate::utils::parallel::filter_map_into;
+
+/// One template vertex matched to the scan.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Pair {
+    pub vertex: u32,
+    pub target: Point3<f64>,
+    pub distance: f64,
+}
+
+/// How the ICP stages match.
+#[derive(Debug, Clone, Copy)]
+pub struct Matching<'a> {
+    pub scan: &'a SurfaceIndex,
+    /// Cosine of the largest angle between template and scan normals.
+    pub min_cos: f64,
+    /// Matches farther than this (m) are dropped.
+    pub outlier_distance: f64,
+}
+
+impl Matching<'_> {
+    /// The matches of `vertices` at `positions` with unit `normals` (both indexed by vertex),
+    /// nearest scan vertex with a compatible normal, outliers and incompatible ones dropped.
+    pub fn pairs(
+        &self,
+        vertices: &[u32],
+        positions: &[Point3<f64>],
+        normals: &[Vector3<f64>],
+    ) -> Vec<Pair> {
+        let query = MatchQuery {
+            mode: CorrespondenceMode::NearestVertex,
+            min_cos: Some(self.min_cos),
+            candidates: 8,
+        };
+        let mut out = Vec::with_capacity(vertices.len());
+        filter_map_into(vertices, &mut out, |&v| {
+            let p = positions[v as usize];
+            let n = normals[v as usize];
+            let m = self.scan.closest(&p, Some(&n), &query)?;
+            let distance = (m.point - p).norm();
+            (distance <= self.outlier_distance && !m.on_boundary).then_some(Pair {
+                vertex: v,
+                target: m.point,
+                distance,
+            })
+        });
+        out
+    }
+
+    /// The ICP energy of `pairs` out of `tried` vertices: the mean squared distance, an unmatched
+    /// vertex counting as `outlier_distance` (so a candidate cannot win by matching little).
+    pub fn energy(&self, pairs: &[Pair], tried: usize) -> f64 {
+        let unmatched = tried.saturating_sub(pairs.len()) as f64;
+        let sum: f64 = pairs.iter().map(|p| p.distance * p.distance).sum();
+        (sum + unmatched * self.outlier_distance.powi(2)) / tried.max(1) as f64
+    }
+}

@@ -1,0 +1,33 @@
+//! Landmarks from a bare scan (issue 11): the 73 CAESAR landmarks estimated by fitting the
+//! template, or the rest of a partial set filled in; suspicious given landmarks flagged.
+//! docs/landmarks-estimate.md describes the method and what it was measured against.
+//!
+//! * [`steps`] — [`estimate_landmarks`], [`EstimateInput`], [`LandmarkEstimate`]: the steps.
+//! * [`frame`] — principal axes and the four frame candidates; [`FrameReport`].
+//! * [`candidates`] — the similarity ICP of each candidate.
+//! * [`segments`] — the segment-wise rigid fit of the template's parts (the pose).
+//! * [`matching`] — closest compatible scan points, the ICP energy.
+//! * [`suspicious`] — [`flag_suspicious`]: given landmarks far from the fit's prediction.
+//! * [`confidence`] — sharpness of the surface and residual of the fit per landmark.
+//! * [`tick`] — progress and cancel through the caller's `AlignObserver`.
+//! * [`EstimateParams`] (`params.rs`), [`EstimateReport`] (`report.rs`), [`EstimateError`]
+//!   (`error.rs`).
+
+pub mod candidates;
+pub mod confidence;
+pub mod error;
+pub mod frame;
+pub mod matching;
+pub mod params;
+pub mod report;
+pub mod segments;
+pub mod steps;
+pub mod suspicious;
+pub mod tick;
+
+pub use error::EstimateError;
+pub use frame::FrameReport;
+pub use params::EstimateParams;
+pub use report::EstimateReport;
+pub use steps::{estimate_landmarks, given_landmarks, EstimateInput, LandmarkEstimate};
+pub use suspicious::{flag_suspicious, SuspicionKind, SuspiciousLandmark};

@@ -1,0 +1,58 @@
+//! Parameters of the landmark estimate, each with its documented default (the one place they
+//! live). Lengths are metres.
+
+use serde::{Deserialize, Serialize};
+
+use crate::align::FineAlignParams;
+
+/// Parameters of [`super::estimate_landmarks`].
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(default)]
+pub struct EstimateParams {
+    /// Template vertices sampled (evenly by index) for the similarity fit of each frame
+    /// candidate. Default 1,500: the candidates differ by metres, not millimetres.
+    pub candidate_samples: usize,
+    /// Similarity ICP iterations per frame candidate. Default 12.
+    pub candidate_iterations: usize,
+    /// Iterations of the segment-wise (articulated) fit after the best candidate. Default 20.
+    pub segment_iterations: usize,
+    /// Largest angle (degrees) between template and scan normals of a match in the ICP stages.
+    /// Default 60°, fine alignment's value.
+    pub max_normal_angle_deg: f64,
+    /// A match farther than this (m) counts as this far in a candidate's energy and is left out
+    /// of the transform fit: it is the other arm, a hole or clutter. Default 0.1 m.
+    pub outlier_distance: f64,
+    /// The landmark-free fine alignment after the segment-wise fit (paper §3.2 energy, stiff
+    /// first: fine alignment's own annealing). Default: fine alignment's defaults with 80
+    /// iterations and the given landmarks anchored at weight 1.
+    pub fine: FineAlignParams,
+    /// A given landmark farther than this (m) from where the fit predicts it is flagged
+    /// suspicious. Default 60 mm: four times the goal for the estimate's mean error, above the
+    /// worst estimate error we measured (docs/landmarks-estimate.md).
+    pub suspicious_distance: f64,
+    /// Radius (m) around a landmark vertex over which the fit's residual and the surface's
+    /// sharpness are taken for the confidence. Default 25 mm.
+    pub confidence_radius: f64,
+    /// The residual (m) at which the fit's part of the confidence falls to e⁻¹. Default 4 mm.
+    pub confidence_residual: f64,
+}
+
+impl Default for EstimateParams {
+    fn default() -> Self {
+        Self {
+            candidate_samples: 1_500,
+            candidate_iterations: 12,
+            segment_iterations: 20,
+            max_normal_angle_deg: 60.0,
+            outlier_distance: 0.1,
+            fine: FineAlignParams {
+                max_iterations: 80,
+                landmark_weight: 1.0,
+                ..FineAlignParams::default()
+            },
+            suspicious_distance: 0.06,
+            confidence_radius: 0.025,
+            confidence_residual: 0.004,
+        }
+    }
+}

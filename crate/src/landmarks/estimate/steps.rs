@@ -1,0 +1,310 @@
+//! [`estimate_landmarks`]: the 73 CAESAR landmarks on a bare scan, or the rest of a partial
+//! set. Steps (docs/landmarks-estimate.md gives the reasons and the measurements):
+//!
+//! 1. units from the body's extent (`mesh/units.rs`), the scan in metres, a closest-point index;
+//! 2. frame candidates from the principal axes (`frame.rs`), plus one from the given landmarks
+//!    when there are at least four; each fitted by similarity ICP, the lowest energy kept
+//!    (`candidates.rs`);
+//! 3. the segment-wise rigid fit of the template's parts to the scan's pose (`segments.rs`);
+//! 4. given landmarks far from where that fit puts them are flagged (`suspicious.rs`);
+//! 5. the landmark-free fine alignment (paper §3.2, stiff to soft), the unflagged given landmarks
+//!    anchored;
+//! 6. the landmark vertices read off the fit, each with a confidence (`confidence.rs`); given
+//!    landmarks are returned exactly as given.
+
+use std::borrow::Cow;
+
+use nalgebra::Point3;
+
+use super::candidates::{even_sample, fit_similarity, FittedCandidate};
+use super::confidence::{confidence, neighbourhoods, residual, sharpness};
+use super::error::EstimateError;
+use super::frame::{frame_candidates, FrameReport};
+use super::matching::Matching;
+use super::params::EstimateParams;
+use super::report::{CandidateReport, EstimateReport, LandmarkReport};
+use super::segments::{fit_segments, parts};
+use super::suspicious::flag_suspicious;
+use super::tick::Ticker;
+use crate::align::{data_weights, fine_align, AlignObserver, FineAlignInput, SurfaceIndex};
+use crate::landmarks::{LandmarkSet, CAESAR_LANDMARKS, CAESAR_LANDMARK_COUNT};
+use crate::mesh::bounding_extent;
+use crate::mesh::similarity::similarity;
+use crate::mesh::units::{detect_units, Units};
+use crate::mesh::Mesh;
+use crate::template::{Resolution, Template};
+use crate::utils::now_ms;
+
+/// What one estimate works on.
+#[derive(Debug, Clone, Copy)]
+pub struct EstimateInput<'a> {
+    /// The template (its base resolution is used).
+    pub template: &'a Template,
+    /// The scan, in its own frame and units.
+    pub scan: &'a Mesh,
+    /// Landmarks already placed (scan frame and units; may be empty). Used as given, never moved.
+    pub given: &'a LandmarkSet,
+    /// The scan's units; `None` detects them from the body's extent.
+    pub units: Option<Units>,
+}
+
+/// The 73 landmarks of a scan.
+#[derive(Debug, Clone)]
+pub struct LandmarkEstimate {
+    /// CAESAR order; the scan's frame and units; `None` where no position could be found.
+    pub positions: Vec<Option<Point3<f64>>>,
+    /// 0..1 per landmark (1 for a given one).
+    pub confidence: Vec<f64>,
+    /// Whether each landmark was taken from the given set.
+    pub given: Vec<bool>,
+    /// The fitted base template (`#V` metres, the scan's frame).
+    pub fitted: Vec<Point3<f64>>,
+    /// Scan units → metres.
+    pub scale_to_metres: f64,
+    pub report: EstimateReport,
+}
+
+impl LandmarkEstimate {
+    /// The landmarks as a set (scan frame and units), unplaced ones listed as missing.
+    pub fn to_set(&self) -> LandmarkSet {
+        let mut set = LandmarkSet::default();
+        for (l, p) in CAESAR_LANDMARKS.iter().zip(&self.positions) {
+            match p {
+                Some(p) => set.landmarks.push(crate::landmarks::Landmark {
+                    name: l.name.to_string(),
+                    position: *p,
+                }),
+                None => set.missing.push(l.name.to_string()),
+            }
+        }
+        set
+    }
+}
+
+/// Estimates the 73 CAESAR landmarks of `input.scan` (see the module documentation).
+/// `observer` hears every iteration (stage `estimate`); a `Break` cancels.
+pub fn estimate_landmarks(
+    input: &EstimateInput<'_>,
+    params: &EstimateParams,
+    observer: &mut dyn AlignObserver,
+) -> Result<LandmarkEstimate, EstimateError> {
+    let started = now_ms();
+    params.fine.validate().map_err(EstimateError::Align)?;
+    let template: Cow<Template> = match input.template.resolution() {
+        Resolution::Base => Cow::Borrowed(input.template),
+        _ => Cow::Owned(input.template.at_resolution(Resolution::Base)),
+    };
+    let rest = &template.mesh().positions;
+    let triangles = &template.mesh().triangles;
+    let units = input
+        .units
+        .unwrap_or_else(|| detect_units(bounding_extent(&input.scan.positions)));
+    let to_m = units.scale_to_metres();
+    let scan = input.scan.scaled(to_m);
+    let index = SurfaceIndex::new(&scan).map_err(EstimateError::Scan)?;
+    let given = given_landmarks(input.given);
+    let given_m: Vec<(usize, Point3<f64>)> = given.iter().map(|(i, p)| (*i, p * to_m)).collect();
+    let landmark_vertices: Vec<u32> = template
+        .landmark_vertices()
+        .iter()
+        .map(|(_, v)| *v)
+        .collect();
+
+    let weights = data_weights(&template);
+    let rest_normals = template.mesh().vertex_normals();
+    let matching = Matching {
+        scan: &index,
+        min_cos: params.max_normal_angle_deg.to_radians().cos(),
+        outlier_distance: params.outlier_distance,
+    };
+    let mut starts: Vec<(&'static str, _)> = frame_candidates(rest, index.positions())
+        .ok_or(EstimateError::NoShape)?
+        .into_iter()
+        .map(|c| ("axes", c.start))
+        .collect();
+    if given_m.len() >= 4 {
+        let from: Vec<_> = given_m
+            .iter()
+            .map(|(i, _)| rest[landmark_vertices[*i] as usize])
+            .collect();
+        let to: Vec<_> = given_m.iter().map(|(_, p)| *p).collect();
+        if let Some(t) =
+            similarity(&from, &to, true).filter(|t| t.scale > 0.0 && t.scale.is_finite())
+        {
+            starts.push(("given landmarks", t));
+        }
+    }
+    let max_iterations = starts.len() * (params.candidate_iterations + 1)
+        + params.segment_iterations
+        + params.fine.max_iterations;
+    let mut ticker = Ticker::new(observer, max_iterations);
+
+    let sample = even_sample(&weights, params.candidate_samples);
+    let mut fitted: Vec<(&'static str, FittedCandidate)> = Vec::new();
+    for (source, start) in &starts {
+        let fit = fit_similarity(
+            *start,
+            rest,
+            &rest_normals,
+            &sample,
+            &matching,
+            params.candidate_iterations,
+            &mut ticker,
+        )
+        .ok_or(EstimateError::Cancelled)?;
+        fitted.push((source, fit));
+    }
+    fitted.sort_by(|a, b| a.1.energy.total_cmp(&b.1.energy));
+    let (_, best) = *fitted.first().ok_or(EstimateError::NoMatch)?;
+    if best.matched == 0.0 {
+        return Err(EstimateError::NoMatch);
+    }
+    let candidates_ms = now_ms() - started;
+
+    let segments_start = now_ms();
+    let all: Vec<u32> = (0..rest.len() as u32)
+        .filter(|&v| weights[v as usize] >= 0.5)
+        .step_by(2)
+        .collect();
+    let parts = parts(&template);
+    let posed = fit_segments(
+        &template,
+        &parts,
+        best.transform,
+        &all,
+        &matching,
+        params.segment_iterations,
+        &mut ticker,
+    )
+    .ok_or(EstimateError::Cancelled)?;
+    let posed_normals = crate::mesh::normals::vertex_normals(&posed, triangles);
+    let segment_pairs = matching.pairs(&all, &posed, &posed_normals);
+    let segment_rms = (segment_pairs
+        .iter()
+        .map(|p| p.distance.powi(2))
+        .sum::<f64>()
+        / segment_pairs.len().max(1) as f64)
+        .sqrt();
+    let predicted: Vec<Point3<f64>> = landmark_vertices
+        .iter()
+        .map(|&v| posed[v as usize] / to_m)
+        .collect();
+    let flagged = flag_suspicious(
+        &given,
+        &predicted,
+        params.suspicious_distance / to_m,
+        to_m * 1000.0,
+    );
+    let segments_ms = now_ms() - segments_start;
+
+    let fine_start = now_ms();
+    let anchors: Vec<(u32, Point3<f64>)> = given_m
+        .iter()
+        .filter(|(i, _)| !flagged.iter().any(|f| f.name == CAESAR_LANDMARKS[*i].name))
+        .map(|(i, p)| (landmark_vertices[*i], *p))
+        .collect();
+    ticker.start_fine();
+    let fine = fine_align(
+        &FineAlignInput {
+            positions: &posed,
+            triangles,
+            scan: &index,
+            weights: &weights,
+            anchors: &anchors,
+        },
+        &params.fine,
+        &mut ticker,
+    )
+    .map_err(EstimateError::Align)?;
+    if fine.report.cancelled || ticker.cancelled {
+        return Err(EstimateError::Cancelled);
+    }
+    let fine_ms = now_ms() - fine_start;
+
+    let near = neighbourhoods(rest, &landmark_vertices, params.confidence_radius);
+    let mut positions = Vec::with_capacity(CAESAR_LANDMARK_COUNT);
+    let mut confidences = Vec::with_capacity(CAESAR_LANDMARK_COUNT);
+    let mut is_given = Vec::with_capacity(CAESAR_LANDMARK_COUNT);
+    let mut landmarks = Vec::with_capacity(CAESAR_LANDMARK_COUNT);
+    for (k, &v) in landmark_vertices.iter().enumerate() {
+        let given_here = given.iter().find(|(i, _)| *i == k).map(|(_, p)| *p);
+        let (position, c) = match given_here {
+            Some(p) => (Some(p), 1.0),
+            None => {
+                let p = fine.positions[v as usize];
+                let finite = p.coords.iter().all(|c| c.is_finite());
+                let r = residual(
+                    &fine.report.per_vertex_distance,
+                    &near[k],
+                    params.outlier_distance,
+                );
+                let c = confidence(
+                    sharpness(&rest_normals, v, &near[k]),
+                    r,
+                    params.confidence_residual,
+                );
+                (finite.then(|| p / to_m), if finite { c } else { 0.0 })
+            }
+        };
+        let name = CAESAR_LANDMARKS[k].name;
+        landmarks.push(LandmarkReport {
+            name,
+            confidence: c,
+            given: given_here.is_some(),
+            flagged: flagged.iter().any(|f| f.name == name),
+        });
+        positions.push(position);
+        confidences.push(c);
+        is_given.push(given_here.is_some());
+    }
+
+    let candidates = fitted
+        .iter()
+        .map(|(source, f)| CandidateReport {
+            frame: FrameReport::of(&f.transform),
+            source,
+            rms_mm: f.energy.sqrt() * 1000.0,
+            matched: f.matched,
+        })
+        .collect();
+    let report = EstimateReport {
+        units,
+        units_detected: input.units.is_none(),
+        frame: FrameReport::of(&best.transform),
+        candidates,
+        given: given.len(),
+        estimated: positions.iter().flatten().count() - given.len(),
+        landmarks,
+        flagged,
+        segment_rms_mm: segment_rms * 1000.0,
+        fit_rms_mm: fine.report.template_to_scan.rms * 1000.0,
+        iterations: ticker.iterations(),
+        candidates_ms,
+        segments_ms,
+        fine_ms,
+        total_ms: now_ms() - started,
+    };
+    Ok(LandmarkEstimate {
+        positions,
+        confidence: confidences,
+        given: is_given,
+        fitted: fine.positions,
+        scale_to_metres: to_m,
+        report,
+    })
+}
+
+/// The given landmarks that are CAESAR landmarks, as (CAESAR index, position), first of each
+/// name; positions that are not finite are left out.
+pub fn given_landmarks(set: &LandmarkSet) -> Vec<(usize, Point3<f64>)> {
+    let mut out: Vec<(usize, Point3<f64>)> = Vec::new();
+    for l in &set.landmarks {
+        let Some(i) = CAESAR_LANDMARKS.iter().position(|c| c.name == l.name) else {
+            continue;
+        };
+        if l.position.coords.iter().all(|c| c.is_finite()) && !out.iter().any(|(j, _)| *j == i) {
+            out.push((i, l.position));
+        }
+    }
+    out
+}

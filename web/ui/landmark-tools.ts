@@ -1,0 +1,126 @@
+// The landmark editor's controls: the estimate (progress, Cancel, the frame and units assumed, or
+// what went wrong), the picked landmark's position, Undo / Redo / Mark absent, export as .lnd, CSV
+// or JSON, and the landmarks the core finds suspicious.
+import type { LandmarkEntry, SuspiciousLandmark } from '../shared/landmark-entry';
+import { button, h } from './dom';
+
+export type LandmarkFormat = 'lnd' | 'csv' | 'json';
+
+export type EstimateView =
+  | { state: 'none' }
+  | { state: 'running'; fraction: number; label: string }
+  | { state: 'done'; assumed: string; seconds: number }
+  | { state: 'cancelled' }
+  | { state: 'error'; message: string };
+
+export interface ToolsView {
+  estimate: EstimateView;
+  /** Landmarks without a position (what an estimate would fill in). */
+  absent: number;
+  /** A scan is loaded: landmarks can be estimated and placed. */
+  hasScan: boolean;
+  selected: LandmarkEntry | null;
+  canUndo: boolean;
+  canRedo: boolean;
+  /** The current set's suspicious landmarks; null when not checked. */
+  suspicious: SuspiciousLandmark[] | null;
+}
+
+export interface ToolsActions {
+  onEstimate: () => void;
+  onCancelEstimate: () => void;
+  onUndo: () => void;
+  onRedo: () => void;
+  onAbsent: () => void;
+  onExport: (format: LandmarkFormat) => void;
+}
+
+export class LandmarkTools {
+  readonly element = h('div', { class: 'landmark-tools', 'data-testid': 'landmark-tools' });
+  /** The progress bar and its label while an estimate runs, updated in place so Cancel stays put. */
+  private live: { bar: HTMLProgressElement; label: HTMLElement } | null = null;
+
+  constructor(private readonly actions: ToolsActions) {}
+
+  render(view: ToolsView): void {
+    document.body.dataset.estimateState = view.estimate.state;
+    const e = view.estimate;
+    if (e.state === 'running' && this.live) {
+      this.live.bar.value = e.fraction;
+      this.live.label.textContent = e.label;
+      return;
+    }
+    this.live = null;
+    const a = this.actions;
+    const running = e.state === 'running';
+    const estimate = button('landmarks-estimate', view.absent === 73 ? 'Estimate landmarks' : `Estimate the ${view.absent} absent`, 'button', a.onEstimate);
+    estimate.disabled = running || !view.hasScan;
+    estimate.hidden = view.absent === 0;
+    const undo = button('landmarks-undo', 'Undo', 'button', a.onUndo);
+    undo.disabled = running || !view.canUndo;
+    undo.title = 'Ctrl+Z';
+    const redo = button('landmarks-redo', 'Redo', 'button', a.onRedo);
+    redo.disabled = running || !view.canRedo;
+    redo.title = 'Ctrl+Shift+Z';
+    const absent = button('landmarks-absent', 'Mark absent', 'button', a.onAbsent);
+    absent.disabled = running || !view.selected?.position;
+    const exports = (['lnd', 'csv', 'json'] as const).map((f) => {
+      const b = button(`landmarks-export-${f}`, `.${f}`, 'button', () => a.onExport(f));
+      b.disabled = running;
+      return b;
+    });
+    this.element.replaceChildren(
+      ...this.estimateParts(e),
+      h('div', { class: 'actions' }, estimate),
+      h('p', { class: 'note', 'data-testid': 'landmarks-selected' }, selectedText(view)),
+      h('div', { class: 'actions' }, undo, redo, absent),
+      h('div', { class: 'actions export' }, h('span', { class: 'label' }, 'Export'), ...exports),
+      ...suspiciousParts(view.suspicious),
+    );
+  }
+
+  private estimateParts(e: EstimateView): HTMLElement[] {
+    if (e.state === 'running') {
+      const bar = h('progress', { 'data-testid': 'estimate-progress', max: '1', value: String(e.fraction) });
+      const label = h('span', { 'data-testid': 'estimate-status' }, e.label);
+      this.live = { bar, label };
+      const cancel = button('estimate-cancel', 'Cancel', 'button', this.actions.onCancelEstimate);
+      return [bar, h('div', { class: 'actions estimate-running' }, label, cancel)];
+    }
+    if (e.state === 'done')
+      return [h('p', { class: 'note', 'data-testid': 'estimate-assumed' }, `Estimated in ${e.seconds.toFixed(1)} s. Assumed: ${e.assumed}`)];
+    if (e.state === 'cancelled')
+      return [h('p', { class: 'warn-note', 'data-testid': 'estimate-cancelled' }, 'Estimate cancelled: the scan and the landmarks placed so far are kept.')];
+    if (e.state === 'error')
+      return [h('p', { class: 'error-note', 'data-testid': 'estimate-error' }, `The estimate failed: ${sentence(e.message)} The scan and the landmarks placed so far are kept; place the landmarks by hand or try again.`)];
+    return [];
+  }
+}
+
+function selectedText(view: ToolsView): string {
+  const s = view.selected;
+  if (!view.hasScan) return 'Open a scan to place landmarks on it.';
+  if (!s) return 'Pick a landmark in the list, then click on the scan to place it there; drag a marker to move it.';
+  const where = s.position ? `at (${s.position.map((v) => (v * 1000).toFixed(1)).join(', ')}) mm, ${s.state}` : 'absent';
+  return `${s.name}: ${where}. Click on the scan to place it.`;
+}
+
+function suspiciousParts(list: SuspiciousLandmark[] | null): HTMLElement[] {
+  if (!list) return [];
+  if (list.length === 0) return [h('p', { class: 'note', 'data-testid': 'landmarks-suspicious-none' }, 'No landmark is far from where the others predict it.')];
+  return [
+    h('h2', {}, `Suspicious (${list.length})`),
+    h(
+      'ul',
+      { class: 'suspicious-list', 'data-testid': 'landmarks-suspicious' },
+      ...list.map((s) =>
+        h('li', { 'data-name': s.name }, h('span', { class: 'name' }, s.name), h('span', { class: 'distance' }, `${s.distance_mm.toFixed(0)} mm`), h('span', { class: 'suggestion' }, s.suggestion)),
+      ),
+    ),
+  ];
+}
+
+/** `message` ending in a full stop (or the question or exclamation mark it has). */
+export function sentence(message: string): string {
+  return /[.?!]$/.test(message) ? message : `${message}.`;
+}
