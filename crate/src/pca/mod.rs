@@ -15,6 +15,8 @@
 //! * [`measure`] — stature, girths by plane sections, arm length, inseam
 //! * [`gltf`] — the whole-body model, or all seven models, as GLB with modes as morph targets
 //! * [`file`] — the versioned model file format ([`f16`] for the compact basis)
+//! * [`statismo`] — a model as statismo's HDF5 datasets (what Scalismo and exploreCOSMOS read),
+//!   and a statismo model opened on the template
 //! * [`random`] — seeded normal draws
 
 pub mod build;
@@ -33,6 +35,7 @@ pub mod procrustes_gpa;
 pub mod random;
 pub mod segments;
 pub mod shape_model;
+pub mod statismo;
 pub mod stitch;
 pub mod subdivide;
 
