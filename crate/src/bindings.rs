@@ -8,7 +8,8 @@
 //!   positions, triangles, normals, summary), `parseLandmarks`;
 //! * `template.rs`: `loadTemplate` ([`TemplateHandle`]);
 //! * `align.rs`: `alignDefaults`, [`ScanWithLandmarks`], `rbfWarp`, `alignScan`, `exportMesh`;
-//! * `model.rs`: `loadShapeModel` ([`ShapeSpace`]); `model_build.rs`: `buildShapeModel`.
+//! * `model.rs`: `loadShapeModel` ([`ShapeSpace`]); `model_build.rs`: `buildShapeModel`;
+//!   `statismo.rs`: [`StatismoArrays`], `loadStatismoModel`, `ShapeSpace.statismoArrays`.
 
 mod align;
 mod template;
@@ -24,9 +25,11 @@ use wasm_bindgen::prelude::*;
 
 mod model;
 mod model_build;
+mod statismo;
 
 pub use model::{load_shape_model, ShapeSpace};
 pub use model_build::build_shape_model;
+pub use statismo::{load_statismo_model, StatismoArrays};
 
 use crate::io::{read_landmarks, read_scan};
 use crate::landmarks::report::{report, LandmarkReport};
