@@ -29,7 +29,7 @@ mod statismo;
 
 pub use model::{load_shape_model, ShapeSpace};
 pub use model_build::build_shape_model;
-pub use statismo::{load_statismo_model, StatismoArrays};
+pub use statismo::{load_statismo_model, max_model_bytes, StatismoArrays};
 
 use crate::io::{read_landmarks, read_scan};
 use crate::landmarks::report::{report, LandmarkReport};

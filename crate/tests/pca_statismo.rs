@@ -1,10 +1,12 @@
 //! Statismo HDF5 models (`pca::statismo`, `io::statismo_h5`, `bodyspace export-statismo`): a
 //! model built on the embedded template written, read back and opened again; segment files;
 //! segment marginals against segment models built directly; older and foreign files; refusals.
+//! The command line's `export-statismo` and its reading of `.h5` models: `pca_cli.rs`.
 #![cfg(not(target_arch = "wasm32"))]
 
+mod pca_support;
+
 use bodyspace::io::statismo_h5::{read_statismo_h5, write_statismo_h5};
-use bodyspace::pca::file::{write_model, BasisPrecision};
 use bodyspace::pca::random::NormalRng;
 use bodyspace::pca::statismo::{body_model_from_statismo, statismo_of_part, StatismoModel};
 use bodyspace::pca::{
@@ -13,7 +15,6 @@ use bodyspace::pca::{
 use bodyspace::template::{Segment, Template};
 use nalgebra::Point3;
 use std::path::PathBuf;
-use std::process::Command;
 
 /// `n` subjects on the embedded template: scaled along each axis, with a belly and a head
 /// bulge, amounts from a seeded normal; every mode kept.
@@ -167,19 +168,7 @@ fn segment_models_are_the_whole_body_marginals_and_equal_the_built_ones_when_eve
                 .fold(0.0, f64::max);
             assert!(d < 1e-6, "{} subject {i}: {d} m", s.name());
         }
-        // Orthonormal modes.
-        let m = marginal.mode_count();
-        for a in 0..m {
-            for b in 0..m {
-                let dot: f64 = marginal
-                    .mode(a)
-                    .iter()
-                    .zip(marginal.mode(b))
-                    .map(|(x, y)| *x as f64 * *y as f64)
-                    .sum();
-                assert!((dot - if a == b { 1.0 } else { 0.0 }).abs() < 1e-4);
-            }
-        }
+        pca_support::check_orthonormal(marginal);
     }
 }
 
@@ -287,84 +276,4 @@ fn inconsistent_or_foreign_files_are_refused_with_the_reason() {
     let bytes = std::fs::read(&whole).unwrap();
     std::fs::write(&path, &bytes[..bytes.len() / 2]).unwrap();
     assert!(read_statismo_h5(&path).is_err());
-}
-
-fn run(args: &[&str]) -> (bool, serde_json::Value, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_bodyspace"))
-        .args(args)
-        .output()
-        .unwrap();
-    let stdout = String::from_utf8_lossy(&out.stdout).to_string();
-    (
-        out.status.success(),
-        serde_json::from_str(&stdout).unwrap_or(serde_json::Value::Null),
-        String::from_utf8_lossy(&out.stderr).to_string(),
-    )
-}
-
-#[test]
-fn the_cli_exports_statismo_files_and_every_model_command_reads_them() {
-    let (model, _) = model(6);
-    let bsm = temp("cli.bsm");
-    std::fs::write(&bsm, write_model(&model, BasisPrecision::F32)).unwrap();
-    let (h5, head) = (temp("cli.h5"), temp("cli-head.h5"));
-    let s = |p: &PathBuf| p.display().to_string();
-    let (ok, json, err) = run(&["export-statismo", "--model", &s(&bsm), "--out", &s(&h5)]);
-    assert!(ok, "{err}");
-    assert_eq!(json["points"], 13380);
-    assert_eq!(json["modes"], 5);
-    let (ok, json, err) = run(&[
-        "export-statismo",
-        "--model",
-        &s(&bsm),
-        "--out",
-        &s(&head),
-        "--segment",
-        "head",
-    ]);
-    assert!(ok, "{err}");
-    assert_eq!(json["points"], model.segment(Segment::Head).vertex_count());
-    let (ok, _, err) = run(&[
-        "export-statismo",
-        "--model",
-        &s(&bsm),
-        "--out",
-        &s(&head),
-        "--segment",
-        "tail",
-    ]);
-    assert!(!ok && err.contains("unknown segment"), "{err}");
-
-    // info, reconstruct and export-gltf read the .h5 as they read the .bsm.
-    let (ok, json, err) = run(&["info", &s(&h5)]);
-    assert!(ok, "{err}");
-    assert_eq!(json["parts"][0]["modes"], 5);
-    assert_eq!(json["subjects"], 6);
-    let reconstruct = |m: &PathBuf, out: &str| {
-        let (ok, json, err) = run(&[
-            "reconstruct",
-            "--model",
-            &s(m),
-            "--coefficients",
-            "1.5,-1",
-            "--sigma",
-            "--out",
-            &s(&temp(out)),
-        ]);
-        assert!(ok, "{err}");
-        json
-    };
-    let (a, b) = (reconstruct(&bsm, "a.ply"), reconstruct(&h5, "b.ply"));
-    let stature = |j: &serde_json::Value| j["measurements"]["stature"].as_f64().unwrap();
-    assert!((stature(&a) - stature(&b)).abs() < 1e-6);
-    let (ok, _, err) = run(&[
-        "export-gltf",
-        "--model",
-        &s(&h5),
-        "--out",
-        &s(&temp("m.glb")),
-    ]);
-    assert!(ok, "{err}");
-    let (ok, _, err) = run(&["info", &s(&head)]);
-    assert!(!ok && err.contains("head segment"), "{err}");
 }

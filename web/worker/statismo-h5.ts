@@ -2,7 +2,7 @@
 // h5wasm is imported only when a .h5 is opened or saved (its 4 MB stay out of the first load).
 // This file only moves datasets between the file and the core's StatismoArrays; the layout's
 // meaning and every check are the core's (crate/src/pca/statismo.rs, docs/shape-model.md).
-import { StatismoArrays } from '../pkg/bodyspace.js';
+import { maxModelBytes, StatismoArrays } from '../pkg/bodyspace.js';
 
 type H5Module = typeof import('h5wasm');
 type H5Group = InstanceType<H5Module['Group']>;
@@ -61,6 +61,8 @@ function dims(r: Read, path: string, fileName: string): [number, number] {
 
 /** Reads the datasets of a statismo model; the core judges them (`loadStatismoModel`). */
 export async function readStatismoH5(bytes: Uint8Array, fileName: string): Promise<StatismoArrays> {
+  const limit = maxModelBytes();
+  if (bytes.length > limit) throw new Error(`${fileName}: model file is ${bytes.length} bytes, more than the ${limit} bytes of the largest model accepted (see Limits in the README)`);
   const h5 = await h5wasm();
   const path = scratchPath();
   h5.FS!.writeFile(path, bytes);

@@ -189,6 +189,12 @@ impl ShapeSpace {
     }
 }
 
+/// The largest model file accepted, in bytes (`pca::file::MAX_MODEL_BYTES`, for `.h5` files too).
+#[wasm_bindgen(js_name = maxModelBytes)]
+pub fn max_model_bytes() -> f64 {
+    crate::pca::file::MAX_MODEL_BYTES as f64
+}
+
 /// Opens statismo datasets read from `file_name` on the embedded template at the resolution of
 /// its point count (`pca::statismo::body_model_from_statismo`: a model on other points is
 /// refused with the reason). Errors are prefixed by `file_name`.

@@ -360,22 +360,12 @@ pub fn body_model_from_statismo(
             scores[i * k + j] = (file.scores.at(j, i) as f64 * variances[j].sqrt()) as f32;
         }
     }
-    let whole = ShapeModel {
-        vertex_indices: Vec::new(),
-        mean: file
-            .mean
-            .iter()
-            .map(|&x| (x as f64 * to_metres) as f32)
-            .collect(),
-        basis,
-        quality: QualityCurves {
-            compactness: compactness(&variances),
-            ..QualityCurves::default()
-        },
-        all_variances: variances.clone(),
-        variances,
-        scores,
-    };
+    let mean = file
+        .mean
+        .iter()
+        .map(|&x| (x as f64 * to_metres) as f32)
+        .collect();
+    let whole = read_part(Vec::new(), mean, basis, variances, scores);
     let segment_weights: Vec<[f32; 6]> =
         (0..v as u32).map(|i| template.segment_weights(i)).collect();
     let segments = segment_subsets(&segment_weights)
@@ -437,16 +427,29 @@ pub fn marginal(whole: &ShapeModel, subset: Vec<u32>, subjects: usize) -> ShapeM
             scores[i * kept.len() + j] = w.dot(&gb) as f32;
         }
     }
+    let mean = subset
+        .iter()
+        .flat_map(|&i| {
+            whole.mean[3 * i as usize..3 * i as usize + 3]
+                .iter()
+                .copied()
+        })
+        .collect();
+    read_part(subset, mean, basis, variances, scores)
+}
+
+/// A part opened from a file: every variance is kept, and the quality curves hold what the
+/// variances alone give (compactness over the kept modes).
+fn read_part(
+    vertex_indices: Vec<u32>,
+    mean: Vec<f32>,
+    basis: Vec<f32>,
+    variances: Vec<f64>,
+    scores: Vec<f32>,
+) -> ShapeModel {
     ShapeModel {
-        mean: subset
-            .iter()
-            .flat_map(|&i| {
-                whole.mean[3 * i as usize..3 * i as usize + 3]
-                    .iter()
-                    .copied()
-            })
-            .collect(),
-        vertex_indices: subset,
+        vertex_indices,
+        mean,
         basis,
         quality: QualityCurves {
             compactness: compactness(&variances),
