@@ -102,6 +102,7 @@ fn the_whole_body_round_trips_through_an_hdf5_file() {
     let path = temp("whole.h5");
     write_statismo_h5(&path, &file, "now").unwrap();
     let read = read_statismo_h5(&path).unwrap();
+    std::fs::remove_file(&path).ok();
     let strip = |f: &StatismoModel| StatismoModel {
         data_info: Vec::new(),
         parameters: Vec::new(),
@@ -276,4 +277,7 @@ fn inconsistent_or_foreign_files_are_refused_with_the_reason() {
     let bytes = std::fs::read(&whole).unwrap();
     std::fs::write(&path, &bytes[..bytes.len() / 2]).unwrap();
     assert!(read_statismo_h5(&path).is_err());
+    for p in [path, whole] {
+        std::fs::remove_file(p).ok();
+    }
 }
