@@ -7,6 +7,7 @@
 //!   stitched reconstruction and seam report
 //! * [`build`] — [`build_body_model`] from a [`TrainingSet`]; [`params`] — its [`BuildParams`]
 //! * [`segments`] — segment vertex subsets and normalised blend weights
+//! * [`marginal`] — a model's marginal on a vertex subset (segment models of a whole-body file)
 //! * [`stitch`] — the stitching types (coefficients, plan, seam report) and f32 slider kernels
 //! * [`morph`] — the body on screen: held coefficients and positions, slider moves as rank-1 updates
 //! * [`subdivide`] — a model mapped exactly to the template's finer resolution (S̄_fine = S·S̄, φ_fine = S·φ)
@@ -26,6 +27,7 @@ pub mod f16;
 pub mod file;
 pub mod gltf;
 pub mod gram;
+pub mod marginal;
 pub mod measure;
 pub mod metrics;
 pub mod model;

@@ -15,10 +15,10 @@
 //! * A segment of ours is one statismo model whose representer is the segment's vertices
 //!   (ascending template indices) and the template triangles inside it.
 
-use nalgebra::{DMatrix, Point3, SymmetricEigen};
+use nalgebra::Point3;
 
 use super::error::PcaError;
-use super::metrics::{compactness, QualityCurves};
+use super::marginal::marginal;
 use super::model::BodyModel;
 use super::params::BuildParams;
 use super::segments::{segment_subsets, segment_triangles};
@@ -278,7 +278,7 @@ fn segment_with_count(template: &Template, n: usize) -> Option<Segment> {
 /// Opens a statismo file as a [`BodyModel`] on `template`: its representer must be the
 /// template (same vertex count and triangles). The whole-body model is the file's (in metres,
 /// orthonormal); each segment model is the whole-body model's marginal on the segment's
-/// vertices (see [`marginal`]), exact when the file keeps every mode of its training set;
+/// vertices ([`marginal`]), exact when the file keeps every mode of its training set;
 /// scores come from `/modelinfo/scores` when present (subjects named `subject_1` …); quality
 /// curves hold compactness over the kept modes only. A file on other points is refused, naming
 /// the segment of ours it matches when it is one of our segment files.
@@ -365,7 +365,7 @@ pub fn body_model_from_statismo(
         .iter()
         .map(|&x| (x as f64 * to_metres) as f32)
         .collect();
-    let whole = read_part(Vec::new(), mean, basis, variances, scores);
+    let whole = ShapeModel::with_all_modes_kept(Vec::new(), mean, basis, variances, scores);
     let segment_weights: Vec<[f32; 6]> =
         (0..v as u32).map(|i| template.segment_weights(i)).collect();
     let segments = segment_subsets(&segment_weights)
@@ -384,79 +384,4 @@ pub fn body_model_from_statismo(
         whole,
         segments,
     )
-}
-
-/// The marginal of `whole` on the vertices `subset`: the PCA of the Gaussian S̄ₛ + Φₛ·B,
-/// B ~ N(0, Λ), where Φₛ are the basis rows of the subset. With D = √Λ and G = ΦₛᵀΦₛ (k × k),
-/// the eigenpairs (σⱼ, vⱼ) of DGD give the segment's variances σⱼ and orthonormal modes
-/// ψⱼ = ΦₛDvⱼ/√σⱼ; a subject's segment coefficients are ψⱼᵀΦₛbᵢ = vⱼᵀDGbᵢ/√σⱼ. Eigenvalues below
-/// 1e-12 of the largest are dropped.
-pub fn marginal(whole: &ShapeModel, subset: Vec<u32>, subjects: usize) -> ShapeModel {
-    let k = whole.mode_count();
-    let rows = 3 * subset.len();
-    let phi = DMatrix::from_fn(rows, k, |r, j| {
-        whole.mode(j)[3 * subset[r / 3] as usize + r % 3] as f64
-    });
-    let g = phi.transpose() * &phi;
-    let d = nalgebra::DVector::from_iterator(k, whole.variances.iter().map(|l| l.sqrt()));
-    let dgd = DMatrix::from_fn(k, k, |a, b| d[a] * g[(a, b)] * d[b]);
-    let eigen = SymmetricEigen::new(dgd);
-    let mut order: Vec<usize> = (0..k).collect();
-    order.sort_by(|&a, &b| eigen.eigenvalues[b].total_cmp(&eigen.eigenvalues[a]));
-    let largest = order.first().map_or(0.0, |&j| eigen.eigenvalues[j]);
-    let kept: Vec<usize> = order
-        .into_iter()
-        .filter(|&j| eigen.eigenvalues[j] > 1e-12 * largest && largest > 0.0)
-        .collect();
-    let variances: Vec<f64> = kept.iter().map(|&j| eigen.eigenvalues[j]).collect();
-    let mut basis = Vec::with_capacity(kept.len() * rows);
-    let mut weights = Vec::with_capacity(kept.len());
-    for (&j, s) in kept.iter().zip(&variances) {
-        let w = d.component_mul(&eigen.eigenvectors.column(j)) / s.sqrt();
-        basis.extend((&phi * &w).iter().map(|&x| x as f32));
-        weights.push(w);
-    }
-    let mut scores = vec![0.0f32; subjects * kept.len()];
-    for i in 0..subjects {
-        let b = nalgebra::DVector::from_iterator(
-            k,
-            whole.scores[i * k..(i + 1) * k].iter().map(|&x| x as f64),
-        );
-        let gb = &g * b;
-        for (j, w) in weights.iter().enumerate() {
-            scores[i * kept.len() + j] = w.dot(&gb) as f32;
-        }
-    }
-    let mean = subset
-        .iter()
-        .flat_map(|&i| {
-            whole.mean[3 * i as usize..3 * i as usize + 3]
-                .iter()
-                .copied()
-        })
-        .collect();
-    read_part(subset, mean, basis, variances, scores)
-}
-
-/// A part opened from a file: every variance is kept, and the quality curves hold what the
-/// variances alone give (compactness over the kept modes).
-fn read_part(
-    vertex_indices: Vec<u32>,
-    mean: Vec<f32>,
-    basis: Vec<f32>,
-    variances: Vec<f64>,
-    scores: Vec<f32>,
-) -> ShapeModel {
-    ShapeModel {
-        vertex_indices,
-        mean,
-        basis,
-        quality: QualityCurves {
-            compactness: compactness(&variances),
-            ..QualityCurves::default()
-        },
-        all_variances: variances.clone(),
-        variances,
-        scores,
-    }
 }
