@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Installs everything BodySpace needs from the package registries, skipping what is already there:
-# Debian's chromium and chromium-driver; the wasm32 Rust target; wasm-pack (built by cargo,
+# Debian's chromium and chromium-driver, libhdf5-dev (statismo models in the native build); the wasm32 Rust target; wasm-pack (built by cargo,
 # since its own binary download fails here; wasm-pack in turn builds the matching wasm-bindgen CLI
 # with cargo on its first run and caches it); npm packages.
 set -euo pipefail
@@ -11,6 +11,8 @@ export PATH="$HOME/.cargo/bin:$PATH"
 need_apt=()
 command -v chromium >/dev/null 2>&1 || need_apt+=(chromium)
 command -v chromedriver >/dev/null 2>&1 || need_apt+=(chromium-driver)
+# The native build reads and writes statismo HDF5 models through the HDF5 C library.
+[ -f /usr/include/hdf5/serial/hdf5.h ] || need_apt+=(libhdf5-dev)
 if [ ${#need_apt[@]} -gt 0 ]; then
   echo "setup: installing Debian packages: ${need_apt[*]}"
   SUDO=""; [ "$(id -u)" -ne 0 ] && SUDO="sudo"

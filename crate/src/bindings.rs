@@ -10,7 +10,8 @@
 //! * `align.rs`: `alignDefaults`, [`ScanWithLandmarks`], `rbfWarp`, `alignScan`, `exportMesh`;
 //! * `landmarks.rs`: `estimateLandmarks` ([`LandmarkEstimate`]), `flagSuspicious`;
 //! * `landmark_export.rs`: `writeLandmarks` (`.lnd`, CSV or JSON);
-//! * `model.rs`: `loadShapeModel` ([`ShapeSpace`]); `model_build.rs`: `buildShapeModel`.
+//! * `model.rs`: `loadShapeModel` ([`ShapeSpace`]); `model_build.rs`: `buildShapeModel`;
+//!   `statismo.rs`: [`StatismoArrays`], `loadStatismoModel`, `ShapeSpace.statismoArrays`.
 
 mod align;
 mod landmark_export;
@@ -30,9 +31,11 @@ use wasm_bindgen::prelude::*;
 
 mod model;
 mod model_build;
+mod statismo;
 
 pub use model::{load_shape_model, ShapeSpace};
 pub use model_build::build_shape_model;
+pub use statismo::{load_statismo_model, max_model_bytes, StatismoArrays};
 
 use crate::io::subject_files::pair_subject_files;
 use crate::io::{read_landmarks, read_scan};

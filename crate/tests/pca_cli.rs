@@ -211,3 +211,70 @@ fn build_project_reconstruct_round_trip() {
     assert!(!ok && err.contains("not a number"), "{err}");
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// `export-statismo` (whole body, a segment, a bad segment name) and the `.h5` read back by
+/// `info`, `reconstruct` and `export-gltf` as the `.bsm` is; a segment file is refused as a body.
+#[test]
+fn export_statismo_and_every_model_command_reads_the_h5() {
+    let dir = std::env::temp_dir().join(format!("bodyspace-statismo-cli-{}", std::process::id()));
+    let fits = dir.join("fits");
+    std::fs::create_dir_all(&fits).unwrap();
+    make_fits(&fits, 6);
+    let path = |name: &str| dir.join(name).to_str().unwrap().to_string();
+    let (bsm, h5, head) = (path("model.bsm"), path("model.h5"), path("head.h5"));
+    let (ok, _, err) = run(&[
+        "build-model",
+        "--fits",
+        fits.to_str().unwrap(),
+        "--out",
+        &bsm,
+        "--variance",
+        "1.0",
+        "--no-quality",
+    ]);
+    assert!(ok, "{err}");
+    let export = |out: &str, segment: Option<&str>| {
+        let mut args = vec!["export-statismo", "--model", &bsm, "--out", out];
+        args.extend(segment.map(|s| ["--segment", s]).iter().flatten());
+        run(&args)
+    };
+    let (ok, from_bsm, err) = run(&["info", &bsm]);
+    assert!(ok, "{err}");
+    let modes = &from_bsm["parts"][0]["modes"];
+    assert!(modes.as_u64() > Some(1));
+    let (ok, json, err) = export(&h5, None);
+    assert!(ok, "{err}");
+    assert_eq!(json["points"], 13380);
+    assert_eq!(&json["modes"], modes);
+    let (ok, json, err) = export(&head, Some("head"));
+    assert!(ok, "{err}");
+    let head_points = json["points"].as_u64().unwrap();
+    let (ok, _, err) = export(&head, Some("tail"));
+    assert!(!ok && err.contains("unknown segment"), "{err}");
+
+    let (ok, info, err) = run(&["info", &h5]);
+    assert!(ok, "{err}");
+    assert_eq!(info["subjects"], 6);
+    assert_eq!(&info["parts"][0]["modes"], modes);
+    assert_eq!(info["parts"][1]["vertices"].as_u64(), Some(head_points));
+    let reconstruct = |model: &str, out: &str| {
+        let (ok, json, err) = run(&[
+            "reconstruct",
+            "--model",
+            model,
+            "--coefficients",
+            "1.5,-1",
+            "--sigma",
+            "--out",
+            &path(out),
+        ]);
+        assert!(ok, "{err}");
+        json["measurements"]["stature"].as_f64().unwrap()
+    };
+    assert!((reconstruct(&bsm, "a.ply") - reconstruct(&h5, "b.ply")).abs() < 1e-6);
+    let (ok, _, err) = run(&["export-gltf", "--model", &h5, "--out", &path("m.glb")]);
+    assert!(ok, "{err}");
+    let (ok, _, err) = run(&["info", &head]);
+    assert!(!ok && err.contains("head segment"), "{err}");
+    std::fs::remove_dir_all(&dir).ok();
+}

@@ -4,27 +4,12 @@ mod pca_support;
 
 use bodyspace::pca::gram::snapshot_pca;
 use bodyspace::pca::metrics::generalization;
-use bodyspace::pca::{build_body_model, BuildParams, PoseRemoval, ShapeModel};
+use bodyspace::pca::{build_body_model, BuildParams, PoseRemoval};
 
 fn all_modes() -> BuildParams {
     BuildParams {
         variance: 1.0,
         ..BuildParams::default()
-    }
-}
-
-fn check_orthonormal(model: &ShapeModel) {
-    for j in 0..model.mode_count() {
-        for k in 0..=j {
-            let dot: f64 = model
-                .mode(j)
-                .iter()
-                .zip(model.mode(k))
-                .map(|(a, b)| *a as f64 * *b as f64)
-                .sum();
-            let expected = if j == k { 1.0 } else { 0.0 };
-            assert!((dot - expected).abs() < 1e-5, "φ{j}·φ{k} = {dot}");
-        }
     }
 }
 
@@ -61,7 +46,7 @@ fn bases_are_orthonormal_and_variances_descend() {
     let set = pca_support::training_set(10, 2);
     let model = build_body_model(&set, &all_modes()).unwrap();
     for m in std::iter::once(&model.whole).chain(&model.segments) {
-        check_orthonormal(m);
+        pca_support::check_orthonormal(m);
         assert!(m.mode_count() >= 1 && m.mode_count() <= 9);
         assert!(m.variances.windows(2).all(|w| w[0] >= w[1]));
         assert!((m.quality.compactness.last().unwrap() - 1.0).abs() < 1e-12);
@@ -180,7 +165,7 @@ fn a_fixed_mode_count_overrides_the_variance_cut_and_is_recorded() {
     let six = build_body_model(&set, &params(6)).unwrap();
     for m in std::iter::once(&six.whole).chain(&six.segments) {
         assert_eq!(m.mode_count(), 6.min(m.all_variances.len()));
-        check_orthonormal(m);
+        pca_support::check_orthonormal(m);
     }
     assert_eq!(six.whole.mode_count(), 6);
     let many = build_body_model(&set, &params(50)).unwrap();

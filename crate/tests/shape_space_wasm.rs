@@ -3,7 +3,9 @@
 //! at base and after mapping the model to the fine template.
 #![cfg(target_arch = "wasm32")]
 
-use bodyspace::bindings::{build_shape_model, load_template, ShapeSpace};
+use bodyspace::bindings::{
+    build_shape_model, load_statismo_model, load_template, ShapeSpace, StatismoArrays,
+};
 use bodyspace::template::Template;
 use wasm_bindgen_test::*;
 
@@ -140,4 +142,46 @@ fn slider_moves_are_rank_one_updates_at_base_and_at_fine() {
     assert_eq!(space.vertex_count(), 13_380);
     assert!(max_diff(&space.positions().to_vec(), &moved[..3 * 13_380]) < 1e-6);
     assert_eq!(&space.parts_glb(20).to_vec()[..4], b"glTF");
+}
+
+/// The worker's statismo path without the HDF5 layer: the model's datasets out
+/// (`statismoArrays`), copied in through the setters the h5wasm reader uses, opened again
+/// (`loadStatismoModel`): the same mean body; a segment's datasets are refused as a body.
+#[wasm_bindgen_test]
+fn statismo_arrays_round_trip_and_a_segment_is_refused() {
+    let positions = subjects(5);
+    let names = serde_json::to_string(&["a", "b", "c", "d", "e"]).unwrap_or_default();
+    let space =
+        build_shape_model(&positions, 5, &names, 1.0, false).unwrap_or_else(|_| panic!("build"));
+    let out = space
+        .statismo_arrays("whole")
+        .unwrap_or_else(|_| panic!("arrays"));
+    let mut copy = StatismoArrays::new();
+    copy.set_version(out.major_version(), out.minor_version());
+    let (n, m, k, s) = (
+        out.point_count(),
+        out.cell_count(),
+        out.mode_count(),
+        out.subject_count(),
+    );
+    assert_eq!((k, s), (4, 5));
+    copy.set_points(3, n, &out.points().to_vec())
+        .unwrap_or_else(|_| panic!("points"));
+    copy.set_cells(3, m, &out.cells().to_vec())
+        .unwrap_or_else(|_| panic!("cells"));
+    copy.set_mean(&out.mean().to_vec());
+    copy.set_pca_basis(3 * n, k, &out.pca_basis().to_vec())
+        .unwrap_or_else(|_| panic!("basis"));
+    copy.set_pca_variance(&out.pca_variance().to_vec());
+    copy.set_scores(k, s, &out.scores().to_vec())
+        .unwrap_or_else(|_| panic!("scores"));
+    assert!(copy.set_points(3, n + 1, &out.points().to_vec()).is_err());
+    let back = load_statismo_model(&copy, "copy.h5").unwrap_or_else(|_| panic!("load"));
+    assert!((stature(&back) - stature(&space)).abs() < 1e-6);
+
+    let head = space
+        .statismo_arrays("head")
+        .unwrap_or_else(|_| panic!("head"));
+    assert!(load_statismo_model(&head, "head.h5").is_err());
+    assert!(space.statismo_arrays("tail").is_err());
 }

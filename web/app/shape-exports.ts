@@ -1,7 +1,8 @@
 // Downloads of the shape-space panel: the body shown (PLY, OBJ, GLB), bodies along a mode, the
-// model as GLB with morph targets (whole body, or all seven models), the model file, CSVs.
+// model as GLB with morph targets (whole body, or all seven models), the model file, the model in
+// view as statismo HDF5, CSVs.
 import type { CoreClient } from '../client/core-client';
-import type { LoadedModel, ModelCsv, ModelGlbParts, ReconstructedBody, ShapeCoefficients } from '../shared/shape-results';
+import type { LoadedModel, ModelCsv, ModelGlbParts, PartName, ReconstructedBody, ShapeCoefficients } from '../shared/shape-results';
 import { download } from '../ui/download';
 import { bodiesGlb } from '../view/gltf-export';
 
@@ -43,4 +44,10 @@ export async function modelGlb(client: CoreClient, model: LoadedModel, parts: Mo
 export async function modelFile(client: CoreClient): Promise<void> {
   const bytes = await client.call({ type: 'modelFile' });
   download('shape-model.bsm', bytes);
+}
+
+/** The whole body or one segment as a statismo HDF5 file (`shape-model.h5`, `shape-model-head.h5`, …). */
+export async function modelStatismo(client: CoreClient, part: PartName): Promise<void> {
+  const bytes = await client.call({ type: 'modelStatismo', part });
+  download(part === 'whole' ? 'shape-model.h5' : `shape-model-${part}.h5`, bytes, 'application/x-hdf5');
 }

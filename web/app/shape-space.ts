@@ -66,6 +66,7 @@ export class ShapeSpace {
       onExportModelGltf: (parts) => void this.exportModelGltf(parts),
       onResolution: (resolution) => void this.switchResolution(resolution),
       onSaveModel: () => void this.saveModel(),
+      onSaveStatismo: () => void this.saveStatismo(),
       onCopyLink: () => void this.copyLink(),
       onBuild: (variance) => void this.build(variance),
       onAddFits: (files) => void this.addFits(files),
@@ -124,9 +125,9 @@ export class ShapeSpace {
     this.page.dataset.shapeShown = 'false';
   }
 
-  /** Whether `name` is a model file for this panel (dropped with other files). */
+  /** Whether `name` is a model file for this panel (dropped with other files): `.bsm` or statismo `.h5`. */
   static isModelFile(name: string): boolean {
-    return /\.bsm$/i.test(name);
+    return /\.(bsm|h5)$/i.test(name);
   }
 
   async openModelFiles(files: File[]): Promise<void> {
@@ -401,6 +402,16 @@ export class ShapeSpace {
 
   private async saveModel(): Promise<void> {
     if (this.model) await shapeExports.modelFile(this.client);
+  }
+
+  /** The model in view — the whole body, or the segment picked — as statismo HDF5. */
+  private async saveStatismo(): Promise<void> {
+    if (!this.model) return;
+    try {
+      await shapeExports.modelStatismo(this.client, this.panel.currentView);
+    } catch (error) {
+      this.banner.show([`The statismo file could not be written: ${error instanceof Error ? error.message : String(error)}`]);
+    }
   }
 
   private async addFits(files: File[]): Promise<void> {

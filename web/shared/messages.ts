@@ -3,7 +3,7 @@ import type { AlignDefaults, AlignParams, AlignProgress, AlignResult, ScanInput,
 import type { LandmarkEstimate, SuspiciousLandmark } from './landmark-entry';
 import type { ParsedLandmarks, ParsedScan, SubjectPairing } from './results';
 import type { TemplateData, TemplateResolution } from './template-data';
-import type { ExportBody, LoadedModel, ModelCsv, ModelGlbParts, ReconstructedBody, ShapeCoefficients, ShownResolution } from './shape-results';
+import type { ExportBody, LoadedModel, ModelCsv, ModelGlbParts, PartName, ReconstructedBody, ShapeCoefficients, ShownResolution } from './shape-results';
 
 /** Every request the worker understands, without its `id` (the client adds it). */
 export type CoreRequestBody =
@@ -30,7 +30,10 @@ export type CoreRequestBody =
    * written as given; all three NaN for an absent landmark).
    */
   | { type: 'writeLandmarks'; names: string[]; positions: Float64Array; format: 'lnd' | 'csv' | 'json'; subjectId: string }
-  /** Shape models: the worker keeps one; a failed load or build leaves the previous one. */
+  /**
+   * Shape models: the worker keeps one; a failed load or build leaves the previous one. `bytes`
+   * is a `.bsm` model file or a statismo HDF5 model made on the template.
+   */
   | { type: 'loadModel'; bytes: ArrayBuffer; fileName: string }
   /** `positions`: the subjects' bodies concatenated (template order, metres). */
   | { type: 'buildModel'; positions: Float32Array; names: string[]; variance: number }
@@ -46,6 +49,8 @@ export type CoreRequestBody =
   | { type: 'modelCsv'; kind: ModelCsv }
   | { type: 'modelGlb'; modes: number; parts: ModelGlbParts }
   | { type: 'modelFile' }
+  /** The loaded model's whole body or one segment as a statismo HDF5 file (millimetres). */
+  | { type: 'modelStatismo'; part: PartName }
   /** Traps the core as a bug would (the crash-recovery test); never resolves with a result. */
   | { type: 'trap' };
 
@@ -75,6 +80,7 @@ export interface CoreResults {
   modelCsv: string;
   modelGlb: Uint8Array;
   modelFile: Uint8Array;
+  modelStatismo: Uint8Array;
   trap: never;
 }
 

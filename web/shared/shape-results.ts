@@ -13,9 +13,12 @@ export interface QualityCurves {
   specificity_sd: number[];
 }
 
+/** One of the seven models by name: the whole body or a segment. */
+export type PartName = 'whole' | SegmentName;
+
 /** One part of the model: `whole` or a segment. Variances in m². */
 export interface ModelPart {
-  name: 'whole' | SegmentName;
+  name: PartName;
   vertex_count: number;
   variances: number[];
   all_variances: number[];

@@ -1,12 +1,12 @@
 // The "Shape space" panel: segment picker, one σ slider per mode of the part in view, reset and
 // random, live measurements, seam quality and timing, quality charts, CSV, exports, link, build.
-import type { ModelCsv, ModelGlbParts, ModelPart, ReconstructedBody, SegmentName, ShapeCoefficients } from '../shared/shape-results';
+import type { ModelCsv, ModelGlbParts, ModelPart, PartName, ReconstructedBody, SegmentName, ShapeCoefficients } from '../shared/shape-results';
 import type { TemplateResolution } from '../shared/template-data';
 import { SEGMENTS } from '../shared/shape-results';
 import { byId, h } from './dom';
 import { qualityCharts } from './quality-charts';
 
-export type PartName = 'whole' | SegmentName;
+export type { PartName };
 
 export interface ShapeActions {
   onSlider(part: PartName, mode: number, sigma: number): void;
@@ -21,6 +21,8 @@ export interface ShapeActions {
   /** Show the body at the base or fine template resolution. */
   onResolution(resolution: TemplateResolution): void;
   onSaveModel(): void;
+  /** The model in view (whole body or the segment picked) as statismo HDF5. */
+  onSaveStatismo(): void;
   onCopyLink(): void;
   onBuild(variance: number): void;
   onAddFits(files: File[]): void;
@@ -91,7 +93,7 @@ export class ShapePanel {
       this.actions.onAddFits([...(fits.files ?? [])]);
       fits.value = '';
     });
-    const modelInput = h('input', { type: 'file', hidden: '', accept: '.bsm', 'data-testid': 'model-input' });
+    const modelInput = h('input', { type: 'file', hidden: '', accept: '.bsm,.h5', 'data-testid': 'model-input' });
     modelInput.addEventListener('change', () => {
       this.actions.onOpenModel([...(modelInput.files ?? [])]);
       modelInput.value = '';
@@ -120,6 +122,8 @@ export class ShapePanel {
       this.linkNote,
       h('h2', {}, 'Models'),
       h('div', { class: 'row' }, button('Open model…', 'open-model', () => modelInput.click()), button('Save model file', 'save-model', () => this.actions.onSaveModel()), modelInput),
+      h('div', { class: 'row' }, button('Part in view as statismo .h5', 'save-statismo', () => this.actions.onSaveStatismo())),
+      h('p', { class: 'note' }, 'statismo HDF5 (millimetres), for Scalismo, statismo and exploreCOSMOS: the whole body, or the segment picked above. Open model… also opens a statismo .h5 made on this template.'),
       this.subjectsNote,
       h('div', { class: 'row' }, button('Add fitted meshes…', 'add-fits', () => fits.click()), fits),
       h('div', { class: 'row' }, h('label', {}, 'Keep ', variance, ' % variance'), button('Build model', 'build-model', () => this.actions.onBuild(Number(variance.value) / 100))),

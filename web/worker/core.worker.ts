@@ -116,7 +116,7 @@ self.onmessage = async (event: MessageEvent<CoreRequest>) => {
       }
       case 'loadModel': {
         post({ id: request.id, type: 'progress', fraction: 0, label: `Reading ${request.fileName}` });
-        const loaded = models.loadModel(request.bytes, request.fileName);
+        const loaded = await models.loadModel(request.bytes, request.fileName);
         post({ id: request.id, type: 'result', result: loaded }, [loaded.triangles.buffer]);
         break;
       }
@@ -155,6 +155,12 @@ self.onmessage = async (event: MessageEvent<CoreRequest>) => {
       case 'trap':
         trapForTest();
         break;
+      case 'modelStatismo': {
+        post({ id: request.id, type: 'progress', fraction: 0, label: 'Writing the statismo file' });
+        const file = await models.modelStatismo(request.part);
+        post({ id: request.id, type: 'result', result: file }, [file.buffer]);
+        break;
+      }
       case 'modelFile': {
         const file = models.modelFile();
         post({ id: request.id, type: 'result', result: file }, [file.buffer]);

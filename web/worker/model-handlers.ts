@@ -1,18 +1,20 @@
 // Shape-model requests of the core worker: keeps the one loaded ShapeSpace, which holds the body
 // shown; morphs it (rank-1 updates per slider move, a full rebuild when asked), switches it to
-// the fine template, measures it, and exports CSV / GLB / the model file.
-import { buildShapeModel, loadShapeModel, type ShapeSpace } from '../pkg/bodyspace.js';
+// the fine template, measures it, and exports CSV / GLB / the model file / statismo HDF5.
+import { buildShapeModel, loadShapeModel, loadStatismoModel, type ShapeSpace } from '../pkg/bodyspace.js';
 import type {
   ExportBody,
   LoadedModel,
   ModelCsv,
   ModelGlbParts,
   ModelInfo,
+  PartName,
   ReconstructedBody,
   ShapeCoefficients,
   ShownResolution,
 } from '../shared/shape-results';
 import type { TemplateResolution } from '../shared/template-data';
+import { isHdf5, readStatismoH5, writeStatismoH5 } from './statismo-h5';
 import { templateHandle } from './template-handlers';
 
 let space: ShapeSpace | null = null;
@@ -31,8 +33,16 @@ function current(): ShapeSpace {
   return space;
 }
 
-export function loadModel(bytes: ArrayBuffer, fileName: string): LoadedModel {
-  return hold(loadShapeModel(new Uint8Array(bytes), fileName), fileName);
+/** A `.bsm` model file, or a statismo HDF5 model (told apart by the HDF5 signature). */
+export async function loadModel(bytes: ArrayBuffer, fileName: string): Promise<LoadedModel> {
+  const view = new Uint8Array(bytes);
+  if (!isHdf5(view)) return hold(loadShapeModel(view, fileName), fileName);
+  const arrays = await readStatismoH5(view, fileName);
+  try {
+    return hold(loadStatismoModel(arrays, fileName), fileName);
+  } finally {
+    arrays.free();
+  }
 }
 
 export function buildModel(positions: Float32Array, names: string[], variance: number): LoadedModel {
@@ -120,4 +130,14 @@ export function modelGlb(modes: number, parts: ModelGlbParts): Uint8Array {
 
 export function modelFile(): Uint8Array {
   return current().fileBytes();
+}
+
+/** The loaded model's `part` (whole body or one segment) as a statismo HDF5 file. */
+export async function modelStatismo(part: PartName): Promise<Uint8Array> {
+  const arrays = current().statismoArrays(part);
+  try {
+    return await writeStatismoH5(arrays);
+  } finally {
+    arrays.free();
+  }
 }

@@ -48,6 +48,9 @@ mod native {
         /// Write a model file as binary glTF, modes as morph targets: the whole-body model or
         /// (`--parts all`, the default) the whole body and the six segments, one mesh each.
         ExportGltf(bodyspace::cli::export_gltf::ExportGltfArgs),
+        /// Write a model as a statismo HDF5 file (statismo, Scalismo, exploreCOSMOS), in
+        /// millimetres: the whole body, or one segment with `--segment NAME`.
+        ExportStatismo(bodyspace::cli::export_statismo::ExportStatismoArgs),
         /// Print a fit's whole-body and segment coefficients as JSON.
         Project(bodyspace::cli::project::ProjectArgs),
         /// Write the stitched body for given coefficients as PLY (prints seam and measurements).
@@ -64,6 +67,7 @@ mod native {
             Command::Synth(args) => bodyspace::cli::synth::run(&args),
             Command::BuildModel(args) => bodyspace::cli::build_model::run(&args),
             Command::ExportGltf(args) => bodyspace::cli::export_gltf::run(&args),
+            Command::ExportStatismo(args) => bodyspace::cli::export_statismo::run(&args),
             Command::Project(args) => bodyspace::cli::project::run(&args),
             Command::Reconstruct(args) => bodyspace::cli::reconstruct::run(&args),
         };

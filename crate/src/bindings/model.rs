@@ -36,7 +36,7 @@ fn topology_of(model: &BodyModel) -> Result<NormalTopology, JsError> {
         .ok_or_else(|| js("a triangle of the model indexes a vertex beyond its template"))
 }
 
-fn template_at(resolution: Resolution) -> Result<Template, JsError> {
+pub(super) fn template_at(resolution: Resolution) -> Result<Template, JsError> {
     let base = Template::embedded().map_err(|e| js(format!("embedded template: {e}")))?;
     Ok(if resolution == Resolution::Base {
         base
@@ -111,6 +111,11 @@ impl ShapeSpace {
             topology,
             normals: Vec::new(),
         })
+    }
+
+    /// The model as loaded or built.
+    pub(super) fn model(&self) -> &BodyModel {
+        &self.model
     }
 
     /// The model whose body is shown.

@@ -5,6 +5,7 @@ pub mod batch;
 pub mod batch_subjects;
 pub mod build_model;
 pub mod export_gltf;
+pub mod export_statismo;
 pub mod info;
 pub mod manifest;
 pub mod model;

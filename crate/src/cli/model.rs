@@ -6,6 +6,7 @@ use crate::pca::file::read_model_for;
 use crate::pca::measure::{
     girth_triangles, measure, MeasureLandmarks, MeasureParams, Measurements,
 };
+use crate::pca::statismo::body_model_from_statismo;
 use crate::pca::{BodyModel, TemplateIdentity};
 use crate::template::{Resolution, Template};
 use nalgebra::Point3;
@@ -33,8 +34,27 @@ pub fn template_for_vertex_count(vertex_count: usize) -> Result<Template, String
     ))
 }
 
-/// Reads a model file and checks it was built for the embedded template.
+/// The 8 bytes every HDF5 file starts with (at offset 0, where our writers put the superblock).
+const HDF5_SIGNATURE: &[u8; 8] = b"\x89HDF\r\n\x1a\n";
+
+/// Whether `path` is an HDF5 file (a statismo model) rather than a `.bsm` model file.
+pub fn is_hdf5(path: &Path) -> Result<bool, String> {
+    use std::io::Read;
+    let mut head = [0u8; 8];
+    let mut file = std::fs::File::open(path).map_err(|e| format!("{}: {e}", path.display()))?;
+    let n = file
+        .read(&mut head)
+        .map_err(|e| format!("{}: {e}", path.display()))?;
+    Ok(n == 8 && &head == HDF5_SIGNATURE)
+}
+
+/// Reads a model — a `.bsm` model file, or a statismo HDF5 file made on the embedded template
+/// (`pca::statismo::body_model_from_statismo`) — and checks it against the embedded template
+/// at the model's resolution. Every command that takes `--model` reads it here.
 pub fn load_model(path: &Path) -> Result<(BodyModel, Template), String> {
+    if is_hdf5(path)? {
+        return load_statismo(path);
+    }
     let bytes = std::fs::read(path).map_err(|e| format!("{}: {e}", path.display()))?;
     let header_model =
         crate::pca::file::read_model(&bytes).map_err(|e| format!("{}: {e}", path.display()))?;
@@ -47,6 +67,19 @@ pub fn load_model(path: &Path) -> Result<(BodyModel, Template), String> {
         .map_err(|e| format!("embedded template: {e}"))?
         .at_resolution(resolution);
     let model = read_model_for(&bytes, &template_identity(&template))
+        .map_err(|e| format!("{}: {e}", path.display()))?;
+    Ok((model, template))
+}
+
+/// A statismo model on the embedded template at the resolution of its point count (base for
+/// the refusal of any other count).
+fn load_statismo(path: &Path) -> Result<(BodyModel, Template), String> {
+    let file = crate::io::statismo_h5::read_statismo_h5(path).map_err(|e| e.to_string())?;
+    let template = match template_for_vertex_count(file.point_count()) {
+        Ok(t) => t,
+        Err(_) => Template::embedded().map_err(|e| format!("embedded template: {e}"))?,
+    };
+    let model = body_model_from_statismo(&file, &template)
         .map_err(|e| format!("{}: {e}", path.display()))?;
     Ok((model, template))
 }

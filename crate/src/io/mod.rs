@@ -10,6 +10,8 @@
 //! * Writers: [`ply_write`], [`obj_write`], [`glb_write`] (the binary glTF container); landmark
 //!   sets: `write_lnd`, `write_landmarks_csv`, `write_landmarks_json`.
 //! * [`subject_files`]: which scan and landmark files make one subject of a batch.
+//! * Shape models: [`statismo_h5`] (native only) reads and writes statismo HDF5 files with the
+//!   HDF5 C library; the layout is `crate::pca::statismo`'s.
 //! * [`error`]: [`IoError`], the one error type of every reader; [`limits`]: the largest input
 //!   accepted (inflated size, vertices, triangles), checked before memory is reserved.
 
@@ -30,6 +32,8 @@ pub mod ply_read;
 pub mod ply_source;
 pub mod ply_write;
 pub mod scan;
+#[cfg(not(target_arch = "wasm32"))]
+pub mod statismo_h5;
 pub mod stl_read;
 pub mod subject_files;
 pub mod text_xyz;

@@ -14,6 +14,7 @@
 //!   two bodies stand side by side; vertex data are in the model frame (metres, y up).
 
 use super::model::BodyModel;
+use super::segments::segment_triangles;
 use super::shape_model::ShapeModel;
 use crate::io::glb_write::GlbWriter;
 use crate::template::Segment;
@@ -107,19 +108,4 @@ fn part_mesh(
         "extras": {"targetNames": names},
     });
     (mesh, part.variances[..m].to_vec())
-}
-
-/// The triangles with all three vertices in `subset` (ascending template indices), as flat
-/// indices into the subset.
-fn segment_triangles(triangles: &[[u32; 3]], subset: &[u32], vertex_count: usize) -> Vec<u32> {
-    let mut local = vec![u32::MAX; vertex_count];
-    for (j, &v) in subset.iter().enumerate() {
-        local[v as usize] = j as u32;
-    }
-    triangles
-        .iter()
-        .map(|t| t.map(|v| local[v as usize]))
-        .filter(|t| t.iter().all(|&j| j != u32::MAX))
-        .flatten()
-        .collect()
 }

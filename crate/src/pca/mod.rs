@@ -7,6 +7,7 @@
 //!   stitched reconstruction and seam report
 //! * [`build`] — [`build_body_model`] from a [`TrainingSet`]; [`params`] — its [`BuildParams`]
 //! * [`segments`] — segment vertex subsets and normalised blend weights
+//! * [`marginal`] — a model's marginal on a vertex subset (segment models of a whole-body file)
 //! * [`stitch`] — the stitching types (coefficients, plan, seam report) and f32 slider kernels
 //! * [`morph`] — the body on screen: held coefficients and positions, slider moves as rank-1 updates
 //! * [`subdivide`] — a model mapped exactly to the template's finer resolution (S̄_fine = S·S̄, φ_fine = S·φ)
@@ -15,6 +16,8 @@
 //! * [`measure`] — stature, girths by plane sections, arm length, inseam
 //! * [`gltf`] — the whole-body model, or all seven models, as GLB with modes as morph targets
 //! * [`file`] — the versioned model file format ([`f16`] for the compact basis)
+//! * [`statismo`] — a model as statismo's HDF5 datasets (what Scalismo and exploreCOSMOS read),
+//!   and a statismo model opened on the template
 //! * [`random`] — seeded normal draws
 
 pub mod build;
@@ -24,6 +27,7 @@ pub mod f16;
 pub mod file;
 pub mod gltf;
 pub mod gram;
+pub mod marginal;
 pub mod measure;
 pub mod metrics;
 pub mod model;
@@ -33,6 +37,7 @@ pub mod procrustes_gpa;
 pub mod random;
 pub mod segments;
 pub mod shape_model;
+pub mod statismo;
 pub mod stitch;
 pub mod subdivide;
 

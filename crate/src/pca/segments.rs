@@ -39,6 +39,21 @@ pub fn normalised_blend(weights: &[[f32; 6]], subsets: &[Vec<u32>]) -> Vec<Vec<f
         .collect()
 }
 
+/// The triangles with all three vertices in `subset` (ascending template indices, of a template
+/// with `vertex_count` vertices), as flat indices into the subset: a segment's own mesh.
+pub fn segment_triangles(triangles: &[[u32; 3]], subset: &[u32], vertex_count: usize) -> Vec<u32> {
+    let mut local = vec![u32::MAX; vertex_count];
+    for (j, &v) in subset.iter().enumerate() {
+        local[v as usize] = j as u32;
+    }
+    triangles
+        .iter()
+        .map(|t| t.map(|v| local[v as usize]))
+        .filter(|t| t.iter().all(|&j| j != u32::MAX))
+        .flatten()
+        .collect()
+}
+
 /// Mesh edges whose two vertices share no segment. Stitching is seamless only across overlap
 /// bands: where two segments meet along such an edge without overlapping, different coefficients
 /// can tear the body, so a template should have none — except between parts that only touch when

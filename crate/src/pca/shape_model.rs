@@ -84,6 +84,30 @@ pub struct ShapeModel {
 }
 
 impl ShapeModel {
+    /// A model whose every variance is kept (no truncation record), with the quality curves
+    /// the variances alone give: compactness over the kept modes (no generalization or
+    /// specificity, which need the training data). For models read or derived without them.
+    pub fn with_all_modes_kept(
+        vertex_indices: Vec<u32>,
+        mean: Vec<f32>,
+        basis: Vec<f32>,
+        variances: Vec<f64>,
+        scores: Vec<f32>,
+    ) -> Self {
+        Self {
+            vertex_indices,
+            mean,
+            basis,
+            quality: QualityCurves {
+                compactness: super::metrics::compactness(&variances),
+                ..QualityCurves::default()
+            },
+            all_variances: variances.clone(),
+            variances,
+            scores,
+        }
+    }
+
     /// Number of kept modes M.
     pub fn mode_count(&self) -> usize {
         self.variances.len()

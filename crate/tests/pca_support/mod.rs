@@ -1,6 +1,7 @@
 //! A small synthetic "body" for the PCA tests: a tube of rings with six overlapping segments
 //! (head on top, torso, arms on the torso's sides, legs below split by x), and subjects that vary
-//! it along a few known shape directions plus a random rigid pose.
+//! it along a few known shape directions plus a random rigid pose; and checks every PCA test
+//! makes of a model.
 
 #![allow(dead_code)]
 
@@ -108,5 +109,21 @@ pub fn training_set(n: usize, seed: u64) -> TrainingSet {
         segment_weights: segment_weights(),
         names: (0..n).map(|i| format!("subject{i:03}")).collect(),
         shapes: subjects(n, seed),
+    }
+}
+
+/// Asserts that the modes of `model` are orthonormal (1e-5).
+pub fn check_orthonormal(model: &bodyspace::pca::ShapeModel) {
+    for j in 0..model.mode_count() {
+        for k in 0..=j {
+            let dot: f64 = model
+                .mode(j)
+                .iter()
+                .zip(model.mode(k))
+                .map(|(a, b)| *a as f64 * *b as f64)
+                .sum();
+            let expected = if j == k { 1.0 } else { 0.0 };
+            assert!((dot - expected).abs() < 1e-5, "φ{j}·φ{k} = {dot}");
+        }
     }
 }
