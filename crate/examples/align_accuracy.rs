@@ -13,7 +13,9 @@
 //! vertices on the subject, scan frame and units). Prints per subject and the mean: scan→template
 //! RMS, mean correspondence error (fitted vertex vs truth) after the RBF warp and after fine
 //! alignment, the same per segment (each vertex counted in its dominant segment), iterations and
-//! times. Unset options keep the library defaults. `--export DIR` also writes each subject's
+//! times; then per body part (head, torso, arms, hands, legs, feet; `template::body_part`) the
+//! mean over subjects of each subject's mean, 95th percentile and largest error, and the largest
+//! of all. The first line names the population (`subjects.json`'s profile and seed, if present). Unset options keep the library defaults. `--export DIR` also writes each subject's
 //! RBF-warped template (`warped_XXX.ply`, metres) and landmark anchors (`anchors_XXX.json`) so
 //! the peer (`bench/peer/nricp.py`) starts from the same place. `--resolution fine` aligns the
 //! `fine` template coarse to fine (`coarse_to_fine_align`; the options set its base stage, the
@@ -30,7 +32,7 @@ mod native {
     use bodyspace::io::{read_landmarks, read_scan, write_ply};
     use bodyspace::mesh::Mesh;
     use bodyspace::rbf::Kernel;
-    use bodyspace::template::{Resolution, Segment, Template};
+    use bodyspace::template::{BodyPart, Resolution, Segment, Template};
     use nalgebra::Point3;
     use std::path::{Path, PathBuf};
 
@@ -158,6 +160,8 @@ mod native {
         p95: f64,
         max: f64,
         segments: [f64; 6],
+        /// Per body part ([`BodyPart::ALL`] order): mean, 95th percentile, largest error.
+        parts: [[f64; 3]; 6],
         iterations: usize,
         rough_ms: f64,
         index_ms: f64,
@@ -214,6 +218,10 @@ mod native {
         for (s, e) in segments.iter_mut().zip(&correspondence.segments) {
             *s = e.error.mean_mm;
         }
+        let mut parts = [[0.0; 3]; 6];
+        for (p, e) in parts.iter_mut().zip(&correspondence.parts) {
+            *p = [e.error.mean_mm, e.error.p95_mm, e.error.max_mm];
+        }
         let fine_stage_ms = fine
             .stages
             .as_ref()
@@ -228,6 +236,7 @@ mod native {
             p95: correspondence.fitted.p95_mm,
             max: correspondence.fitted.max_mm,
             segments,
+            parts,
             iterations: fine.iterations,
             rough_ms: report.rough_ms,
             index_ms: report.index_ms,
@@ -296,6 +305,7 @@ mod native {
             }
         };
         let names: Vec<&str> = Segment::ALL.iter().map(|s| s.name()).collect();
+        println!("population: {}", population(&options.dir));
         println!(
         "rbf {:?}; fine a={} b={} max_it={} it/round={} anneal={}:{} rel_tol={} disp_tol={} landmark_weight={} scan_term={}x{}@{}<{}",
         options.params.rbf.kernel,
@@ -367,6 +377,42 @@ mod native {
         }
         mean.iterations /= rows.len().max(1);
         print_row("mean", &mean);
+        print_parts(&rows);
+    }
+
+    /// Per body part: mean over subjects of the mean, 95th percentile and largest error, and the
+    /// largest error of any subject.
+    fn print_parts(rows: &[Row]) {
+        let k = rows.len().max(1) as f64;
+        println!("part    mean_mm  p95_mm  max_mm  worst_mm");
+        for part in BodyPart::ALL {
+            let i = part.index();
+            let avg = |j: usize| rows.iter().map(|r| r.parts[i][j]).sum::<f64>() / k;
+            let worst = rows.iter().map(|r| r.parts[i][2]).fold(0.0, f64::max);
+            println!(
+                "{:<6} {:>8.2} {:>7.2} {:>7.2} {:>9.2}",
+                part.name(),
+                avg(0),
+                avg(1),
+                avg(2),
+                worst
+            );
+        }
+        let worst = rows.iter().map(|r| r.max).fold(0.0, f64::max);
+        println!("all vertices: worst {worst:.2} mm");
+    }
+
+    /// The population `subjects.json` in `dir` describes (profile and seed), if any.
+    fn population(dir: &Path) -> String {
+        let text = std::fs::read_to_string(dir.join("subjects.json")).unwrap_or_default();
+        match serde_json::from_str::<serde_json::Value>(&text) {
+            Ok(v) => format!(
+                "profile {}, seed {}",
+                v["profile"].as_str().unwrap_or("tuning (before profiles)"),
+                v["seed"]
+            ),
+            Err(_) => "unknown (no subjects.json)".into(),
+        }
     }
 }
 

@@ -43,7 +43,9 @@ pub mod weights;
 pub use alignment_report::{AlignmentReport, FineReport, WarpReport};
 pub use anchors::landmark_anchors;
 pub use coarse_to_fine::{coarse_to_fine_align, CoarseToFineInput, CoarseToFineResult};
-pub use correspondence::{correspondence_report, CorrespondenceReport, ErrorSummaryMm};
+pub use correspondence::{
+    correspondence_report, CorrespondenceReport, ErrorSummaryMm, PartError, SegmentError,
+};
 pub use error::AlignError;
 pub use fine_align::{fine_align, FineAlignResult};
 pub use fine_input::FineAlignInput;
