@@ -4,7 +4,9 @@
 //! `cargo run --release --example align_accuracy -- DIR [--n N] [--kernel K] [--kernel-param P]
 //!  [--lambda L] [--a A] [--b B] [--max-iterations N] [--iterations-per-round N] [--anneal INIT:DECAY]
 //!  [--relative-tolerance T] [--displacement-tolerance M] [--landmark-weight W] [--scan-term W]
-//!  [--scan-term-samples N] [--scan-term-from STIFFNESS] [--scan-term-max-distance M] [--quiet]
+//!  [--scan-term-samples N] [--scan-term-from STIFFNESS] [--scan-term-max-distance M]
+//!  [--skip-boundary-matches 0|1] [--tangential-weight W] [--sole-weight W] [--follow 0|1]
+//!  [--preset paper|anchored (first: later options change it)] [--quiet]
 //!  [--export DIR] [--first K] [--resolution fine [--fine-max-iterations N]
 //!  [--fine-iterations-per-round N] [--fine-anneal INIT:DECAY] [--fine-displacement-tolerance M]
 //!  [--fine-memory M]]`
@@ -27,7 +29,7 @@
 mod native {
     use bodyspace::align::{
         align_scan, landmark_anchors, scan_to_template_distances, AlignInput, AlignParams,
-        DistanceStats, SurfaceIndex,
+        DistanceStats, Preset, SurfaceIndex,
     };
     use bodyspace::io::{read_landmarks, read_scan, write_ply};
     use bodyspace::mesh::Mesh;
@@ -112,6 +114,17 @@ mod native {
                 "--scan-term-samples" => options.params.fine.scan_term_samples = num()? as usize,
                 "--scan-term-from" => options.params.fine.scan_term_from_stiffness = num()?,
                 "--scan-term-max-distance" => options.params.fine.scan_term_max_distance = num()?,
+                "--skip-boundary-matches" => {
+                    options.params.fine.skip_boundary_matches = num()? != 0.0
+                }
+                "--tangential-weight" => options.params.fine.tangential_weight = num()?,
+                "--sole-weight" => options.params.fine.sole_weight = num()?,
+                "--follow" => options.params.fine.unseen_follow_neighbours = num()? != 0.0,
+                "--preset" => {
+                    options.params = Preset::from_name(&value)
+                        .ok_or(format!("--preset {value}: paper or anchored"))?
+                        .params()
+                }
                 "--anneal" => {
                     let (init, decay) = value.split_once(':').ok_or("--anneal INIT:DECAY")?;
                     options.params.fine.initial_stiffness =
@@ -307,7 +320,8 @@ mod native {
         let names: Vec<&str> = Segment::ALL.iter().map(|s| s.name()).collect();
         println!("population: {}", population(&options.dir));
         println!(
-        "rbf {:?}; fine a={} b={} max_it={} it/round={} anneal={}:{} rel_tol={} disp_tol={} landmark_weight={} scan_term={}x{}@{}<{}",
+        "preset {}; rbf {:?}; fine a={} b={} max_it={} it/round={} anneal={}:{} rel_tol={} disp_tol={} landmark_weight={} scan_term={}x{}@{}<{} skip_rims={} tangential={} soles={} follow={}",
+        options.params.preset.name(),
         options.params.rbf.kernel,
         options.params.fine.a,
         options.params.fine.b,
@@ -322,6 +336,10 @@ mod native {
         options.params.fine.scan_term_samples,
         options.params.fine.scan_term_from_stiffness,
         options.params.fine.scan_term_max_distance,
+        options.params.fine.skip_boundary_matches,
+        options.params.fine.tangential_weight,
+        options.params.fine.sole_weight,
+        options.params.fine.unseen_follow_neighbours,
     );
         println!(
         "subject   scanV  RMS_mm signed truthRMS rbf_mm fine_mm  p95_mm max_mm | mean correspondence error after fine per segment (mm): {} | iters rbf_ms idx_ms fine_ms stage_ms",
