@@ -328,22 +328,32 @@ fn files_round_trip_through_the_readers() {
     }
 }
 
-#[test]
-fn pose_angles_move_the_body_the_documented_way() {
-    let (d, t) = data();
+/// A subject (seed 9, index 0) in the model's rest pose, and its posed template vertices.
+fn unposed_subject() -> (SubjectParams, Vec<Point3<f64>>) {
+    let (d, _) = data();
     let mut params = fit_height(
         d,
         &sample_subject(PopulationProfile::Tuning, &mut subject_rng(9, 0)),
     );
     params.pose = PoseParams::default();
     let (_, neutral) = subject::shape_and_pose(d, &params).unwrap();
-    let vertex = |name: &str| {
-        t.landmark_vertices()
-            .iter()
-            .find(|(n, _)| n == name)
-            .unwrap()
-            .1 as usize
-    };
+    (params, neutral)
+}
+
+/// The template vertex of landmark `name`.
+fn vertex(name: &str) -> usize {
+    let (_, t) = data();
+    t.landmark_vertices()
+        .iter()
+        .find(|(n, _)| n == name)
+        .unwrap()
+        .1 as usize
+}
+
+#[test]
+fn pose_angles_move_the_body_the_documented_way() {
+    let (d, _) = data();
+    let (mut params, neutral) = unposed_subject();
     // Left arm abducted by 10°: the left wrist moves up and out (+x is the subject's left).
     params.pose.left_shoulder_abduction = 10.0;
     let (_, raised) = subject::shape_and_pose(d, &params).unwrap();
@@ -373,20 +383,8 @@ fn pose_angles_move_the_body_the_documented_way() {
 
 #[test]
 fn elbows_hips_and_trunk_turn_move_the_body_the_documented_way() {
-    let (d, t) = data();
-    let mut params = fit_height(
-        d,
-        &sample_subject(PopulationProfile::Tuning, &mut subject_rng(9, 0)),
-    );
-    params.pose = PoseParams::default();
-    let (_, neutral) = subject::shape_and_pose(d, &params).unwrap();
-    let vertex = |name: &str| {
-        t.landmark_vertices()
-            .iter()
-            .find(|(n, _)| n == name)
-            .unwrap()
-            .1 as usize
-    };
+    let (d, _) = data();
+    let (mut params, neutral) = unposed_subject();
     // Hands on hips: the left wrist comes in towards the midline (−x) and up; the elbow stays.
     params.pose.left_elbow_flexion = 90.0;
     let (_, bent) = subject::shape_and_pose(d, &params).unwrap();

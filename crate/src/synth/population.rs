@@ -273,25 +273,101 @@ pub fn sample_subject<R: Rng>(profile: PopulationProfile, rng: &mut R) -> Subjec
     profile.sample_subject(rng)
 }
 
+/// The macro distributions of a profile (the module documentation's tables).
+struct BodyDistributions {
+    /// Gender value U(lo, hi) for males and females.
+    gender_male: (f64, f64),
+    gender_female: (f64, f64),
+    age_years: (f64, f64),
+    /// Normal (mean, sd) clipped to [lo, hi].
+    muscle: [f64; 4],
+    weight: [f64; 4],
+    stature_male: [f64; 4],
+    stature_female: [f64; 4],
+    proportions: (f64, f64),
+    /// Dirichlet concentration of the ethnic mix (1: drawn with `Exp1`, as `tuning` always was).
+    ethnic_concentration: f64,
+}
+
+const TUNING_BODY: BodyDistributions = BodyDistributions {
+    gender_male: (0.9, 1.0),
+    gender_female: (0.0, 0.1),
+    age_years: (18.0, 65.0),
+    muscle: [0.5, 0.12, 0.2, 0.85],
+    weight: [0.5, 0.15, 0.15, 0.9],
+    stature_male: [1.760, 0.070, 1.50, 1.95],
+    stature_female: [1.625, 0.065, 1.50, 1.95],
+    proportions: (0.3, 0.9),
+    ethnic_concentration: 1.0,
+};
+
+const HELD_OUT_BODY: BodyDistributions = BodyDistributions {
+    gender_male: (0.7, 0.95),
+    gender_female: (0.05, 0.3),
+    age_years: (20.0, 80.0),
+    muscle: [0.55, 0.18, 0.1, 0.95],
+    weight: [0.55, 0.2, 0.1, 1.0],
+    stature_male: [1.780, 0.080, 1.45, 2.00],
+    stature_female: [1.600, 0.075, 1.45, 2.00],
+    proportions: (0.1, 1.0),
+    ethnic_concentration: 0.5,
+};
+
+/// Draws sex, macro values and target stature, in this order (the order fixes every seed's
+/// subjects): sex, gender, age, muscle, weight, stature, proportions, ethnic mix.
+fn draw_body<R: Rng>(rng: &mut R, d: &BodyDistributions) -> (bool, MacroParams, f64) {
+    let normal = |rng: &mut R, [mean, sd, lo, hi]: [f64; 4]| clipped(rng, mean, sd, lo, hi);
+    let male = rng.gen_bool(0.5);
+    let (lo, hi) = if male { d.gender_male } else { d.gender_female };
+    let gender = rng.gen_range(lo..=hi);
+    let age_years = rng.gen_range(d.age_years.0..=d.age_years.1);
+    let muscle = normal(rng, d.muscle);
+    let weight = normal(rng, d.weight);
+    let stature_target = normal(
+        rng,
+        if male {
+            d.stature_male
+        } else {
+            d.stature_female
+        },
+    );
+    let proportions = rng.gen_range(d.proportions.0..=d.proportions.1);
+    let e: [f64; 3] = if d.ethnic_concentration == 1.0 {
+        [Exp1.sample(rng), Exp1.sample(rng), Exp1.sample(rng)]
+    } else {
+        let gamma = Gamma::new(d.ethnic_concentration, 1.0).expect("a positive shape");
+        [gamma.sample(rng), gamma.sample(rng), gamma.sample(rng)]
+    };
+    let esum: f64 = e.iter().sum::<f64>().max(1e-12);
+    let shape = MacroParams {
+        gender,
+        age_years,
+        muscle,
+        weight,
+        height: 0.5,
+        proportions,
+        ethnic: [e[0] / esum, e[1] / esum, e[2] / esum],
+    };
+    (male, shape, stature_target)
+}
+
+fn subject_params(
+    (male, shape, stature_target): (bool, MacroParams, f64),
+    local: Vec<f64>,
+    pose: PoseParams,
+) -> SubjectParams {
+    SubjectParams {
+        sex: if male { "male" } else { "female" },
+        shape,
+        local,
+        pose,
+        stature_target,
+    }
+}
+
 /// Draws one `tuning` subject. Its draw order is fixed: subjects of a seed stay bit-identical.
 fn sample_tuning<R: Rng>(rng: &mut R) -> SubjectParams {
-    let male = rng.gen_bool(0.5);
-    let gender = if male {
-        rng.gen_range(0.9..=1.0)
-    } else {
-        rng.gen_range(0.0..=0.1)
-    };
-    let age_years = rng.gen_range(18.0..=65.0);
-    let muscle = clipped(rng, 0.5, 0.12, 0.2, 0.85);
-    let weight = clipped(rng, 0.5, 0.15, 0.15, 0.9);
-    let stature_target = if male {
-        clipped(rng, 1.760, 0.070, 1.50, 1.95)
-    } else {
-        clipped(rng, 1.625, 0.065, 1.50, 1.95)
-    };
-    let proportions = rng.gen_range(0.3..=0.9);
-    let e: [f64; 3] = [Exp1.sample(rng), Exp1.sample(rng), Exp1.sample(rng)];
-    let esum: f64 = e.iter().sum::<f64>().max(1e-12);
+    let body = draw_body(rng, &TUNING_BODY);
     let local = (0..LOCAL_TARGETS.len())
         .map(|_| clipped(rng, 0.0, 0.2, -0.5, 0.5))
         .collect();
@@ -305,43 +381,12 @@ fn sample_tuning<R: Rng>(rng: &mut R) -> SubjectParams {
         head_turn: clipped(rng, 0.0, 3.0, -6.0, 6.0),
         ..PoseParams::default()
     };
-    SubjectParams {
-        sex: if male { "male" } else { "female" },
-        shape: MacroParams {
-            gender,
-            age_years,
-            muscle,
-            weight,
-            height: 0.5,
-            proportions,
-            ethnic: [e[0] / esum, e[1] / esum, e[2] / esum],
-        },
-        local,
-        pose,
-        stature_target,
-    }
+    subject_params(body, local, pose)
 }
 
 /// Draws one `held-out` subject (see the module documentation).
 pub fn sample_held_out<R: Rng>(rng: &mut R) -> SubjectParams {
-    let male = rng.gen_bool(0.5);
-    let gender = if male {
-        rng.gen_range(0.7..=0.95)
-    } else {
-        rng.gen_range(0.05..=0.3)
-    };
-    let age_years = rng.gen_range(20.0..=80.0);
-    let muscle = clipped(rng, 0.55, 0.18, 0.1, 0.95);
-    let weight = clipped(rng, 0.55, 0.2, 0.1, 1.0);
-    let stature_target = if male {
-        clipped(rng, 1.780, 0.080, 1.45, 2.00)
-    } else {
-        clipped(rng, 1.600, 0.075, 1.45, 2.00)
-    };
-    let proportions = rng.gen_range(0.1..=1.0);
-    let gamma = Gamma::new(0.5, 1.0).expect("shape ½ is valid");
-    let e: [f64; 3] = [gamma.sample(rng), gamma.sample(rng), gamma.sample(rng)];
-    let esum: f64 = e.iter().sum::<f64>().max(1e-12);
+    let body = draw_body(rng, &HELD_OUT_BODY);
     let girth = clipped(rng, 0.0, 0.2, -1.0, 1.0);
     let local = LOCAL_TARGETS
         .iter()
@@ -354,22 +399,7 @@ pub fn sample_held_out<R: Rng>(rng: &mut R) -> SubjectParams {
             (clipped(rng, 0.0, 0.25, -1.0, 1.0) + shared).clamp(-0.7, 0.7)
         })
         .collect();
-    let pose = held_out_pose(rng);
-    SubjectParams {
-        sex: if male { "male" } else { "female" },
-        shape: MacroParams {
-            gender,
-            age_years,
-            muscle,
-            weight,
-            height: 0.5,
-            proportions,
-            ethnic: [e[0] / esum, e[1] / esum, e[2] / esum],
-        },
-        local,
-        pose,
-        stature_target,
-    }
+    subject_params(body, local, held_out_pose(rng))
 }
 
 /// The `held-out` pose: arms down, hands on hips or raised; a stance; trunk and head turned.
