@@ -4,7 +4,9 @@
 //! `cargo run --release --example align_accuracy -- DIR [--n N] [--kernel K] [--kernel-param P]
 //!  [--lambda L] [--a A] [--b B] [--max-iterations N] [--iterations-per-round N] [--anneal INIT:DECAY]
 //!  [--relative-tolerance T] [--displacement-tolerance M] [--landmark-weight W] [--scan-term W]
-//!  [--scan-term-samples N] [--scan-term-from STIFFNESS] [--scan-term-max-distance M] [--quiet]
+//!  [--scan-term-samples N] [--scan-term-from STIFFNESS] [--scan-term-max-distance M]
+//!  [--skip-boundary-matches 0|1] [--tangential-weight W] [--sole-weight W] [--follow 0|1]
+//!  [--preset paper|anchored (first: later options change it)] [--quiet]
 //!  [--export DIR] [--first K] [--resolution fine [--fine-max-iterations N]
 //!  [--fine-iterations-per-round N] [--fine-anneal INIT:DECAY] [--fine-displacement-tolerance M]
 //!  [--fine-memory M]]`
@@ -13,7 +15,9 @@
 //! vertices on the subject, scan frame and units). Prints per subject and the mean: scan→template
 //! RMS, mean correspondence error (fitted vertex vs truth) after the RBF warp and after fine
 //! alignment, the same per segment (each vertex counted in its dominant segment), iterations and
-//! times. Unset options keep the library defaults. `--export DIR` also writes each subject's
+//! times; then per body part (head, torso, arms, hands, legs, feet; `template::body_part`) the
+//! mean over subjects of each subject's mean, 95th percentile and largest error, and the largest
+//! of all. The first line names the population (`subjects.json`'s profile and seed, if present). Unset options keep the library defaults. `--export DIR` also writes each subject's
 //! RBF-warped template (`warped_XXX.ply`, metres) and landmark anchors (`anchors_XXX.json`) so
 //! the peer (`bench/peer/nricp.py`) starts from the same place. `--resolution fine` aligns the
 //! `fine` template coarse to fine (`coarse_to_fine_align`; the options set its base stage, the
@@ -25,12 +29,12 @@
 mod native {
     use bodyspace::align::{
         align_scan, landmark_anchors, scan_to_template_distances, AlignInput, AlignParams,
-        DistanceStats, SurfaceIndex,
+        DistanceStats, Preset, SurfaceIndex,
     };
     use bodyspace::io::{read_landmarks, read_scan, write_ply};
     use bodyspace::mesh::Mesh;
     use bodyspace::rbf::Kernel;
-    use bodyspace::template::{Resolution, Segment, Template};
+    use bodyspace::template::{BodyPart, Resolution, Segment, Template};
     use nalgebra::Point3;
     use std::path::{Path, PathBuf};
 
@@ -110,6 +114,17 @@ mod native {
                 "--scan-term-samples" => options.params.fine.scan_term_samples = num()? as usize,
                 "--scan-term-from" => options.params.fine.scan_term_from_stiffness = num()?,
                 "--scan-term-max-distance" => options.params.fine.scan_term_max_distance = num()?,
+                "--skip-boundary-matches" => {
+                    options.params.fine.skip_boundary_matches = num()? != 0.0
+                }
+                "--tangential-weight" => options.params.fine.tangential_weight = num()?,
+                "--sole-weight" => options.params.fine.sole_weight = num()?,
+                "--follow" => options.params.fine.unseen_follow_neighbours = num()? != 0.0,
+                "--preset" => {
+                    options.params = Preset::from_name(&value)
+                        .ok_or(format!("--preset {value}: paper or anchored"))?
+                        .params()
+                }
                 "--anneal" => {
                     let (init, decay) = value.split_once(':').ok_or("--anneal INIT:DECAY")?;
                     options.params.fine.initial_stiffness =
@@ -158,6 +173,8 @@ mod native {
         p95: f64,
         max: f64,
         segments: [f64; 6],
+        /// Per body part ([`BodyPart::ALL`] order): mean, 95th percentile, largest error.
+        parts: [[f64; 3]; 6],
         iterations: usize,
         rough_ms: f64,
         index_ms: f64,
@@ -214,6 +231,10 @@ mod native {
         for (s, e) in segments.iter_mut().zip(&correspondence.segments) {
             *s = e.error.mean_mm;
         }
+        let mut parts = [[0.0; 3]; 6];
+        for (p, e) in parts.iter_mut().zip(&correspondence.parts) {
+            *p = [e.error.mean_mm, e.error.p95_mm, e.error.max_mm];
+        }
         let fine_stage_ms = fine
             .stages
             .as_ref()
@@ -228,6 +249,7 @@ mod native {
             p95: correspondence.fitted.p95_mm,
             max: correspondence.fitted.max_mm,
             segments,
+            parts,
             iterations: fine.iterations,
             rough_ms: report.rough_ms,
             index_ms: report.index_ms,
@@ -296,8 +318,10 @@ mod native {
             }
         };
         let names: Vec<&str> = Segment::ALL.iter().map(|s| s.name()).collect();
+        println!("population: {}", population(&options.dir));
         println!(
-        "rbf {:?}; fine a={} b={} max_it={} it/round={} anneal={}:{} rel_tol={} disp_tol={} landmark_weight={} scan_term={}x{}@{}<{}",
+        "preset {}; rbf {:?}; fine a={} b={} max_it={} it/round={} anneal={}:{} rel_tol={} disp_tol={} landmark_weight={} scan_term={}x{}@{}<{} skip_rims={} tangential={} soles={} follow={}",
+        options.params.preset.name(),
         options.params.rbf.kernel,
         options.params.fine.a,
         options.params.fine.b,
@@ -312,6 +336,10 @@ mod native {
         options.params.fine.scan_term_samples,
         options.params.fine.scan_term_from_stiffness,
         options.params.fine.scan_term_max_distance,
+        options.params.fine.skip_boundary_matches,
+        options.params.fine.tangential_weight,
+        options.params.fine.sole_weight,
+        options.params.fine.unseen_follow_neighbours,
     );
         println!(
         "subject   scanV  RMS_mm signed truthRMS rbf_mm fine_mm  p95_mm max_mm | mean correspondence error after fine per segment (mm): {} | iters rbf_ms idx_ms fine_ms stage_ms",
@@ -367,6 +395,42 @@ mod native {
         }
         mean.iterations /= rows.len().max(1);
         print_row("mean", &mean);
+        print_parts(&rows);
+    }
+
+    /// Per body part: mean over subjects of the mean, 95th percentile and largest error, and the
+    /// largest error of any subject.
+    fn print_parts(rows: &[Row]) {
+        let k = rows.len().max(1) as f64;
+        println!("part    mean_mm  p95_mm  max_mm  worst_mm");
+        for part in BodyPart::ALL {
+            let i = part.index();
+            let avg = |j: usize| rows.iter().map(|r| r.parts[i][j]).sum::<f64>() / k;
+            let worst = rows.iter().map(|r| r.parts[i][2]).fold(0.0, f64::max);
+            println!(
+                "{:<6} {:>8.2} {:>7.2} {:>7.2} {:>9.2}",
+                part.name(),
+                avg(0),
+                avg(1),
+                avg(2),
+                worst
+            );
+        }
+        let worst = rows.iter().map(|r| r.max).fold(0.0, f64::max);
+        println!("all vertices: worst {worst:.2} mm");
+    }
+
+    /// The population `subjects.json` in `dir` describes (profile and seed), if any.
+    fn population(dir: &Path) -> String {
+        let text = std::fs::read_to_string(dir.join("subjects.json")).unwrap_or_default();
+        match serde_json::from_str::<serde_json::Value>(&text) {
+            Ok(v) => format!(
+                "profile {}, seed {}",
+                v["profile"].as_str().unwrap_or("tuning (before profiles)"),
+                v["seed"]
+            ),
+            Err(_) => "unknown (no subjects.json)".into(),
+        }
     }
 }
 

@@ -10,7 +10,9 @@ use std::cell::Cell;
 use std::ops::ControlFlow;
 
 use align_support::{agreement_case, map, uv_sphere};
-use bodyspace::align::energy::{identity_transforms, AlignEnergy, BlockPreconditioner};
+use bodyspace::align::energy::{
+    identity_transforms, AlignEnergy, BlockPreconditioner, TangentialTerm,
+};
 use bodyspace::align::lbfgs::{Lbfgs, Objective, Step};
 use bodyspace::align::scan_term::ScanSample;
 use bodyspace::align::{
@@ -120,6 +122,7 @@ fn lbfgs_iterations_on_the_energy_allocate_nothing() {
         data_coefficients: &coefficients,
         smoothness_coefficient: 0.04,
         scan_samples: &samples,
+        tangential: TangentialTerm::default(),
     };
     let mut preconditioner = BlockPreconditioner::default();
     preconditioner.update(&energy, &degrees);

@@ -96,8 +96,32 @@ fn full_align_fits_the_scan_and_keeps_correspondences() {
     let s2t = fine["scan_to_template"]["rms_mm"].as_f64().unwrap();
     assert!(s2t < 1.5, "scan-to-template RMS {s2t} mm");
     assert_correspondence_kept(&r);
+    assert_eq!(r["params"]["preset"], "paper");
+    let parts: Vec<&str> = r["correspondence"]["parts"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|p| p["part"].as_str().unwrap())
+        .collect();
+    assert_eq!(parts, ["head", "torso", "arms", "hands", "legs", "feet"]);
     let fitted = std::fs::read(dir.join("fit.ply")).unwrap();
     assert!(fitted.starts_with(b"ply"));
+    // The anchored preset, with b set on top of it.
+    let r = align(
+        &dir,
+        &[
+            "--max-iterations",
+            "40",
+            "--preset",
+            "anchored",
+            "--b",
+            "0.2",
+        ],
+    );
+    assert_eq!(r["params"]["preset"], "anchored");
+    assert_eq!(r["params"]["fine"]["b"], 0.2);
+    assert_eq!(r["params"]["fine"]["tangential_weight"], 0.1);
+    assert_correspondence_kept(&r);
     let _ = std::fs::remove_dir_all(&dir);
 }
 

@@ -117,7 +117,7 @@ fn fine_fit_keeps_the_base_fit_and_comes_back_in_fine_template_order() {
         max_iterations: 4,
         ..FineStageParams::default()
     };
-    let weights = data_weights(&fine);
+    let weights = data_weights(&fine, FineAlignParams::default().sole_weight);
     let mut recorder = Recorder {
         fine_vertices: fine.mesh().positions.len(),
         seen: Vec::new(),
@@ -192,7 +192,7 @@ fn cancelled_in_the_base_stage_returns_the_last_state_at_fine() {
         starting,
     } = case();
     let refinement = fine.refinement().unwrap();
-    let weights = data_weights(&fine);
+    let weights = data_weights(&fine, FineAlignParams::default().sole_weight);
     let result = coarse_to_fine_align(
         &input(&starting, &base, &scan, refinement, &weights),
         &FineAlignParams::default(),
@@ -226,7 +226,7 @@ fn an_operator_of_another_template_is_an_error() {
     } = case();
     let refinement = fine.refinement().unwrap();
     let few = &base.mesh().positions[..100];
-    let weights = data_weights(&fine);
+    let weights = data_weights(&fine, FineAlignParams::default().sole_weight);
     let err = coarse_to_fine_align(
         &input(few, &base, &scan, refinement, &weights),
         &FineAlignParams::default(),

@@ -3,10 +3,10 @@
 mod align_support;
 
 use align_support::{uv_sphere, Rng};
-use bodyspace::align::energy::{AlignEnergy, DOF};
+use bodyspace::align::energy::{AlignEnergy, TangentialTerm, DOF};
 use bodyspace::align::scan_term::ScanSample;
 use bodyspace::mesh::topology::unique_edges;
-use nalgebra::Point3;
+use nalgebra::{Point3, Vector3};
 
 #[test]
 fn gradient_and_curvature_match_finite_differences() {
@@ -54,6 +54,13 @@ fn gradient_and_curvature_match_finite_differences() {
         })
         .collect();
     assert!(samples.len() > 5);
+    // The tangential term around random start points with random unit normals.
+    let rest: Vec<Point3<f64>> = (0..n)
+        .map(|_| Point3::new(rng.symmetric(), rng.symmetric(), rng.symmetric()) * 0.3)
+        .collect();
+    let normals: Vec<Vector3<f64>> = (0..n)
+        .map(|_| Vector3::new(rng.symmetric(), rng.symmetric(), 0.5 + rng.next_f64()).normalize())
+        .collect();
     let energy = AlignEnergy {
         vertices: &vertices,
         edges: &edges,
@@ -61,6 +68,11 @@ fn gradient_and_curvature_match_finite_differences() {
         data_coefficients: &coefficients,
         smoothness_coefficient: 0.37,
         scan_samples: &samples,
+        tangential: TangentialTerm {
+            rest: &rest,
+            normals: &normals,
+            coefficient: 0.6,
+        },
     };
     let x: Vec<f64> = (0..DOF * n).map(|_| rng.symmetric()).collect();
     let mut grad = vec![0.0; DOF * n];
@@ -129,6 +141,7 @@ fn energy_of_one_triangle_equals_the_hand_computed_value() {
         data_coefficients: &alpha,
         smoothness_coefficient: 0.25,
         scan_samples: &[],
+        tangential: TangentialTerm::default(),
     };
     let mut grad = vec![0.0; 3 * DOF];
     let terms = energy.evaluate(&x, &mut grad);

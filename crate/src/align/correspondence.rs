@@ -5,7 +5,7 @@
 use nalgebra::Point3;
 use serde::Serialize;
 
-use crate::template::{Segment, Template};
+use crate::template::{body_parts, BodyPart, Segment, Template};
 
 /// Summary of per-vertex correspondence errors, in millimetres.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Serialize)]
@@ -48,6 +48,15 @@ pub struct SegmentError {
     pub error: ErrorSummaryMm,
 }
 
+/// One body part's share of the correspondence error (see [`crate::template::body_part`]).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct PartError {
+    /// Part name ([`BodyPart::name`]).
+    pub part: &'static str,
+    #[serde(flatten)]
+    pub error: ErrorSummaryMm,
+}
+
 /// Correspondence error after the RBF warp and after fine alignment.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct CorrespondenceReport {
@@ -57,6 +66,8 @@ pub struct CorrespondenceReport {
     pub fitted: ErrorSummaryMm,
     /// The fitted template per segment, each vertex counted in its dominant segment.
     pub segments: Vec<SegmentError>,
+    /// The fitted template per body part (head, torso, arms, hands, legs, feet).
+    pub parts: Vec<PartError>,
 }
 
 /// Per-vertex distances between `fitted` and `truth` over the vertices both have (the base
@@ -86,6 +97,10 @@ pub fn correspondence_report(
             .unwrap_or(0);
         by_segment[dominant].push(*e);
     }
+    let mut by_part: Vec<Vec<f64>> = vec![Vec::new(); BodyPart::ALL.len()];
+    for (e, part) in errors.iter().zip(body_parts(template)) {
+        by_part[part.index()].push(*e);
+    }
     CorrespondenceReport {
         rough: ErrorSummaryMm::of(&correspondence_errors(rough, truth)),
         fitted: ErrorSummaryMm::of(&errors),
@@ -94,6 +109,14 @@ pub fn correspondence_report(
             .zip(&by_segment)
             .map(|(s, e)| SegmentError {
                 segment: s.name(),
+                error: ErrorSummaryMm::of(e),
+            })
+            .collect(),
+        parts: BodyPart::ALL
+            .iter()
+            .zip(&by_part)
+            .map(|(p, e)| PartError {
+                part: p.name(),
                 error: ErrorSummaryMm::of(e),
             })
             .collect(),

@@ -10,11 +10,41 @@
 //! annealing factor). Its gradient is ∂E/∂T_i = 2 α_i (T_i ṽ_i − c_i) ṽ_iᵀ + 2 β Σ_j (T_i − T_j).
 //! E is quadratic in x, so the curvature dᵀHd along any direction d is exact and cheap:
 //! dᵀHd = 2 Σ α_i ‖D_i ṽ_i‖² + 2 β Σ_edges ‖D_i − D_j‖²_F — the line search uses it.
+//!
+//! Optionally (not in the paper) a tangential term μ Σ_i ‖P_i (T_i ṽ_i − r_i)‖², P_i = I − n_i n_iᵀ,
+//! holds each vertex near its start r_i (the RBF-warped template) *along* that surface (normal
+//! n_i at the start) while leaving it free across it: the warp places landmarks' neighbourhoods
+//! well, and smooth parts (thighs, torso) otherwise slide ([`TangentialTerm`]).
 //! The three rows of every T_i never interact (the Hessian is the same 4V×4V matrix per row), which
 //! is what makes the per-vertex 4×4 block preconditioner in [`BlockPreconditioner`] exact per block.
 
 use super::scan_term::ScanSample;
-use nalgebra::Point3;
+use nalgebra::{Point3, Vector3};
+
+/// The tangential term μ Σ_i ‖P_i (T_i ṽ_i − r_i)‖² (see the module documentation); empty slices
+/// or μ = 0 switch it off (the paper's energy).
+#[derive(Debug, Clone, Copy, Default)]
+pub struct TangentialTerm<'a> {
+    /// r_i: start positions (centred frame), `#V` or empty.
+    pub rest: &'a [Point3<f64>],
+    /// n_i: unit normals at the start, `#V` or empty.
+    pub normals: &'a [Vector3<f64>],
+    /// μ.
+    pub coefficient: f64,
+}
+
+impl TangentialTerm<'_> {
+    fn is_on(&self) -> bool {
+        self.coefficient > 0.0 && !self.rest.is_empty()
+    }
+
+    /// P_i u: `u` without its component along n_i.
+    #[inline]
+    fn tangential(&self, i: usize, u: Vector3<f64>) -> Vector3<f64> {
+        let n = &self.normals[i];
+        u - n * n.dot(&u)
+    }
+}
 
 /// Number of unknowns per template vertex.
 pub const DOF: usize = 12;
@@ -31,6 +61,8 @@ pub struct EnergyTerms {
     /// Σ γ_s ‖x_s − p_s‖², the scan-to-template term as weighted inside the objective
     /// (0 when it is switched off; see `scan_term.rs`).
     pub scan_weighted: f64,
+    /// μ Σ ‖P_i (T_i ṽ_i − r_i)‖², the tangential term as weighted inside the objective.
+    pub tangential_weighted: f64,
     /// Σ d_i² over vertices with α_i > 0 (unweighted squared distances to their matches).
     pub matched_sq_sum: f64,
     /// Number of vertices with α_i > 0.
@@ -53,6 +85,8 @@ pub struct AlignEnergy<'a> {
     /// Scan points pulling the template surface (the optional scan-to-template term); empty
     /// for the paper's energy.
     pub scan_samples: &'a [ScanSample],
+    /// The tangential term (off for the paper's energy).
+    pub tangential: TangentialTerm<'a>,
 }
 
 /// Position T_i ṽ_i of vertex `i` under transforms `x`.
@@ -119,6 +153,21 @@ impl AlignEnergy<'_> {
                 }
             }
         }
+        let tangential = &self.tangential;
+        if tangential.is_on() {
+            let mu = tangential.coefficient;
+            for (i, v) in self.vertices.iter().enumerate() {
+                let r = tangential.tangential(i, transformed(x, v, i) - tangential.rest[i]);
+                terms.tangential_weighted += mu * r.norm_squared();
+                let g = &mut grad[DOF * i..DOF * i + DOF];
+                for row in 0..3 {
+                    let s = 2.0 * mu * r[row];
+                    for c in 0..4 {
+                        g[4 * row + c] += s * v[c];
+                    }
+                }
+            }
+        }
         let beta = self.smoothness_coefficient;
         for &[i, j] in self.edges {
             let (i, j) = (DOF * i as usize, DOF * j as usize);
@@ -131,7 +180,10 @@ impl AlignEnergy<'_> {
             }
             terms.smoothness += sq;
         }
-        terms.total = terms.data_weighted + terms.scan_weighted + beta * terms.smoothness;
+        terms.total = terms.data_weighted
+            + terms.scan_weighted
+            + terms.tangential_weighted
+            + beta * terms.smoothness;
         terms
     }
 
@@ -160,6 +212,13 @@ impl AlignEnergy<'_> {
         for sample in self.scan_samples {
             data += sample.coefficient * self.sample_point(d, sample).coords.norm_squared();
         }
+        let tangential = &self.tangential;
+        if tangential.is_on() {
+            for (i, v) in self.vertices.iter().enumerate() {
+                let r = tangential.tangential(i, transformed(d, v, i).coords);
+                data += tangential.coefficient * r.norm_squared();
+            }
+        }
         let mut smooth = 0.0;
         for &[i, j] in self.edges {
             let (i, j) = (DOF * i as usize, DOF * j as usize);
@@ -181,7 +240,8 @@ fn transformed_direction(d: &[f64], v: &[f64; 4], i: usize) -> f64 {
 /// Inverse of the per-vertex diagonal blocks of the Hessian, used as L-BFGS's initial matrix H₀.
 ///
 /// Block of vertex i (the same for each of its three rows): B_i = 2 α'_i ṽ_i ṽ_iᵀ + 2 β deg_i I₄,
-/// with α'_i = α_i + Σ_s γ_s λ_{s,i}² (every scan-to-template sample adds a multiple of ṽ_i ṽ_iᵀ).
+/// with α'_i = α_i + Σ_s γ_s λ_{s,i}² (every scan-to-template sample adds a multiple of ṽ_i ṽ_iᵀ)
+/// plus μ (the tangential term, bounded by its isotropic version).
 /// By Sherman–Morrison, B_i⁻¹ q = (q − α_i ṽ_i (ṽ_i·q) / (β deg_i + α_i ‖ṽ_i‖²)) / (2 β deg_i).
 #[derive(Debug, Clone, Default)]
 pub struct BlockPreconditioner {
@@ -203,6 +263,13 @@ impl BlockPreconditioner {
         for sample in energy.scan_samples {
             for (&m, &lambda) in sample.corners.iter().zip(&sample.barycentric) {
                 self.alphas[m as usize] += sample.coefficient * lambda * lambda;
+            }
+        }
+        // The tangential term's block is μ P_i ⊗ ṽ_i ṽ_iᵀ, which couples the rows; μ ṽ_i ṽ_iᵀ
+        // per row bounds it from above and keeps the block form.
+        if energy.tangential.is_on() {
+            for a in &mut self.alphas {
+                *a += energy.tangential.coefficient;
             }
         }
         let beta = energy.smoothness_coefficient;

@@ -11,10 +11,11 @@
 //! `max_iterations` iterations in total, or when the observer returns `Break`.
 
 use super::energy::{
-    identity_transforms, transformed, AlignEnergy, BlockPreconditioner, EnergyTerms,
+    identity_transforms, transformed, AlignEnergy, BlockPreconditioner, EnergyTerms, TangentialTerm,
 };
 use super::error::AlignError;
 use super::fine_input::FineAlignInput;
+use super::follow::follow_neighbours;
 use super::lbfgs::{Lbfgs, Objective, Step};
 use super::observer::{AlignObserver, Progress, Stage};
 use super::params::FineAlignParams;
@@ -159,6 +160,23 @@ pub fn fine_align(
     let mut last_stiffness = f64::NAN;
     let mut matched_vertices = 0usize;
     let mut scan_term = ScanTerm::new(scan, params, data_scale, weights);
+    // The tangential term holds vertices along the start surface (the RBF-warped template).
+    let (rest, rest_normals) = if params.tangential_weight > 0.0 {
+        let mut normals = vec![Vector3::zeros(); n];
+        vertex_normals_into(template_positions, triangles, &mut normals);
+        let rest: Vec<Point3<f64>> = template_positions
+            .iter()
+            .map(|p| Point3::from(p.coords - centroid))
+            .collect();
+        (rest, normals)
+    } else {
+        (Vec::new(), Vec::new())
+    };
+    let tangential = TangentialTerm {
+        rest: &rest,
+        normals: &rest_normals,
+        coefficient: data_scale * params.tangential_weight,
+    };
 
     'rounds: while iteration < params.max_iterations {
         let round = rounds;
@@ -217,6 +235,7 @@ pub fn fine_align(
             data_coefficients: &coefficients,
             smoothness_coefficient: params.b * stiffness,
             scan_samples,
+            tangential,
         };
         preconditioner.update(&energy, &degrees);
         let mut objective = RoundObjective {
@@ -264,8 +283,13 @@ pub fn fine_align(
         }
     }
 
+    let mut x = optimizer.x().to_vec();
+    if params.unseen_follow_neighbours && !cancelled {
+        let free: Vec<bool> = weights.iter().map(|w| *w <= 0.0).collect();
+        follow_neighbours(&mut x, &free, &edges, 1e-9, 5_000);
+    }
     for (i, v) in vertices.iter().enumerate() {
-        positions[i] = transformed(optimizer.x(), v, i) + centroid;
+        positions[i] = transformed(&x, v, i) + centroid;
     }
     let elapsed_ms = now_ms() - start;
     let per_vertex_distance = template_to_scan_distances(&positions, triangles, scan);

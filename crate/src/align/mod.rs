@@ -4,6 +4,7 @@
 //!   fine or coarse-to-fine alignment → [`AlignmentReport`]; the one place the chain is assembled.
 //! * [`observer`] — [`Progress`], [`Stage`] and [`AlignObserver`]: progress, rounds, cancel.
 //! * [`fine_align()`] (`fine_align.rs`) — the outer loop: find correspondences, minimise, repeat.
+//! * [`follow`] — regions without data take their neighbours' transforms (harmonic extension).
 //! * [`coarse_to_fine_align`] (`coarse_to_fine.rs`) — the `fine` template: base fit, carried to
 //!   fine by the subdivision operator, then a short fine-level alignment.
 //! * [`energy`] — E_d, E_s (paper eq. 6–8) and their analytic gradient.
@@ -29,6 +30,7 @@ pub mod energy;
 pub mod error;
 pub mod fine_align;
 pub mod fine_input;
+pub mod follow;
 pub mod lbfgs;
 pub mod observer;
 pub mod params;
@@ -43,12 +45,14 @@ pub mod weights;
 pub use alignment_report::{AlignmentReport, FineReport, WarpReport};
 pub use anchors::landmark_anchors;
 pub use coarse_to_fine::{coarse_to_fine_align, CoarseToFineInput, CoarseToFineResult};
-pub use correspondence::{correspondence_report, CorrespondenceReport, ErrorSummaryMm};
+pub use correspondence::{
+    correspondence_report, CorrespondenceReport, ErrorSummaryMm, PartError, SegmentError,
+};
 pub use error::AlignError;
 pub use fine_align::{fine_align, FineAlignResult};
 pub use fine_input::FineAlignInput;
 pub use observer::{AlignObserver, Progress, Stage};
-pub use params::{AlignParams, CorrespondenceMode, FineAlignParams, FineStageParams};
+pub use params::{AlignParams, CorrespondenceMode, FineAlignParams, FineStageParams, Preset};
 pub use pipeline::{align_scan, AlignInput, Alignment, PipelineError};
 pub use quality::{assess, folded_triangles, QualityFlag, QualityReport, QualityThresholds};
 pub use report::{

@@ -161,7 +161,7 @@ pub fn align_scan(
     let index_start = now_ms();
     let index = SurfaceIndex::new(&scan).map_err(PipelineError::Scan)?;
     report.index_ms = now_ms() - index_start;
-    let weights = data_weights(template);
+    let weights = data_weights(template, params.fine.sole_weight);
     let base_input = FineAlignInput {
         positions: &warp.positions,
         triangles: &warped_template.mesh().triangles,

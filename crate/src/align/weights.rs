@@ -6,8 +6,9 @@ use crate::template::Template;
 pub const HAND_EAR_WEIGHT: f64 = 0.1;
 
 /// `#V` data weights: 0 for regions no scanner sees (the inner mouth, nostrils), so smoothness
-/// alone moves them; [`HAND_EAR_WEIGHT`] for hands and ears; 1 elsewhere.
-pub fn data_weights(template: &Template) -> Vec<f64> {
+/// alone moves them; [`HAND_EAR_WEIGHT`] for hands and ears; `sole_weight` for the soles (a
+/// standing subject's are never scanned); 1 elsewhere.
+pub fn data_weights(template: &Template, sole_weight: f64) -> Vec<f64> {
     (0..template.mesh().positions.len() as u32)
         .map(|v| {
             let flags = template.flags(v);
@@ -15,6 +16,8 @@ pub fn data_weights(template: &Template) -> Vec<f64> {
                 0.0
             } else if flags.hand() || flags.ear() {
                 HAND_EAR_WEIGHT
+            } else if flags.sole() {
+                sole_weight
             } else {
                 1.0
             }

@@ -9,7 +9,7 @@ use std::str::FromStr;
 
 use super::read_file;
 use super::truth::read_truth;
-use crate::align::{align_scan, AlignInput, AlignParams, FineAlignParams, FineStageParams};
+use crate::align::{align_scan, AlignInput, AlignParams, FineStageParams, Preset};
 use crate::io::{read_landmarks, read_scan, write_ply};
 use crate::mesh::Mesh;
 use crate::rbf::{Kernel, RbfParams};
@@ -51,26 +51,33 @@ pub struct AlignArgs {
     /// fine (docs/fine-alignment.md).
     #[arg(long, default_value = "base")]
     pub resolution: String,
-    /// Weight a of the data error in fine alignment (paper Fig. 9).
-    #[arg(long, default_value_t = FineAlignParams::default().a)]
-    pub a: f64,
-    /// Weight b of the smoothness error in fine alignment (paper Fig. 9).
-    #[arg(long, default_value_t = FineAlignParams::default().b)]
-    pub b: f64,
-    /// Limit on fine-alignment L-BFGS iterations (at `fine`: of the base stage).
-    #[arg(long, default_value_t = FineAlignParams::default().max_iterations)]
-    pub max_iterations: usize,
+    /// Parameter preset: paper (the paper's method, today's default) or anchored (issue 12's
+    /// additions; docs/fine-alignment.md). The options below change the preset's values.
+    #[arg(long, default_value = "paper", value_parser = ["paper", "anchored"])]
+    pub preset: String,
+    /// Weight a of the data error in fine alignment (paper Fig. 9; default: the preset's, 0.96).
+    #[arg(long)]
+    pub a: Option<f64>,
+    /// Weight b of the smoothness error in fine alignment (paper Fig. 9; default: the preset's,
+    /// paper 0.04).
+    #[arg(long)]
+    pub b: Option<f64>,
+    /// Limit on fine-alignment L-BFGS iterations (at `fine`: of the base stage; default: the
+    /// preset's, 200).
+    #[arg(long)]
+    pub max_iterations: Option<usize>,
     /// At `fine`: limit on the iterations of the fine stage after the base fit.
     #[arg(long, default_value_t = FineStageParams::default().max_iterations)]
     pub fine_iterations: usize,
     /// Weight of the landmark anchors in fine alignment (0 = off, the paper; see
-    /// docs/fine-alignment.md).
-    #[arg(long, default_value_t = FineAlignParams::default().landmark_weight)]
-    pub landmark_weight: f64,
+    /// docs/fine-alignment.md; default: the preset's, 0).
+    #[arg(long)]
+    pub landmark_weight: Option<f64>,
     /// Weight of the scan-to-template term in fine alignment (scan points pull the template's
-    /// triangles; 0 = off, the paper's energy; see docs/fine-alignment.md).
-    #[arg(long, default_value_t = FineAlignParams::default().scan_term_weight)]
-    pub scan_term_weight: f64,
+    /// triangles; 0 = off, the paper's energy; see docs/fine-alignment.md; default: the
+    /// preset's, 1).
+    #[arg(long)]
+    pub scan_term_weight: Option<f64>,
     /// Also write the JSON report to this file.
     #[arg(long)]
     pub report: Option<PathBuf>,
@@ -96,8 +103,17 @@ impl AlignArgs {
         if !(self.lambda.is_finite() && self.lambda >= 0.0) {
             return Err(format!("--lambda {}: must be finite and >= 0", self.lambda));
         }
-        let defaults = AlignParams::default();
+        let preset = Preset::from_name(&self.preset)
+            .ok_or_else(|| format!("--preset {}: paper or anchored", self.preset))?;
+        let defaults = preset.params();
+        let mut fine = defaults.fine.clone();
+        fine.a = self.a.unwrap_or(fine.a);
+        fine.b = self.b.unwrap_or(fine.b);
+        fine.max_iterations = self.max_iterations.unwrap_or(fine.max_iterations);
+        fine.landmark_weight = self.landmark_weight.unwrap_or(fine.landmark_weight);
+        fine.scan_term_weight = self.scan_term_weight.unwrap_or(fine.scan_term_weight);
         let params = AlignParams {
+            preset,
             rbf: RbfParams {
                 kernel,
                 affine: !self.no_affine,
@@ -105,14 +121,7 @@ impl AlignArgs {
                 virtual_landmarks: !self.no_virtual,
                 ..defaults.rbf
             },
-            fine: FineAlignParams {
-                a: self.a,
-                b: self.b,
-                max_iterations: self.max_iterations,
-                landmark_weight: self.landmark_weight,
-                scan_term_weight: self.scan_term_weight,
-                ..defaults.fine
-            },
+            fine,
             fine_stage: FineStageParams {
                 max_iterations: self.fine_iterations,
                 ..defaults.fine_stage

@@ -22,8 +22,8 @@ use super::manifest::{manifest_csv, write_atomically, Status, SubjectRecord};
 use super::read_file;
 use super::truth::{find_truth_file, read_truth};
 use crate::align::{
-    align_scan, assess, AlignInput, AlignParams, AlignmentReport, FineAlignParams, QualityReport,
-    QualityThresholds,
+    align_scan, assess, AlignInput, AlignParams, AlignmentReport, FineAlignParams, Preset,
+    QualityReport, QualityThresholds,
 };
 use crate::io::{read_landmarks, read_scan, write_ply};
 use crate::mesh::Mesh;
@@ -62,6 +62,9 @@ pub struct BatchArgs {
     /// (0-based) when i % N = K − 1. For job arrays (docs/batch.md).
     #[arg(long)]
     pub shard: Option<String>,
+    /// Parameter preset: paper (the default) or anchored, as in `align`.
+    #[arg(long, default_value = "paper", value_parser = ["paper", "anchored"])]
+    pub preset: String,
     /// Limit on fine-alignment iterations (at `fine`: of the base stage).
     #[arg(long, default_value_t = FineAlignParams::default().max_iterations)]
     pub max_iterations: usize,
@@ -356,7 +359,9 @@ pub fn run(args: &BatchArgs) -> Result<(), String> {
             return Err(format!("{flag} {value}: must be a finite number ≥ 0"));
         }
     }
-    let defaults = AlignParams::default();
+    let defaults = Preset::from_name(&args.preset)
+        .ok_or_else(|| format!("--preset {}: paper or anchored", args.preset))?
+        .params();
     let params = AlignParams {
         fine: FineAlignParams {
             max_iterations: args.max_iterations,

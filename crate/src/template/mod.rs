@@ -9,7 +9,9 @@
 //! * [`build`]: the tool that made the stored template (landmark rules, segments, flags).
 //! * [`topology`]: signed volume, edge distance.
 //! * [`segment`]: the six segments; [`error`]: the error enum `TemplateError`.
+//! * [`body_part`]: head, torso, arms, hands, legs, feet per vertex, for reports.
 
+pub mod body_part;
 pub mod build;
 pub mod error;
 pub mod flags;
@@ -22,6 +24,7 @@ pub mod store;
 pub mod subdivide;
 pub mod topology;
 
+pub use body_part::{body_parts, BodyPart};
 pub use error::TemplateError;
 pub use flags::RegionFlags;
 pub use frame::FrameTransform;

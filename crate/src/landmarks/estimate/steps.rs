@@ -26,7 +26,9 @@ use super::report::{CandidateReport, EstimateReport, LandmarkReport};
 use super::segments::{fit_segments, parts};
 use super::suspicious::flag_suspicious;
 use super::tick::Ticker;
-use crate::align::{data_weights, fine_align, AlignObserver, FineAlignInput, SurfaceIndex};
+use crate::align::{
+    data_weights, fine_align, AlignObserver, FineAlignInput, FineAlignParams, SurfaceIndex,
+};
 use crate::landmarks::{LandmarkSet, CAESAR_LANDMARKS, CAESAR_LANDMARK_COUNT};
 use crate::mesh::bounding_extent;
 use crate::mesh::similarity::similarity;
@@ -110,7 +112,7 @@ pub fn estimate_landmarks(
         .map(|(_, v)| *v)
         .collect();
 
-    let weights = data_weights(&template);
+    let weights = data_weights(&template, FineAlignParams::default().sole_weight);
     let rest_normals = template.mesh().vertex_normals();
     let matching = Matching {
         scan: &index,
