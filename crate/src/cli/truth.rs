@@ -39,7 +39,6 @@ pub fn find_truth_file(subject: &str, folder: &Path) -> Option<PathBuf> {
     synth
         .into_iter()
         .chain([format!("{subject}.ply")])
-        .into_iter()
         .map(|n| folder.join(n))
         .find(|p| p.is_file())
 }

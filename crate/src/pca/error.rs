@@ -51,7 +51,4 @@ pub enum PcaError {
     /// The model was built for a different template than the one it is used with.
     #[error("model was built for template {model} but the loaded template is {expected}; rebuild the model from fits of this template")]
     TemplateMismatch { model: String, expected: String },
-    /// A measurement could not be taken (no section loop at a level, landmark index out of range).
-    #[error("measurement {what}: {reason}")]
-    Measurement { what: String, reason: String },
 }

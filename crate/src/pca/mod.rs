@@ -1,4 +1,5 @@
 //! PCA shape spaces (paper §4): S = S̄ + Φ·B for the whole body and six overlapping segments.
+//! (Measurements of a body are [`crate::measure`].)
 //!
 //! * [`procrustes_gpa`] — generalised Procrustes analysis (rigid pose removal, optional scale)
 //! * [`gram`] — snapshot PCA through the N×N Gram matrix
@@ -12,7 +13,6 @@
 //! * [`subdivide`] — a model mapped exactly to the template's finer resolution (S̄_fine = S·S̄, φ_fine = S·φ)
 //! * [`metrics`] — compactness, generalization, specificity (Styner 2003)
 //! * [`export`] — eigenvalues, scores and quality curves as CSV
-//! * [`measure`] — stature, girths by plane sections, arm length, inseam
 //! * [`gltf`] — the whole-body model, or all seven models, as GLB with modes as morph targets
 //! * [`file`] — the versioned model file format ([`f16`] for the compact basis)
 //! * [`random`] — seeded normal draws
@@ -24,7 +24,6 @@ pub mod f16;
 pub mod file;
 pub mod gltf;
 pub mod gram;
-pub mod measure;
 pub mod metrics;
 pub mod model;
 pub mod morph;
