@@ -50,6 +50,9 @@ mod native {
         ExportGltf(bodyspace::cli::export_gltf::ExportGltfArgs),
         /// Print a fit's whole-body and segment coefficients as JSON.
         Project(bodyspace::cli::project::ProjectArgs),
+        /// Measurements of a fit as JSON (`--mesh FIT [--model MODEL]`), or of every fit of a
+        /// folder as CSV (`--fits DIR --csv OUT.csv`); docs/measurements.md.
+        Measure(bodyspace::cli::measure::MeasureArgs),
         /// Write the stitched body for given coefficients as PLY (prints seam and measurements).
         Reconstruct(bodyspace::cli::reconstruct::ReconstructArgs),
     }
@@ -66,6 +69,7 @@ mod native {
             Command::ExportGltf(args) => bodyspace::cli::export_gltf::run(&args),
             Command::Project(args) => bodyspace::cli::project::run(&args),
             Command::Reconstruct(args) => bodyspace::cli::reconstruct::run(&args),
+            Command::Measure(args) => bodyspace::cli::measure::run(&args),
         };
         if let Err(message) = result {
             eprintln!("bodyspace: {message}");

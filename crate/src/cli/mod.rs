@@ -7,6 +7,7 @@ pub mod build_model;
 pub mod export_gltf;
 pub mod info;
 pub mod manifest;
+pub mod measure;
 pub mod model;
 pub mod project;
 pub mod reconstruct;

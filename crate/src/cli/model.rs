@@ -62,6 +62,21 @@ pub fn measure_body(positions: &[f32]) -> Result<Measurements, String> {
         .map_err(|e| e.to_string())
 }
 
+/// Every measurement of a body in template vertex order (base or fine) in any frame, in metres:
+/// its base vertices are moved rigidly onto the base template ([`crate::measure::upright`]) and
+/// measured there.
+pub fn measure_any_frame(
+    measurer: &BodyMeasurer,
+    base: &Template,
+    positions: &[Point3<f64>],
+) -> Result<Measurements, String> {
+    template_for_vertex_count(positions.len())?;
+    let own = &positions[..base.mesh().vertex_count()];
+    let upright = crate::measure::upright(own, &base.mesh().positions)
+        .ok_or("the body could not be brought onto the template (degenerate positions)")?;
+    measurer.measure(&upright).map_err(|e| e.to_string())
+}
+
 /// Binary little-endian PLY of flat f32 positions and triangles (`crate::io::write_ply`).
 pub fn write_ply(path: &Path, positions: &[f32], triangles: &[[u32; 3]]) -> Result<(), String> {
     let mesh = Mesh::new(
