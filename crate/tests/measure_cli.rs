@@ -71,12 +71,11 @@ fn measure_a_fit_and_a_folder() {
     assert_eq!(rows[0].len(), 20);
     assert_eq!((rows[1][0], rows[2][0]), ("\"a\"", "\"b\""));
     // Frame and units do not change a measurement (f32 millimetres round to ≈0.1 mm).
-    for k in 1..20 {
-        let (x, y): (f64, f64) = (rows[1][k].parse().unwrap(), rows[2][k].parse().unwrap());
+    for ((name, x), y) in rows[0].iter().zip(&rows[1]).zip(&rows[2]).skip(1) {
+        let (x, y): (f64, f64) = (x.parse().unwrap(), y.parse().unwrap());
         assert!(
             (x - y).abs() < 2e-4 * x.abs().max(1.0),
-            "{}: {x} vs {y}",
-            rows[0][k]
+            "{name}: {x} vs {y}"
         );
     }
 

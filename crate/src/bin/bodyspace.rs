@@ -53,6 +53,9 @@ mod native {
         /// Measurements of a fit as JSON (`--mesh FIT [--model MODEL]`), or of every fit of a
         /// folder as CSV (`--fits DIR --csv OUT.csv`); docs/measurements.md.
         Measure(bodyspace::cli::measure::MeasureArgs),
+        /// The most likely body of a model with given measurements:
+        /// `body --model MODEL --measure stature=1.75 --measure waist_girth=0.82 --out body.ply`.
+        Body(bodyspace::cli::body::BodyArgs),
         /// Write the stitched body for given coefficients as PLY (prints seam and measurements).
         Reconstruct(bodyspace::cli::reconstruct::ReconstructArgs),
     }
@@ -70,6 +73,7 @@ mod native {
             Command::Project(args) => bodyspace::cli::project::run(&args),
             Command::Reconstruct(args) => bodyspace::cli::reconstruct::run(&args),
             Command::Measure(args) => bodyspace::cli::measure::run(&args),
+            Command::Body(args) => bodyspace::cli::body::run(&args),
         };
         if let Err(message) = result {
             eprintln!("bodyspace: {message}");

@@ -3,6 +3,7 @@
 pub mod align;
 pub mod batch;
 pub mod batch_subjects;
+pub mod body;
 pub mod build_model;
 pub mod export_gltf;
 pub mod info;

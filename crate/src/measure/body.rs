@@ -225,10 +225,19 @@ impl BodyMeasurer {
     /// standing upright along the up axis). `#V·3` values, or more for a body at a finer
     /// resolution whose first `#V` vertices are this template's (they are measured).
     pub fn measure(&self, positions: &[f32]) -> Result<Measurements, MeasureError> {
+        self.measure_some(positions, &Measure::ALL)
+    }
+
+    /// Only the measurements `which` (the others are `None`): what an iteration needs.
+    pub fn measure_some(
+        &self,
+        positions: &[f32],
+        which: &[Measure],
+    ) -> Result<Measurements, MeasureError> {
         let positions = self.check(positions)?;
         let body = Body::new(self, positions);
         let mut values = [None; Measure::ALL.len()];
-        for m in Measure::ALL {
+        for &m in which {
             values[m.index()] = match self.girth(&body, m) {
                 Some(g) => self.tape(&body, &g).map(|(length, _)| length),
                 None => Some(self.length(&body, m)),

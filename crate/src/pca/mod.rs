@@ -11,6 +11,7 @@
 //! * [`stitch`] — the stitching types (coefficients, plan, seam report) and f32 slider kernels
 //! * [`morph`] — the body on screen: held coefficients and positions, slider moves as rank-1 updates
 //! * [`subdivide`] — a model mapped exactly to the template's finer resolution (S̄_fine = S·S̄, φ_fine = S·φ)
+//! * [`from_measurements`] — the most likely body with given measurements (least Mahalanobis norm)
 //! * [`metrics`] — compactness, generalization, specificity (Styner 2003)
 //! * [`export`] — eigenvalues, scores and quality curves as CSV
 //! * [`gltf`] — the whole-body model, or all seven models, as GLB with modes as morph targets
@@ -22,6 +23,7 @@ pub mod error;
 pub mod export;
 pub mod f16;
 pub mod file;
+pub mod from_measurements;
 pub mod gltf;
 pub mod gram;
 pub mod metrics;
