@@ -368,6 +368,8 @@ struct Body<'a> {
     positions: &'a [f32],
     floor: f64,
     top: f64,
+    /// Volume and area, computed once for both measurements (one pass over every triangle).
+    volume_and_area: std::cell::OnceCell<(f64, f64)>,
 }
 
 impl<'a> Body<'a> {
@@ -383,6 +385,7 @@ impl<'a> Body<'a> {
             positions,
             floor,
             top,
+            volume_and_area: std::cell::OnceCell::new(),
         }
     }
 
@@ -419,7 +422,9 @@ impl<'a> Body<'a> {
     }
 
     fn volume_and_area(&self) -> (f64, f64) {
-        volume_and_area_flat(self.positions, &self.measurer.triangles)
+        *self
+            .volume_and_area
+            .get_or_init(|| volume_and_area_flat(self.positions, &self.measurer.triangles))
     }
 }
 
