@@ -16,9 +16,9 @@
 //! 3. A real build at `base` resolution from SUBJECTS (default 100) posed, scaled copies of the
 //!    template: GPA + 7 snapshot PCAs + quality curves, and the model file sizes (f32 / f16).
 
+use bodyspace::measure::{BodyMeasurer, MeasureParams};
 use bodyspace::mesh::normals::NormalTopology;
 use bodyspace::pca::file::{read_model_for, write_model, BasisPrecision};
-use bodyspace::pca::measure::{girth_triangles, measure, MeasureLandmarks, MeasureParams};
 use bodyspace::pca::random::NormalRng;
 use bodyspace::pca::segments::segment_subsets;
 use bodyspace::pca::subdivide::{subdivide_model, FineTemplate};
@@ -228,22 +228,9 @@ fn demo_fine_bench(base_template: &Template, fine_template: &Template) {
         21,
     );
     let (copy_ms, copy_min) = stats_ms(|| drop(std::hint::black_box(positions.to_vec())), 21);
-    let vb = base.template.vertex_count;
-    let landmarks =
-        MeasureLandmarks::from_named(base_template.landmark_vertices()).expect("landmarks");
-    let sections = girth_triangles(&base.triangles, &base.segment_weights);
-    let (measure_ms, measure_min) = stats_ms(
-        || {
-            drop(measure(
-                &positions[..3 * vb],
-                &base.triangles,
-                &sections,
-                &landmarks,
-                &MeasureParams::default(),
-            ))
-        },
-        21,
-    );
+    let measurer =
+        BodyMeasurer::of_template(base_template, MeasureParams::default()).expect("measurer");
+    let (measure_ms, measure_min) = stats_ms(|| drop(measurer.measure(&positions)), 21);
     let (seam_ms, seam_min) = stats_ms(|| drop(base.seam_report(&c)), 21);
     println!("  (ms)                                             median      min");
     for (label, median, min) in [

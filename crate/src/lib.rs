@@ -11,6 +11,7 @@
 pub mod align;
 pub mod io;
 pub mod landmarks;
+pub mod measure;
 pub mod mesh;
 pub mod pca;
 pub mod rbf;

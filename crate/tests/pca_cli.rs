@@ -163,12 +163,14 @@ fn build_project_reconstruct_round_trip() {
     );
     let stature = rebuilt["measurements"]["stature"].as_f64().unwrap();
     assert!(stature > 1.0 && stature < 2.5, "stature {stature}");
-    // The template (≈1.67 m) measures ≈0.79 m chest, 0.68 m waist, 0.98 m hip (convex hull);
+    // The template (≈1.67 m) measures ≈0.79 m bust, 0.75 m waist, 0.96 m hip (convex hull);
     // the fits are scaled by a few per cent.
-    for (girth, low, high) in [("chest", 0.6, 1.0), ("waist", 0.5, 0.9), ("hip", 0.8, 1.2)] {
-        let g = rebuilt["measurements"][girth]["girth"]
-            .as_f64()
-            .unwrap_or(0.0);
+    for (girth, low, high) in [
+        ("bust_girth", 0.6, 1.0),
+        ("waist_girth", 0.5, 0.9),
+        ("hip_girth", 0.8, 1.2),
+    ] {
+        let g = rebuilt["measurements"][girth].as_f64().unwrap_or(0.0);
         assert!(g > low && g < high, "{girth} girth {g}");
     }
     assert!(body.metadata().unwrap().len() > 100_000);

@@ -4,7 +4,7 @@
 
 use bodyspace::landmarks::CAESAR_LANDMARKS;
 use bodyspace::mesh::normals::vertex_normals;
-use bodyspace::template::topology::signed_volume;
+use bodyspace::mesh::volume::signed_volume;
 use bodyspace::template::{Resolution, Segment, Template};
 
 fn base() -> Template {

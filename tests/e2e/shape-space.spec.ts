@@ -4,7 +4,7 @@ import { readFileSync } from 'node:fs';
 import { expect, test, type Page } from '@playwright/test';
 import { shapeReady, slide } from './steps';
 
-const READINGS = ['measure-stature', 'measure-chest', 'measure-waist', 'measure-hip', 'measure-arm', 'measure-inseam'];
+const READINGS = ['stature', 'chest_girth', 'bust_girth', 'waist_girth', 'hip_girth', 'thigh_girth', 'neck_girth', 'head_girth', 'arm_length', 'crotch_height', 'volume', 'surface_area'].map((n) => `measure-${n}`);
 
 
 /** The `c=` (camera) part of a link. */
@@ -25,7 +25,8 @@ test('the demo model opens at its mean with readings', async ({ page }) => {
   const stature = Number(await page.locator('body').getAttribute('data-shape-stature'));
   expect(stature).toBeGreaterThan(1.4);
   expect(stature).toBeLessThan(2.0);
-  for (const text of await readings(page)) expect(text).toMatch(/^\d+\.\d cm$/);
+  // Every measurement is taken on the demo mean: lengths and girths in cm, volume in L, area in m².
+  for (const text of await readings(page)) expect(text).toMatch(/^\d+\.\d cm$|^\d+\.\d L$|^\d\.\d{3} m²$/);
   await expect(page.getByTestId('chart-compactness')).toBeVisible();
   // The paper's coefficient scale and the explained variance on hover.
   const row = page.getByTestId('shape-slider-0').locator('..');

@@ -7,6 +7,7 @@ import { HostPrompt } from '../ui/host-prompt';
 import { decodeShapeLink, encodeShapeLink, isShareableModel, quantiseSigma, type ShapeLink } from '../shared/shape-link';
 import {
   SEGMENTS,
+  reading,
   type LoadedModel,
   type ModelCsv,
   type ModelGlbParts,
@@ -330,7 +331,7 @@ export class ShapeSpace {
     const p = this.page.dataset;
     // A pass over every coordinate: only for the body the sliders settle on (tests, links).
     if (this.morph.idle) p.shapeChecksum = positionsChecksum(body.positions);
-    p.shapeStature = body.measurements.stature.toFixed(5);
+    p.shapeStature = (reading(body.measurements, 'stature') ?? NaN).toFixed(5);
     p.shapeReconstructMs = body.reconstructMs.toFixed(3);
     p.shapeRoundTripMs = roundTripMs.toFixed(3);
     p.shapeNormalsMs = body.normalsMs.toFixed(3);

@@ -57,20 +57,21 @@ export interface ShapeCoefficients {
   segments: (number[] | null)[];
 }
 
-export interface Girth {
-  girth: number;
-  loop_length: number;
-  height: number;
+/** One measurement of the body (core `measure::Reading`): length and girth in m, volume in m³,
+ * area in m²; `value` is `null` for a girth whose plane found no section. */
+export interface Reading {
+  name: string;
+  label: string;
+  kind: 'length' | 'girth' | 'volume' | 'area';
+  value: number | null;
 }
 
-/** Metres; girths are `null` when no closed section exists. */
-export interface Measurements {
-  stature: number;
-  chest: Girth | null;
-  waist: Girth | null;
-  hip: Girth | null;
-  arm_length: number;
-  inseam: number;
+/** Every measurement, in the core's order (docs/measurements.md). */
+export type Measurements = Reading[];
+
+/** The value of the measurement `name` (`null` when missing or not taken). */
+export function reading(m: Measurements, name: string): number | null {
+  return m.find((r) => r.name === name)?.value ?? null;
 }
 
 export interface SeamReport {

@@ -1,5 +1,7 @@
 // How numbers are written in the panels.
 
+import type { Reading } from '../shared/shape-results';
+
 const integer = new Intl.NumberFormat('en-GB', { maximumFractionDigits: 0 });
 
 /** 12,345 */
@@ -20,4 +22,13 @@ export function formatMetres(m: number): string {
 /** `(x, y, z)` in metres with millimetre precision. */
 export function formatPoint(p: readonly number[]): string {
   return `(${p.map(fixed3).join(', ')})`;
+}
+
+/** A measurement in its usual unit: lengths and girths `84.8 cm`, volume `54.9 L`, area `1.613 m²`;
+ * `—` when not taken. */
+export function formatReading(kind: Reading['kind'], value: number | null): string {
+  if (value == null) return '—';
+  if (kind === 'volume') return `${(value * 1000).toFixed(1)} L`;
+  if (kind === 'area') return `${value.toFixed(3)} m²`;
+  return `${(value * 100).toFixed(1)} cm`;
 }

@@ -4,6 +4,7 @@ import type { ModelCsv, ModelGlbParts, ModelPart, PartName, ReconstructedBody, S
 import type { TemplateResolution } from '../shared/template-data';
 import { SEGMENTS } from '../shared/shape-results';
 import { byId, h } from './dom';
+import { formatReading } from './format';
 import { qualityCharts } from './quality-charts';
 
 export type { PartName };
@@ -39,7 +40,6 @@ const LABELS: Record<PartName, string> = {
   right_leg: 'Right leg',
 };
 
-const cm = (m: number | undefined | null) => (m == null ? '—' : `${(m * 100).toFixed(1)} cm`);
 
 export class ShapePanel {
   private readonly root = byId('shape-panel');
@@ -201,12 +201,7 @@ export class ShapePanel {
     const fact = (label: string, testid: string, value: string) => [h('dt', {}, label), h('dd', { 'data-testid': testid }, value)];
     const seam = body.seam.segments && body.seam.max_jump > 0 ? `${(body.seam.max_jump * 1000).toFixed(2)} mm (${body.seam.segments.join(' / ')})` : '0 mm';
     this.readings.replaceChildren(
-      ...fact('Stature', 'measure-stature', cm(m.stature)),
-      ...fact('Chest girth', 'measure-chest', cm(m.chest?.girth)),
-      ...fact('Waist girth', 'measure-waist', cm(m.waist?.girth)),
-      ...fact('Hip girth', 'measure-hip', cm(m.hip?.girth)),
-      ...fact('Arm length', 'measure-arm', cm(m.arm_length)),
-      ...fact('Inseam', 'measure-inseam', cm(m.inseam)),
+      ...m.flatMap((r) => fact(r.label, `measure-${r.name}`, formatReading(r.kind, r.value))),
       ...fact('Largest seam jump', 'seam-jump', seam),
       ...fact('Reconstruction', 'reconstruct-ms', `${body.reconstructMs.toFixed(2)} ms (${body.rebuilt ? 'full rebuild' : `${body.deltas} rank-1 update${body.deltas === 1 ? '' : 's'}`})`),
       ...fact('Normals', 'normals-ms', `${body.normalsMs.toFixed(1)} ms`),

@@ -53,6 +53,12 @@ mod native {
         ExportStatismo(bodyspace::cli::export_statismo::ExportStatismoArgs),
         /// Print a fit's whole-body and segment coefficients as JSON.
         Project(bodyspace::cli::project::ProjectArgs),
+        /// Measurements of a fit as JSON (`--mesh FIT [--model MODEL]`), or of every fit of a
+        /// folder as CSV (`--fits DIR --csv OUT.csv`); docs/measurements.md.
+        Measure(bodyspace::cli::measure::MeasureArgs),
+        /// The most likely body of a model with given measurements:
+        /// `body --model MODEL --measure stature=1.75 --measure waist_girth=0.82 --out body.ply`.
+        Body(bodyspace::cli::body::BodyArgs),
         /// Write the stitched body for given coefficients as PLY (prints seam and measurements).
         Reconstruct(bodyspace::cli::reconstruct::ReconstructArgs),
     }
@@ -70,6 +76,8 @@ mod native {
             Command::ExportStatismo(args) => bodyspace::cli::export_statismo::run(&args),
             Command::Project(args) => bodyspace::cli::project::run(&args),
             Command::Reconstruct(args) => bodyspace::cli::reconstruct::run(&args),
+            Command::Measure(args) => bodyspace::cli::measure::run(&args),
+            Command::Body(args) => bodyspace::cli::body::run(&args),
         };
         if let Err(message) = result {
             eprintln!("bodyspace: {message}");

@@ -12,11 +12,11 @@ use js_sys::{Float32Array, Function, Uint32Array, Uint8Array};
 use serde::Serialize;
 use wasm_bindgen::prelude::*;
 
+use crate::measure::{BodyMeasurer, MeasureParams};
 use crate::mesh::normals::NormalTopology;
 use crate::pca::export::{eigenvalues_csv, quality_csv, scores_csv};
 use crate::pca::file::{read_model, read_model_for, write_model, BasisPrecision};
 use crate::pca::gltf::{model_glb, parts_glb};
-use crate::pca::measure::{girth_triangles, measure, MeasureLandmarks, MeasureParams};
 use crate::pca::subdivide::{subdivide_model, FineTemplate};
 use crate::pca::{
     BodyModel, BuildParams, Coefficients, Morph, QualityCurves, SeamReport, ShapeModel,
@@ -88,8 +88,8 @@ pub struct ShapeSpace {
     at_fine: bool,
     /// The shown body's coefficients and positions, on `fine` when `at_fine`, else on `model`.
     morph: Morph,
-    landmarks: MeasureLandmarks,
-    sections: Vec<u32>,
+    /// Measures the body on the base template's vertices (the first ones at every resolution).
+    measurer: BodyMeasurer,
     /// Triangles of the body shown, checked once, and its normals.
     topology: NormalTopology,
     normals: Vec<f32>,
@@ -97,8 +97,14 @@ pub struct ShapeSpace {
 
 impl ShapeSpace {
     pub(super) fn new(model: BodyModel, template: &Template) -> Result<ShapeSpace, JsError> {
-        let landmarks = MeasureLandmarks::from_named(template.landmark_vertices()).map_err(js)?;
-        let sections = girth_triangles(&model.triangles, &model.segment_weights);
+        let embedded_base;
+        let base = if template.resolution() == Resolution::Base {
+            template
+        } else {
+            embedded_base = template_at(Resolution::Base)?;
+            &embedded_base
+        };
+        let measurer = BodyMeasurer::of_template(base, MeasureParams::default()).map_err(js)?;
         let morph = Morph::new(&model, &Coefficients::default()).map_err(js)?;
         let topology = topology_of(&model)?;
         Ok(ShapeSpace {
@@ -106,8 +112,7 @@ impl ShapeSpace {
             fine: None,
             at_fine: false,
             morph,
-            landmarks,
-            sections,
+            measurer,
             topology,
             normals: Vec::new(),
         })
@@ -342,21 +347,14 @@ impl ShapeSpace {
         serde_json::to_string(&seam).map_err(js)
     }
 
-    /// Measurements of the body shown as JSON (metres; girths may be `null`), taken on the
-    /// loaded model's vertices and triangles: at fine, on the base vertices, which are the first
-    /// vertices of the fine body and sit exactly where the base body's do.
+    /// Every measurement of the body shown as a JSON list of `{name, label, kind, value}`
+    /// (`crate::measure::Reading`; m, m³, m²; `value` `null`: a girth whose plane found no
+    /// section), taken on the base template's vertices, which are the first vertices of a finer
+    /// body and sit exactly where the base body's do.
     #[wasm_bindgen(js_name = measureJson)]
     pub fn measure_json(&self) -> Result<String, JsError> {
-        let own = 3 * self.model.template.vertex_count;
-        let m = measure(
-            &self.morph.positions()[..own],
-            &self.model.triangles,
-            &self.sections,
-            &self.landmarks,
-            &MeasureParams::default(),
-        )
-        .map_err(js)?;
-        serde_json::to_string(&m).map_err(js)
+        let m = self.measurer.measure(self.morph.positions()).map_err(js)?;
+        serde_json::to_string(&m.readings()).map_err(js)
     }
 
     /// `eigenvalues.csv` of all seven models.

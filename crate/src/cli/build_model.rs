@@ -234,7 +234,7 @@ pub fn run(args: &BuildModelArgs) -> Result<(), String> {
 }
 
 /// The fit files (PLY, OBJ, STL, optionally .gz) in `dir`.
-fn fit_files(dir: &Path) -> Result<Vec<PathBuf>, String> {
+pub fn fit_files(dir: &Path) -> Result<Vec<PathBuf>, String> {
     Ok(std::fs::read_dir(dir)
         .map_err(|e| format!("{}: {e}", dir.display()))?
         .filter_map(|e| e.ok().map(|e| e.path()))
@@ -255,7 +255,7 @@ fn fit_files(dir: &Path) -> Result<Vec<PathBuf>, String> {
 
 /// A fit's subject name: its file name without extensions (`a.ply.gz` → `a`), as
 /// `bodyspace batch` names subjects.
-fn subject_of(fit: &Path) -> String {
+pub fn subject_of(fit: &Path) -> String {
     let name = fit
         .file_name()
         .map(|n| n.to_string_lossy().into_owned())

@@ -3,11 +3,13 @@
 pub mod align;
 pub mod batch;
 pub mod batch_subjects;
+pub mod body;
 pub mod build_model;
 pub mod export_gltf;
 pub mod export_statismo;
 pub mod info;
 pub mod manifest;
+pub mod measure;
 pub mod model;
 pub mod project;
 pub mod reconstruct;

@@ -1,11 +1,9 @@
-//! What `build-model`, `project` and `reconstruct` share: the template's identity and measurement
-//! landmarks, loading a model for the embedded template, and reading/writing meshes.
+//! What `build-model`, `project`, `reconstruct` and `measure` share: the template's identity, the
+//! measurer, loading a model for the embedded template, and reading/writing meshes.
 
+use crate::measure::{BodyMeasurer, MeasureParams, Measurements};
 use crate::mesh::Mesh;
 use crate::pca::file::read_model_for;
-use crate::pca::measure::{
-    girth_triangles, measure, MeasureLandmarks, MeasureParams, Measurements,
-};
 use crate::pca::statismo::body_model_from_statismo;
 use crate::pca::{BodyModel, TemplateIdentity};
 use crate::template::{Resolution, Template};
@@ -84,26 +82,32 @@ fn load_statismo(path: &Path) -> Result<(BodyModel, Template), String> {
     Ok((model, template))
 }
 
-/// Measurement landmarks of the template ([`MeasureLandmarks::from_named`]).
-pub fn measure_landmarks(template: &Template) -> Result<MeasureLandmarks, String> {
-    MeasureLandmarks::from_named(template.landmark_vertices()).map_err(|e| e.to_string())
+/// The measurer of the base template (a finer body is measured on its base vertices).
+pub fn base_measurer() -> Result<BodyMeasurer, String> {
+    let base = Template::embedded().map_err(|e| format!("embedded template: {e}"))?;
+    BodyMeasurer::of_template(&base, MeasureParams::default()).map_err(|e| e.to_string())
 }
 
-/// Measures flat positions on the template's triangles (girths on torso + legs, never arms).
-pub fn measure_body(
-    template: &Template,
-    model: &BodyModel,
-    positions: &[f32],
+/// Every measurement of flat positions in template vertex order, upright in the template frame.
+pub fn measure_body(positions: &[f32]) -> Result<Measurements, String> {
+    base_measurer()?
+        .measure(positions)
+        .map_err(|e| e.to_string())
+}
+
+/// Every measurement of a body in template vertex order (base or fine) in any frame, in metres:
+/// its base vertices are moved rigidly onto the base template ([`crate::measure::upright`]) and
+/// measured there.
+pub fn measure_any_frame(
+    measurer: &BodyMeasurer,
+    base: &Template,
+    positions: &[Point3<f64>],
 ) -> Result<Measurements, String> {
-    let sections = girth_triangles(&model.triangles, &model.segment_weights);
-    measure(
-        positions,
-        &model.triangles,
-        &sections,
-        &measure_landmarks(template)?,
-        &MeasureParams::default(),
-    )
-    .map_err(|e| e.to_string())
+    template_for_vertex_count(positions.len())?;
+    let own = &positions[..base.mesh().vertex_count()];
+    let upright = crate::measure::upright(own, &base.mesh().positions)
+        .ok_or("the body could not be brought onto the template (degenerate positions)")?;
+    measurer.measure(&upright).map_err(|e| e.to_string())
 }
 
 /// Binary little-endian PLY of flat f32 positions and triangles (`crate::io::write_ply`).

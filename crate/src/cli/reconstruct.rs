@@ -112,7 +112,7 @@ fn to_model_units(model: &BodyModel, c: &mut Coefficients) -> Result<(), String>
 
 /// Runs `bodyspace reconstruct`; the error is the one-line message for stderr.
 pub fn run(args: &ReconstructArgs) -> Result<(), String> {
-    let (model, template) = load_model(&args.model)?;
+    let (model, _) = load_model(&args.model)?;
     let mut c = read_coefficients(&args.coefficients)?;
     for s in &args.segments {
         let (name, list) = s
@@ -131,7 +131,7 @@ pub fn run(args: &ReconstructArgs) -> Result<(), String> {
         .map_err(|e| e.to_string())?;
     let seam = model.seam_report(&c).map_err(|e| e.to_string())?;
     write_ply(&args.out, &out, &model.triangles)?;
-    let measurements = measure_body(&template, &model, &out)?;
+    let measurements = measure_body(&out)?;
     let summary = serde_json::json!({
         "out": args.out.display().to_string(),
         "vertices": model.template.vertex_count,

@@ -7,6 +7,7 @@
 //! * [`topology`]: unique edges, neighbours, boundary edges/vertices/loops, components.
 //! * [`similarity`]: the least-squares similarity or rigid transform between point sets (Umeyama).
 //! * [`units`]: metres or millimetres from a body's extent.
+//! * [`volume`]: enclosed volume and surface area.
 //! * [`summary`]: the one-look summary of a loaded scan.
 
 pub mod bounds;
@@ -17,6 +18,7 @@ pub mod summary;
 pub mod topology;
 pub mod trimesh;
 pub mod units;
+pub mod volume;
 
 pub use bounds::{bounding_box, bounding_extent};
 pub use summary::{summarise, MeshSummary};

@@ -54,7 +54,4 @@ pub enum PcaError {
     /// A statismo HDF5 model whose datasets do not fit together, or that is not on the template.
     #[error("statismo model: {0}")]
     Statismo(String),
-    /// A measurement could not be taken (no section loop at a level, landmark index out of range).
-    #[error("measurement {what}: {reason}")]
-    Measurement { what: String, reason: String },
 }

@@ -1,4 +1,5 @@
 //! PCA shape spaces (paper §4): S = S̄ + Φ·B for the whole body and six overlapping segments.
+//! (Measurements of a body are [`crate::measure`].)
 //!
 //! * [`procrustes_gpa`] — generalised Procrustes analysis (rigid pose removal, optional scale)
 //! * [`gram`] — snapshot PCA through the N×N Gram matrix
@@ -11,9 +12,9 @@
 //! * [`stitch`] — the stitching types (coefficients, plan, seam report) and f32 slider kernels
 //! * [`morph`] — the body on screen: held coefficients and positions, slider moves as rank-1 updates
 //! * [`subdivide`] — a model mapped exactly to the template's finer resolution (S̄_fine = S·S̄, φ_fine = S·φ)
+//! * [`from_measurements`] — the most likely body with given measurements (least Mahalanobis norm)
 //! * [`metrics`] — compactness, generalization, specificity (Styner 2003)
 //! * [`export`] — eigenvalues, scores and quality curves as CSV
-//! * [`measure`] — stature, girths by plane sections, arm length, inseam
 //! * [`gltf`] — the whole-body model, or all seven models, as GLB with modes as morph targets
 //! * [`file`] — the versioned model file format ([`f16`] for the compact basis)
 //! * [`statismo`] — a model as statismo's HDF5 datasets (what Scalismo and exploreCOSMOS read),
@@ -25,10 +26,10 @@ pub mod error;
 pub mod export;
 pub mod f16;
 pub mod file;
+pub mod from_measurements;
 pub mod gltf;
 pub mod gram;
 pub mod marginal;
-pub mod measure;
 pub mod metrics;
 pub mod model;
 pub mod morph;

@@ -1,19 +1,7 @@
-//! Signed volume and edge-length geodesic distance over a triangle mesh: what the template build
-//! measures (edges, neighbours and normals are in [`crate::mesh`]).
+//! Edge-length geodesic distance over a triangle mesh: what the template build measures (edges,
+//! neighbours, normals and the signed volume are in [`crate::mesh`]).
 
 use nalgebra::Point3;
-
-/// Signed volume `Σ (a · (b × c)) / 6` over the triangles: positive when a closed surface is
-/// oriented with outward normals.
-pub fn signed_volume(positions: &[Point3<f64>], triangles: &[[u32; 3]]) -> f64 {
-    triangles
-        .iter()
-        .map(|t| {
-            let [a, b, c] = t.map(|i| positions[i as usize].coords);
-            a.dot(&b.cross(&c)) / 6.0
-        })
-        .sum()
-}
 
 /// Edge-length geodesic distance (Dijkstra) from every vertex to the nearest seed; `f64::INFINITY`
 /// where unreachable. `#V` neighbour lists in, `#V` distances out.
@@ -79,9 +67,8 @@ mod tests {
     }
 
     #[test]
-    fn tetra_volume_and_distance() {
+    fn tetra_edge_distance() {
         let (p, t) = tetra();
-        assert!((signed_volume(&p, &t) - 1.0 / 6.0).abs() < 1e-12);
         let nb = crate::mesh::topology::vertex_neighbours(4, &t);
         let d = edge_distance(&p, &nb, [1]);
         assert!((d[2] - 2f64.sqrt()).abs() < 1e-12 && d[1] == 0.0);

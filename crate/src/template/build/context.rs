@@ -5,9 +5,9 @@ use nalgebra::{Point3, Vector3};
 use super::super::error::TemplateError;
 use super::super::makehuman::MakeHumanModel;
 use super::super::segment::Segment;
-use super::super::topology::signed_volume;
 use crate::mesh::normals::vertex_normals;
 use crate::mesh::topology::vertex_neighbours;
+use crate::mesh::volume::signed_volume;
 use crate::mesh::Mesh;
 
 /// The body skin with per-vertex skinning and the joint positions, in the template frame.

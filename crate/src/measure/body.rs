@@ -1,0 +1,442 @@
+//! Measuring a body in template vertex order: every [`Measure`] from the template's landmarks,
+//! plane sections and a tape ([`super::tape`]), volume and area ([`crate::mesh::volume`]).
+//!
+//! Heights are above the floor (the lowest vertex) along the up axis. Torso girths are horizontal
+//! and go around the convex hull of everything the plane cuts of the torso's own triangles (arms
+//! never; torso and legs for the hip), so a tape under the armpits spans the chest. Limb, neck and
+//! head girths go around the loop at their anchor, cut from their own segment (upper arm: right
+//! arm; head: head; neck: head and torso) — the thigh from torso and legs, as the overlap band at
+//! the crotch splits its section between the two. A triangle belongs
+//! to the segment with the largest blend weight summed over its corners, which partitions the
+//! overlap bands.
+
+use super::definitions::Measure;
+use super::error::MeasureError;
+use super::params::MeasureParams;
+use super::section::{plane_section, Plane, SectionLoop};
+use super::tape::{closed_length, convex_hull, tape, LoopChoice};
+use crate::mesh::volume::volume_and_area_flat;
+use crate::template::Segment;
+use serde::ser::{Serialize, SerializeMap, Serializer};
+
+/// Every measurement of one body (`None`: a girth whose plane found no section), metres, m³, m².
+#[derive(Debug, Clone, PartialEq)]
+pub struct Measurements {
+    pub values: [Option<f64>; Measure::ALL.len()],
+}
+
+impl Measurements {
+    pub fn get(&self, m: Measure) -> Option<f64> {
+        self.values[m.index()]
+    }
+
+    /// Each value with its name, label and kind, in [`Measure::ALL`] order (what a table shows).
+    pub fn readings(&self) -> Vec<Reading> {
+        Measure::ALL
+            .into_iter()
+            .map(|m| {
+                let d = m.definition();
+                Reading {
+                    name: d.name,
+                    label: d.label,
+                    kind: d.kind,
+                    value: self.get(m),
+                }
+            })
+            .collect()
+    }
+}
+
+/// One measurement's value with what a reader needs to show it.
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
+pub struct Reading {
+    pub name: &'static str,
+    pub label: &'static str,
+    pub kind: super::definitions::Kind,
+    pub value: Option<f64>,
+}
+
+impl Serialize for Measurements {
+    /// `{name: value | null}` in [`Measure::ALL`] order.
+    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        let mut map = s.serialize_map(Some(self.values.len()))?;
+        for m in Measure::ALL {
+            map.serialize_entry(m.definition().name, &self.get(m))?;
+        }
+        map.end()
+    }
+}
+
+/// A girth's tape as a closed 3-D polyline (for figures and overlays).
+#[derive(Debug, Clone, PartialEq)]
+pub struct TapePath {
+    pub measure: Measure,
+    pub points: Vec<[f64; 3]>,
+}
+
+/// Which triangles a section cuts.
+#[derive(Debug, Clone, Copy)]
+enum Region {
+    Torso,
+    TorsoAndLegs,
+    RightArm,
+    HeadAndTorso,
+    Head,
+}
+
+/// The measurer of one template: its triangles, the section regions and the landmark vertices of
+/// every measurement, resolved once (by name, so revised landmark vertices flow through).
+#[derive(Debug, Clone)]
+pub struct BodyMeasurer {
+    triangles: Vec<[u32; 3]>,
+    vertex_count: usize,
+    /// Per measurement, the vertices of its definition's landmarks, in the definition's order.
+    anchors: Vec<Vec<u32>>,
+    /// Triangle indices per [`Region`] (by `Region as usize`).
+    regions: [Vec<u32>; 5],
+    params: MeasureParams,
+}
+
+/// A girth's plane, the region it cuts and how the tape picks its loop.
+struct Girth {
+    plane: Plane,
+    region: Region,
+    choice: Option<LoopChoice>,
+}
+
+impl BodyMeasurer {
+    /// `triangles` (`#F`), `segment_weights` (`#V`, [`Segment::ALL`] order), the template's
+    /// (canonical name, vertex) landmark list. Fails on a missing landmark, an index beyond
+    /// `#V`, or a bad parameter.
+    pub fn new(
+        triangles: &[[u32; 3]],
+        segment_weights: &[[f32; 6]],
+        landmarks: &[(String, u32)],
+        params: MeasureParams,
+    ) -> Result<BodyMeasurer, MeasureError> {
+        let vertex_count = segment_weights.len();
+        if params.up_axis > 2 {
+            return Err(MeasureError::BadParameter(format!(
+                "up axis {} (0, 1 or 2)",
+                params.up_axis
+            )));
+        }
+        let in_range = |what: &str, v: u32| {
+            if (v as usize) < vertex_count {
+                Ok(v)
+            } else {
+                Err(MeasureError::VertexOutOfRange {
+                    what: what.into(),
+                    vertex: v,
+                    vertex_count,
+                })
+            }
+        };
+        let mut anchors = Vec::with_capacity(Measure::ALL.len());
+        for m in Measure::ALL {
+            let mut vs = Vec::new();
+            for &name in m.definition().landmarks {
+                let v = landmarks
+                    .iter()
+                    .find(|(n, _)| n == name)
+                    .map(|(_, v)| *v)
+                    .ok_or_else(|| MeasureError::MissingLandmark(name.into()))?;
+                vs.push(in_range(&format!("landmark {name}"), v)?);
+            }
+            anchors.push(vs);
+        }
+        let mut regions: [Vec<u32>; 5] = Default::default();
+        for (i, t) in triangles.iter().enumerate() {
+            let mut sum = [0.0f32; 6];
+            for &v in t {
+                let w = segment_weights.get(in_range("a triangle", v)? as usize);
+                for (s, x) in sum.iter_mut().zip(w.into_iter().flatten()) {
+                    *s += x;
+                }
+            }
+            let dominant = (0..6)
+                .max_by(|&a, &b| sum[a].total_cmp(&sum[b]))
+                .unwrap_or(0);
+            let s = Segment::ALL[dominant];
+            let mut add = |r: Region| regions[r as usize].push(i as u32);
+            match s {
+                Segment::Torso => {
+                    add(Region::Torso);
+                    add(Region::TorsoAndLegs);
+                    add(Region::HeadAndTorso);
+                }
+                Segment::LeftLeg | Segment::RightLeg => add(Region::TorsoAndLegs),
+                Segment::RightArm => add(Region::RightArm),
+                Segment::Head => {
+                    add(Region::Head);
+                    add(Region::HeadAndTorso);
+                }
+                Segment::LeftArm => {}
+            }
+        }
+        Ok(BodyMeasurer {
+            triangles: triangles.to_vec(),
+            vertex_count,
+            anchors,
+            regions,
+            params,
+        })
+    }
+
+    /// Vertex count `#V` of the bodies this measurer takes.
+    pub fn vertex_count(&self) -> usize {
+        self.vertex_count
+    }
+
+    /// The template's own `#V·3` values of `positions`, checked.
+    fn check<'p>(&self, positions: &'p [f32]) -> Result<&'p [f32], MeasureError> {
+        if positions.len() < 3 * self.vertex_count || positions.len() % 3 != 0 {
+            return Err(MeasureError::BadPositions(format!(
+                "{} values for a template of {} vertices (at least {} values)",
+                positions.len(),
+                self.vertex_count,
+                3 * self.vertex_count
+            )));
+        }
+        let own = &positions[..3 * self.vertex_count];
+        if own.iter().any(|x| !x.is_finite()) {
+            return Err(MeasureError::BadPositions(
+                "a coordinate is not finite".into(),
+            ));
+        }
+        Ok(own)
+    }
+
+    /// The measurer of `template` at its own resolution (normally the base template: a finer
+    /// body is measured on its base vertices, [`BodyMeasurer::measure`]).
+    pub fn of_template(
+        template: &crate::template::Template,
+        params: MeasureParams,
+    ) -> Result<BodyMeasurer, MeasureError> {
+        BodyMeasurer::new(
+            &template.mesh().triangles,
+            template.segment_weight_table(),
+            template.landmark_vertices(),
+            params,
+        )
+    }
+
+    /// Every measurement of the body at flat `positions` (metres, template vertex order,
+    /// standing upright along the up axis). `#V·3` values, or more for a body at a finer
+    /// resolution whose first `#V` vertices are this template's (they are measured).
+    pub fn measure(&self, positions: &[f32]) -> Result<Measurements, MeasureError> {
+        self.measure_some(positions, &Measure::ALL)
+    }
+
+    /// Only the measurements `which` (the others are `None`): what an iteration needs.
+    pub fn measure_some(
+        &self,
+        positions: &[f32],
+        which: &[Measure],
+    ) -> Result<Measurements, MeasureError> {
+        let positions = self.check(positions)?;
+        let body = Body::new(self, positions);
+        let mut values = [None; Measure::ALL.len()];
+        for &m in which {
+            values[m.index()] = match self.girth(&body, m) {
+                Some(g) => self.tape(&body, &g).map(|(length, _)| length),
+                None => Some(self.length(&body, m)),
+            };
+        }
+        Ok(Measurements { values })
+    }
+
+    /// The tapes of every girth as closed 3-D polylines (convex hull corners in their plane).
+    pub fn tape_paths(&self, positions: &[f32]) -> Result<Vec<TapePath>, MeasureError> {
+        let positions = self.check(positions)?;
+        let body = Body::new(self, positions);
+        Ok(Measure::ALL
+            .into_iter()
+            .filter_map(|m| {
+                let g = self.girth(&body, m)?;
+                let (_, hull) = self.tape(&body, &g)?;
+                Some(TapePath {
+                    measure: m,
+                    points: hull.into_iter().map(|q| g.plane.from_plane(q)).collect(),
+                })
+            })
+            .collect())
+    }
+
+    fn tape(&self, body: &Body, g: &Girth) -> Option<(f64, Vec<[f64; 2]>)> {
+        let loops = plane_section(
+            body.positions,
+            &self.triangles,
+            &self.regions[g.region as usize],
+            &g.plane,
+        );
+        match g.choice {
+            Some(choice) => tape(&loops, choice).map(|t| (t.girth, t.hull)),
+            None => around_everything(&loops),
+        }
+    }
+
+    /// The plane and region of a girth; `None` for a measurement that is not a girth.
+    fn girth(&self, b: &Body, m: Measure) -> Option<Girth> {
+        let p = &self.params;
+        let up = p.up_axis;
+        let at = |level: f64, region| Girth {
+            plane: Plane::horizontal(up, level),
+            region,
+            choice: None,
+        };
+        let around = |plane: Plane, region, anchor: [f64; 3]| Girth {
+            plane,
+            region,
+            choice: Some(LoopChoice::Around(plane.to_plane(anchor))),
+        };
+        let a = |k: usize| b.anchor(m, k);
+        Some(match m {
+            Measure::ChestGirth | Measure::BustGirth | Measure::UnderbustGirth => {
+                at(b.mean_height(m), Region::Torso)
+            }
+            Measure::WaistGirth => at(b.waist_level(), Region::Torso),
+            Measure::HipGirth => at(b.hip_level(), Region::TorsoAndLegs),
+            Measure::ThighGirth => {
+                // Both legs and the torso: near the crotch the overlap band splits the thigh's
+                // section between the right leg and the torso; the loop at the hip is the thigh.
+                let plane = Plane::horizontal(up, a(0)[up] - p.thigh_below_crotch);
+                around(plane, Region::TorsoAndLegs, a(1))
+            }
+            Measure::UpperArmGirth => {
+                let (acromion, olecranon) = (a(0), a(1));
+                let mid = midpoint(acromion, olecranon);
+                around(
+                    Plane::new(mid, sub(olecranon, acromion))?,
+                    Region::RightArm,
+                    mid,
+                )
+            }
+            Measure::NeckGirth => {
+                let base = midpoint(a(0), a(1));
+                let ears = midpoint(a(2), a(3));
+                let axis = sub(ears, base);
+                let at = [0, 1, 2].map(|k| base[k] + p.neck_fraction * axis[k]);
+                around(Plane::new(at, axis)?, Region::HeadAndTorso, at)
+            }
+            Measure::HeadGirth => {
+                let level = a(0)[up] + p.head_above_sellion;
+                let mut centre = midpoint(a(1), a(2));
+                centre[up] = level;
+                around(Plane::horizontal(up, level), Region::Head, centre)
+            }
+            _ => return None,
+        })
+    }
+
+    /// A measurement that is not a girth.
+    fn length(&self, b: &Body, m: Measure) -> f64 {
+        let a = |k: usize| b.anchor(m, k);
+        match m {
+            Measure::Stature => b.top - b.floor,
+            Measure::CervicaleHeight
+            | Measure::AcromionHeight
+            | Measure::CrotchHeight
+            | Measure::KneeHeight => b.mean_height(m) - b.floor,
+            Measure::ShoulderBreadth => distance(a(0), a(1)),
+            Measure::ArmLength => {
+                let n = self.anchors[m.index()].len();
+                (1..n).map(|k| distance(a(k - 1), a(k))).sum()
+            }
+            Measure::WaistToHipBack => b.waist_level() - b.hip_level(),
+            Measure::Volume => b.volume_and_area().0,
+            Measure::SurfaceArea => b.volume_and_area().1,
+            _ => f64::NAN,
+        }
+    }
+}
+
+/// The tape around every piece a torso plane cuts (closed loops and chains ending on the arms'
+/// or head's border alike): the convex hull of all their points.
+fn around_everything(loops: &[SectionLoop]) -> Option<(f64, Vec<[f64; 2]>)> {
+    let points: Vec<[f64; 2]> = loops
+        .iter()
+        .flat_map(|l| l.points.iter().copied())
+        .collect();
+    let hull = convex_hull(&points);
+    (hull.len() >= 3).then(|| (closed_length(&hull), hull))
+}
+
+/// One body being measured: positions and what several measurements share.
+struct Body<'a> {
+    measurer: &'a BodyMeasurer,
+    positions: &'a [f32],
+    floor: f64,
+    top: f64,
+    /// Volume and area, computed once for both measurements (one pass over every triangle).
+    volume_and_area: std::cell::OnceCell<(f64, f64)>,
+}
+
+impl<'a> Body<'a> {
+    fn new(measurer: &'a BodyMeasurer, positions: &'a [f32]) -> Body<'a> {
+        let up = measurer.params.up_axis;
+        let (mut floor, mut top) = (f64::INFINITY, f64::NEG_INFINITY);
+        for p in positions.chunks_exact(3) {
+            floor = floor.min(p[up] as f64);
+            top = top.max(p[up] as f64);
+        }
+        Body {
+            measurer,
+            positions,
+            floor,
+            top,
+            volume_and_area: std::cell::OnceCell::new(),
+        }
+    }
+
+    fn vertex(&self, v: u32) -> [f64; 3] {
+        let i = 3 * v as usize;
+        let p = &self.positions[i..i + 3];
+        [p[0] as f64, p[1] as f64, p[2] as f64]
+    }
+
+    /// The `k`-th landmark of measurement `m`'s definition.
+    fn anchor(&self, m: Measure, k: usize) -> [f64; 3] {
+        self.vertex(self.measurer.anchors[m.index()][k])
+    }
+
+    /// Mean height of all of `m`'s landmarks.
+    fn mean_height(&self, m: Measure) -> f64 {
+        let vs = &self.measurer.anchors[m.index()];
+        let up = self.measurer.params.up_axis;
+        vs.iter().map(|&v| self.vertex(v)[up]).sum::<f64>() / vs.len() as f64
+    }
+
+    /// ISO 8559-1's waist: midway between the lowest rib (10th Ribs) and the iliac crest
+    /// (Iliocristales).
+    fn waist_level(&self) -> f64 {
+        self.mean_height(Measure::WaistGirth)
+    }
+
+    /// The hip plane: the Trochanterions' mean height, at least `hip_above_crotch` over the Crotch.
+    fn hip_level(&self) -> f64 {
+        let up = self.measurer.params.up_axis;
+        let m = Measure::HipGirth;
+        let trochanters = (self.anchor(m, 0)[up] + self.anchor(m, 1)[up]) / 2.0;
+        trochanters.max(self.anchor(m, 2)[up] + self.measurer.params.hip_above_crotch)
+    }
+
+    fn volume_and_area(&self) -> (f64, f64) {
+        *self
+            .volume_and_area
+            .get_or_init(|| volume_and_area_flat(self.positions, &self.measurer.triangles))
+    }
+}
+
+fn sub(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
+    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
+}
+
+fn midpoint(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
+    [0, 1, 2].map(|k| (a[k] + b[k]) / 2.0)
+}
+
+fn distance(a: [f64; 3], b: [f64; 3]) -> f64 {
+    let d = sub(a, b);
+    (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt()
+}

@@ -1,0 +1,243 @@
+//! The measurements: name, kind, source and the template landmarks each is anchored on. The one
+//! table the core, the CLI, the app and docs/measurements.md share; how each is taken is in
+//! [`super::body`].
+
+use serde::Serialize;
+
+/// What a measurement is, which fixes its unit (m, m, m³, m²) and its tolerance when a body is
+/// made to meet it.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Kind {
+    /// A straight or polyline distance: heights, breadths, lengths (m).
+    Length,
+    /// A tape around a plane section (m).
+    Girth,
+    /// Enclosed volume (m³).
+    Volume,
+    /// Surface area (m²).
+    Area,
+}
+
+/// One standard measurement.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub enum Measure {
+    Stature,
+    CervicaleHeight,
+    AcromionHeight,
+    CrotchHeight,
+    KneeHeight,
+    ShoulderBreadth,
+    ChestGirth,
+    BustGirth,
+    UnderbustGirth,
+    WaistGirth,
+    HipGirth,
+    ThighGirth,
+    UpperArmGirth,
+    NeckGirth,
+    HeadGirth,
+    ArmLength,
+    WaistToHipBack,
+    Volume,
+    SurfaceArea,
+}
+
+/// A measurement's description: what the docs, the CLI and the app show.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Definition {
+    /// snake_case name used in JSON, CSV and on the command line (`waist_girth`).
+    pub name: &'static str,
+    /// Short human label ("Waist girth").
+    pub label: &'static str,
+    pub kind: Kind,
+    /// The standard and the clause title it follows.
+    pub source: &'static str,
+    /// Canonical CAESAR landmark names it is anchored on (resolved through the template's
+    /// landmark list, so revised landmark vertices flow through).
+    pub landmarks: &'static [&'static str],
+}
+
+const AXILLAE: &[&str] = &[
+    "Rt. Axilla, Ant.",
+    "Lt. Axilla, Ant.",
+    "Rt. Axilla, Post.",
+    "Lt. Axilla, Post.",
+];
+const WAIST: &[&str] = &[
+    "Rt. 10th Rib",
+    "Lt. 10th Rib",
+    "Rt. Iliocristale",
+    "Lt. Iliocristale",
+];
+const HIP: &[&str] = &["Rt. Trochanterion", "Lt. Trochanterion", "Crotch"];
+
+impl Measure {
+    /// Every measurement, in the order of tables and JSON.
+    pub const ALL: [Measure; 19] = [
+        Measure::Stature,
+        Measure::CervicaleHeight,
+        Measure::AcromionHeight,
+        Measure::CrotchHeight,
+        Measure::KneeHeight,
+        Measure::ShoulderBreadth,
+        Measure::ChestGirth,
+        Measure::BustGirth,
+        Measure::UnderbustGirth,
+        Measure::WaistGirth,
+        Measure::HipGirth,
+        Measure::ThighGirth,
+        Measure::UpperArmGirth,
+        Measure::NeckGirth,
+        Measure::HeadGirth,
+        Measure::ArmLength,
+        Measure::WaistToHipBack,
+        Measure::Volume,
+        Measure::SurfaceArea,
+    ];
+
+    /// Position in [`Measure::ALL`].
+    pub fn index(self) -> usize {
+        self as usize
+    }
+
+    /// The measurement named `name` (snake_case, as [`Definition::name`]).
+    pub fn from_name(name: &str) -> Option<Measure> {
+        Measure::ALL
+            .into_iter()
+            .find(|m| m.definition().name == name)
+    }
+
+    /// The description of this measurement.
+    pub fn definition(self) -> Definition {
+        use Kind::*;
+        let d = |name, label, kind, source, landmarks| Definition {
+            name,
+            label,
+            kind,
+            source,
+            landmarks,
+        };
+        match self {
+            Measure::Stature => d("stature", "Stature", Length, "ISO 7250-1 stature (body height)", &[]),
+            Measure::CervicaleHeight => d(
+                "cervicale_height",
+                "Cervicale height",
+                Length,
+                "ISO 8559-1 cervicale height",
+                &["Cervicale"],
+            ),
+            Measure::AcromionHeight => d(
+                "acromion_height",
+                "Acromion height",
+                Length,
+                "ISO 7250-1 shoulder (acromion) height",
+                &["Rt. Acromion", "Lt. Acromion"],
+            ),
+            Measure::CrotchHeight => d(
+                "crotch_height",
+                "Crotch height (inseam)",
+                Length,
+                "ISO 7250-1 crotch height; ISO 8559-1 inside leg length",
+                &["Crotch"],
+            ),
+            Measure::KneeHeight => d(
+                "knee_height",
+                "Knee height",
+                Length,
+                "ISO 8559-1 knee height",
+                &["Rt. Femoral Lateral Epicn", "Rt. Femoral Medial Epicn"],
+            ),
+            Measure::ShoulderBreadth => d(
+                "shoulder_breadth",
+                "Shoulder breadth (biacromial)",
+                Length,
+                "ISO 7250-1 biacromial breadth",
+                &["Rt. Acromion", "Lt. Acromion"],
+            ),
+            Measure::ChestGirth => d("chest_girth", "Chest girth", Girth, "ISO 8559-1 chest girth", AXILLAE),
+            Measure::BustGirth => d(
+                "bust_girth",
+                "Bust girth",
+                Girth,
+                "ISO 8559-1 bust girth",
+                &["Rt. Thelion/Bustpoint", "Lt. Thelion/Bustpoint"],
+            ),
+            Measure::UnderbustGirth => d(
+                "underbust_girth",
+                "Underbust girth",
+                Girth,
+                "ISO 8559-1 underbust girth",
+                &["Substernale"],
+            ),
+            Measure::WaistGirth => d("waist_girth", "Waist girth", Girth, "ISO 8559-1 waist girth", WAIST),
+            Measure::HipGirth => d("hip_girth", "Hip girth", Girth, "ISO 8559-1 hip girth", HIP),
+            Measure::ThighGirth => d(
+                "thigh_girth",
+                "Thigh girth",
+                Girth,
+                "ISO 8559-1 thigh girth",
+                &["Crotch", "Rt. Trochanterion"],
+            ),
+            Measure::UpperArmGirth => d(
+                "upper_arm_girth",
+                "Upper-arm girth",
+                Girth,
+                "ISO 8559-1 upper arm girth",
+                &["Rt. Acromion", "Rt. Olecranon"],
+            ),
+            Measure::NeckGirth => d(
+                "neck_girth",
+                "Neck girth",
+                Girth,
+                "ISO 8559-1 neck girth",
+                &["Cervicale", "Suprasternale", "Rt. Tragion", "Lt. Tragion"],
+            ),
+            Measure::HeadGirth => d(
+                "head_girth",
+                "Head girth",
+                Girth,
+                "ISO 8559-1 head girth",
+                &["Sellion", "Rt. Tragion", "Lt. Tragion"],
+            ),
+            Measure::ArmLength => d(
+                "arm_length",
+                "Arm length",
+                Length,
+                "ISO 8559-1 arm length",
+                &["Rt. Acromion", "Rt. Radiale", "Rt. Radial Styloid"],
+            ),
+            Measure::WaistToHipBack => d(
+                "waist_to_hip_back",
+                "Waist to hip (back)",
+                Length,
+                "ISO 8559-1 waist to hip length",
+                &[
+                    "Rt. 10th Rib",
+                    "Lt. 10th Rib",
+                    "Rt. Iliocristale",
+                    "Lt. Iliocristale",
+                    "Rt. Trochanterion",
+                    "Lt. Trochanterion",
+                    "Crotch",
+                ],
+            ),
+            Measure::Volume => d("volume", "Body volume", Volume, "volume enclosed by the body surface (no ISO 7250-1 clause; for density and BMI-like indices)", &[]),
+            Measure::SurfaceArea => d("surface_area", "Surface area", Area, "area of the body surface (no ISO clause; what DuBois-type formulas estimate)", &[]),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn names_are_unique_and_round_trip() {
+        for (i, m) in Measure::ALL.into_iter().enumerate() {
+            assert_eq!(m.index(), i);
+            assert_eq!(Measure::from_name(m.definition().name), Some(m));
+        }
+        assert_eq!(Measure::from_name("waist"), None);
+    }
+}

@@ -1,0 +1,27 @@
+//! Anthropometry: standard body measurements after ISO 8559-1 and ISO 7250-1 on a body in
+//! template vertex order, anchored on the template's landmarks (docs/measurements.md).
+//!
+//! * [`definitions`] — the [`Measure`] table: names, kinds, sources, landmarks
+//! * [`section`] — plane sections of a triangle mesh ([`Plane`], [`plane_section`])
+//! * [`tape`] — a tape around a section: convex-hull perimeter of the chosen loop
+//! * [`body`] — [`BodyMeasurer`]: every measurement of a body
+//! * [`upright`] — a body in any frame moved rigidly onto the template's
+//! * [`params`] — [`MeasureParams`], the plane offsets and up axis with their defaults
+//! * [`error`] — [`MeasureError`]
+//!
+//! Volume and surface area are [`crate::mesh::volume`].
+
+pub mod body;
+pub mod definitions;
+pub mod error;
+pub mod params;
+pub mod section;
+pub mod tape;
+pub mod upright;
+
+pub use body::{BodyMeasurer, Measurements, Reading, TapePath};
+pub use definitions::{Definition, Kind, Measure};
+pub use error::MeasureError;
+pub use params::MeasureParams;
+pub use section::{plane_section, Plane, SectionLoop};
+pub use upright::upright;

@@ -1,0 +1,35 @@
+//! Parameters of the measurements, with their defaults.
+
+use serde::{Deserialize, Serialize};
+
+/// Offsets that place section planes where the template has no landmark, and the up axis.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct MeasureParams {
+    /// Index of the up axis (0 = x, 1 = y, 2 = z); default 1 (y up: the template's frame).
+    pub up_axis: usize,
+    /// Least height of the hip plane above the Crotch (the template's Trochanterions sit within
+    /// millimetres of the crotch, where a plane may pass between the legs); default 0.02 m.
+    pub hip_above_crotch: f64,
+    /// Depth of the thigh plane below the Crotch: ISO 8559-1 takes thigh girth just below the
+    /// gluteal fold, for which the template has no landmark; default 0.03 m.
+    pub thigh_below_crotch: f64,
+    /// Height of the head plane above Sellion: ISO 8559-1 passes it above the eyebrows
+    /// (glabella); default 0.015 m.
+    pub head_above_sellion: f64,
+    /// Where the neck plane sits between the neck base (Cervicale–Suprasternale, 0) and the ears
+    /// (Tragions, 1), perpendicular to that axis: ISO 8559-1 neck girth is taken just below the
+    /// Adam's apple; default 0.25.
+    pub neck_fraction: f64,
+}
+
+impl Default for MeasureParams {
+    fn default() -> Self {
+        Self {
+            up_axis: 1,
+            hip_above_crotch: 0.02,
+            thigh_below_crotch: 0.03,
+            head_above_sellion: 0.015,
+            neck_fraction: 0.25,
+        }
+    }
+}

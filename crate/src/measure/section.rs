@@ -1,0 +1,199 @@
+//! Plane sections of a triangle mesh: the closed loops (and open chains) where a plane cuts it.
+
+use std::collections::HashMap;
+
+/// A plane through `origin` with unit `normal`, and two unit in-plane axes `u`, `v`
+/// (`u × v = normal`) for the section's 2-D coordinates.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Plane {
+    pub origin: [f64; 3],
+    pub normal: [f64; 3],
+    u: [f64; 3],
+    v: [f64; 3],
+}
+
+fn dot(a: [f64; 3], b: [f64; 3]) -> f64 {
+    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+}
+
+fn cross(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
+    [
+        a[1] * b[2] - a[2] * b[1],
+        a[2] * b[0] - a[0] * b[2],
+        a[0] * b[1] - a[1] * b[0],
+    ]
+}
+
+fn unit(a: [f64; 3]) -> Option<[f64; 3]> {
+    let n = dot(a, a).sqrt();
+    (n > 1e-12 && n.is_finite()).then(|| a.map(|x| x / n))
+}
+
+impl Plane {
+    /// The plane through `origin` perpendicular to `normal` (any length); `None` for a zero or
+    /// non-finite normal.
+    pub fn new(origin: [f64; 3], normal: [f64; 3]) -> Option<Plane> {
+        let n = unit(normal)?;
+        // The coordinate axis least aligned with n makes a well-conditioned first in-plane axis.
+        let k = (0..3)
+            .min_by(|&a, &b| n[a].abs().total_cmp(&n[b].abs()))
+            .unwrap_or(0);
+        let mut e = [0.0; 3];
+        e[k] = 1.0;
+        let u = unit(cross(e, n))?;
+        let v = cross(n, u);
+        Some(Plane {
+            origin,
+            normal: n,
+            u,
+            v,
+        })
+    }
+
+    /// The horizontal plane `up = height` (`up_axis` 0, 1 or 2).
+    pub fn horizontal(up_axis: usize, height: f64) -> Plane {
+        let mut origin = [0.0; 3];
+        let mut normal = [0.0; 3];
+        origin[up_axis] = height;
+        normal[up_axis] = 1.0;
+        Plane::new(origin, normal).expect("a unit axis is a valid normal")
+    }
+
+    /// Signed distance of `p` from the plane.
+    pub fn distance(&self, p: [f64; 3]) -> f64 {
+        dot(self.normal, [0, 1, 2].map(|k| p[k] - self.origin[k]))
+    }
+
+    /// In-plane coordinates of `p` (projected onto the plane).
+    pub fn to_plane(&self, p: [f64; 3]) -> [f64; 2] {
+        let d = [0, 1, 2].map(|k| p[k] - self.origin[k]);
+        [dot(d, self.u), dot(d, self.v)]
+    }
+
+    /// The 3-D point of in-plane coordinates `q`.
+    pub fn from_plane(&self, q: [f64; 2]) -> [f64; 3] {
+        [0, 1, 2].map(|k| self.origin[k] + q[0] * self.u[k] + q[1] * self.v[k])
+    }
+}
+
+/// One connected piece of a section: points in the plane's coordinates, in order along the cut.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SectionLoop {
+    pub points: Vec<[f64; 2]>,
+    /// Whether the piece closes on itself (an open chain ends on a mesh boundary).
+    pub closed: bool,
+}
+
+fn vertex(positions: &[f32], v: u32) -> Option<[f64; 3]> {
+    let i = 3 * v as usize;
+    positions
+        .get(i..i + 3)
+        .map(|p| [p[0] as f64, p[1] as f64, p[2] as f64])
+}
+
+/// The pieces where `plane` cuts the triangles `section_triangles` (indices into `triangles`,
+/// `#F` index triples over flat `#V·3` `positions`). Each cut crosses mesh edges; the cut points
+/// of one triangle are linked, and the links chained into loops through the edges they share.
+/// A vertex exactly on the plane counts as in front of it, so every crossing is a proper edge cut.
+/// Indices beyond the arrays are skipped.
+pub fn plane_section(
+    positions: &[f32],
+    triangles: &[[u32; 3]],
+    section_triangles: &[u32],
+    plane: &Plane,
+) -> Vec<SectionLoop> {
+    let mut points: HashMap<(u32, u32), [f64; 2]> = HashMap::new();
+    let mut links: HashMap<(u32, u32), Vec<(u32, u32)>> = HashMap::new();
+    for &t in section_triangles {
+        let Some(tri) = triangles.get(t as usize) else {
+            continue;
+        };
+        let (Some(p0), Some(p1), Some(p2)) = (
+            vertex(positions, tri[0]),
+            vertex(positions, tri[1]),
+            vertex(positions, tri[2]),
+        ) else {
+            continue;
+        };
+        let p = [p0, p1, p2];
+        let d = p.map(|q| plane.distance(q));
+        let front = d.map(|x| x >= 0.0);
+        // Most triangles lie wholly on one side: nothing to allocate for them.
+        if front[0] == front[1] && front[1] == front[2] {
+            continue;
+        }
+        let mut cut = [(0u32, 0u32); 2];
+        let mut n = 0;
+        for (a, b) in [(0, 1), (1, 2), (2, 0)] {
+            if front[a] != front[b] && n < 2 {
+                let f = d[a] / (d[a] - d[b]);
+                let key = (tri[a].min(tri[b]), tri[a].max(tri[b]));
+                let at = [0, 1, 2].map(|k| p[a][k] + f * (p[b][k] - p[a][k]));
+                points.insert(key, plane.to_plane(at));
+                cut[n] = key;
+                n += 1;
+            }
+        }
+        if n == 2 {
+            links.entry(cut[0]).or_default().push(cut[1]);
+            links.entry(cut[1]).or_default().push(cut[0]);
+        }
+    }
+    let mut visited: HashMap<(u32, u32), ()> = HashMap::with_capacity(links.len());
+    let mut starts: Vec<(u32, u32)> = links.keys().copied().collect();
+    // Open chains must be walked from an end; sorting keeps the result deterministic.
+    starts.sort_by_key(|k| (links[k].len() != 1, *k));
+    let mut loops = Vec::new();
+    for start in starts {
+        if visited.contains_key(&start) {
+            continue;
+        }
+        let mut chain = vec![points[&start]];
+        visited.insert(start, ());
+        let mut current = start;
+        while let Some(k) = links[&current]
+            .iter()
+            .find(|k| !visited.contains_key(k))
+            .copied()
+        {
+            visited.insert(k, ());
+            chain.push(points[&k]);
+            current = k;
+        }
+        let closed = chain.len() > 2 && links[&current].contains(&start);
+        loops.push(SectionLoop {
+            points: chain,
+            closed,
+        });
+    }
+    loops
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn plane_coordinates_round_trip() {
+        let plane = Plane::new([0.1, 0.2, 0.3], [1.0, 2.0, -0.5]).unwrap();
+        let p = [0.4, -0.7, 1.1];
+        let q = plane.from_plane(plane.to_plane(p));
+        let d = plane.distance(p);
+        for k in 0..3 {
+            assert!((q[k] + d * plane.normal[k] - p[k]).abs() < 1e-12);
+        }
+        assert!(Plane::new([0.0; 3], [0.0; 3]).is_none());
+    }
+
+    #[test]
+    fn a_tetrahedron_cut_in_the_middle_is_one_closed_triangle() {
+        let p = [
+            0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0f32,
+        ];
+        let t = [[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]];
+        let loops = plane_section(&p, &t, &[0, 1, 2, 3], &Plane::horizontal(2, 0.5));
+        assert_eq!(loops.len(), 1);
+        assert!(loops[0].closed);
+        assert_eq!(loops[0].points.len(), 3);
+    }
+}
