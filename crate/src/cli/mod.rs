@@ -6,6 +6,7 @@ pub mod batch_subjects;
 pub mod build_model;
 pub mod export_gltf;
 pub mod info;
+pub mod landmarks;
 pub mod manifest;
 pub mod model;
 pub mod project;

@@ -7,7 +7,8 @@
 //! * Landmarks: [`landmarks_read`] (`read_landmarks`, format dispatch and name normalisation),
 //!   [`landmarks_csv`], [`landmarks_json`], [`lnd`] (CAESAR `.lnd`), [`landmark_raw`] (the record
 //!   the three readers produce).
-//! * Writers: [`ply_write`], [`obj_write`], [`glb_write`] (the binary glTF container).
+//! * Writers: [`ply_write`], [`obj_write`], [`glb_write`] (the binary glTF container);
+//!   [`landmarks_write`] (`write_landmarks`: `.csv`, `.lnd` or `.json` by the file name).
 //! * [`error`]: [`IoError`], the one error type of every reader; [`limits`]: the largest input
 //!   accepted (inflated size, vertices, triangles), checked before memory is reserved.
 
@@ -18,6 +19,7 @@ pub mod landmark_raw;
 pub mod landmarks_csv;
 pub mod landmarks_json;
 pub mod landmarks_read;
+pub mod landmarks_write;
 pub mod limits;
 pub mod lnd;
 pub mod obj_read;
@@ -33,7 +35,9 @@ pub mod text_xyz;
 
 pub use error::IoError;
 pub use landmarks_csv::write_landmarks_csv;
+pub use landmarks_json::write_landmarks_json;
 pub use landmarks_read::read_landmarks;
+pub use landmarks_write::write_landmarks;
 pub use lnd::write_lnd;
 pub use obj_write::write_obj;
 pub use ply_write::{write_ply, write_ply_ascii};

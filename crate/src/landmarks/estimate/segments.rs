@@ -139,6 +139,15 @@ pub fn parts(template: &Template) -> Vec<Part> {
     parts
 }
 
+/// The part with the largest weight at `vertex`.
+pub fn dominant_part(parts: &[Part], vertex: u32) -> usize {
+    (0..parts.len())
+        .max_by(|&a, &b| {
+            parts[a].weights[vertex as usize].total_cmp(&parts[b].weights[vertex as usize])
+        })
+        .unwrap_or(0)
+}
+
 /// The blended positions Σ_p w_p(v)·T_p(v) of the `rest` vertices.
 pub fn blend(parts: &[Part], transforms: &[Similarity], rest: &[Point3<f64>]) -> Vec<Point3<f64>> {
     rest.iter()

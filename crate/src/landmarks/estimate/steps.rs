@@ -6,7 +6,8 @@
 //!    when there are at least four; each fitted by similarity ICP, the lowest energy kept
 //!    (`candidates.rs`);
 //! 3. the segment-wise rigid fit of the template's parts to the scan's pose (`segments.rs`);
-//! 4. given landmarks far from where that fit puts them are flagged (`suspicious.rs`);
+//! 4. given landmarks far from where the others of their part (or else the fit) put them are
+//!    flagged (`expected.rs`, `suspicious.rs`);
 //! 5. the landmark-free fine alignment (paper §3.2, stiff to soft), the unflagged given landmarks
 //!    anchored;
 //! 6. the landmark vertices read off the fit, each with a confidence (`confidence.rs`); given
@@ -19,11 +20,12 @@ use nalgebra::Point3;
 use super::candidates::{even_sample, fit_similarity, FittedCandidate};
 use super::confidence::{confidence, neighbourhoods, residual, sharpness};
 use super::error::EstimateError;
+use super::expected::expected_positions;
 use super::frame::{frame_candidates, FrameReport};
 use super::matching::Matching;
 use super::params::EstimateParams;
 use super::report::{CandidateReport, EstimateReport, LandmarkReport};
-use super::segments::{fit_segments, parts};
+use super::segments::{dominant_part, fit_segments, parts};
 use super::suspicious::flag_suspicious;
 use super::tick::Ticker;
 use crate::align::{data_weights, fine_align, AlignObserver, FineAlignInput, SurfaceIndex};
@@ -185,16 +187,31 @@ pub fn estimate_landmarks(
         .sum::<f64>()
         / segment_pairs.len().max(1) as f64)
         .sqrt();
-    let predicted: Vec<Point3<f64>> = landmark_vertices
+    let fit_predicted: Vec<Point3<f64>> = landmark_vertices
         .iter()
         .map(|&v| posed[v as usize] / to_m)
         .collect();
-    let flagged = flag_suspicious(
-        &given,
-        &predicted,
-        params.suspicious_distance / to_m,
-        to_m * 1000.0,
-    );
+    let landmark_rest: Vec<Point3<f64>> = landmark_vertices
+        .iter()
+        .map(|&v| rest[v as usize])
+        .collect();
+    let landmark_part: Vec<usize> = landmark_vertices
+        .iter()
+        .map(|&v| dominant_part(&parts, v))
+        .collect();
+    let expected = expected_positions(&landmark_rest, &landmark_part, &given, &fit_predicted);
+    let thresholds: Vec<f64> = expected
+        .iter()
+        .map(|e| {
+            if e.from_given {
+                params.suspicious_distance / to_m
+            } else {
+                params.suspicious_distance_fit / to_m
+            }
+        })
+        .collect();
+    let expected: Vec<Point3<f64>> = expected.iter().map(|e| e.position).collect();
+    let flagged = flag_suspicious(&given, &expected, &thresholds, to_m * 1000.0);
     let segments_ms = now_ms() - segments_start;
 
     let fine_start = now_ms();
