@@ -31,6 +31,21 @@ pub fn load() -> (Template, MakeHumanData) {
     (template, data)
 }
 
+/// Ten landmarks a person would click first (the partial file of the tests and the benchmark):
+/// head, neck, shoulders, wrists, knees, ankles.
+pub const PARTIAL: [&str; 10] = [
+    "Sellion",
+    "Cervicale",
+    "Rt. Acromion",
+    "Lt. Acromion",
+    "Rt. Radial Styloid",
+    "Lt. Radial Styloid",
+    "Rt. Femoral Lateral Epicn",
+    "Lt. Femoral Lateral Epicn",
+    "Rt. Lateral Malleolus",
+    "Lt. Lateral Malleolus",
+];
+
 /// A pose people are scanned in, as shoulder abduction relative to the template's A-pose
 /// (degrees) and trunk / head angles.
 #[derive(Debug, Clone, Copy)]
@@ -106,7 +121,7 @@ pub fn frames() -> Vec<Frame> {
         },
         Frame {
             name: "minus-y-up-mm-facing-+x",
-            rotation: axes(-Vector3::z(), -Vector3::x(), -Vector3::y()),
+            rotation: axes(Vector3::z(), -Vector3::x(), -Vector3::y()),
             per_metre: 1000.0,
             shift: Vector3::new(-400.0, 900.0, 30.0),
         },
@@ -128,7 +143,7 @@ pub struct Case {
     pub subject: Subject,
 }
 
-/// Subject `index` of `seed` with `pose`, scanned, in `frame`.
+/// Subject `index` of `seed` with `pose`, scanned by the default scanner, in `frame`.
 pub fn case(
     data: &MakeHumanData,
     template: &Template,
@@ -137,10 +152,31 @@ pub fn case(
     pose: &Pose,
     frame: &Frame,
 ) -> Case {
+    case_scanned(
+        data,
+        template,
+        seed,
+        index,
+        pose,
+        frame,
+        &ScannerParams::default(),
+    )
+}
+
+/// [`case`] with the scanner's parameters (a finer step makes a larger scan).
+pub fn case_scanned(
+    data: &MakeHumanData,
+    template: &Template,
+    seed: u64,
+    index: u64,
+    pose: &Pose,
+    frame: &Frame,
+    scanner: &ScannerParams,
+) -> Case {
     let mut rng = subject_rng(seed, index);
     let mut params = sample_subject(&mut rng);
     params.pose = pose.pose;
-    let subject = make_subject(data, &params, &ScannerParams::default(), &mut rng).unwrap();
+    let subject = make_subject(data, &params, scanner, &mut rng).unwrap();
     let place = |p: &Point3<f64>| frame.apply(&to_output_frame(p, Units::Metres));
     let scan = Mesh::new(
         subject.scan.mesh.positions.iter().map(place).collect(),

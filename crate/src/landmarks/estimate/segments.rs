@@ -199,10 +199,7 @@ pub fn fit_segments(
         let positions = blend(parts, &transforms, rest);
         let normals = vertex_normals(&positions, triangles);
         let pairs = matching.pairs(vertices, &positions, &normals);
-        let rms = (pairs.iter().map(|p| p.distance.powi(2)).sum::<f64>()
-            / pairs.len().max(1) as f64)
-            .sqrt();
-        if ticker.tick(rms, pairs.len()) == ControlFlow::Break(()) {
+        if ticker.tick(Matching::rms(&pairs), pairs.len()) == ControlFlow::Break(()) {
             return None;
         }
         for (k, part) in parts.iter().enumerate() {
