@@ -223,10 +223,15 @@ fn the_command_line_writes_every_format_and_aligns_without_landmarks() {
         assert_eq!(report["landmarks"].as_array().unwrap().len(), 73);
         let set = read_landmarks(&std::fs::read(&out).unwrap(), &s(&out)).unwrap();
         assert_eq!(set.landmarks.len(), 73, "{ext}");
-        // .lnd is in millimetres; the scan is in centimetres.
-        let scale = if ext == "lnd" { 10.0 } else { 1.0 };
+        // .lnd is in millimetres with 3 decimals; the scan is in centimetres.
+        let (scale, tolerance) = if ext == "lnd" {
+            (10.0, 1e-3)
+        } else {
+            (1.0, 1e-9)
+        };
         let given = partial.landmarks[0].position * scale;
-        assert!((set.get(&partial.landmarks[0].name).unwrap() - given).norm() < 1e-6 * scale);
+        let got = set.get(&partial.landmarks[0].name).unwrap();
+        assert!((got - given).norm() < tolerance, "{ext}: {got} vs {given}");
     }
     let fit = dir.join("fit.ply");
     let report = bodyspace(&["align", "--scan", &s(&scan), "--out", &s(&fit)]);

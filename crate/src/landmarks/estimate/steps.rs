@@ -196,19 +196,31 @@ pub fn estimate_landmarks(
         .iter()
         .map(|&v| dominant_part(&parts, v))
         .collect();
-    let expected = expected_positions(&landmark_rest, &landmark_part, &given, &fit_predicted);
-    let thresholds: Vec<f64> = expected
+    // Twice: a wrong landmark spoils the prediction of the others of its part, so the second
+    // pass predicts from the landmarks the first did not flag.
+    let flag = |trusted: &[(usize, Point3<f64>)]| {
+        let expected = expected_positions(&landmark_rest, &landmark_part, trusted, &fit_predicted);
+        let thresholds: Vec<f64> = expected
+            .iter()
+            .map(|e| {
+                let metres = if e.from_given {
+                    params.suspicious_distance
+                } else {
+                    params.suspicious_distance_fit
+                };
+                metres / to_m
+            })
+            .collect();
+        let expected: Vec<Point3<f64>> = expected.iter().map(|e| e.position).collect();
+        flag_suspicious(&given, &expected, &thresholds, to_m * 1000.0)
+    };
+    let first = flag(&given);
+    let trusted: Vec<(usize, Point3<f64>)> = given
         .iter()
-        .map(|e| {
-            if e.from_given {
-                params.suspicious_distance / to_m
-            } else {
-                params.suspicious_distance_fit / to_m
-            }
-        })
+        .filter(|(i, _)| !first.iter().any(|f| f.name == CAESAR_LANDMARKS[*i].name))
+        .copied()
         .collect();
-    let expected: Vec<Point3<f64>> = expected.iter().map(|e| e.position).collect();
-    let flagged = flag_suspicious(&given, &expected, &thresholds, to_m * 1000.0);
+    let flagged = flag(&trusted);
     let segments_ms = now_ms() - segments_start;
 
     let fine_start = now_ms();
