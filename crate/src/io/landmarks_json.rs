@@ -83,46 +83,9 @@ pub fn parse_json(text: &str, file: &str) -> Result<Vec<RawLandmark>, IoError> {
         .collect()
 }
 
-/// The set as the object form `{"name": [x, y, z], ...}`, in set order, missing landmarks last
-/// as `null` (what [`parse_json`] reads back). Positions as given.
-pub fn write_landmarks_json(set: &crate::landmarks::LandmarkSet) -> Vec<u8> {
-    let name = |n: &str| serde_json::to_string(n).unwrap_or_else(|_| "\"\"".into());
-    let mut lines: Vec<String> = set
-        .landmarks
-        .iter()
-        .map(|l| {
-            let p = l.position;
-            format!("  {}: [{}, {}, {}]", name(&l.name), p.x, p.y, p.z)
-        })
-        .collect();
-    lines.extend(set.missing.iter().map(|m| format!("  {}: null", name(m))));
-    format!("{{\n{}\n}}\n", lines.join(",\n")).into_bytes()
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn written_json_reads_back() {
-        let set = crate::landmarks::LandmarkSet {
-            landmarks: vec![crate::landmarks::Landmark {
-                name: "Rt. 10th Rib".into(),
-                position: nalgebra::Point3::new(1.5, -2.0, 3e-3),
-            }],
-            missing: vec!["Crotch".into()],
-            unknown: vec![],
-        };
-        let text = String::from_utf8(write_landmarks_json(&set)).unwrap();
-        let raw = parse_json(&text, "a.json").unwrap();
-        assert_eq!(raw.len(), 2);
-        assert_eq!(raw[0].name, "Rt. 10th Rib");
-        assert_eq!(
-            raw[0].position,
-            Some(nalgebra::Point3::new(1.5, -2.0, 3e-3))
-        );
-        assert_eq!((raw[1].name.as_str(), raw[1].position), ("Crotch", None));
-    }
 
     #[test]
     fn array_forms_are_read_in_order() {

@@ -35,7 +35,6 @@ pub mod text_xyz;
 
 pub use error::IoError;
 pub use landmarks_csv::write_landmarks_csv;
-pub use landmarks_json::write_landmarks_json;
 pub use landmarks_read::read_landmarks;
 pub use landmarks_write::write_landmarks;
 pub use lnd::write_lnd;
