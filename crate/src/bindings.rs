@@ -9,15 +9,18 @@
 //! * `template.rs`: `loadTemplate` ([`TemplateHandle`]);
 //! * `align.rs`: `alignDefaults`, [`ScanWithLandmarks`], `rbfWarp`, `alignScan`, `exportMesh`;
 //! * `landmarks.rs`: `estimateLandmarks` ([`LandmarkEstimate`]), `flagSuspicious`;
+//! * `landmark_export.rs`: `writeLandmarks` (`.lnd`, CSV or JSON);
 //! * `model.rs`: `loadShapeModel` ([`ShapeSpace`]); `model_build.rs`: `buildShapeModel`.
 
 mod align;
+mod landmark_export;
 mod landmarks;
 mod template;
 
 pub use align::{
     align_defaults, align_scan_js, export_mesh, rbf_warp_js, AlignOutcome, ScanWithLandmarks,
 };
+pub use landmark_export::write_landmarks;
 pub use landmarks::{estimate_landmarks_js, flag_suspicious_js, LandmarkEstimate};
 pub use template::{load_template, TemplateHandle};
 

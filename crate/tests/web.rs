@@ -156,3 +156,49 @@ fn an_empty_file_and_a_blank_name_are_errors() {
     assert!(parse_scan(&square_ply_mm(), " ").is_err());
     assert!(parse_landmarks(b"", "empty.csv").is_err());
 }
+
+#[wasm_bindgen_test]
+fn written_landmarks_read_back_in_each_format_with_the_absent_one_missing() {
+    use bodyspace::bindings::write_landmarks;
+    let names = "Sellion\nCrotch\nCervicale";
+    let positions = [
+        10.5,
+        1700.25,
+        -20.0,
+        f64::NAN,
+        f64::NAN,
+        f64::NAN,
+        1.0,
+        1500.0,
+        -80.0,
+    ];
+    for format in ["lnd", "csv", "json"] {
+        let bytes = write_landmarks(names, &positions, format, "S1")
+            .unwrap_or_else(|_| panic!("{format} written"));
+        let parsed: serde_json::Value = serde_json::from_str(
+            &parse_landmarks(&bytes, &format!("a.{format}"))
+                .unwrap_or_else(|_| panic!("{format} read back")),
+        )
+        .unwrap_or_else(|e| panic!("{e}"));
+        assert_eq!(
+            parsed["names"],
+            serde_json::json!(["Sellion", "Cervicale"]),
+            "{format}"
+        );
+        assert_eq!(
+            parsed["positions"][1],
+            serde_json::json!(1700.25),
+            "{format}"
+        );
+        assert!(
+            parsed["report"]["missing"]
+                .as_array()
+                .unwrap()
+                .iter()
+                .any(|n| n == "Crotch"),
+            "{format}"
+        );
+    }
+    assert!(write_landmarks("Sellion", &[1.0, f64::NAN, 2.0], "lnd", "S1").is_err());
+    assert!(write_landmarks(names, &positions, "xml", "S1").is_err());
+}

@@ -10,6 +10,7 @@ use serde::Deserialize;
 
 use super::landmark_raw::{finite, RawLandmark};
 use super::IoError;
+use crate::landmarks::LandmarkSet;
 
 struct Entries(Vec<(String, Option<[f64; 3]>)>);
 
@@ -83,6 +84,27 @@ pub fn parse_json(text: &str, file: &str) -> Result<Vec<RawLandmark>, IoError> {
         .collect()
 }
 
+/// The set as a JSON object `{"name": [x, y, z], ...}` in set order, then `"name": null` for each
+/// of `set.missing` (the form [`parse_json`] reads back). Positions are written as given.
+pub fn write_landmarks_json(set: &LandmarkSet) -> Vec<u8> {
+    // Written by hand: serde_json's map would sort the names and lose the set's order.
+    let key = |name: &str| serde_json::to_string(name).unwrap_or_default();
+    let mut lines: Vec<String> = set
+        .landmarks
+        .iter()
+        .map(|l| {
+            let p = l.position;
+            format!("  {}: [{}, {}, {}]", key(&l.name), p.x, p.y, p.z)
+        })
+        .collect();
+    lines.extend(
+        set.missing
+            .iter()
+            .map(|name| format!("  {}: null", key(name))),
+    );
+    format!("{{\n{}\n}}\n", lines.join(",\n")).into_bytes()
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -104,5 +126,33 @@ mod tests {
             err.to_string().starts_with("a.json: line 1 column"),
             "{err}"
         );
+    }
+
+    #[test]
+    fn written_json_reads_back_in_order_with_missing_as_null() {
+        use crate::landmarks::Landmark;
+        let set = LandmarkSet {
+            landmarks: vec![
+                Landmark {
+                    name: "Sellion".into(),
+                    position: nalgebra::Point3::new(0.5, 1.75, -0.25),
+                },
+                Landmark {
+                    name: "Crotch".into(),
+                    position: nalgebra::Point3::new(1.0, 2.0, 3.0),
+                },
+            ],
+            missing: vec!["Cervicale".into()],
+            unknown: vec![],
+        };
+        let bytes = write_landmarks_json(&set);
+        let raw = parse_json(std::str::from_utf8(&bytes).unwrap(), "a.json").unwrap();
+        let names: Vec<&str> = raw.iter().map(|r| r.name.as_str()).collect();
+        assert_eq!(names, ["Sellion", "Crotch", "Cervicale"]);
+        assert_eq!(
+            raw[0].position,
+            Some(nalgebra::Point3::new(0.5, 1.75, -0.25))
+        );
+        assert_eq!(raw[2].position, None);
     }
 }

@@ -7,8 +7,9 @@
 //! * Landmarks: [`landmarks_read`] (`read_landmarks`, format dispatch and name normalisation),
 //!   [`landmarks_csv`], [`landmarks_json`], [`lnd`] (CAESAR `.lnd`), [`landmark_raw`] (the record
 //!   the three readers produce).
-//! * Writers: [`ply_write`], [`obj_write`], [`glb_write`] (the binary glTF container);
-//!   [`landmarks_write`] (`write_landmarks`: `.csv`, `.lnd` or `.json` by the file name).
+//! * Writers: [`ply_write`], [`obj_write`], [`glb_write`] (the binary glTF container); landmark
+//!   sets: `write_lnd`, `write_landmarks_csv`, `write_landmarks_json`, and [`landmarks_write`]
+//!   (`write_landmarks`: one of them by the file name's extension).
 //! * [`error`]: [`IoError`], the one error type of every reader; [`limits`]: the largest input
 //!   accepted (inflated size, vertices, triangles), checked before memory is reserved.
 
@@ -35,6 +36,7 @@ pub mod text_xyz;
 
 pub use error::IoError;
 pub use landmarks_csv::write_landmarks_csv;
+pub use landmarks_json::write_landmarks_json;
 pub use landmarks_read::read_landmarks;
 pub use landmarks_write::write_landmarks;
 pub use lnd::write_lnd;
