@@ -32,8 +32,11 @@ fn synthetic_subjects_meet_the_accuracy_goals() {
         let (subject, landmarks) = population_subject(
             &data,
             &template,
-            2026,
-            index,
+            SubjectId {
+                profile: PopulationProfile::Tuning,
+                seed: 2026,
+                index,
+            },
             &ScannerParams::default(),
             &LandmarkParams::default(),
             Units::Metres,

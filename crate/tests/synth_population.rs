@@ -42,8 +42,11 @@ fn subject(
     population_subject(
         d,
         t,
-        seed,
-        index,
+        SubjectId {
+            profile: PopulationProfile::Tuning,
+            seed,
+            index,
+        },
         scanner,
         &LandmarkParams::default(),
         Units::Metres,
@@ -78,7 +81,7 @@ fn statures_spread_like_adults() {
     let (d, _) = data();
     let mut by_sex: HashMap<&str, Vec<f64>> = HashMap::new();
     for i in 0..20 {
-        let params = sample_subject(&mut subject_rng(11, i));
+        let params = sample_subject(PopulationProfile::Tuning, &mut subject_rng(11, i));
         let fitted = fit_height(d, &params);
         let s = rest_stature(d, &fitted);
         assert!(
@@ -244,7 +247,19 @@ fn missing_landmarks_and_output_frame() {
         sigma: 0.0,
         missing: 0.3,
     };
-    let (s, set) = population_subject(d, t, 5, 0, &coarse(), &lp, Units::Millimetres).unwrap();
+    let (s, set) = population_subject(
+        d,
+        t,
+        SubjectId {
+            profile: PopulationProfile::Tuning,
+            seed: 5,
+            index: 0,
+        },
+        &coarse(),
+        &lp,
+        Units::Millimetres,
+    )
+    .unwrap();
     assert_eq!(set.landmarks.len() + set.missing.len(), 73);
     assert!(!set.missing.is_empty() && set.landmarks.len() > 30);
     // Millimetres, z up: Sellion (if present) near the top, at stature scale.
@@ -279,8 +294,11 @@ fn files_round_trip_through_the_readers() {
     let (s, set) = population_subject(
         d,
         t,
-        4,
-        0,
+        SubjectId {
+            profile: PopulationProfile::Tuning,
+            seed: 4,
+            index: 0,
+        },
         &coarse(),
         &LandmarkParams::default(),
         Units::Millimetres,
@@ -313,7 +331,10 @@ fn files_round_trip_through_the_readers() {
 #[test]
 fn pose_angles_move_the_body_the_documented_way() {
     let (d, t) = data();
-    let mut params = fit_height(d, &sample_subject(&mut subject_rng(9, 0)));
+    let mut params = fit_height(
+        d,
+        &sample_subject(PopulationProfile::Tuning, &mut subject_rng(9, 0)),
+    );
     params.pose = PoseParams::default();
     let (_, neutral) = subject::shape_and_pose(d, &params).unwrap();
     let vertex = |name: &str| {
@@ -348,4 +369,80 @@ fn pose_angles_move_the_body_the_documented_way() {
     // Legs do not move with the upper body.
     let m = vertex("Lt. Lateral Malleolus");
     assert!((nod[m] - neutral[m]).norm() < 1e-9);
+}
+
+#[test]
+fn elbows_hips_and_trunk_turn_move_the_body_the_documented_way() {
+    let (d, t) = data();
+    let mut params = fit_height(
+        d,
+        &sample_subject(PopulationProfile::Tuning, &mut subject_rng(9, 0)),
+    );
+    params.pose = PoseParams::default();
+    let (_, neutral) = subject::shape_and_pose(d, &params).unwrap();
+    let vertex = |name: &str| {
+        t.landmark_vertices()
+            .iter()
+            .find(|(n, _)| n == name)
+            .unwrap()
+            .1 as usize
+    };
+    // Hands on hips: the left wrist comes in towards the midline (−x) and up; the elbow stays.
+    params.pose.left_elbow_flexion = 90.0;
+    let (_, bent) = subject::shape_and_pose(d, &params).unwrap();
+    let (w, e) = (vertex("Lt. Radial Styloid"), vertex("Lt. Olecranon"));
+    assert!(
+        bent[w].x < neutral[w].x - 0.1 && bent[w].y > neutral[w].y,
+        "left wrist {:?} → {:?}",
+        neutral[w],
+        bent[w]
+    );
+    assert!((bent[e] - neutral[e]).norm() < 0.02, "elbow stays");
+    // Feet apart: the left ankle moves out (+x), the right one stays.
+    params.pose.left_elbow_flexion = 0.0;
+    params.pose.left_hip_abduction = 8.0;
+    let (_, apart) = subject::shape_and_pose(d, &params).unwrap();
+    let (lm, rm) = (
+        vertex("Lt. Lateral Malleolus"),
+        vertex("Rt. Lateral Malleolus"),
+    );
+    assert!(apart[lm].x > neutral[lm].x + 0.08, "left ankle out");
+    // (Both are put back on the floor, so compare across the body only.)
+    assert!((apart[rm].x - neutral[rm].x).abs() < 1e-9, "right ankle");
+    // Trunk turned to the left: the right acromion comes forward (+z).
+    params.pose.left_hip_abduction = 0.0;
+    params.pose.trunk_turn = 8.0;
+    let (_, turned) = subject::shape_and_pose(d, &params).unwrap();
+    let a = vertex("Rt. Acromion");
+    assert!(turned[a].z > neutral[a].z + 0.01, "right shoulder forward");
+}
+
+#[test]
+fn held_out_profile_has_its_own_scanner_and_bodies() {
+    let (d, t) = data();
+    let held_out = PopulationProfile::HeldOut;
+    let make = |profile: PopulationProfile| {
+        population_subject(
+            d,
+            t,
+            SubjectId {
+                profile,
+                seed: 12,
+                index: 0,
+            },
+            &ScannerParams {
+                vertical_step: 0.010,
+                horizontal_step: 0.010,
+                ..profile.scanner()
+            },
+            &LandmarkParams::default(),
+            Units::Metres,
+        )
+        .unwrap()
+        .0
+    };
+    let (a, b) = (make(PopulationProfile::Tuning), make(held_out));
+    assert_ne!(a.params, b.params);
+    assert_ne!(held_out.scanner(), ScannerParams::default());
+    assert!(b.scan.mesh.vertex_count() > 5_000);
 }

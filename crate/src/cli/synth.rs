@@ -1,4 +1,5 @@
-//! `bodyspace synth --n N --seed S --out DIR`: a synthetic population with ground truth.
+//! `bodyspace synth --n N --seed S --out DIR [--profile tuning|held-out]`: a synthetic population
+//! with ground truth.
 
 use std::path::{Path, PathBuf};
 use std::time::Instant;
@@ -8,7 +9,10 @@ use serde_json::json;
 
 use crate::synth::data::DEFAULT_MAKEHUMAN_DIR;
 use crate::synth::output::write_subject;
-use crate::synth::{population_subject, LandmarkParams, MakeHumanData, ScannerParams, Units};
+use crate::synth::{
+    population_subject, LandmarkParams, MakeHumanData, PopulationProfile, ScannerParams, SubjectId,
+    Units,
+};
 use crate::template::Template;
 
 /// Arguments of `bodyspace synth`.
@@ -20,6 +24,9 @@ pub struct SynthArgs {
     /// Seed of the population (subject i is the same for a seed whatever N).
     #[arg(long, default_value_t = 1)]
     pub seed: u64,
+    /// Population profile: the distributions of shape, pose and scanner (tuning, held-out).
+    #[arg(long, default_value = "tuning", value_parser = ["tuning", "held-out"])]
+    pub profile: String,
     /// Output directory (created if missing).
     #[arg(long)]
     pub out: PathBuf,
@@ -32,12 +39,13 @@ pub struct SynthArgs {
     /// Probability that each landmark is reported missing.
     #[arg(long, default_value_t = 0.0)]
     pub missing: f64,
-    /// Scanner sampling step, mm (vertical and horizontal).
-    #[arg(long, default_value_t = 3.0)]
-    pub step: f64,
-    /// Scanner range noise (standard deviation along the ray), mm.
-    #[arg(long, default_value_t = 1.0)]
-    pub noise: f64,
+    /// Scanner sampling step, mm (vertical and horizontal); default: the profile's (tuning 3).
+    #[arg(long)]
+    pub step: Option<f64>,
+    /// Scanner range noise (standard deviation along the ray), mm; default: the profile's
+    /// (tuning 1).
+    #[arg(long)]
+    pub noise: Option<f64>,
     /// Landmark placement noise (standard deviation per axis), mm.
     #[arg(long, default_value_t = 2.0)]
     pub landmark_noise: f64,
@@ -45,6 +53,22 @@ pub struct SynthArgs {
     #[arg(long)]
     pub gzip: bool,
 }
+
+/// The pose angles in `subjects.csv` (fields of `PoseParams`), in degrees.
+const POSE_COLUMNS: [&str; 12] = [
+    "left_shoulder_abduction",
+    "right_shoulder_abduction",
+    "trunk_flexion",
+    "trunk_lateral",
+    "head_flexion",
+    "head_lateral",
+    "head_turn",
+    "left_elbow_flexion",
+    "right_elbow_flexion",
+    "left_hip_abduction",
+    "right_hip_abduction",
+    "trunk_turn",
+];
 
 /// Runs `bodyspace synth`; the error is the one-line message for stderr.
 pub fn run(args: &SynthArgs) -> Result<(), String> {
@@ -54,23 +78,27 @@ pub fn run(args: &SynthArgs) -> Result<(), String> {
             args.missing
         ));
     }
-    if !(args.step >= 0.5 && args.step <= 50.0) {
-        return Err(format!("--step {} mm is outside 0.5–50 mm", args.step));
+    if let Some(step) = args.step.filter(|s| !(*s >= 0.5 && *s <= 50.0)) {
+        return Err(format!("--step {step} mm is outside 0.5–50 mm"));
     }
-    if !(args.noise >= 0.0 && args.landmark_noise >= 0.0) {
+    if !(args.noise.unwrap_or(0.0) >= 0.0 && args.landmark_noise >= 0.0) {
         return Err("--noise and --landmark-noise must be ≥ 0".into());
     }
+    let profile = PopulationProfile::from_name(&args.profile)
+        .ok_or_else(|| format!("--profile {}: tuning or held-out", args.profile))?;
     let units = if args.units == "m" {
         Units::Metres
     } else {
         Units::Millimetres
     };
-    let scanner = ScannerParams {
-        vertical_step: args.step / 1000.0,
-        horizontal_step: args.step / 1000.0,
-        noise_sigma: args.noise / 1000.0,
-        ..ScannerParams::default()
-    };
+    let mut scanner = profile.scanner();
+    if let Some(step) = args.step {
+        scanner.vertical_step = step / 1000.0;
+        scanner.horizontal_step = step / 1000.0;
+    }
+    if let Some(noise) = args.noise {
+        scanner.noise_sigma = noise / 1000.0;
+    }
     let landmarks = LandmarkParams {
         sigma: args.landmark_noise / 1000.0,
         missing: args.missing,
@@ -87,7 +115,16 @@ pub fn run(args: &SynthArgs) -> Result<(), String> {
         .map(|i| {
             let id = format!("{:0width$}", i + 1);
             let (subject, set) = population_subject(
-                &data, &template, args.seed, i as u64, &scanner, &landmarks, units,
+                &data,
+                &template,
+                SubjectId {
+                    profile,
+                    seed: args.seed,
+                    index: i as u64,
+                },
+                &scanner,
+                &landmarks,
+                units,
             )
             .map_err(|e| e.to_string())?;
             write_subject(&args.out, &id, &subject, &set, units, args.gzip)
@@ -104,7 +141,9 @@ pub fn run(args: &SynthArgs) -> Result<(), String> {
         })
         .collect::<Result<_, String>>()?;
     let seconds = made.elapsed().as_secs_f64();
-    write_tables(&args.out, args, &scanner, &landmarks, units, &records)?;
+    write_tables(
+        &args.out, args, profile, &scanner, &landmarks, units, &records,
+    )?;
     let statures: Vec<f64> = records
         .iter()
         .filter_map(|r| r["stature_m"].as_f64())
@@ -117,6 +156,7 @@ pub fn run(args: &SynthArgs) -> Result<(), String> {
         "{}",
         json!({
             "subjects": args.n,
+            "profile": profile.name(),
             "out": args.out.display().to_string(),
             "seconds": start.elapsed().as_secs_f64(),
             "seconds_per_subject": if args.n > 0 { seconds / args.n as f64 } else { 0.0 },
@@ -146,6 +186,7 @@ fn summary(v: &[f64]) -> serde_json::Value {
 fn write_tables(
     out: &Path,
     args: &SynthArgs,
+    profile: PopulationProfile,
     scanner: &ScannerParams,
     landmarks: &LandmarkParams,
     units: Units,
@@ -153,6 +194,7 @@ fn write_tables(
 ) -> Result<(), String> {
     let manifest = json!({
         "generator": format!("bodyspace synth {}", env!("CARGO_PKG_VERSION")),
+        "profile": profile.name(),
         "seed": args.seed,
         "n": args.n,
         "units": units.name(),
@@ -166,35 +208,32 @@ fn write_tables(
     let text = serde_json::to_string_pretty(&manifest).map_err(|e| e.to_string())?;
     let path = out.join("subjects.json");
     std::fs::write(&path, text).map_err(|e| format!("{}: {e}", path.display()))?;
-    let mut csv = String::from(
-        "id,sex,stature_m,gender,age_years,muscle,weight,height,proportions,left_shoulder_abduction_deg,right_shoulder_abduction_deg,trunk_flexion_deg,trunk_lateral_deg,head_flexion_deg,head_lateral_deg,head_turn_deg,scan_vertices,scan_triangles\n",
+    let shape = [
+        "gender",
+        "age_years",
+        "muscle",
+        "weight",
+        "height",
+        "proportions",
+    ];
+    let mut csv = format!(
+        "id,sex,stature_m,{},{},scan_vertices,scan_triangles\n",
+        shape.join(","),
+        POSE_COLUMNS.map(|c| format!("{c}_deg")).join(",")
     );
+    let f = |v: &serde_json::Value| v.as_f64().map(|x| format!("{x:.4}")).unwrap_or_default();
     for r in records {
-        let p = &r["params"];
-        let s = &p["shape"];
-        let q = &p["pose"];
-        let f = |v: &serde_json::Value| v.as_f64().map(|x| format!("{x:.4}")).unwrap_or_default();
-        csv.push_str(&format!(
-            "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n",
-            r["id"].as_str().unwrap_or(""),
-            r["sex"].as_str().unwrap_or(""),
+        let mut row = vec![
+            r["id"].as_str().unwrap_or("").to_string(),
+            r["sex"].as_str().unwrap_or("").to_string(),
             f(&r["stature_m"]),
-            f(&s["gender"]),
-            f(&s["age_years"]),
-            f(&s["muscle"]),
-            f(&s["weight"]),
-            f(&s["height"]),
-            f(&s["proportions"]),
-            f(&q["left_shoulder_abduction"]),
-            f(&q["right_shoulder_abduction"]),
-            f(&q["trunk_flexion"]),
-            f(&q["trunk_lateral"]),
-            f(&q["head_flexion"]),
-            f(&q["head_lateral"]),
-            f(&q["head_turn"]),
-            r["scan_vertices"],
-            r["scan_triangles"],
-        ));
+        ];
+        row.extend(shape.iter().map(|k| f(&r["params"]["shape"][k])));
+        row.extend(POSE_COLUMNS.iter().map(|k| f(&r["params"]["pose"][k])));
+        row.push(r["scan_vertices"].to_string());
+        row.push(r["scan_triangles"].to_string());
+        csv.push_str(&row.join(","));
+        csv.push('\n');
     }
     let path = out.join("subjects.csv");
     std::fs::write(&path, csv).map_err(|e| format!("{}: {e}", path.display()))

@@ -4,7 +4,7 @@
 //! * [`data`] — loading the MakeHuman package (base mesh, targets, rig);
 //! * [`targets`] — MakeHuman's morph-target matrix (`targets.bin`) and its row names;
 //! * [`macros`] — macro modifiers (gender, age, muscle, weight, height, proportions) as target weights;
-//! * [`population`] — the distributions subjects are drawn from;
+//! * [`population`] — the distributions subjects are drawn from (population profiles);
 //! * [`skeleton`] — joints on the morphed body and linear-blend skinning;
 //! * [`subject`] — morph, pose, floor and scan one subject;
 //! * [`population_run`] — subject `i` of seed `S`, deterministic;
@@ -27,7 +27,7 @@ pub mod targets;
 pub use data::MakeHumanData;
 pub use error::SynthError;
 pub use output::{LandmarkParams, Units};
-pub use population::{sample_subject, PoseParams, SubjectParams};
-pub use population_run::{population_subject, subject_rng};
+pub use population::{sample_subject, PopulationProfile, PoseParams, SubjectParams};
+pub use population_run::{population_subject, subject_rng, SubjectId};
 pub use scanner::{scan, Scan, ScannerParams};
 pub use subject::{make_subject, Subject};

@@ -1,4 +1,11 @@
-//! The distributions of the synthetic population: body shape (macro and local targets) and pose.
+//! The distributions of the synthetic population: body shape (macro and local targets), pose and
+//! scanner, as named **population profiles** ([`PopulationProfile`]).
+//!
+//! * `tuning` (the default) — the population the aligner's defaults were tuned on;
+//! * `held-out` — other modifier ranges and combinations, other poses, another scanner step and
+//!   noise: the aligner is never tuned on it, so its figures are the honest ones.
+//!
+//! `tuning`:
 //!
 //! | parameter | distribution |
 //! | --- | --- |
@@ -14,11 +21,103 @@
 //! | shoulder abduction, each side | U(−10°, 10°) |
 //! | trunk flexion / lateral tilt | N(0, 2°²) clipped ±4° / N(0, 1.5²) clipped ±3° |
 //! | head flexion / lateral tilt / turn | N(0, 4°²) clipped ±8° / N(0, 2°²) clipped ±4° / N(0, 3°²) clipped ±6° |
+//! | elbows, hips, trunk turn | not moved |
+//! | scanner | [`ScannerParams::default`]: 3 mm steps, 1 mm noise, heads at 45° + k·90°, 1.2 m |
+//!
+//! `held-out` (see [`sample_held_out`]; angles of the arm are from the model's A-pose, whose upper
+//! arm hangs [`A_POSE_ARM_DEG`] from the body):
+//!
+//! | parameter | distribution |
+//! | --- | --- |
+//! | sex | female / male with probability ½ each |
+//! | gender value | female U(0.05, 0.3), male U(0.7, 0.95) |
+//! | age | U(20, 80) years |
+//! | muscle | N(0.55, 0.18²) clipped to [0.1, 0.95] |
+//! | weight | N(0.55, 0.2²) clipped to [0.1, 1.0] |
+//! | stature | female N(1.600 m, 0.075²), male N(1.780 m, 0.080²), clipped to [1.45, 2.00] m |
+//! | proportions | U(0.1, 1.0) |
+//! | ethnic mix | Dirichlet(½, ½, ½) |
+//! | each local target pair | N(0, 0.25²) plus, for the girth targets ([`GIRTH_TARGETS`]), one shared N(0, 0.2²) per subject; clipped to [−0.7, 0.7] |
+//! | arms | per subject one of: down (⅕; each arm U(8°, 15°) from the body), hands on hips (⅕; U(35°, 50°) from the body, elbow bent U(80°, 105°) towards the hip), raised (⅗; U(20°, 60°) from the body, the two arms within ±8° of each other) |
+//! | hip abduction (stance) | U(−3°, 8°) for both legs, plus N(0, 0.7°²) per leg |
+//! | trunk flexion / lateral tilt / turn | N(0, 3°²) clipped ±6° / N(0, 2°²) clipped ±4° / N(0, 4°²) clipped ±8° |
+//! | head flexion / lateral tilt / turn | N(0, 6°²) clipped ±12° / N(0, 3°²) clipped ±6° / N(0, 6°²) clipped ±12° |
+//! | scanner | 4 mm vertical and 3.5 mm horizontal steps, 1.3 mm noise, heads at 30° + k·90°, 1.3 m |
 
 use rand::Rng;
-use rand_distr::{Distribution, Exp1, Normal};
+use rand_distr::{Distribution, Exp1, Gamma, Normal};
 
 use super::macros::MacroParams;
+use super::scanner::ScannerParams;
+
+/// A named set of distributions subjects (and their scans) are drawn from.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, serde::Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum PopulationProfile {
+    /// The population the aligner's defaults were tuned on.
+    #[default]
+    Tuning,
+    /// Other shapes, poses and scanner: never tuned on.
+    HeldOut,
+}
+
+impl PopulationProfile {
+    pub const ALL: [PopulationProfile; 2] = [PopulationProfile::Tuning, PopulationProfile::HeldOut];
+
+    /// The profile's name on the command line and in `subjects.json`.
+    pub fn name(self) -> &'static str {
+        match self {
+            PopulationProfile::Tuning => "tuning",
+            PopulationProfile::HeldOut => "held-out",
+        }
+    }
+
+    /// The profile called `name`.
+    pub fn from_name(name: &str) -> Option<Self> {
+        Self::ALL.into_iter().find(|p| p.name() == name)
+    }
+
+    /// The profile's scanner.
+    pub fn scanner(self) -> ScannerParams {
+        match self {
+            PopulationProfile::Tuning => ScannerParams::default(),
+            PopulationProfile::HeldOut => ScannerParams {
+                first_azimuth_deg: 30.0,
+                head_distance: 1.3,
+                vertical_step: 0.004,
+                horizontal_step: 0.0035,
+                noise_sigma: 0.0013,
+                ..ScannerParams::default()
+            },
+        }
+    }
+
+    /// Draws one subject's shape and pose.
+    pub fn sample_subject<R: Rng>(self, rng: &mut R) -> SubjectParams {
+        match self {
+            PopulationProfile::Tuning => sample_tuning(rng),
+            PopulationProfile::HeldOut => sample_held_out(rng),
+        }
+    }
+}
+
+/// Angle between the upper arm and the body in the model's rest (A-)pose, degrees (measured on
+/// the MakeHuman base mesh: shoulder to elbow joint, in the frontal plane).
+pub const A_POSE_ARM_DEG: f64 = 39.6;
+
+/// Local target pairs (names in [`LOCAL_TARGETS`]) that a `held-out` subject's shared girth
+/// value moves together.
+pub const GIRTH_TARGETS: [&str; 9] = [
+    "buttocks-volume",
+    "stomach-pregnant",
+    "measure-bust",
+    "measure-waist",
+    "measure-hips",
+    "measure-thighcirc",
+    "measure-calf",
+    "measure-upperarm",
+    "measure-neckcirc",
+];
 
 /// Local targets varied per subject, as `(name, decrease target, increase target)`.
 pub const LOCAL_TARGETS: [(&str, &str, &str); 18] = [
@@ -114,13 +213,21 @@ pub const LOCAL_TARGETS: [(&str, &str, &str); 18] = [
     ),
 ];
 
-/// The pose of a subject (degrees; positive = abduction / forward / to the subject's left).
+/// The pose of a subject (degrees; positive = abduction / forward / to the subject's left /
+/// elbow bent). Shoulder and hip abduction are from the model's rest pose.
 #[derive(Debug, Clone, Copy, Default, PartialEq, serde::Serialize)]
 pub struct PoseParams {
     pub left_shoulder_abduction: f64,
     pub right_shoulder_abduction: f64,
+    /// Elbow bend in the frontal plane, the hand towards the hip (hands on hips).
+    pub left_elbow_flexion: f64,
+    pub right_elbow_flexion: f64,
+    /// Hip abduction: the foot away from the body's midline (feet apart; < 0 together).
+    pub left_hip_abduction: f64,
+    pub right_hip_abduction: f64,
     pub trunk_flexion: f64,
     pub trunk_lateral: f64,
+    pub trunk_turn: f64,
     pub head_flexion: f64,
     pub head_lateral: f64,
     pub head_turn: f64,
@@ -161,8 +268,13 @@ fn clipped<R: Rng>(rng: &mut R, mean: f64, sd: f64, lo: f64, hi: f64) -> f64 {
     n.sample(rng).clamp(lo, hi)
 }
 
-/// Draws one subject from the distributions in the module documentation.
-pub fn sample_subject<R: Rng>(rng: &mut R) -> SubjectParams {
+/// Draws one subject of `profile` (see the module documentation).
+pub fn sample_subject<R: Rng>(profile: PopulationProfile, rng: &mut R) -> SubjectParams {
+    profile.sample_subject(rng)
+}
+
+/// Draws one `tuning` subject. Its draw order is fixed: subjects of a seed stay bit-identical.
+fn sample_tuning<R: Rng>(rng: &mut R) -> SubjectParams {
     let male = rng.gen_bool(0.5);
     let gender = if male {
         rng.gen_range(0.9..=1.0)
@@ -191,6 +303,7 @@ pub fn sample_subject<R: Rng>(rng: &mut R) -> SubjectParams {
         head_flexion: clipped(rng, 0.0, 4.0, -8.0, 8.0),
         head_lateral: clipped(rng, 0.0, 2.0, -4.0, 4.0),
         head_turn: clipped(rng, 0.0, 3.0, -6.0, 6.0),
+        ..PoseParams::default()
     };
     SubjectParams {
         sex: if male { "male" } else { "female" },
@@ -206,5 +319,147 @@ pub fn sample_subject<R: Rng>(rng: &mut R) -> SubjectParams {
         local,
         pose,
         stature_target,
+    }
+}
+
+/// Draws one `held-out` subject (see the module documentation).
+pub fn sample_held_out<R: Rng>(rng: &mut R) -> SubjectParams {
+    let male = rng.gen_bool(0.5);
+    let gender = if male {
+        rng.gen_range(0.7..=0.95)
+    } else {
+        rng.gen_range(0.05..=0.3)
+    };
+    let age_years = rng.gen_range(20.0..=80.0);
+    let muscle = clipped(rng, 0.55, 0.18, 0.1, 0.95);
+    let weight = clipped(rng, 0.55, 0.2, 0.1, 1.0);
+    let stature_target = if male {
+        clipped(rng, 1.780, 0.080, 1.45, 2.00)
+    } else {
+        clipped(rng, 1.600, 0.075, 1.45, 2.00)
+    };
+    let proportions = rng.gen_range(0.1..=1.0);
+    let gamma = Gamma::new(0.5, 1.0).expect("shape ½ is valid");
+    let e: [f64; 3] = [gamma.sample(rng), gamma.sample(rng), gamma.sample(rng)];
+    let esum: f64 = e.iter().sum::<f64>().max(1e-12);
+    let girth = clipped(rng, 0.0, 0.2, -1.0, 1.0);
+    let local = LOCAL_TARGETS
+        .iter()
+        .map(|(name, _, _)| {
+            let shared = if GIRTH_TARGETS.contains(name) {
+                girth
+            } else {
+                0.0
+            };
+            (clipped(rng, 0.0, 0.25, -1.0, 1.0) + shared).clamp(-0.7, 0.7)
+        })
+        .collect();
+    let pose = held_out_pose(rng);
+    SubjectParams {
+        sex: if male { "male" } else { "female" },
+        shape: MacroParams {
+            gender,
+            age_years,
+            muscle,
+            weight,
+            height: 0.5,
+            proportions,
+            ethnic: [e[0] / esum, e[1] / esum, e[2] / esum],
+        },
+        local,
+        pose,
+        stature_target,
+    }
+}
+
+/// The `held-out` pose: arms down, hands on hips or raised; a stance; trunk and head turned.
+fn held_out_pose<R: Rng>(rng: &mut R) -> PoseParams {
+    // Arm angles from the body, converted to abduction from the A-pose.
+    let (left, right, elbow) = match rng.gen_range(0..5) {
+        0 => (
+            rng.gen_range(8.0..=15.0),
+            rng.gen_range(8.0..=15.0),
+            (0.0, 0.0),
+        ),
+        1 => (
+            rng.gen_range(35.0..=50.0),
+            rng.gen_range(35.0..=50.0),
+            (rng.gen_range(80.0..=105.0), rng.gen_range(80.0..=105.0)),
+        ),
+        _ => {
+            let left: f64 = rng.gen_range(20.0..=60.0);
+            let right = (left + rng.gen_range(-8.0..=8.0)).clamp(20.0, 60.0);
+            (left, right, (0.0, 0.0))
+        }
+    };
+    let stance = rng.gen_range(-3.0..=8.0);
+    PoseParams {
+        left_shoulder_abduction: left - A_POSE_ARM_DEG,
+        right_shoulder_abduction: right - A_POSE_ARM_DEG,
+        left_elbow_flexion: elbow.0,
+        right_elbow_flexion: elbow.1,
+        left_hip_abduction: stance + clipped(rng, 0.0, 0.7, -2.0, 2.0),
+        right_hip_abduction: stance + clipped(rng, 0.0, 0.7, -2.0, 2.0),
+        trunk_flexion: clipped(rng, 0.0, 3.0, -6.0, 6.0),
+        trunk_lateral: clipped(rng, 0.0, 2.0, -4.0, 4.0),
+        trunk_turn: clipped(rng, 0.0, 4.0, -8.0, 8.0),
+        head_flexion: clipped(rng, 0.0, 6.0, -12.0, 12.0),
+        head_lateral: clipped(rng, 0.0, 3.0, -6.0, 6.0),
+        head_turn: clipped(rng, 0.0, 6.0, -12.0, 12.0),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use rand::SeedableRng;
+    use rand_chacha::ChaCha8Rng;
+
+    #[test]
+    fn profiles_round_trip_by_name() {
+        for p in PopulationProfile::ALL {
+            assert_eq!(PopulationProfile::from_name(p.name()), Some(p));
+        }
+        assert_eq!(PopulationProfile::from_name("tuned"), None);
+        assert_eq!(PopulationProfile::default(), PopulationProfile::Tuning);
+    }
+
+    #[test]
+    fn held_out_poses_cover_the_arm_modes_and_stay_in_range() {
+        let mut rng = ChaCha8Rng::seed_from_u64(3);
+        let (mut down, mut hips, mut raised) = (0, 0, 0);
+        for _ in 0..200 {
+            let p = sample_held_out(&mut rng).pose;
+            for a in [p.left_shoulder_abduction, p.right_shoulder_abduction] {
+                let from_body = a + A_POSE_ARM_DEG;
+                assert!((8.0..=60.0).contains(&from_body), "{from_body}");
+            }
+            let from_body = p.left_shoulder_abduction + A_POSE_ARM_DEG;
+            if p.left_elbow_flexion > 0.0 {
+                hips += 1;
+                assert!((80.0..=105.0).contains(&p.left_elbow_flexion));
+            } else if from_body < 20.0 {
+                down += 1;
+            } else {
+                raised += 1;
+            }
+            assert!((-5.0..=10.0).contains(&p.left_hip_abduction));
+            assert!(p.head_turn.abs() <= 12.0 && p.trunk_turn.abs() <= 8.0);
+        }
+        assert!(
+            down > 20 && hips > 20 && raised > 80,
+            "{down} {hips} {raised}"
+        );
+    }
+
+    #[test]
+    fn tuning_subjects_keep_the_unused_joints_still() {
+        let mut rng = ChaCha8Rng::seed_from_u64(4);
+        let p = sample_subject(PopulationProfile::Tuning, &mut rng).pose;
+        assert_eq!(
+            (p.left_elbow_flexion, p.left_hip_abduction, p.trunk_turn),
+            (0.0, 0.0, 0.0)
+        );
+        assert!(p.left_shoulder_abduction.abs() <= 10.0);
     }
 }

@@ -10,7 +10,7 @@ use crate::template::Template;
 use super::data::MakeHumanData;
 use super::error::SynthError;
 use super::output::{subject_landmarks, LandmarkParams, Units};
-use super::population::sample_subject;
+use super::population::PopulationProfile;
 use super::scanner::ScannerParams;
 use super::subject::{make_subject, Subject};
 
@@ -21,19 +21,27 @@ pub fn subject_rng(seed: u64, index: u64) -> ChaCha8Rng {
     rng
 }
 
-/// Subject `index` of the population `seed`, with its landmark set in the output frame.
+/// Which subject: number `index` of the population `seed` drawn from `profile`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct SubjectId {
+    pub profile: PopulationProfile,
+    pub seed: u64,
+    pub index: u64,
+}
+
+/// Subject `id`, with its landmark set in the output frame (`scanner` is usually
+/// `id.profile.scanner()`).
 /// Draw order on the subject's stream: shape and pose, scanner noise, landmark noise and drops.
 pub fn population_subject(
     data: &MakeHumanData,
     template: &Template,
-    seed: u64,
-    index: u64,
+    id: SubjectId,
     scanner: &ScannerParams,
     landmarks: &LandmarkParams,
     units: Units,
 ) -> Result<(Subject, LandmarkSet), SynthError> {
-    let mut rng = subject_rng(seed, index);
-    let params = sample_subject(&mut rng);
+    let mut rng = subject_rng(id.seed, id.index);
+    let params = id.profile.sample_subject(&mut rng);
     let subject = make_subject(data, &params, scanner, &mut rng)?;
     let set = subject_landmarks(
         template.landmark_vertices(),

@@ -35,6 +35,10 @@ const TRUNK_BONE: &str = "spine04";
 const HEAD_BONE: &str = "neck01";
 const LEFT_ARM_BONE: &str = "upperarm01.L";
 const RIGHT_ARM_BONE: &str = "upperarm01.R";
+const LEFT_FOREARM_BONE: &str = "lowerarm01.L";
+const RIGHT_FOREARM_BONE: &str = "lowerarm01.R";
+const LEFT_THIGH_BONE: &str = "upperleg01.L";
+const RIGHT_THIGH_BONE: &str = "upperleg01.R";
 
 /// Morphs, poses and scans one subject; the scanner noise comes from `rng`.
 pub fn make_subject<R: Rng>(
@@ -140,30 +144,30 @@ fn pose_rotations(
             * Rotation3::from_axis_angle(&Vector3::x_axis(), flex.to_radians())
             * Rotation3::from_axis_angle(&Vector3::y_axis(), turn.to_radians())
     };
+    // In the frontal plane a left limb (x > 0) moves away from the body turning about +z, a right
+    // one about −z; the elbow bends the forearm the other way, towards the hip.
+    let frontal =
+        |degrees: f64| Rotation3::from_axis_angle(&Vector3::z_axis(), degrees.to_radians());
     let mut out = HashMap::new();
     out.insert(
         bone(TRUNK_BONE)?,
-        rot(pose.trunk_flexion, pose.trunk_lateral, 0.0),
+        rot(pose.trunk_flexion, pose.trunk_lateral, pose.trunk_turn),
     );
     out.insert(
         bone(HEAD_BONE)?,
         rot(pose.head_flexion, pose.head_lateral, pose.head_turn),
     );
-    // Abduction raises the arm sideways: the left arm (x > 0) turns about +z, the right about −z.
-    out.insert(
-        bone(LEFT_ARM_BONE)?,
-        Rotation3::from_axis_angle(
-            &Vector3::z_axis(),
-            pose.left_shoulder_abduction.to_radians(),
-        ),
-    );
-    out.insert(
-        bone(RIGHT_ARM_BONE)?,
-        Rotation3::from_axis_angle(
-            &Vector3::z_axis(),
-            -pose.right_shoulder_abduction.to_radians(),
-        ),
-    );
+    let limbs = [
+        (LEFT_ARM_BONE, pose.left_shoulder_abduction),
+        (RIGHT_ARM_BONE, -pose.right_shoulder_abduction),
+        (LEFT_FOREARM_BONE, -pose.left_elbow_flexion),
+        (RIGHT_FOREARM_BONE, pose.right_elbow_flexion),
+        (LEFT_THIGH_BONE, pose.left_hip_abduction),
+        (RIGHT_THIGH_BONE, -pose.right_hip_abduction),
+    ];
+    for (name, degrees) in limbs {
+        out.insert(bone(name)?, frontal(degrees));
+    }
     Ok(out)
 }
 
