@@ -124,9 +124,6 @@ mod native {
             sum_ms += ms;
             max_ms = max_ms.max(ms);
             let r = &estimate.report;
-            if std::env::var("CANDIDATES").is_ok() {
-                eprintln!("{}", serde_json::to_string_pretty(&r.candidates).unwrap());
-            }
             if !quiet {
                 println!(
                     "subject {i:2} {:24} {:26} {:7} scan vertices: mean {mean:5.1} mm, worst {max:6.1} mm, frame up {} facing {}, segment RMS {:.1} mm, fit RMS {:.2} mm, flagged {}, {ms:6.0} ms (candidates {:.0}, segments {:.0}, fine {:.0})",

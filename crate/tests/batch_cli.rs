@@ -140,7 +140,10 @@ fn batch_records_every_subject_resumes_shards_and_pools_fits() {
         let rms = report["fine"]["scan_to_template"]["rms_mm"]
             .as_f64()
             .unwrap();
-        assert!(rms < 2.0, "{subject}: scan→template RMS {rms} mm");
+        // From estimated landmarks the fit is worse (docs/landmarks-estimate.md: 1.6 mm mean,
+        // up to 4 mm on the benchmark's subjects), and may be flagged high_rms.
+        let bound = if subject == "lonely" { 5.0 } else { 2.0 };
+        assert!(rms < bound, "{subject}: scan→template RMS {rms} mm");
         assert_eq!(report["quality"]["rms_mm"].as_f64(), Some(rms));
         assert_eq!(
             report["landmarks_estimated"],
