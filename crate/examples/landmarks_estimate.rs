@@ -2,7 +2,12 @@
 //! frames of `tests/estimate_support` with the landmark files withheld.
 //!
 //! `cargo run --release --example landmarks_estimate -- [--n N] [--seed S] [--partial K]
-//!  [--align] [--quiet]`
+//!  [--fine-iterations N] [--segment-iterations N] [--step MM] [--pose K] [--frame K]
+//!  [--first K] [--align] [--quiet]`
+//!
+//! `--pose K`, `--frame K` fix the pose and frame (indices into `poses()`, `frames()`), `--first
+//! K` starts at subject K. `--step MM` sets the virtual scanner's sampling step (default 3 mm; 2.6 mm makes scans of
+//! ≈ 200K vertices).
 //!
 //! Subject i (1..=N) gets pose i mod 5 and frame (i / 5) mod 5 (so N = 25 covers every pair).
 //! Prints per subject the mean and worst landmark error and the time, then per landmark the mean
@@ -17,26 +22,13 @@ mod support;
 
 #[cfg(not(target_arch = "wasm32"))]
 mod native {
-    use super::support::{case, frames, load, poses};
+    use super::support::{case_scanned, frames, load, poses, PARTIAL};
     use bodyspace::align::{align_scan, AlignInput, AlignParams};
     use bodyspace::landmarks::estimate::{estimate_landmarks, EstimateInput, EstimateParams};
     use bodyspace::landmarks::{LandmarkSet, CAESAR_LANDMARKS};
+    use bodyspace::synth::ScannerParams;
     use bodyspace::template::Template;
     use nalgebra::Point3;
-
-    /// Ten landmarks a person would click first: head, neck, shoulders, wrists, knees, ankles.
-    pub const PARTIAL: [&str; 10] = [
-        "Sellion",
-        "Cervicale",
-        "Rt. Acromion",
-        "Lt. Acromion",
-        "Rt. Radial Styloid",
-        "Lt. Radial Styloid",
-        "Rt. Femoral Lateral Epicn",
-        "Lt. Femoral Lateral Epicn",
-        "Rt. Lateral Malleolus",
-        "Lt. Lateral Malleolus",
-    ];
 
     pub fn main() {
         let mut n = 10u64;
@@ -44,6 +36,10 @@ mod native {
         let mut partial = 0usize;
         let mut align = false;
         let mut quiet = false;
+        let mut params = EstimateParams::default();
+        let mut scanner = ScannerParams::default();
+        let (mut pose_at, mut frame_at, mut first): (Option<usize>, Option<usize>, u64) =
+            (None, None, 1);
         let mut args = std::env::args().skip(1);
         while let Some(a) = args.next() {
             match a.as_str() {
@@ -55,6 +51,26 @@ mod native {
                         .and_then(|v| v.parse().ok())
                         .expect("--partial K")
                 }
+                "--fine-iterations" => {
+                    params.fine.max_iterations = args
+                        .next()
+                        .and_then(|v| v.parse().ok())
+                        .expect("--fine-iterations N")
+                }
+                "--segment-iterations" => {
+                    params.segment_iterations = args
+                        .next()
+                        .and_then(|v| v.parse().ok())
+                        .expect("--segment-iterations N")
+                }
+                "--step" => {
+                    let mm: f64 = args.next().and_then(|v| v.parse().ok()).expect("--step MM");
+                    scanner.vertical_step = mm / 1000.0;
+                    scanner.horizontal_step = mm / 1000.0;
+                }
+                "--pose" => pose_at = args.next().and_then(|v| v.parse().ok()),
+                "--frame" => frame_at = args.next().and_then(|v| v.parse().ok()),
+                "--first" => first = args.next().and_then(|v| v.parse().ok()).expect("--first K"),
                 "--align" => align = true,
                 "--quiet" => quiet = true,
                 other => panic!("unknown option {other}"),
@@ -65,10 +81,10 @@ mod native {
         let mut per_landmark = vec![(0.0f64, 0.0f64, 0usize); CAESAR_LANDMARKS.len()];
         let (mut sum_mean, mut worst, mut sum_ms, mut max_ms) = (0.0, 0.0f64, 0.0, 0.0f64);
         let (mut est_corr, mut true_corr, mut est_rms, mut true_rms) = (0.0, 0.0, 0.0, 0.0);
-        for i in 1..=n {
-            let pose = &poses[(i as usize) % poses.len()];
-            let frame = &frames[(i as usize / poses.len()) % frames.len()];
-            let c = case(&data, &template, seed, i, pose, frame);
+        for i in first..first + n {
+            let pose = &poses[pose_at.unwrap_or(i as usize % poses.len())];
+            let frame = &frames[frame_at.unwrap_or((i as usize / poses.len()) % frames.len())];
+            let c = case_scanned(&data, &template, seed, i, pose, frame, &scanner);
             let given = LandmarkSet {
                 landmarks: c
                     .landmarks
@@ -85,7 +101,7 @@ mod native {
                 given: &given,
                 units: None,
             };
-            let estimate = estimate_landmarks(&input, &EstimateParams::default(), &mut ()).unwrap();
+            let estimate = estimate_landmarks(&input, &params, &mut ()).unwrap();
             let to_mm = estimate.scale_to_metres * 1000.0;
             let mut errors = Vec::new();
             for (k, l) in c.landmarks.landmarks.iter().enumerate() {

@@ -20,7 +20,8 @@ fn path(p: &Path) -> &str {
 }
 
 /// A scans folder: 4 good synthetic subjects (`scan_00N.ply` + `landmarks_00N.lnd`), a corrupt
-/// scan (`broken.ply` with landmarks) and a scan without landmarks (`lonely.ply`).
+/// scan (`broken.ply` with landmarks) and a scan without landmarks (`lonely.ply`, whose
+/// landmarks are estimated).
 fn scans_folder(root: &Path) -> PathBuf {
     let synth = root.join("synth");
     let makehuman = concat!(
@@ -112,25 +113,19 @@ fn batch_records_every_subject_resumes_shards_and_pools_fits() {
     let scans = scans_folder(&root);
     let out = root.join("all");
 
-    // 1. Everything at once: four fits, two failures with their reasons; the run succeeds.
+    // 1. Everything at once: five fits (one from estimated landmarks), one failure with its
+    // reason; the run succeeds.
     let first = batch(&scans, &out, COARSE);
     assert_eq!(first["subjects"], 6);
-    assert_eq!(first["failed"], 2);
+    assert_eq!(first["failed"], 1);
     assert_eq!(first["skipped"], 0);
     let rows = manifest(&out);
     assert_eq!(rows.len(), 6);
     let (status, reason) = &rows["broken"];
     assert_eq!(status, "failed");
     assert!(reason.contains("broken.ply"), "{reason}");
-    assert_eq!(
-        rows["lonely"],
-        (
-            "failed".to_string(),
-            "no landmark file (landmark estimation is not available yet)".to_string()
-        )
-    );
-    for id in ["001", "002", "003", "004"] {
-        let subject = format!("scan_{id}");
+    for subject in ["scan_001", "scan_002", "scan_003", "scan_004", "lonely"] {
+        let subject = subject.to_string();
         let (status, reason) = &rows[&subject];
         assert!(status == "ok" || status == "flagged", "{subject}: {status}");
         assert_eq!(status == "ok", reason.is_empty(), "{subject}: {reason}");
@@ -145,8 +140,20 @@ fn batch_records_every_subject_resumes_shards_and_pools_fits() {
         let rms = report["fine"]["scan_to_template"]["rms_mm"]
             .as_f64()
             .unwrap();
-        assert!(rms < 2.0, "{subject}: scan→template RMS {rms} mm");
+        // From estimated landmarks the fit is worse (docs/landmarks-estimate.md: 1.6 mm mean,
+        // up to 4 mm on the benchmark's subjects), and may be flagged high_rms.
+        let bound = if subject == "lonely" { 5.0 } else { 2.0 };
+        assert!(rms < bound, "{subject}: scan→template RMS {rms} mm");
         assert_eq!(report["quality"]["rms_mm"].as_f64(), Some(rms));
+        assert_eq!(
+            report["landmarks_estimated"],
+            subject == "lonely",
+            "{subject}"
+        );
+        assert_eq!(
+            report["estimate"]["landmarks"].as_array().unwrap().len(),
+            73
+        );
     }
     // Nothing half-written is left behind.
     for dir in ["fits", "reports"] {
@@ -160,9 +167,9 @@ fn batch_records_every_subject_resumes_shards_and_pools_fits() {
     let fit = out.join("fits").join("scan_001.ply");
     let before = modified(&fit);
     let second = batch(&scans, &out, COARSE);
-    assert_eq!(second["skipped"], 4);
-    assert_eq!(second["aligned"], 2);
-    assert_eq!(second["failed"], 2);
+    assert_eq!(second["skipped"], 5);
+    assert_eq!(second["aligned"], 1);
+    assert_eq!(second["failed"], 1);
     assert_eq!(modified(&fit), before);
     assert_eq!(manifest(&out), rows);
 
@@ -173,8 +180,8 @@ fn batch_records_every_subject_resumes_shards_and_pools_fits() {
     let stray = out.join("fits").join(".scan_003.ply.999.tmp");
     std::fs::write(&stray, b"ply\nhalf").unwrap();
     let third = batch(&scans, &out, COARSE);
-    assert_eq!(third["skipped"], 3);
-    assert_eq!(third["aligned"], 3);
+    assert_eq!(third["skipped"], 4);
+    assert_eq!(third["aligned"], 2);
     assert_eq!(manifest(&out), rows);
 
     // 3. Two shards cover every subject exactly once. The first also compares its fits with the

@@ -11,8 +11,11 @@
 //!    the fit slid off it.
 //! 3. [`QualityFlag::FoldOvers`] — template triangles whose normal turned against the same
 //!    triangle of the RBF-warped template: fine alignment folded the surface over itself.
-//! 4. Suspicious landmarks — not checked yet: the landmark-estimation issue adds that flag (a
-//!    given landmark far from where the estimate puts it) to [`QualityFlag`] and [`assess`].
+//! 4. [`QualityFlag::SuspiciousLandmarks`] — given landmarks far from where the others of their
+//!    part (or the landmark estimate's fit) put them (`landmarks/estimate/suspicious.rs`): a
+//!    swapped Lt./Rt. pair, a typo, a landmark on the wrong body part. The caller that checked the
+//!    landmarks adds it with [`QualityReport::add_suspicious_landmarks`]; the warp ran without
+//!    them.
 
 use nalgebra::Point3;
 use serde::{Deserialize, Serialize};
@@ -58,6 +61,8 @@ pub enum QualityFlag {
     Unmatched,
     /// Flipped triangles above [`QualityThresholds::max_folded_fraction`].
     FoldOvers,
+    /// Given landmarks that look wrong (listed in [`QualityReport::suspicious_landmarks`]).
+    SuspiciousLandmarks,
 }
 
 impl QualityFlag {
@@ -67,6 +72,7 @@ impl QualityFlag {
             Self::HighRms => "high_rms",
             Self::Unmatched => "unmatched",
             Self::FoldOvers => "fold_overs",
+            Self::SuspiciousLandmarks => "suspicious_landmarks",
         }
     }
 }
@@ -86,9 +92,22 @@ pub struct QualityReport {
     /// Of those, the ones whose normal points against the warped triangle's.
     pub folded_triangles: usize,
     pub folded_fraction: f64,
+    /// Given landmarks that looked wrong and were left out of the warp (names).
+    pub suspicious_landmarks: Vec<String>,
     /// The flags raised, in [`QualityFlag`] order (empty: the fit looks good).
     pub flags: Vec<QualityFlag>,
     pub thresholds: QualityThresholds,
+}
+
+impl QualityReport {
+    /// Records the given landmarks found suspicious (by name) and raises
+    /// [`QualityFlag::SuspiciousLandmarks`] when there are any.
+    pub fn add_suspicious_landmarks(&mut self, names: Vec<String>) {
+        if !names.is_empty() && !self.flags.contains(&QualityFlag::SuspiciousLandmarks) {
+            self.flags.push(QualityFlag::SuspiciousLandmarks);
+        }
+        self.suspicious_landmarks = names;
+    }
 }
 
 /// Counts the triangles of `triangles` (indices into both position lists) whose normal in
@@ -175,6 +194,7 @@ pub fn assess(
         compared_triangles,
         folded_triangles: folded,
         folded_fraction,
+        suspicious_landmarks: Vec::new(),
         flags,
         thresholds: *thresholds,
     }

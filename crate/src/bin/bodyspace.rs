@@ -30,11 +30,16 @@ mod native {
     enum Command {
         /// Align the template onto a scan: the RBF warp (paper §3.1), then fine alignment (§3.2),
         /// coarse to fine at `--resolution fine`; writes the fit (template vertex order, scan frame
-        /// and units) and prints the JSON report. `--rough-only` stops after the warp.
+        /// and units) and prints the JSON report. `--rough-only` stops after the warp. Without
+        /// `--landmarks` the landmarks are estimated first (the report says so).
         Align(bodyspace::cli::align::AlignArgs),
         /// Align every scan of a folder, several at once, resumably: fits, reports with quality
         /// flags and a manifest (`batch --scans DIR --out OUT [--jobs N] [--shard K/N]`).
         Batch(bodyspace::cli::batch::BatchArgs),
+        /// Estimate the 73 CAESAR landmarks of a bare scan (or fill in a partial file):
+        /// `landmarks --scan SCAN --out FILE.csv|.lnd|.json [--landmarks PARTIAL]`; prints the
+        /// JSON report (frame and units assumed, confidence, flagged landmarks, time).
+        Landmarks(bodyspace::cli::landmarks::LandmarksArgs),
         /// Print vertex/triangle counts, bounding box, units, holes, components (and landmarks) as JSON.
         Info(bodyspace::cli::info::InfoArgs),
         /// The generic template: export it (`--resolution base|fine --export DIR`) or rebuild it
@@ -69,6 +74,7 @@ mod native {
             Command::Align(args) => bodyspace::cli::align::run(&args),
             Command::Batch(args) => bodyspace::cli::batch::run(&args),
             Command::Info(args) => bodyspace::cli::info::run(&args),
+            Command::Landmarks(args) => bodyspace::cli::landmarks::run(&args),
             Command::Template(args) => bodyspace::cli::template::run(&args),
             Command::Synth(args) => bodyspace::cli::synth::run(&args),
             Command::BuildModel(args) => bodyspace::cli::build_model::run(&args),

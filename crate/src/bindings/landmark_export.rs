@@ -5,7 +5,7 @@ use nalgebra::Point3;
 use wasm_bindgen::prelude::*;
 
 use super::align::landmark_names;
-use crate::io::{write_landmarks_csv, write_landmarks_json, write_lnd};
+use crate::io::write_landmarks as write_landmarks_file;
 use crate::landmarks::{Landmark, LandmarkSet};
 
 /// The file bytes of a landmark set. `names` one per line, `positions` `#L·3` (xyz interleaved,
@@ -20,14 +20,14 @@ pub fn write_landmarks(
     subject_id: &str,
 ) -> Result<Vec<u8>, JsError> {
     let set = landmark_set(names, positions).map_err(|e| JsError::new(&e))?;
-    match format {
-        "lnd" => Ok(write_lnd(&set, subject_id)),
-        "csv" => Ok(write_landmarks_csv(&set)),
-        "json" => Ok(write_landmarks_json(&set)),
-        other => Err(JsError::new(&format!(
-            "landmark export: unknown format {other:?} (lnd, csv or json)"
-        ))),
+    if !["lnd", "csv", "json"].contains(&format) {
+        return Err(JsError::new(&format!(
+            "landmark export: unknown format {format:?} (lnd, csv or json)"
+        )));
     }
+    // The page gives `.lnd` positions in millimetres already: a metre factor of 1e-3 keeps them.
+    write_landmarks_file(&set, &format!("landmarks.{format}"), 1e-3, subject_id)
+        .map_err(|e| JsError::new(&e))
 }
 
 /// The set `names` / `positions` describe, absent landmarks (all-NaN) listed as missing.

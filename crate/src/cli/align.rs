@@ -1,16 +1,22 @@
-//! `bodyspace align --scan SCAN --landmarks FILE --out fit.ply [...]`: the arguments become one
+//! `bodyspace align --scan SCAN [--landmarks FILE] --out fit.ply [...]`: the arguments become one
 //! [`AlignParams`] (every default read from the core), the files one [`AlignInput`]; the core's
 //! [`align_scan`] does the rest. Writes the fit (or, with `--rough-only`, the RBF-warped template)
 //! as PLY in template vertex order, in the scan's frame and units, and prints the
-//! [`crate::align::AlignmentReport`] as JSON.
+//! [`crate::align::AlignmentReport`] as JSON. Without `--landmarks` the landmarks are estimated
+//! first ([`super::landmarks::estimate`]); the report then has `landmarks_estimated: true` and the
+//! estimate's report under `estimate`.
 
 use std::path::PathBuf;
 use std::str::FromStr;
 
+use serde::Serialize;
+
 use super::read_file;
 use super::truth::read_truth;
-use crate::align::{align_scan, AlignInput, AlignParams, FineStageParams, Preset};
+use crate::align::{align_scan, AlignInput, AlignParams, AlignmentReport, FineStageParams, Preset};
 use crate::io::{read_landmarks, read_scan, write_ply};
+use crate::landmarks::estimate::EstimateReport;
+use crate::landmarks::LandmarkSet;
 use crate::mesh::Mesh;
 use crate::rbf::{Kernel, RbfParams};
 use crate::template::{Resolution, Template};
@@ -21,9 +27,10 @@ pub struct AlignArgs {
     /// The scan: PLY, OBJ or STL, optionally gzip-compressed, in any frame and units.
     #[arg(long)]
     pub scan: PathBuf,
-    /// The scan's landmarks: CSV, CAESAR .lnd or JSON (missing ones are skipped).
+    /// The scan's landmarks: CSV, CAESAR .lnd or JSON (missing ones are skipped). Without it
+    /// the 73 landmarks are estimated from the scan first (`bodyspace landmarks`).
     #[arg(long)]
-    pub landmarks: PathBuf,
+    pub landmarks: Option<PathBuf>,
     /// Stop after the RBF rough deformation (paper §3.1).
     #[arg(long)]
     pub rough_only: bool,
@@ -140,14 +147,21 @@ pub fn run(args: &AlignArgs) -> Result<(), String> {
         .map_err(|e| format!("--resolution {}: {e}", args.resolution))?;
     let scan_name = args.scan.display().to_string();
     let scan = read_scan(&read_file(&args.scan)?, &scan_name).map_err(|e| e.to_string())?;
-    let landmarks = read_landmarks(
-        &read_file(&args.landmarks)?,
-        &args.landmarks.display().to_string(),
-    )
-    .map_err(|e| e.to_string())?;
     let template = Template::embedded()
         .map_err(|e| format!("embedded template: {e}"))?
         .at_resolution(resolution);
+    let (landmarks, estimate) = match &args.landmarks {
+        Some(path) => (
+            read_landmarks(&read_file(path)?, &path.display().to_string())
+                .map_err(|e| e.to_string())?,
+            None,
+        ),
+        None => {
+            let estimate =
+                super::landmarks::estimate(&template, &scan, &LandmarkSet::default(), &args.scan)?;
+            (estimate.to_set(), Some(estimate.report))
+        }
+    };
     let input = AlignInput {
         template: &template,
         base_template: None,
@@ -179,11 +193,26 @@ pub fn run(args: &AlignArgs) -> Result<(), String> {
             args.out.display()
         )
     })?;
-    let text = serde_json::to_string_pretty(&alignment.report).map_err(|e| e.to_string())?;
+    let report = Report {
+        landmarks_estimated: estimate.is_some(),
+        estimate: estimate.as_ref(),
+        alignment: &alignment.report,
+    };
+    let text = serde_json::to_string_pretty(&report).map_err(|e| e.to_string())?;
     if let Some(path) = &args.report {
         std::fs::write(path, &text)
             .map_err(|e| format!("{}: cannot write the report: {e}", path.display()))?;
     }
     println!("{text}");
     Ok(())
+}
+
+/// What `align` prints: the alignment report, and whether (and how) the landmarks were estimated.
+#[derive(Serialize)]
+struct Report<'a> {
+    landmarks_estimated: bool,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    estimate: Option<&'a EstimateReport>,
+    #[serde(flatten)]
+    alignment: &'a AlignmentReport,
 }

@@ -26,12 +26,10 @@ use crate::align::{
     QualityReport, QualityThresholds,
 };
 use crate::io::{read_landmarks, read_scan, write_ply};
+use crate::landmarks::estimate::EstimateReport;
+use crate::landmarks::LandmarkSet;
 use crate::mesh::Mesh;
 use crate::template::{Resolution, Template};
-
-/// The reason recorded for a scan without a landmark file. The landmark-estimation issue
-/// replaces this failure by an estimate (see [`landmarks_of`]).
-pub const NO_LANDMARKS: &str = "no landmark file (landmark estimation is not available yet)";
 
 /// Arguments of `bodyspace batch`.
 #[derive(clap::Args, Debug)]
@@ -103,16 +101,50 @@ struct ReportFile<'a> {
     batch: &'a SubjectRecord,
     #[serde(skip_serializing_if = "Option::is_none")]
     quality: Option<&'a QualityReport>,
+    /// Whether the scan had no landmark file and the estimate's landmarks were used.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    landmarks_estimated: Option<bool>,
+    /// The landmark estimate's report (also the check of a given file).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    estimate: Option<&'a EstimateReport>,
     #[serde(flatten)]
     alignment: Option<&'a AlignmentReport>,
 }
 
-/// The subject's landmarks. This is the hook of landmark estimation: a scan without a landmark
-/// file fails with [`NO_LANDMARKS`] until that issue estimates them here instead.
-fn landmarks_of(subject: &Subject) -> Result<crate::landmarks::LandmarkSet, String> {
-    let path = subject.landmarks.as_ref().ok_or(NO_LANDMARKS)?;
-    let bytes = read_file(path)?;
-    read_landmarks(&bytes, &path.display().to_string()).map_err(|e| e.to_string())
+/// The landmarks the warp uses, the estimate's report, and the names of suspicious given
+/// landmarks. A scan without a landmark file gets the estimate's 73; a given file is checked by
+/// the estimate (`landmarks/estimate/suspicious.rs`) and its suspicious landmarks are left out.
+fn landmarks_of(
+    subject: &Subject,
+    scan: &Mesh,
+    ctx: &Context<'_>,
+) -> Result<(LandmarkSet, EstimateReport, Vec<String>), String> {
+    let template = ctx.base_template.unwrap_or(ctx.template);
+    let given = match &subject.landmarks {
+        Some(path) => read_landmarks(&read_file(path)?, &path.display().to_string())
+            .map_err(|e| e.to_string())?,
+        None => LandmarkSet::default(),
+    };
+    let estimate = super::landmarks::estimate(template, scan, &given, &subject.scan)?;
+    let suspicious: Vec<String> = estimate
+        .report
+        .flagged
+        .iter()
+        .map(|f| f.name.clone())
+        .collect();
+    let landmarks = if subject.landmarks.is_some() {
+        LandmarkSet {
+            landmarks: given
+                .landmarks
+                .into_iter()
+                .filter(|l| !suspicious.contains(&l.name))
+                .collect(),
+            ..given
+        }
+    } else {
+        estimate.to_set()
+    };
+    Ok((landmarks, estimate.report, suspicious))
 }
 
 /// Aligns one subject and writes its fit and report; the record says how it went. Nothing here
@@ -157,6 +189,8 @@ fn process(subject: &Subject, ctx: &Context<'_>) -> SubjectRecord {
         let report = ReportFile {
             batch: &record,
             quality: None,
+            landmarks_estimated: None,
+            estimate: None,
             alignment: None,
         };
         if let Err(e) = write_report(ctx, &record.subject, &report) {
@@ -174,7 +208,7 @@ fn align_and_write(
 ) -> Result<(), String> {
     let scan_name = subject.scan.display().to_string();
     let scan = read_scan(&read_file(&subject.scan)?, &scan_name).map_err(|e| e.to_string())?;
-    let landmarks = landmarks_of(subject)?;
+    let (landmarks, estimate, suspicious) = landmarks_of(subject, &scan, ctx)?;
     let input = AlignInput {
         template: ctx.template,
         base_template: ctx.base_template,
@@ -200,7 +234,8 @@ fn align_and_write(
         let truth = read_truth(&path, &expected, alignment.scale_to_metres)?;
         alignment.compare_with_truth(ctx.template, &truth);
     }
-    let quality = assess(&alignment, ctx.base_triangles, &ctx.thresholds);
+    let mut quality = assess(&alignment, ctx.base_triangles, &ctx.thresholds);
+    quality.add_suspicious_landmarks(suspicious);
     record.rms_mm = quality.rms_mm;
     record.flags = quality.flags.iter().map(|f| f.name().to_string()).collect();
     record.status = if quality.flags.is_empty() {
@@ -224,6 +259,8 @@ fn align_and_write(
     let report = ReportFile {
         batch: record,
         quality: Some(&quality),
+        landmarks_estimated: Some(subject.landmarks.is_none()),
+        estimate: Some(&estimate),
         alignment: Some(&alignment.report),
     };
     write_report(ctx, &subject.name, &report)

@@ -8,6 +8,7 @@ pub mod build_model;
 pub mod export_gltf;
 pub mod export_statismo;
 pub mod info;
+pub mod landmarks;
 pub mod manifest;
 pub mod measure;
 pub mod model;

@@ -8,7 +8,8 @@
 //!   [`landmarks_csv`], [`landmarks_json`], [`lnd`] (CAESAR `.lnd`), [`landmark_raw`] (the record
 //!   the three readers produce).
 //! * Writers: [`ply_write`], [`obj_write`], [`glb_write`] (the binary glTF container); landmark
-//!   sets: `write_lnd`, `write_landmarks_csv`, `write_landmarks_json`.
+//!   sets: `write_lnd`, `write_landmarks_csv`, `write_landmarks_json`, and [`landmarks_write`]
+//!   (`write_landmarks`: one of them by the file name's extension).
 //! * [`subject_files`]: which scan and landmark files make one subject of a batch.
 //! * Shape models: [`statismo_h5`] (native only) reads and writes statismo HDF5 files with the
 //!   HDF5 C library; the layout is `crate::pca::statismo`'s.
@@ -22,6 +23,7 @@ pub mod landmark_raw;
 pub mod landmarks_csv;
 pub mod landmarks_json;
 pub mod landmarks_read;
+pub mod landmarks_write;
 pub mod limits;
 pub mod lnd;
 pub mod obj_read;
@@ -42,6 +44,7 @@ pub use error::IoError;
 pub use landmarks_csv::write_landmarks_csv;
 pub use landmarks_json::write_landmarks_json;
 pub use landmarks_read::read_landmarks;
+pub use landmarks_write::write_landmarks;
 pub use lnd::write_lnd;
 pub use obj_write::write_obj;
 pub use ply_write::{write_ply, write_ply_ascii};

@@ -11,8 +11,8 @@ use bodyspace::landmarks::{Landmark, LandmarkSet};
 use bodyspace::mesh::Mesh;
 use bodyspace::synth::output::to_output_frame;
 use bodyspace::synth::{
-    make_subject, sample_subject, subject_rng, MakeHumanData, PoseParams, ScannerParams, Subject,
-    Units,
+    make_subject, sample_subject, subject_rng, MakeHumanData, PopulationProfile, PoseParams,
+    ScannerParams, Subject, Units,
 };
 use bodyspace::template::{Resolution, Template};
 use nalgebra::{Matrix3, Point3, Rotation3, Vector3};
@@ -31,6 +31,21 @@ pub fn load() -> (Template, MakeHumanData) {
     (template, data)
 }
 
+/// Ten landmarks a person would click first (the partial file of the tests and the benchmark):
+/// head, neck, shoulders, wrists, knees, ankles.
+pub const PARTIAL: [&str; 10] = [
+    "Sellion",
+    "Cervicale",
+    "Rt. Acromion",
+    "Lt. Acromion",
+    "Rt. Radial Styloid",
+    "Lt. Radial Styloid",
+    "Rt. Femoral Lateral Epicn",
+    "Lt. Femoral Lateral Epicn",
+    "Rt. Lateral Malleolus",
+    "Lt. Lateral Malleolus",
+];
+
 /// A pose people are scanned in, as shoulder abduction relative to the template's A-pose
 /// (degrees) and trunk / head angles.
 #[derive(Debug, Clone, Copy)]
@@ -39,8 +54,8 @@ pub struct Pose {
     pub pose: PoseParams,
 }
 
-/// The poses of issue 11 that the generator's skeleton can make today: arms raised, arms near
-/// the body, asymmetric arms, head and trunk turned.
+/// The poses of issue 11: arms raised, arms low, asymmetric arms, head and trunk turned, hands
+/// on hips (elbows bent), feet apart and together.
 pub fn poses() -> Vec<Pose> {
     let p = |name, l, r, trunk, head_turn, head_flexion| Pose {
         name,
@@ -49,10 +64,18 @@ pub fn poses() -> Vec<Pose> {
             right_shoulder_abduction: r,
             trunk_flexion: trunk,
             trunk_lateral: trunk / 2.0,
+            trunk_turn: trunk,
             head_flexion,
-            head_lateral: 0.0,
             head_turn,
+            ..PoseParams::default()
         },
+    };
+    let with = |mut pose: Pose, elbows: f64, hips: f64| {
+        pose.pose.left_elbow_flexion = elbows;
+        pose.pose.right_elbow_flexion = elbows;
+        pose.pose.left_hip_abduction = hips;
+        pose.pose.right_hip_abduction = hips;
+        pose
     };
     vec![
         p("a-pose", 0.0, 0.0, 0.0, 0.0, 0.0),
@@ -60,6 +83,9 @@ pub fn poses() -> Vec<Pose> {
         p("arms-low", -20.0, -20.0, 0.0, 0.0, 0.0),
         p("asymmetric", 12.0, -15.0, 0.0, 0.0, 0.0),
         p("head-and-trunk-turned", 0.0, 0.0, 4.0, 8.0, -6.0),
+        with(p("hands-on-hips", 0.0, 0.0, 0.0, 0.0, 0.0), 95.0, 0.0),
+        with(p("feet-apart", 0.0, 0.0, 0.0, 0.0, 0.0), 0.0, 8.0),
+        with(p("feet-together", -10.0, -10.0, 0.0, 0.0, 0.0), 0.0, -3.0),
     ]
 }
 
@@ -106,7 +132,7 @@ pub fn frames() -> Vec<Frame> {
         },
         Frame {
             name: "minus-y-up-mm-facing-+x",
-            rotation: axes(-Vector3::z(), -Vector3::x(), -Vector3::y()),
+            rotation: axes(Vector3::z(), -Vector3::x(), -Vector3::y()),
             per_metre: 1000.0,
             shift: Vector3::new(-400.0, 900.0, 30.0),
         },
@@ -128,7 +154,7 @@ pub struct Case {
     pub subject: Subject,
 }
 
-/// Subject `index` of `seed` with `pose`, scanned, in `frame`.
+/// Subject `index` of `seed` with `pose`, scanned by the default scanner, in `frame`.
 pub fn case(
     data: &MakeHumanData,
     template: &Template,
@@ -137,10 +163,31 @@ pub fn case(
     pose: &Pose,
     frame: &Frame,
 ) -> Case {
+    case_scanned(
+        data,
+        template,
+        seed,
+        index,
+        pose,
+        frame,
+        &ScannerParams::default(),
+    )
+}
+
+/// [`case`] with the scanner's parameters (a finer step makes a larger scan).
+pub fn case_scanned(
+    data: &MakeHumanData,
+    template: &Template,
+    seed: u64,
+    index: u64,
+    pose: &Pose,
+    frame: &Frame,
+    scanner: &ScannerParams,
+) -> Case {
     let mut rng = subject_rng(seed, index);
-    let mut params = sample_subject(&mut rng);
+    let mut params = sample_subject(PopulationProfile::Tuning, &mut rng);
     params.pose = pose.pose;
-    let subject = make_subject(data, &params, &ScannerParams::default(), &mut rng).unwrap();
+    let subject = make_subject(data, &params, scanner, &mut rng).unwrap();
     let place = |p: &Point3<f64>| frame.apply(&to_output_frame(p, Units::Metres));
     let scan = Mesh::new(
         subject.scan.mesh.positions.iter().map(place).collect(),

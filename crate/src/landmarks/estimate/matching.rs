@@ -53,6 +53,12 @@ impl Matching<'_> {
         out
     }
 
+    /// The RMS distance (m) of `pairs` (0 for none).
+    pub fn rms(pairs: &[Pair]) -> f64 {
+        let sum: f64 = pairs.iter().map(|p| p.distance * p.distance).sum();
+        (sum / pairs.len().max(1) as f64).sqrt()
+    }
+
     /// The ICP energy of `pairs` out of `tried` vertices: the mean squared distance, an unmatched
     /// vertex counting as `outlier_distance` (so a candidate cannot win by matching little).
     pub fn energy(&self, pairs: &[Pair], tried: usize) -> f64 {

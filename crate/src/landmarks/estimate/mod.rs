@@ -7,7 +7,8 @@
 //! * [`candidates`] — the similarity ICP of each candidate.
 //! * [`segments`] — the segment-wise rigid fit of the template's parts (the pose).
 //! * [`matching`] — closest compatible scan points, the ICP energy.
-//! * [`suspicious`] — [`flag_suspicious`]: given landmarks far from the fit's prediction.
+//! * [`suspicious`] — [`flag_suspicious`]: given landmarks far from where they are expected;
+//!   [`expected`] — where: from the other given landmarks of the part, or from the fit.
 //! * [`confidence`] — sharpness of the surface and residual of the fit per landmark.
 //! * [`tick`] — progress and cancel through the caller's `AlignObserver`.
 //! * [`EstimateParams`] (`params.rs`), [`EstimateReport`] (`report.rs`), [`EstimateError`]
@@ -16,6 +17,7 @@
 pub mod candidates;
 pub mod confidence;
 pub mod error;
+pub mod expected;
 pub mod frame;
 pub mod matching;
 pub mod params;

@@ -26,10 +26,14 @@ pub struct EstimateParams {
     /// first: fine alignment's own annealing). Default: fine alignment's defaults with 80
     /// iterations and the given landmarks anchored at weight 1.
     pub fine: FineAlignParams,
-    /// A given landmark farther than this (m) from where the fit predicts it is flagged
-    /// suspicious. Default 60 mm: four times the goal for the estimate's mean error, above the
-    /// worst estimate error we measured (docs/landmarks-estimate.md).
+    /// A given landmark farther than this (m) from where the other given landmarks of its part
+    /// predict it is flagged suspicious. Default 60 mm: body shapes differ by less within one
+    /// rigid part, a swapped Lt./Rt. pair by 25 cm or more (docs/landmarks-estimate.md).
     pub suspicious_distance: f64,
+    /// The same for a landmark whose part has too few other given landmarks, judged against the
+    /// segment-wise fit. Default 120 mm: above the fit's worst error on the synthetic subjects
+    /// (≈ 9 cm, fingertips), below a swapped pair's distance.
+    pub suspicious_distance_fit: f64,
     /// Radius (m) around a landmark vertex over which the fit's residual and the surface's
     /// sharpness are taken for the confidence. Default 25 mm.
     pub confidence_radius: f64,
@@ -51,6 +55,7 @@ impl Default for EstimateParams {
                 ..FineAlignParams::default()
             },
             suspicious_distance: 0.06,
+            suspicious_distance_fit: 0.12,
             confidence_radius: 0.025,
             confidence_residual: 0.004,
         }

@@ -38,7 +38,7 @@ pub struct EstimateReport {
     pub units_detected: bool,
     /// The frame assumed (the best candidate after the whole fit).
     pub frame: FrameReport,
-    /// Every candidate tried, the chosen one first.
+    /// Every candidate tried, by the energy of its similarity fit (the first is `frame`).
     pub candidates: Vec<CandidateReport>,
     /// Landmarks taken from the given file, and estimated.
     pub given: usize,

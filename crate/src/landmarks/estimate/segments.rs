@@ -139,6 +139,15 @@ pub fn parts(template: &Template) -> Vec<Part> {
     parts
 }
 
+/// The part with the largest weight at `vertex`.
+pub fn dominant_part(parts: &[Part], vertex: u32) -> usize {
+    (0..parts.len())
+        .max_by(|&a, &b| {
+            parts[a].weights[vertex as usize].total_cmp(&parts[b].weights[vertex as usize])
+        })
+        .unwrap_or(0)
+}
+
 /// The blended positions Σ_p w_p(v)·T_p(v) of the `rest` vertices.
 pub fn blend(parts: &[Part], transforms: &[Similarity], rest: &[Point3<f64>]) -> Vec<Point3<f64>> {
     rest.iter()
@@ -190,10 +199,7 @@ pub fn fit_segments(
         let positions = blend(parts, &transforms, rest);
         let normals = vertex_normals(&positions, triangles);
         let pairs = matching.pairs(vertices, &positions, &normals);
-        let rms = (pairs.iter().map(|p| p.distance.powi(2)).sum::<f64>()
-            / pairs.len().max(1) as f64)
-            .sqrt();
-        if ticker.tick(rms, pairs.len()) == ControlFlow::Break(()) {
+        if ticker.tick(Matching::rms(&pairs), pairs.len()) == ControlFlow::Break(()) {
             return None;
         }
         for (k, part) in parts.iter().enumerate() {

@@ -6,7 +6,8 @@
 //!    when there are at least four; each fitted by similarity ICP, the lowest energy kept
 //!    (`candidates.rs`);
 //! 3. the segment-wise rigid fit of the template's parts to the scan's pose (`segments.rs`);
-//! 4. given landmarks far from where that fit puts them are flagged (`suspicious.rs`);
+//! 4. given landmarks far from where the others of their part (or else the fit) put them are
+//!    flagged (`expected.rs`, `suspicious.rs`);
 //! 5. the landmark-free fine alignment (paper §3.2, stiff to soft), the unflagged given landmarks
 //!    anchored;
 //! 6. the landmark vertices read off the fit, each with a confidence (`confidence.rs`); given
@@ -19,11 +20,12 @@ use nalgebra::Point3;
 use super::candidates::{even_sample, fit_similarity, FittedCandidate};
 use super::confidence::{confidence, neighbourhoods, residual, sharpness};
 use super::error::EstimateError;
+use super::expected::expected_positions;
 use super::frame::{frame_candidates, FrameReport};
 use super::matching::Matching;
 use super::params::EstimateParams;
 use super::report::{CandidateReport, EstimateReport, LandmarkReport};
-use super::segments::{fit_segments, parts};
+use super::segments::{dominant_part, fit_segments, parts};
 use super::suspicious::flag_suspicious;
 use super::tick::Ticker;
 use crate::align::{
@@ -157,22 +159,25 @@ pub fn estimate_landmarks(
         fitted.push((source, fit));
     }
     fitted.sort_by(|a, b| a.1.energy.total_cmp(&b.1.energy));
-    let (_, best) = *fitted.first().ok_or(EstimateError::NoMatch)?;
-    if best.matched == 0.0 {
+    if fitted.first().is_none_or(|(_, f)| f.matched == 0.0) {
         return Err(EstimateError::NoMatch);
     }
     let candidates_ms = now_ms() - started;
 
+    // The best similarity fit decides the frame. Giving the two best the segment-wise fit and
+    // keeping the lower energy chose the back-to-front frame on 2 of 10 subjects that this gets
+    // right: the segment-wise fit can turn the limbs to fit a body the wrong way round.
     let segments_start = now_ms();
     let all: Vec<u32> = (0..rest.len() as u32)
         .filter(|&v| weights[v as usize] >= 0.5)
         .step_by(2)
         .collect();
     let parts = parts(&template);
+    let best = fitted[0].1.transform;
     let posed = fit_segments(
         &template,
         &parts,
-        best.transform,
+        best,
         &all,
         &matching,
         params.segment_iterations,
@@ -180,23 +185,44 @@ pub fn estimate_landmarks(
     )
     .ok_or(EstimateError::Cancelled)?;
     let posed_normals = crate::mesh::normals::vertex_normals(&posed, triangles);
-    let segment_pairs = matching.pairs(&all, &posed, &posed_normals);
-    let segment_rms = (segment_pairs
-        .iter()
-        .map(|p| p.distance.powi(2))
-        .sum::<f64>()
-        / segment_pairs.len().max(1) as f64)
-        .sqrt();
-    let predicted: Vec<Point3<f64>> = landmark_vertices
+    let segment_rms = Matching::rms(&matching.pairs(&all, &posed, &posed_normals));
+    let fit_predicted: Vec<Point3<f64>> = landmark_vertices
         .iter()
         .map(|&v| posed[v as usize] / to_m)
         .collect();
-    let flagged = flag_suspicious(
-        &given,
-        &predicted,
-        params.suspicious_distance / to_m,
-        to_m * 1000.0,
-    );
+    let landmark_rest: Vec<Point3<f64>> = landmark_vertices
+        .iter()
+        .map(|&v| rest[v as usize])
+        .collect();
+    let landmark_part: Vec<usize> = landmark_vertices
+        .iter()
+        .map(|&v| dominant_part(&parts, v))
+        .collect();
+    // Twice: a wrong landmark spoils the prediction of the others of its part, so the second
+    // pass predicts from the landmarks the first did not flag.
+    let flag = |trusted: &[(usize, Point3<f64>)]| {
+        let expected = expected_positions(&landmark_rest, &landmark_part, trusted, &fit_predicted);
+        let thresholds: Vec<f64> = expected
+            .iter()
+            .map(|e| {
+                let metres = if e.from_given {
+                    params.suspicious_distance
+                } else {
+                    params.suspicious_distance_fit
+                };
+                metres / to_m
+            })
+            .collect();
+        let expected: Vec<Point3<f64>> = expected.iter().map(|e| e.position).collect();
+        flag_suspicious(&given, &expected, &thresholds, to_m * 1000.0)
+    };
+    let first = flag(&given);
+    let trusted: Vec<(usize, Point3<f64>)> = given
+        .iter()
+        .filter(|(i, _)| !first.iter().any(|f| f.name == CAESAR_LANDMARKS[*i].name))
+        .copied()
+        .collect();
+    let flagged = flag(&trusted);
     let segments_ms = now_ms() - segments_start;
 
     let fine_start = now_ms();
@@ -272,7 +298,7 @@ pub fn estimate_landmarks(
     let report = EstimateReport {
         units,
         units_detected: input.units.is_none(),
-        frame: FrameReport::of(&best.transform),
+        frame: FrameReport::of(&best),
         candidates,
         given: given.len(),
         estimated: positions.iter().flatten().count() - given.len(),

@@ -3,9 +3,11 @@
 //! listed with its distance and a suggestion, so a person can fix it and the warp can run
 //! without it.
 //!
-//! The prediction is the segment-wise fit (`segments.rs`), which uses no given landmark: after
-//! a similarity fit alone the wrists of an arms-down scan are 30 cm from the template's, so a
-//! landmark is judged against a fit that has already taken the pose.
+//! The prediction (`expected.rs`) is the similarity fit of the other given landmarks of the same
+//! rigid part when there are enough, else the segment-wise fit of the scan (which uses no given
+//! landmark): after one similarity fit of the whole body the wrists of an arms-down scan are
+//! 30 cm from the template's, so a landmark is judged per part, or against a fit that has
+//! already taken the pose.
 
 use nalgebra::Point3;
 use serde::Serialize;
@@ -39,19 +41,20 @@ pub struct SuspiciousLandmark {
     pub expected: [f64; 3],
 }
 
-/// Flags the `given` landmarks (CAESAR index, position) lying farther than `threshold` from
-/// `predicted` (73, CAESAR order). Positions and `threshold` are in the scan's units;
+/// Flags the `given` landmarks (CAESAR index, position) lying farther than `thresholds[i]` from
+/// `predicted[i]` (both 73, CAESAR order). Positions and thresholds are in the scan's units;
 /// `to_mm` converts a scan length to millimetres for the report.
 pub fn flag_suspicious(
     given: &[(usize, Point3<f64>)],
     predicted: &[Point3<f64>],
-    threshold: f64,
+    thresholds: &[f64],
     to_mm: f64,
 ) -> Vec<SuspiciousLandmark> {
     let position_of = |index: usize| given.iter().find(|(i, _)| *i == index).map(|(_, p)| *p);
     let mut flagged = Vec::new();
     for &(index, p) in given {
         let expected = predicted[index];
+        let threshold = thresholds[index];
         let error = p - expected;
         let distance = error.norm();
         if distance <= threshold || distance.is_nan() {
@@ -60,7 +63,7 @@ pub fn flag_suspicious(
         let name = CAESAR_LANDMARKS[index].name;
         let (kind, suggestion) = if let Some(partner) = partner_of(index).filter(|&j| {
             position_of(j).is_some_and(|q| {
-                (p - predicted[j]).norm() <= threshold && (q - expected).norm() <= threshold
+                (p - predicted[j]).norm() <= thresholds[j] && (q - expected).norm() <= threshold
             })
         }) {
             let other = CAESAR_LANDMARKS[partner].name;
@@ -177,7 +180,7 @@ mod tests {
         given[crotch].1 = pred[index("Suprasternale")] + nalgebra::Vector3::new(5.0, 5.0, 5.0);
         let near = index("Rt. Gonion");
         given[near].1.x += 20.0;
-        let flags = flag_suspicious(&given, &pred, 60.0, 1.0);
+        let flags = flag_suspicious(&given, &pred, &[60.0; 73], 1.0);
         let kinds: Vec<(&str, SuspicionKind)> =
             flags.iter().map(|f| (f.name.as_str(), f.kind)).collect();
         assert!(
