@@ -80,6 +80,10 @@ pub struct BatchArgs {
     /// `align --truth` does. A subject without its truth fails.
     #[arg(long)]
     pub truth: Option<PathBuf>,
+    /// Take given landmark files as they are: no check for suspicious landmarks (which costs one
+    /// landmark estimate per subject, more than the alignment itself; docs/batch.md).
+    #[arg(long)]
+    pub no_landmark_check: bool,
 }
 
 /// What every job shares.
@@ -93,6 +97,7 @@ struct Context<'a> {
     fits: PathBuf,
     reports: PathBuf,
     truth: Option<&'a Path>,
+    check_landmarks: bool,
 }
 
 /// A subject's report file: the alignment report's fields, `quality` and `batch`.
@@ -113,18 +118,22 @@ struct ReportFile<'a> {
 
 /// The landmarks the warp uses, the estimate's report, and the names of suspicious given
 /// landmarks. A scan without a landmark file gets the estimate's 73; a given file is checked by
-/// the estimate (`landmarks/estimate/suspicious.rs`) and its suspicious landmarks are left out.
+/// the estimate (`landmarks/estimate/suspicious.rs`) and its suspicious landmarks are left out,
+/// unless the context says not to check.
 fn landmarks_of(
     subject: &Subject,
     scan: &Mesh,
     ctx: &Context<'_>,
-) -> Result<(LandmarkSet, EstimateReport, Vec<String>), String> {
+) -> Result<(LandmarkSet, Option<EstimateReport>, Vec<String>), String> {
     let template = ctx.base_template.unwrap_or(ctx.template);
     let given = match &subject.landmarks {
         Some(path) => read_landmarks(&read_file(path)?, &path.display().to_string())
             .map_err(|e| e.to_string())?,
         None => LandmarkSet::default(),
     };
+    if subject.landmarks.is_some() && !ctx.check_landmarks {
+        return Ok((given, None, Vec::new()));
+    }
     let estimate = super::landmarks::estimate(template, scan, &given, &subject.scan)?;
     let suspicious: Vec<String> = estimate
         .report
@@ -144,7 +153,7 @@ fn landmarks_of(
     } else {
         estimate.to_set()
     };
-    Ok((landmarks, estimate.report, suspicious))
+    Ok((landmarks, Some(estimate.report), suspicious))
 }
 
 /// Aligns one subject and writes its fit and report; the record says how it went. Nothing here
@@ -260,7 +269,7 @@ fn align_and_write(
         batch: record,
         quality: Some(&quality),
         landmarks_estimated: Some(subject.landmarks.is_none()),
-        estimate: Some(&estimate),
+        estimate: estimate.as_ref(),
         alignment: Some(&alignment.report),
     };
     write_report(ctx, &subject.name, &report)
@@ -466,6 +475,7 @@ pub fn run(args: &BatchArgs) -> Result<(), String> {
             fits: fits.clone(),
             reports: reports.clone(),
             truth: args.truth.as_deref(),
+            check_landmarks: !args.no_landmark_check,
         };
         eprintln!(
             "bodyspace batch: {} subjects to align ({skipped} done before), {jobs} at a time, {threads_per_job} thread(s) each",

@@ -6,6 +6,7 @@
 
 use std::path::{Path, PathBuf};
 
+use super::read_file;
 use crate::io::{read_landmarks, read_scan, write_landmarks};
 use crate::landmarks::estimate::{
     estimate_landmarks, EstimateInput, EstimateParams, LandmarkEstimate,
@@ -88,8 +89,4 @@ fn read_scan_file(path: &Path) -> Result<Mesh, String> {
 
 fn read_landmark_file(path: &Path) -> Result<LandmarkSet, String> {
     read_landmarks(&read_file(path)?, &path.display().to_string()).map_err(|e| e.to_string())
-}
-
-fn read_file(path: &Path) -> Result<Vec<u8>, String> {
-    std::fs::read(path).map_err(|e| format!("{}: cannot read the file: {e}", path.display()))
 }
