@@ -5,6 +5,7 @@ use super::manifest::{read_manifest, Status};
 use super::model::{read_fit, template_for_vertex_count, template_identity};
 use crate::pca::export::{eigenvalues_csv, quality_csv, scores_csv};
 use crate::pca::file::{write_model, BasisPrecision};
+use crate::pca::outliers::{far_subjects, far_threshold};
 use crate::pca::{
     build_body_model, BuildParams, GpaParams, PoseRemoval, QualityParams, TrainingSet,
 };
@@ -218,7 +219,21 @@ pub fn run(args: &BuildModelArgs) -> Result<(), String> {
                 )
             })
             .collect();
+    // Subjects far outside the whole-body model: kept, but listed (docs/batch.md).
+    let far: Vec<serde_json::Value> = far_subjects(&model.whole)
+        .into_iter()
+        .map(|(i, d)| {
+            eprintln!(
+                "bodyspace build-model: {} is far outside the model (Mahalanobis distance {d:.1} > {:.1}); check its fit",
+                model.subjects[i],
+                far_threshold(model.whole.mode_count())
+            );
+            serde_json::json!({ "subject": model.subjects[i], "mahalanobis": d })
+        })
+        .collect();
     let summary = serde_json::json!({
+        "far_from_model": far,
+        "far_threshold": far_threshold(model.whole.mode_count()),
         "model": args.out.display().to_string(),
         "bytes": bytes.len(),
         "subjects": model.subjects.len(),

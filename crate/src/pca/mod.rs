@@ -12,6 +12,7 @@
 //! * [`stitch`] — the stitching types (coefficients, plan, seam report) and f32 slider kernels
 //! * [`morph`] — the body on screen: held coefficients and positions, slider moves as rank-1 updates
 //! * [`subdivide`] — a model mapped exactly to the template's finer resolution (S̄_fine = S·S̄, φ_fine = S·φ)
+//! * [`outliers`] — training subjects far outside the model (Mahalanobis distance of their scores)
 //! * [`from_measurements`] — the most likely body with given measurements (least Mahalanobis norm)
 //! * [`metrics`] — compactness, generalization, specificity (Styner 2003)
 //! * [`export`] — eigenvalues, scores and quality curves as CSV
@@ -33,6 +34,7 @@ pub mod marginal;
 pub mod metrics;
 pub mod model;
 pub mod morph;
+pub mod outliers;
 pub mod params;
 pub mod procrustes_gpa;
 pub mod random;
