@@ -67,6 +67,8 @@ test('six subjects dropped at once are aligned, come back after a reload and bui
   // Excluding one leaves six for the model.
   await row(page, 'scan_006').getByTestId('batch-exclude').click();
   await expect(row(page, 'scan_006')).toHaveAttribute('data-status', 'excluded');
+  // Every change is in the browser's storage before the reload (until then the page asks first).
+  await expect(body(page)).toHaveAttribute('data-batch-saving', '0');
 
   await page.reload();
   await expect(body(page)).toHaveAttribute('data-template-ready', 'true', { timeout: 60_000 });

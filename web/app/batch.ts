@@ -54,6 +54,8 @@ export class Batch {
   /** Start of the current run and the work finished in it, for the ETA. */
   private runStart: number | null = null;
   private finishedInRun = 0;
+  /** Writes to the browser's storage not yet finished (shown as `data-batch-saving`). */
+  private saving = 0;
   /** `?debug`: the next job traps its worker's core instead of aligning (the crash-isolation test). */
   trapNext = false;
 
@@ -63,7 +65,13 @@ export class Batch {
     /** `progress`: only a running subject's progress moved (the page may draw it at the next frame). */
     private readonly onChange: (progress?: boolean) => void,
     private readonly onError: (messages: string[]) => void,
-  ) {}
+  ) {
+    // A reload or close while a change is still being written would lose it: the browser asks first.
+    window.addEventListener('beforeunload', (event) => {
+      if (this.saving > 0) event.preventDefault();
+    });
+    document.body.dataset.batchSaving = '0';
+  }
 
   /** Brings back the stored batch: subjects queued or aligning when the page went away are interrupted. */
   async restore(): Promise<void> {
@@ -277,10 +285,13 @@ export class Batch {
 
   private async save(row: BatchRow): Promise<void> {
     const { progress: _p, progressLabel: _l, ...record } = row;
+    document.body.dataset.batchSaving = String(++this.saving);
     try {
       await this.store.put(record);
     } catch (error) {
       this.onError([`${row.subject}: could not be stored in this browser (${error instanceof Error ? error.message : String(error)}); it will not come back after a reload`]);
+    } finally {
+      document.body.dataset.batchSaving = String(--this.saving);
     }
   }
 }
