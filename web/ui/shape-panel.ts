@@ -201,7 +201,8 @@ export class ShapePanel {
     const fact = (label: string, testid: string, value: string) => [h('dt', {}, label), h('dd', { 'data-testid': testid }, value)];
     const seam = body.seam.segments && body.seam.max_jump > 0 ? `${(body.seam.max_jump * 1000).toFixed(2)} mm (${body.seam.segments.join(' / ')})` : '0 mm';
     this.readings.replaceChildren(
-      ...m.flatMap((r) => fact(r.label, `measure-${r.name}`, formatReading(r.kind, r.value))),
+      // A long name may wrap; a value never does.
+      ...m.flatMap((r) => [h('dt', { class: 'wrap' }, r.label), h('dd', { class: 'reading', 'data-testid': `measure-${r.name}` }, formatReading(r.kind, r.value))]),
       ...fact('Largest seam jump', 'seam-jump', seam),
       ...fact('Reconstruction', 'reconstruct-ms', `${body.reconstructMs.toFixed(2)} ms (${body.rebuilt ? 'full rebuild' : `${body.deltas} rank-1 update${body.deltas === 1 ? '' : 's'}`})`),
       ...fact('Normals', 'normals-ms', `${body.normalsMs.toFixed(1)} ms`),
