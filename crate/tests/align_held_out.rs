@@ -12,10 +12,9 @@ use std::sync::OnceLock;
 
 use bodyspace::align::{align_scan, AlignInput, AlignParams, CorrespondenceReport, Preset};
 use bodyspace::mesh::units::Units as ScanUnits;
-use bodyspace::synth::output::{mesh_to_output_frame, truth_points};
 use bodyspace::synth::*;
 use bodyspace::template::Template;
-use synth_support::base_template_and_data;
+use synth_support::{base_template_and_data, subject_in_metres};
 
 fn data() -> &'static (MakeHumanData, Template) {
     static DATA: OnceLock<(MakeHumanData, Template)> = OnceLock::new();
@@ -28,17 +27,7 @@ fn data() -> &'static (MakeHumanData, Template) {
 /// Subject `id` aligned with `params`: (scan→template RMS mm, correspondence report).
 fn fit(id: SubjectId, params: &AlignParams) -> (f64, CorrespondenceReport) {
     let (data, template) = data();
-    let (subject, landmarks) = population_subject(
-        data,
-        template,
-        id,
-        &id.profile.scanner(),
-        &LandmarkParams::default(),
-        Units::Metres,
-    )
-    .unwrap();
-    let scan = mesh_to_output_frame(&subject.scan.mesh, Units::Metres);
-    let truth = truth_points(&subject, Units::Metres).positions;
+    let (scan, landmarks, truth) = subject_in_metres(data, template, id, &id.profile.scanner());
     let input = AlignInput {
         template,
         base_template: None,

@@ -10,9 +10,8 @@ mod synth_support;
 
 use bodyspace::align::{align_scan, AlignInput, AlignParams};
 use bodyspace::mesh::units::Units as ScanUnits;
-use bodyspace::synth::output::{mesh_to_output_frame, truth_points};
 use bodyspace::synth::*;
-use synth_support::base_template_and_data;
+use synth_support::{base_template_and_data, subject_in_metres};
 
 #[test]
 fn synthetic_subjects_meet_the_accuracy_goals() {
@@ -21,7 +20,7 @@ fn synthetic_subjects_meet_the_accuracy_goals() {
     let mut fine_sum = 0.0;
     let subjects = [1u64, 2, 3];
     for index in subjects {
-        let (subject, landmarks) = population_subject(
+        let (scan, landmarks, truth) = subject_in_metres(
             &data,
             &template,
             SubjectId {
@@ -30,12 +29,7 @@ fn synthetic_subjects_meet_the_accuracy_goals() {
                 index,
             },
             &ScannerParams::default(),
-            &LandmarkParams::default(),
-            Units::Metres,
-        )
-        .unwrap();
-        let scan = mesh_to_output_frame(&subject.scan.mesh, Units::Metres);
-        let truth = truth_points(&subject, Units::Metres).positions;
+        );
         let input = AlignInput {
             template: &template,
             base_template: None,

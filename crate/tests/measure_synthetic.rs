@@ -14,9 +14,8 @@ mod synth_support;
 use bodyspace::align::{align_scan, AlignInput, AlignParams};
 use bodyspace::measure::{upright, BodyMeasurer, Kind, Measure, MeasureParams};
 use bodyspace::mesh::units::Units as ScanUnits;
-use bodyspace::synth::output::{mesh_to_output_frame, truth_points};
 use bodyspace::synth::*;
-use synth_support::base_template_and_data;
+use synth_support::{base_template_and_data, subject_in_metres};
 
 #[test]
 fn a_fitted_subject_measures_like_its_truth() {
@@ -26,7 +25,7 @@ fn a_fitted_subject_measures_like_its_truth() {
     let mut failures = Vec::new();
     let mut worst = [0.0f64; 4];
     for index in [8u64, 9, 10] {
-        let (subject, landmarks) = population_subject(
+        let (scan, landmarks, truth) = subject_in_metres(
             &data,
             &template,
             SubjectId {
@@ -35,12 +34,7 @@ fn a_fitted_subject_measures_like_its_truth() {
                 index,
             },
             &ScannerParams::default(),
-            &LandmarkParams::default(),
-            Units::Metres,
-        )
-        .unwrap();
-        let scan = mesh_to_output_frame(&subject.scan.mesh, Units::Metres);
-        let truth = truth_points(&subject, Units::Metres).positions;
+        );
         let input = AlignInput {
             template: &template,
             base_template: None,

