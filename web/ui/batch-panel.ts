@@ -17,12 +17,12 @@ export interface BatchActions {
 
 type Column = 'subject' | 'status' | 'rms' | 'flags' | 'time';
 
-const COLUMNS: { key: Column; label: string }[] = [
-  { key: 'subject', label: 'Subject' },
-  { key: 'status', label: 'Status' },
-  { key: 'rms', label: 'RMS mm' },
-  { key: 'flags', label: 'Flags' },
-  { key: 'time', label: 'Time s' },
+const COLUMNS: { key: Column; label: string; title: string }[] = [
+  { key: 'subject', label: 'Subject', title: 'The subject, from the scan file name' },
+  { key: 'status', label: 'Status', title: 'Queued, aligning (with progress), ok, flagged, failed, cancelled or excluded' },
+  { key: 'rms', label: 'RMS', title: 'Scan → template RMS distance of the fit, mm' },
+  { key: 'flags', label: 'Flags', title: 'Quality flags of the fit, or why it failed' },
+  { key: 'time', label: 'Time', title: 'Time the alignment took, s' },
 ];
 
 /** The status as the table writes it: `excluded` over the fit's own, progress while aligning. */
@@ -132,15 +132,14 @@ export class BatchPanel {
     const head = h(
       'tr',
       {},
-      ...COLUMNS.map(({ key, label }) => {
-        const th = h('th', { 'data-testid': `batch-sort-${key}`, 'aria-sort': key === column ? (descending ? 'descending' : 'ascending') : undefined }, label);
+      ...COLUMNS.map(({ key, label, title }) => {
+        const th = h('th', { 'data-testid': `batch-sort-${key}`, title, 'aria-sort': key === column ? (descending ? 'descending' : 'ascending') : undefined }, label);
         th.addEventListener('click', () => {
           this.sort = { column: key, descending: key === column ? !descending : false };
           this.redraw();
         });
         return th;
       }),
-      h('th', {}, ''),
     );
     const body = sorted.map((row) => {
       const status = h('td', { 'data-testid': 'batch-status', title: row.reason || row.progressLabel }, statusText(row));
@@ -153,12 +152,11 @@ export class BatchPanel {
           'data-status': row.excluded ? 'excluded' : row.status,
           class: this.selected?.subject === row.subject ? 'selected' : undefined,
         },
-        h('td', {}, row.subject),
+        h('td', { class: 'batch-subject' }, h('div', {}, row.subject), h('div', { class: 'batch-actions' }, ...this.rowActions(row, button))),
         status,
         h('td', { 'data-testid': 'batch-rms' }, row.rmsMm === null ? '—' : row.rmsMm.toFixed(2)),
         h('td', { class: 'batch-flags', title: row.reason }, flags),
         h('td', {}, row.seconds === null ? '—' : row.seconds.toFixed(1)),
-        h('td', { class: 'batch-actions' }, ...this.rowActions(row, button)),
       );
       if (row.fit) tr.addEventListener('click', () => this.actions.onSelect(row.subject));
       return tr;
