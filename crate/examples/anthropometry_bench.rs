@@ -17,6 +17,8 @@
 //!    mean vertex error after a rigid alignment of the truth onto each (the model's pose removal).
 //! 4. (c) times: one body from 2, 4 and 19 measurements; the distribution (100 training subjects
 //!    + 300 samples); boundary manikins of 2, 3 and 4 measurements.
+//! 5. The manikins' population model: the sampled bodies' covariance against the linear map from
+//!    scores (J·Jᵀ at the mean body).
 
 use bodyspace::cli::model::template_identity;
 use bodyspace::measure::{upright, BodyMeasurer, Kind, Measure, MeasureParams, Measurements};
@@ -310,6 +312,55 @@ fn main() {
         dist.training.bodies, dist.samples.bodies
     );
     manikin_times(&model, &measurer, &dist, &solver);
+    linear_map_against_samples(&model, &measurer, &dist);
+}
+
+/// The population model of the manikins: the sampled bodies' covariance of the chosen
+/// measurements against the linear map from scores, Σ ≈ J·Jᵀ with J = ∂m/∂z at the mean body
+/// (forward differences of 0.05 σ, z ~ N(0, I)).
+fn linear_map_against_samples(
+    model: &BodyModel,
+    measurer: &BodyMeasurer,
+    dist: &MeasurementDistribution,
+) {
+    let which = [
+        Measure::Stature,
+        Measure::ChestGirth,
+        Measure::WaistGirth,
+        Measure::HipGirth,
+    ];
+    let modes = model.whole.mode_count();
+    let at = |z: &[f64]| measurer.measure(&body_of(model, z)).unwrap();
+    let mean = at(&[]);
+    let jacobian: Vec<Vec<f64>> = (0..modes)
+        .map(|k| {
+            let mut z = vec![0.0; modes];
+            z[k] = 0.05;
+            let moved = at(&z);
+            which
+                .iter()
+                .map(|&m| (moved.get(m).unwrap() - mean.get(m).unwrap()) / 0.05)
+                .collect()
+        })
+        .collect();
+    let linear = |a: usize, b: usize| jacobian.iter().map(|j| j[a] * j[b]).sum::<f64>();
+    let (_, sampled) = dist.samples.mean_and_covariance(&which).unwrap();
+    let k = which.len();
+    println!(
+        "\nmanikins' population model: sampled bodies against the linear map J·Jᵀ at the mean"
+    );
+    println!("| | sd sampled (mm) | sd linear (mm) | correlation with stature, sampled | linear |");
+    println!("| --- | ---: | ---: | ---: | ---: |");
+    for (i, m) in which.iter().enumerate() {
+        println!(
+            "| {} | {:.1} | {:.1} | {:.2} | {:.2} |",
+            m.definition().name,
+            sampled[i * k + i].sqrt() * 1e3,
+            linear(i, i).sqrt() * 1e3,
+            sampled[i * k] / (sampled[0] * sampled[i * k + i]).sqrt(),
+            linear(i, 0) / (linear(0, 0) * linear(i, i)).sqrt()
+        );
+    }
 }
 
 fn manikin_times(
