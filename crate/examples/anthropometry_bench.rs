@@ -87,14 +87,7 @@ fn median(mut v: Vec<f64>) -> f64 {
 }
 
 fn body_of(model: &BodyModel, sigma: &[f64]) -> Vec<f32> {
-    let b = model.whole.coefficients_from_sigma(sigma).unwrap();
-    model
-        .whole
-        .reconstruct(&b)
-        .unwrap()
-        .iter()
-        .map(|&x| x as f32)
-        .collect()
+    model.whole.body_at_sigma(sigma).unwrap()
 }
 
 fn main() {

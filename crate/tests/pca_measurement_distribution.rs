@@ -7,7 +7,7 @@
 use bodyspace::cli::model::{base_measurer, load_model};
 use bodyspace::measure::Measure;
 use bodyspace::pca::measurement_distribution::{
-    measure_coefficients, measurement_distribution, DistributionParams, PERCENTILE_LEVELS,
+    measure_at_sigma, measurement_distribution, DistributionParams, PERCENTILE_LEVELS,
 };
 use std::path::Path;
 
@@ -78,7 +78,7 @@ fn distributions_of_the_demo_model() {
         );
     }
     // The mean body sits near the middle; a training subject's own values sit where its rank is.
-    let mean_body = measure_coefficients(&model.whole, &measurer, &[]).unwrap();
+    let mean_body = measure_at_sigma(&model.whole, &measurer, &[]).unwrap();
     for p in d.samples.percentiles_of(&mean_body).into_iter().flatten() {
         assert!((20.0..=80.0).contains(&p), "mean body at percentile {p}");
     }

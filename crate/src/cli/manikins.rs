@@ -87,17 +87,10 @@ pub fn run(args: &ManikinsArgs) -> Result<(), String> {
     std::fs::create_dir_all(&args.out).map_err(|e| format!("{}: {e}", args.out.display()))?;
     let mut files = Vec::new();
     for m in &found.manikins {
-        let b = model
+        let positions = model
             .whole
-            .coefficients_from_sigma(&m.body.sigma)
+            .body_at_sigma(&m.body.sigma)
             .map_err(|e| e.to_string())?;
-        let positions: Vec<f32> = model
-            .whole
-            .reconstruct(&b)
-            .map_err(|e| e.to_string())?
-            .iter()
-            .map(|&x| x as f32)
-            .collect();
         let path = args.out.join(format!("{}.ply", m.name));
         write_ply(&path, &positions, &model.triangles)?;
         files.push(path.display().to_string());

@@ -17,7 +17,7 @@ use super::error::PcaError;
 use super::from_measurements::{
     body_from_measurements, BodyFromMeasurements, FromMeasurementsParams,
 };
-use super::measurement_distribution::{measure_coefficients, PopulationMeasurements};
+use super::measurement_distribution::{measure_at_sigma, PopulationMeasurements};
 use super::shape_model::ShapeModel;
 use crate::measure::{BodyMeasurer, Measure, Measurements};
 use nalgebra::{DMatrix, DVector, SymmetricEigen};
@@ -240,12 +240,11 @@ pub fn boundary_manikins(
             measures.iter().copied().zip(y.iter().copied()).collect();
         let body = body_from_measurements(model, measurer, &targets, solver)?;
         let achieved: Vec<f64> = body.achieved.iter().map(|a| a.achieved).collect();
-        let b = model.coefficients_from_sigma(&body.sigma)?;
         manikins.push(Manikin {
             name: format!("manikin_{:02}", i + 1),
             direction: u,
             distance: mahalanobis(&achieved, &mean, &covariance),
-            measurements: measure_coefficients(model, measurer, &b)?,
+            measurements: measure_at_sigma(model, measurer, &body.sigma)?,
             body,
         });
         progress((i + 1) as f64 / points.len() as f64);

@@ -115,13 +115,7 @@ impl MeasuredBody for WholeBody<'_> {
     }
 
     fn body(&self, z: &[f64]) -> Result<Vec<f32>, PcaError> {
-        let b = self.model.coefficients_from_sigma(z)?;
-        Ok(self
-            .model
-            .reconstruct(&b)?
-            .iter()
-            .map(|&x| x as f32)
-            .collect())
+        self.model.body_at_sigma(z)
     }
 
     fn moved(

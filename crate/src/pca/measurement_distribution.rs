@@ -217,15 +217,14 @@ fn pearson(pairs: &[(f64, f64)]) -> f64 {
     sab / (saa * sbb).sqrt()
 }
 
-/// Every measurement of the body of `model` at coefficients `b` (model units).
-pub fn measure_coefficients(
+/// Every measurement of the body of `model` at σ-unit coefficients `sigma`.
+pub fn measure_at_sigma(
     model: &ShapeModel,
     measurer: &BodyMeasurer,
-    b: &[f64],
+    sigma: &[f64],
 ) -> Result<Measurements, PcaError> {
-    let x: Vec<f32> = model.reconstruct(b)?.iter().map(|&v| v as f32).collect();
     measurer
-        .measure(&x)
+        .measure(&model.body_at_sigma(sigma)?)
         .map_err(|e| PcaError::BadParameter(e.to_string()))
 }
 
@@ -242,7 +241,7 @@ pub fn training_measurements(
                 .iter()
                 .map(|&x| x as f64)
                 .collect();
-            measure_coefficients(model, measurer, &b)
+            measure_at_sigma(model, measurer, &model.sigma_from_coefficients(&b))
         })
         .collect()
 }
@@ -262,8 +261,7 @@ pub fn sampled_measurements(
     let mut out = Vec::with_capacity(count);
     for i in 0..count {
         let z: Vec<f64> = (0..modes).map(|_| rng.next_normal()).collect();
-        let b = model.coefficients_from_sigma(&z)?;
-        out.push(measure_coefficients(model, measurer, &b)?);
+        out.push(measure_at_sigma(model, measurer, &z)?);
         progress((i + 1) as f64 / count as f64);
     }
     Ok(out)
