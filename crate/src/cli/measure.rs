@@ -6,7 +6,7 @@
 
 use super::build_model::{fit_files, subject_of};
 use super::model::{base_measurer, load_model, measure_any_frame, read_fit};
-use crate::measure::{Measure, Measurements};
+use crate::measure::{BodyMeasurer, Measure, Measurements};
 use crate::pca::measurement_distribution::{
     measurement_distribution, training_measurements, DistributionParams, PopulationMeasurements,
 };
@@ -30,7 +30,7 @@ pub struct MeasureArgs {
     #[arg(long)]
     pub model: Option<PathBuf>,
     /// A folder of fits (`batch`'s OUT/fits): one CSV row per fit, with --csv.
-    #[arg(long, requires = "csv", conflicts_with = "distribution")]
+    #[arg(long, requires = "csv", conflicts_with_all = ["distribution", "model"])]
     pub fits: Option<PathBuf>,
     /// Every measurement over the model's training subjects and over bodies sampled from it:
     /// sorted values, percentiles 5/25/50/75/95, mean, sd and correlations, as JSON.
@@ -58,7 +58,7 @@ pub fn run(args: &MeasureArgs) -> Result<(), String> {
             .model
             .as_deref()
             .ok_or("--distribution needs --model MODEL")?;
-        return distribution(model, args);
+        return distribution(model, &measurer, args);
     }
     match (&args.mesh, &args.fits, &args.csv) {
         (Some(_), _, Some(_)) => Err("--csv goes with --fits DIR or --distribution".into()),
@@ -142,16 +142,15 @@ fn percentiles(m: &Measurements, population: &PopulationMeasurements) -> serde_j
 }
 
 /// `measure --model MODEL --distribution`: the distribution as JSON, with --csv every body's row.
-fn distribution(path: &Path, args: &MeasureArgs) -> Result<(), String> {
+fn distribution(path: &Path, measurer: &BodyMeasurer, args: &MeasureArgs) -> Result<(), String> {
     let defaults = DistributionParams::default();
     let params = DistributionParams {
         samples: args.samples.unwrap_or(defaults.samples),
         seed: args.seed.unwrap_or(defaults.seed),
     };
     let (model, _) = load_model(path)?;
-    let measurer = base_measurer()?;
     let started = std::time::Instant::now();
-    let d = measurement_distribution(&model.whole, &measurer, &params, &mut |_| {})
+    let d = measurement_distribution(&model.whole, measurer, &params, &mut |_| {})
         .map_err(|e| format!("{}: {e}", path.display()))?;
     let seconds = started.elapsed().as_secs_f64();
     if let Some(csv) = &args.csv {

@@ -73,15 +73,19 @@ pub fn segment_body_from_measurements(
 ) -> Result<SegmentBodyFromMeasurements, PcaError> {
     for (m, _) in targets {
         if measurement_segment(*m) != Some(segment) {
-            let name = m.definition().name;
+            let own: Vec<&str> = segment_measurements(segment)
+                .iter()
+                .map(|m| m.definition().name)
+                .collect();
+            let own = if own.is_empty() {
+                "none: its measurements are taken on the right side".to_string()
+            } else {
+                own.join(", ")
+            };
             return Err(PcaError::BadParameter(format!(
-                "{name} does not belong to the {} segment (its targets: {})",
+                "{} does not belong to the {} segment (its targets: {own})",
+                m.definition().name,
                 segment.name(),
-                segment_measurements(segment)
-                    .iter()
-                    .map(|m| m.definition().name)
-                    .collect::<Vec<_>>()
-                    .join(", ")
             )));
         }
     }
