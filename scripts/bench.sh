@@ -10,11 +10,13 @@
 #   batch  20 synthetic subjects (`bodyspace synth --n 20 --seed 7`, as the CLI batch benchmark)
 #          picked at once in the app: wall time to the built model with the worker pool and with
 #          one worker (bench/batch-bench.mjs; BATCH_RUNS rounds, default 2)
-# BENCH_PARTS picks some (default: "parse shape align batch"); RUNS / SHAPE_RUNS set the repetitions.
+#   anthro bodies from measurements (random targets inside the 5–95 % range; held-out subjects),
+#          distributions and boundary manikins, natively (crate/examples/anthropometry_bench.rs)
+# BENCH_PARTS picks some (default: "parse shape align batch anthro"); RUNS / SHAPE_RUNS set the repetitions.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 export PATH="$HOME/.cargo/bin:$PATH"
-parts="${BENCH_PARTS:-parse shape align batch}"
+parts="${BENCH_PARTS:-parse shape align batch anthro}"
 runs="${RUNS:-7}"
 port="${BENCH_PORT:-4179}"
 work="$(mktemp -d)"
@@ -71,5 +73,12 @@ if wants batch; then
   crate/target/release/bodyspace synth --n 20 --seed 7 --out "$work/batch" >/dev/null
   echo "load average before: $(cut -d' ' -f1-3 /proc/loadavg)"
   node bench/batch-bench.mjs "http://127.0.0.1:$port/" "$work/batch" "${BATCH_RUNS:-2}"
+  echo "load average after: $(cut -d' ' -f1-3 /proc/loadavg)"
+fi
+if wants anthro; then
+  echo
+  echo "== anthropometry: bodies from measurements, distributions, boundary manikins (native)"
+  echo "load average before: $(cut -d' ' -f1-3 /proc/loadavg)"
+  cargo run --quiet --release --manifest-path crate/Cargo.toml --example anthropometry_bench
   echo "load average after: $(cut -d' ' -f1-3 /proc/loadavg)"
 fi

@@ -53,17 +53,10 @@ pub fn run(args: &BodyArgs) -> Result<(), String> {
     let params = FromMeasurementsParams::default();
     let found = body_from_measurements(&model.whole, &measurer, &targets, &params)
         .map_err(|e| e.to_string())?;
-    let b = model
+    let positions = model
         .whole
-        .coefficients_from_sigma(&found.sigma)
+        .body_at_sigma(&found.sigma)
         .map_err(|e| e.to_string())?;
-    let positions: Vec<f32> = model
-        .whole
-        .reconstruct(&b)
-        .map_err(|e| e.to_string())?
-        .iter()
-        .map(|&x| x as f32)
-        .collect();
     write_ply(&args.out, &positions, &model.triangles)?;
     let summary = serde_json::json!({
         "out": args.out.display().to_string(),

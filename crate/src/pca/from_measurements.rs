@@ -9,7 +9,12 @@
 //!
 //! W = diag(1 / tolerance) putting lengths, girths, volume and area on one scale, μ small: among
 //! the bodies that meet the targets, the one nearest the mean in σ units. Iterates until every
-//! target is within a quarter of its tolerance or `max_iterations`.
+//! target is within a quarter of its tolerance or `max_iterations`. A step that raises the cost
+//! ‖W·(m(z) − t)‖² + μ·‖z‖² or makes a body without one of the sections is refused and retried
+//! with Levenberg–Marquardt damping: targets no body of the model has (all 19 values of a
+//! person outside the population) end at the nearest body the model can make instead of at a
+//! degenerate one. (A segment model with the body held, [`super::segment_targets`], runs the
+//! same iteration from and towards its starting coefficients.)
 
 use super::error::PcaError;
 use super::shape_model::ShapeModel;
@@ -20,7 +25,7 @@ use serde::Serialize;
 /// Parameters of [`body_from_measurements`], with their defaults.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct FromMeasurementsParams {
-    /// Gauss–Newton iterations at most; default 8.
+    /// Gauss–Newton iterations (each a step tried) at most; default 12.
     pub max_iterations: usize,
     /// Forward-difference step in σ units; default 0.05.
     pub step: f64,
@@ -37,7 +42,7 @@ pub struct FromMeasurementsParams {
 impl Default for FromMeasurementsParams {
     fn default() -> Self {
         Self {
-            max_iterations: 8,
+            max_iterations: 12,
             step: 0.05,
             regularisation: 1e-4,
             length_tolerance: 0.002,
@@ -80,10 +85,52 @@ pub struct BodyFromMeasurements {
     pub mahalanobis: f64,
 }
 
-/// The body of `model` (the whole-body model) at σ-unit coefficients `z` as flat f32 positions.
-fn body(model: &ShapeModel, z: &[f64]) -> Result<Vec<f32>, PcaError> {
-    let b = model.coefficients_from_sigma(z)?;
-    Ok(model.reconstruct(&b)?.iter().map(|&x| x as f32).collect())
+/// A body parameterised by σ-unit coefficients z of one model: what the solver moves.
+/// [`WholeBody`] here; a segment model with the rest of the body held is
+/// [`super::segment_targets`].
+pub(crate) trait MeasuredBody {
+    /// The model's standard deviations √λₖ (one per coefficient).
+    fn standard_deviations(&self) -> Vec<f64>;
+    /// The body at `z` as flat f32 positions (3V).
+    fn body(&self, z: &[f64]) -> Result<Vec<f32>, PcaError>;
+    /// `out` = the body `positions` (at some z) moved by `delta` σ along coefficient `k`.
+    fn moved(
+        &self,
+        positions: &[f32],
+        k: usize,
+        delta: f64,
+        out: &mut [f32],
+    ) -> Result<(), PcaError>;
+}
+
+/// The whole-body model: x = S̄ + Φ·(√λ ⊙ z).
+struct WholeBody<'a> {
+    model: &'a ShapeModel,
+    sd: Vec<f64>,
+}
+
+impl MeasuredBody for WholeBody<'_> {
+    fn standard_deviations(&self) -> Vec<f64> {
+        self.sd.clone()
+    }
+
+    fn body(&self, z: &[f64]) -> Result<Vec<f32>, PcaError> {
+        self.model.body_at_sigma(z)
+    }
+
+    fn moved(
+        &self,
+        positions: &[f32],
+        k: usize,
+        delta: f64,
+        out: &mut [f32],
+    ) -> Result<(), PcaError> {
+        let d = (delta * self.sd[k]) as f32;
+        for (p, (&x, &phi)) in out.iter_mut().zip(positions.iter().zip(self.model.mode(k))) {
+            *p = x + d * phi;
+        }
+        Ok(())
+    }
 }
 
 /// The whole-body coefficients of `model` meeting `targets` (measurement, value in m, m³, m²)
@@ -91,6 +138,24 @@ fn body(model: &ShapeModel, z: &[f64]) -> Result<Vec<f32>, PcaError> {
 /// an empty or repeated target, a non-finite value, or a body that cannot be measured.
 pub fn body_from_measurements(
     model: &ShapeModel,
+    measurer: &BodyMeasurer,
+    targets: &[(Measure, f64)],
+    params: &FromMeasurementsParams,
+) -> Result<BodyFromMeasurements, PcaError> {
+    let start = vec![0.0; model.mode_count()];
+    let whole = WholeBody {
+        model,
+        sd: model.standard_deviations(),
+    };
+    solve(&whole, start, measurer, targets, params)
+}
+
+/// The Gauss–Newton iteration of the module doc on any [`MeasuredBody`], from σ-unit `start`
+/// and regularised towards it: z⁺ = argmin ‖W·(J·z⁺ − r)‖² + μ·‖z⁺ − start‖² (start 0: the
+/// least Mahalanobis norm).
+pub(crate) fn solve(
+    model: &dyn MeasuredBody,
+    start: Vec<f64>,
     measurer: &BodyMeasurer,
     targets: &[(Measure, f64)],
     params: &FromMeasurementsParams,
@@ -128,12 +193,12 @@ pub fn body_from_measurements(
             .collect::<Result<Vec<f64>, _>>()
             .map(DVector::from_vec)
     };
-    let modes = model.mode_count();
-    let sd = model.standard_deviations();
+    let modes = model.standard_deviations().len();
     let target = DVector::from_iterator(targets.len(), targets.iter().map(|(_, v)| *v));
     let w = DVector::from_vec(weights);
-    let mut z = vec![0.0; modes];
-    let mut positions = body(model, &z)?;
+    let prior = DVector::from_vec(start.clone());
+    let mut z = start;
+    let mut positions = model.body(&z)?;
     let mut values = measure(&positions)?;
     let mut iterations = 0;
     let done = |values: &DVector<f64>| {
@@ -143,31 +208,61 @@ pub fn body_from_measurements(
             .zip(w.iter())
             .all(|((v, t), w)| (v - t).abs() * w <= 0.25)
     };
+    let cost = |values: &DVector<f64>, z: &DVector<f64>| {
+        (values - &target).component_mul(&w).norm_squared()
+            + params.regularisation * (z - &prior).norm_squared()
+    };
+    let mut current = cost(&values, &DVector::from_vec(z.clone()));
+    // Levenberg–Marquardt damping λ towards the current z: 0 while Gauss–Newton steps lower the
+    // cost; raised when a step raises it or makes a body that cannot be measured (targets no body
+    // of the model has, e.g. a held-out subject's 19 values), lowered again after a success.
+    let mut damping = 0.0;
+    let mut jacobian: Option<DMatrix<f64>> = None;
     while iterations < params.max_iterations && !done(&values) {
         iterations += 1;
-        let mut jacobian = DMatrix::zeros(targets.len(), modes);
-        let mut moved = positions.clone();
-        for (k, sd_k) in sd.iter().enumerate() {
-            let delta = (params.step * sd_k) as f32;
-            let mode = model.mode(k);
-            for (p, (&x, &phi)) in moved.iter_mut().zip(positions.iter().zip(mode)) {
-                *p = x + delta * phi;
+        let j = match jacobian.take() {
+            Some(j) => j,
+            None => {
+                let mut j = DMatrix::zeros(targets.len(), modes);
+                let mut moved = positions.clone();
+                for k in 0..modes {
+                    // A forward step that loses a section falls back to a backward one.
+                    for h in [params.step, -params.step] {
+                        model.moved(&positions, k, h, &mut moved)?;
+                        if let Ok(m) = measure(&moved) {
+                            j.set_column(k, &((m - &values) / h));
+                            break;
+                        }
+                    }
+                }
+                j
             }
-            let column = (measure(&moved)? - &values) / params.step;
-            jacobian.set_column(k, &column);
-        }
+        };
         let zv = DVector::from_vec(z.clone());
-        let rhs = &target - &values + &jacobian * &zv;
-        let wj = DMatrix::from_fn(targets.len(), modes, |i, k| w[i] * jacobian[(i, k)]);
+        let rhs = &target - &values + &j * &zv;
+        let wj = DMatrix::from_fn(targets.len(), modes, |i, k| w[i] * j[(i, k)]);
         let wr = rhs.component_mul(&w);
-        let normal = wj.transpose() * &wj + DMatrix::identity(modes, modes) * params.regularisation;
+        let normal = wj.transpose() * &wj
+            + DMatrix::identity(modes, modes) * (params.regularisation + damping);
         let next = normal
             .lu()
-            .solve(&(wj.transpose() * wr))
+            .solve(&(wj.transpose() * wr + &prior * params.regularisation + &zv * damping))
             .ok_or_else(|| bad("the linearised system is singular".into()))?;
-        z = next.iter().copied().collect();
-        positions = body(model, &z)?;
-        values = measure(&positions)?;
+        let trial = model.body(next.as_slice())?;
+        match measure(&trial) {
+            Ok(m) if cost(&m, &next) < current => {
+                current = cost(&m, &next);
+                z = next.iter().copied().collect();
+                positions = trial;
+                values = m;
+                damping /= 10.0;
+            }
+            _ => {
+                let scale = (wj.transpose() * &wj).trace() / modes as f64;
+                damping = (10.0 * damping).max(1e-2 * scale);
+                jacobian = Some(j);
+            }
+        }
     }
     let achieved = targets
         .iter()

@@ -173,6 +173,13 @@ impl ShapeModel {
         Ok(out)
     }
 
+    /// The body at σ-unit coefficients `sigma` (Bₖ = zₖ·√λₖ) as flat f32 positions, what the
+    /// measurer, the PLY writer and the app take.
+    pub fn body_at_sigma(&self, sigma: &[f64]) -> Result<Vec<f32>, PcaError> {
+        let b = self.coefficients_from_sigma(sigma)?;
+        Ok(self.reconstruct(&b)?.iter().map(|&x| x as f32).collect())
+    }
+
     /// B = Φᵀ(x − S̄) for a flat shape `x` of length 3n already in the model frame.
     pub fn project_flat(&self, x: &[f64]) -> Vec<f64> {
         (0..self.mode_count())
