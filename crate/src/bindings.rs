@@ -11,7 +11,8 @@
 //! * `landmarks.rs`: `estimateLandmarks` ([`LandmarkEstimate`]), `flagSuspicious`;
 //! * `landmark_export.rs`: `writeLandmarks` (`.lnd`, CSV or JSON);
 //! * `model.rs`: `loadShapeModel` ([`ShapeSpace`]); `model_build.rs`: `buildShapeModel`;
-//!   `statismo.rs`: [`StatismoArrays`], `loadStatismoModel`, `ShapeSpace.statismoArrays`.
+//!   `statismo.rs`: [`StatismoArrays`], `loadStatismoModel`, `ShapeSpace.statismoArrays`;
+//!   `anthropometry.rs`: `ShapeSpace.bodyFromMeasurementsJson`, `targetTolerancesJson`.
 
 mod align;
 mod landmark_export;
@@ -29,6 +30,7 @@ use js_sys::{Float32Array, Uint32Array};
 use serde::Serialize;
 use wasm_bindgen::prelude::*;
 
+mod anthropometry;
 mod model;
 mod model_build;
 mod statismo;

@@ -17,6 +17,7 @@ import {
   type ShownResolution,
 } from '../shared/shape-results';
 import type { TemplateResolution } from '../shared/template-data';
+import type { Targets } from '../shared/anthropometry';
 import type { ErrorBanner } from '../ui/error-banner';
 import { ShapePanel, type PartName } from '../ui/shape-panel';
 import type { Viewer } from '../view/viewer';
@@ -72,6 +73,7 @@ export class ShapeSpace {
       onBuild: (variance) => void this.build(variance),
       onAddFits: (files) => void this.addFits(files),
       onOpenModel: (files) => void this.openModelFiles(files),
+      onFindBody: (targets) => void this.findBody(targets),
     });
     client.onRestart(() => void this.recover());
     subjects.subscribe((all) => {
@@ -300,6 +302,28 @@ export class ShapeSpace {
     };
     this.panel.showView(this.panel.currentView, this.coefficients);
     this.redraw(false, true);
+  }
+
+  /**
+   * Moves the sliders to the most likely whole body with `targets` (found in the worker); every
+   * segment follows the whole body again, since the targets are met by the whole-body model.
+   */
+  private async findBody(targets: Targets): Promise<void> {
+    if (!this.model) return;
+    this.suppressed = false;
+    this.page.dataset.findBody = 'running';
+    try {
+      const found = await this.client.call({ type: 'bodyFromMeasurements', targets });
+      this.coefficients = { whole: this.coefficients.whole.map((_, k) => quantiseSigma(found.sigma[k] ?? 0)), segments: SEGMENTS.map(() => null) };
+      this.panel.showView(this.panel.currentView, this.coefficients);
+      this.panel.measurements.showFound(targets, found);
+      this.page.dataset.findBodyMs = found.workerMs.toFixed(2);
+      this.redraw(false, true);
+      this.page.dataset.findBody = 'done';
+    } catch (error) {
+      this.panel.measurements.showError(error instanceof Error ? error.message : String(error));
+      this.page.dataset.findBody = 'error';
+    }
   }
 
   private frameNext = false;

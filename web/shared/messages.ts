@@ -3,6 +3,7 @@ import type { AlignDefaults, AlignParams, AlignProgress, AlignResult, ScanInput,
 import type { LandmarkEstimate, SuspiciousLandmark } from './landmark-entry';
 import type { ParsedLandmarks, ParsedScan, SubjectPairing } from './results';
 import type { TemplateData, TemplateResolution } from './template-data';
+import type { FoundBody, Targets } from './anthropometry';
 import type { ExportBody, LoadedModel, ModelCsv, ModelGlbParts, PartName, ReconstructedBody, ShapeCoefficients, ShownResolution } from './shape-results';
 
 /** Every request the worker understands, without its `id` (the client adds it). */
@@ -46,6 +47,8 @@ export type CoreRequestBody =
   | { type: 'reconstruct'; coefficients: ShapeCoefficients }
   /** Shows the body at `resolution` (maps the model to fine on first use, with progress). */
   | { type: 'shapeResolution'; resolution: TemplateResolution }
+  /** The most likely whole body of the loaded model with `targets` (m, m³, m²); nothing shown changes. */
+  | { type: 'bodyFromMeasurements'; targets: Targets }
   | { type: 'modelCsv'; kind: ModelCsv }
   | { type: 'modelGlb'; modes: number; parts: ModelGlbParts }
   | { type: 'modelFile' }
@@ -77,6 +80,7 @@ export interface CoreResults {
   morph: ReconstructedBody;
   reconstruct: ExportBody;
   shapeResolution: ShownResolution;
+  bodyFromMeasurements: FoundBody;
   modelCsv: string;
   modelGlb: Uint8Array;
   modelFile: Uint8Array;

@@ -144,6 +144,9 @@ self.onmessage = async (event: MessageEvent<CoreRequest>) => {
         post({ id, type: 'result', result: shown }, [shown.triangles.buffer]);
         break;
       }
+      case 'bodyFromMeasurements':
+        post({ id: request.id, type: 'result', result: models.bodyFromMeasurements(request.targets) });
+        break;
       case 'modelCsv':
         post({ id: request.id, type: 'result', result: models.modelCsv(request.kind) });
         break;

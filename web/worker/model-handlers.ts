@@ -14,6 +14,7 @@ import type {
   ShownResolution,
 } from '../shared/shape-results';
 import type { TemplateResolution } from '../shared/template-data';
+import type { FoundBody, Targets, TargetTolerances } from '../shared/anthropometry';
 import { isHdf5, readStatismoH5, writeStatismoH5 } from './statismo-h5';
 import { templateHandle } from './template-handlers';
 
@@ -115,6 +116,15 @@ export function useResolution(
   const template = templateHandle(resolution === 'fine' ? 'fine' : 'base');
   model.useResolution(resolution, template, (f: number) => progress(0.2 + 0.8 * f, label));
   return { resolution: model.resolution as 'base' | 'fine', vertexCount: model.vertexCount, triangles: model.triangles() };
+}
+
+/** The most likely whole body with `targets` (m, m³, m²); the body shown is not touched. */
+export function bodyFromMeasurements(targets: Targets): FoundBody {
+  const model = current();
+  const start = performance.now();
+  const found = JSON.parse(model.bodyFromMeasurementsJson(JSON.stringify(targets))) as Omit<FoundBody, 'tolerances' | 'workerMs'>;
+  const workerMs = performance.now() - start;
+  return { ...found, tolerances: JSON.parse(model.targetTolerancesJson()) as TargetTolerances, workerMs };
 }
 
 export function modelCsv(kind: ModelCsv): string {

@@ -123,6 +123,11 @@ impl ShapeSpace {
         &self.model
     }
 
+    /// Measures bodies of the model on the base template's vertices.
+    pub(super) fn measurer(&self) -> &BodyMeasurer {
+        &self.measurer
+    }
+
     /// The model whose body is shown.
     fn shown(&self) -> &BodyModel {
         match (&self.fine, self.at_fine) {
