@@ -183,6 +183,12 @@ impl BodyMeasurer {
         })
     }
 
+    /// The template vertices of the landmarks `m` is anchored on, in its definition's order
+    /// (empty for stature, volume and surface area).
+    pub fn anchor_vertices(&self, m: Measure) -> &[u32] {
+        &self.anchors[m.index()]
+    }
+
     /// Vertex count `#V` of the bodies this measurer takes.
     pub fn vertex_count(&self) -> usize {
         self.vertex_count

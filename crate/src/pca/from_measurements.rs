@@ -80,10 +80,58 @@ pub struct BodyFromMeasurements {
     pub mahalanobis: f64,
 }
 
-/// The body of `model` (the whole-body model) at σ-unit coefficients `z` as flat f32 positions.
-fn body(model: &ShapeModel, z: &[f64]) -> Result<Vec<f32>, PcaError> {
-    let b = model.coefficients_from_sigma(z)?;
-    Ok(model.reconstruct(&b)?.iter().map(|&x| x as f32).collect())
+/// A body parameterised by σ-unit coefficients z of one model: what the solver moves.
+/// [`WholeBody`] here; a segment model with the rest of the body held is
+/// [`super::segment_targets`].
+pub(crate) trait MeasuredBody {
+    /// The model's standard deviations √λₖ (one per coefficient).
+    fn standard_deviations(&self) -> Vec<f64>;
+    /// The body at `z` as flat f32 positions (3V).
+    fn body(&self, z: &[f64]) -> Result<Vec<f32>, PcaError>;
+    /// `out` = the body `positions` (at some z) moved by `delta` σ along coefficient `k`.
+    fn moved(
+        &self,
+        positions: &[f32],
+        k: usize,
+        delta: f64,
+        out: &mut [f32],
+    ) -> Result<(), PcaError>;
+}
+
+/// The whole-body model: x = S̄ + Φ·(√λ ⊙ z).
+struct WholeBody<'a> {
+    model: &'a ShapeModel,
+    sd: Vec<f64>,
+}
+
+impl MeasuredBody for WholeBody<'_> {
+    fn standard_deviations(&self) -> Vec<f64> {
+        self.sd.clone()
+    }
+
+    fn body(&self, z: &[f64]) -> Result<Vec<f32>, PcaError> {
+        let b = self.model.coefficients_from_sigma(z)?;
+        Ok(self
+            .model
+            .reconstruct(&b)?
+            .iter()
+            .map(|&x| x as f32)
+            .collect())
+    }
+
+    fn moved(
+        &self,
+        positions: &[f32],
+        k: usize,
+        delta: f64,
+        out: &mut [f32],
+    ) -> Result<(), PcaError> {
+        let d = (delta * self.sd[k]) as f32;
+        for (p, (&x, &phi)) in out.iter_mut().zip(positions.iter().zip(self.model.mode(k))) {
+            *p = x + d * phi;
+        }
+        Ok(())
+    }
 }
 
 /// The whole-body coefficients of `model` meeting `targets` (measurement, value in m, m³, m²)
@@ -91,6 +139,24 @@ fn body(model: &ShapeModel, z: &[f64]) -> Result<Vec<f32>, PcaError> {
 /// an empty or repeated target, a non-finite value, or a body that cannot be measured.
 pub fn body_from_measurements(
     model: &ShapeModel,
+    measurer: &BodyMeasurer,
+    targets: &[(Measure, f64)],
+    params: &FromMeasurementsParams,
+) -> Result<BodyFromMeasurements, PcaError> {
+    let start = vec![0.0; model.mode_count()];
+    let whole = WholeBody {
+        model,
+        sd: model.standard_deviations(),
+    };
+    solve(&whole, start, measurer, targets, params)
+}
+
+/// The Gauss–Newton iteration of the module doc on any [`MeasuredBody`], from σ-unit `start`
+/// and regularised towards it: z⁺ = argmin ‖W·(J·z⁺ − r)‖² + μ·‖z⁺ − start‖² (start 0: the
+/// least Mahalanobis norm).
+pub(crate) fn solve(
+    model: &dyn MeasuredBody,
+    start: Vec<f64>,
     measurer: &BodyMeasurer,
     targets: &[(Measure, f64)],
     params: &FromMeasurementsParams,
@@ -128,12 +194,12 @@ pub fn body_from_measurements(
             .collect::<Result<Vec<f64>, _>>()
             .map(DVector::from_vec)
     };
-    let modes = model.mode_count();
-    let sd = model.standard_deviations();
+    let modes = model.standard_deviations().len();
     let target = DVector::from_iterator(targets.len(), targets.iter().map(|(_, v)| *v));
     let w = DVector::from_vec(weights);
-    let mut z = vec![0.0; modes];
-    let mut positions = body(model, &z)?;
+    let prior = DVector::from_vec(start.clone());
+    let mut z = start;
+    let mut positions = model.body(&z)?;
     let mut values = measure(&positions)?;
     let mut iterations = 0;
     let done = |values: &DVector<f64>| {
@@ -147,12 +213,8 @@ pub fn body_from_measurements(
         iterations += 1;
         let mut jacobian = DMatrix::zeros(targets.len(), modes);
         let mut moved = positions.clone();
-        for (k, sd_k) in sd.iter().enumerate() {
-            let delta = (params.step * sd_k) as f32;
-            let mode = model.mode(k);
-            for (p, (&x, &phi)) in moved.iter_mut().zip(positions.iter().zip(mode)) {
-                *p = x + delta * phi;
-            }
+        for k in 0..modes {
+            model.moved(&positions, k, params.step, &mut moved)?;
             let column = (measure(&moved)? - &values) / params.step;
             jacobian.set_column(k, &column);
         }
@@ -163,10 +225,10 @@ pub fn body_from_measurements(
         let normal = wj.transpose() * &wj + DMatrix::identity(modes, modes) * params.regularisation;
         let next = normal
             .lu()
-            .solve(&(wj.transpose() * wr))
+            .solve(&(wj.transpose() * wr + &prior * params.regularisation))
             .ok_or_else(|| bad("the linearised system is singular".into()))?;
         z = next.iter().copied().collect();
-        positions = body(model, &z)?;
+        positions = model.body(&z)?;
         values = measure(&positions)?;
     }
     let achieved = targets

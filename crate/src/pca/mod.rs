@@ -14,6 +14,12 @@
 //! * [`subdivide`] — a model mapped exactly to the template's finer resolution (S̄_fine = S·S̄, φ_fine = S·φ)
 //! * [`outliers`] — training subjects far outside the model (Mahalanobis distance of their scores)
 //! * [`from_measurements`] — the most likely body with given measurements (least Mahalanobis norm)
+//! * [`segment_targets`] — targets of a segment acting on its model; which measurements belong
+//!   to which segment
+//! * [`measurement_distribution`] — every measurement over the training subjects and sampled
+//!   bodies: percentiles, histograms, correlations, a body's percentile
+//! * [`boundary_manikins`] — the bodies on the boundary of a coverage region of 2–4 measurements
+//! * [`chi_square`] — normal and χ² quantiles
 //! * [`metrics`] — compactness, generalization, specificity (Styner 2003)
 //! * [`export`] — eigenvalues, scores and quality curves as CSV
 //! * [`gltf`] — the whole-body model, or all seven models, as GLB with modes as morph targets
@@ -22,7 +28,9 @@
 //!   and a statismo model opened on the template
 //! * [`random`] — seeded normal draws
 
+pub mod boundary_manikins;
 pub mod build;
+pub mod chi_square;
 pub mod error;
 pub mod export;
 pub mod f16;
@@ -31,6 +39,7 @@ pub mod from_measurements;
 pub mod gltf;
 pub mod gram;
 pub mod marginal;
+pub mod measurement_distribution;
 pub mod metrics;
 pub mod model;
 pub mod morph;
@@ -38,6 +47,7 @@ pub mod outliers;
 pub mod params;
 pub mod procrustes_gpa;
 pub mod random;
+pub mod segment_targets;
 pub mod segments;
 pub mod shape_model;
 pub mod statismo;

@@ -4,13 +4,11 @@
 //! beyond its [`FAR_PROBABILITY`] quantile is listed: a failed fit, a mislabelled file, or a body
 //! unlike the rest.
 
+use super::chi_square::chi_square_quantile;
 use super::shape_model::ShapeModel;
 
 /// The share of a normal population inside the threshold; one body in a thousand lies beyond it.
 pub const FAR_PROBABILITY: f64 = 0.999;
-
-/// The standard normal quantile of [`FAR_PROBABILITY`].
-const FAR_Z: f64 = 3.090_232;
 
 /// Each training subject's Mahalanobis distance in `model`, in score order.
 pub fn mahalanobis_distances(model: &ShapeModel) -> Vec<f64> {
@@ -32,12 +30,9 @@ pub fn mahalanobis_distances(model: &ShapeModel) -> Vec<f64> {
 }
 
 /// The distance beyond which a subject is far outside a model of `modes` modes: √ of the χ²
-/// quantile of [`FAR_PROBABILITY`] by the Wilson–Hilferty approximation
-/// k·(1 − 2/(9k) + z·√(2/(9k)))³ (within 1 % of the exact quantile from k = 3 up).
+/// quantile of [`FAR_PROBABILITY`] with as many degrees of freedom ([`chi_square_quantile`]).
 pub fn far_threshold(modes: usize) -> f64 {
-    let k = modes.max(1) as f64;
-    let a = 2.0 / (9.0 * k);
-    (k * (1.0 - a + FAR_Z * a.sqrt()).powi(3)).sqrt()
+    chi_square_quantile(modes.max(1), FAR_PROBABILITY).sqrt()
 }
 
 /// `(subject index, distance)` of the subjects beyond [`far_threshold`], farthest first.
