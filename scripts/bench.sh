@@ -7,14 +7,16 @@
 #          worker inside Chromium and natively (crate/examples/pca_bench.rs morph)
 #   align  alignment vs trimesh nricp_amberg (scripts/bench-align.sh), and of a ≈ 201K-vertex
 #          scan in the browser worker at base and fine (scripts/bench-align-browser.sh)
+#   anthro measurements of one body, a body from measurements, the population and boundary
+#          manikins of the demo model in the worker inside Chromium (bench/anthropometry-bench.mjs)
 #   batch  20 synthetic subjects (`bodyspace synth --n 20 --seed 7`, as the CLI batch benchmark)
 #          picked at once in the app: wall time to the built model with the worker pool and with
 #          one worker (bench/batch-bench.mjs; BATCH_RUNS rounds, default 2)
-# BENCH_PARTS picks some (default: "parse shape align batch"); RUNS / SHAPE_RUNS set the repetitions.
+# BENCH_PARTS picks some (default: "parse shape anthro align batch"); RUNS / SHAPE_RUNS set the repetitions.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 export PATH="$HOME/.cargo/bin:$PATH"
-parts="${BENCH_PARTS:-parse shape align batch}"
+parts="${BENCH_PARTS:-parse shape anthro align batch}"
 runs="${RUNS:-7}"
 port="${BENCH_PORT:-4179}"
 work="$(mktemp -d)"
@@ -54,6 +56,11 @@ if wants shape; then
   echo
   echo "== shape model: morphing natively (release)"
   cargo run --quiet --release --manifest-path crate/Cargo.toml --example pca_bench -- morph
+fi
+if wants anthro; then
+  echo
+  echo "== anthropometry (public/models/demo.bsm) in the worker (WASM in Chromium)"
+  node bench/anthropometry-bench.mjs "http://127.0.0.1:$port/" "${SHAPE_RUNS:-30}"
 fi
 echo "load average after: $(cut -d' ' -f1-3 /proc/loadavg)"
 if wants align; then

@@ -12,7 +12,9 @@
 //! * `landmark_export.rs`: `writeLandmarks` (`.lnd`, CSV or JSON);
 //! * `model.rs`: `loadShapeModel` ([`ShapeSpace`]); `model_build.rs`: `buildShapeModel`;
 //!   `statismo.rs`: [`StatismoArrays`], `loadStatismoModel`, `ShapeSpace.statismoArrays`;
-//!   `anthropometry.rs`: `ShapeSpace.bodyFromMeasurementsJson`, `targetTolerancesJson`.
+//!   `anthropometry.rs`: `ShapeSpace.bodyFromMeasurementsJson`, `targetTolerancesJson`,
+//!   `measurePopulation` ([`ModelPopulation`]: distributions, `boundaryManikinsJson`),
+//!   `manikinDefaultsJson`.
 
 mod align;
 mod landmark_export;
@@ -35,6 +37,7 @@ mod model;
 mod model_build;
 mod statismo;
 
+pub use anthropometry::{manikin_defaults_json, ModelPopulation};
 pub use model::{load_shape_model, ShapeSpace};
 pub use model_build::build_shape_model;
 pub use statismo::{load_statismo_model, max_model_bytes, StatismoArrays};

@@ -22,6 +22,7 @@ import type { ErrorBanner } from '../ui/error-banner';
 import { ShapePanel, type PartName } from '../ui/shape-panel';
 import type { Viewer } from '../view/viewer';
 import { MorphQueue } from './morph-queue';
+import { Population } from './population';
 import * as shapeExports from './shape-exports';
 import type { BodyFormat } from './shape-exports';
 import { readFits } from './read-fits';
@@ -41,6 +42,7 @@ export class ShapeSpace {
   /** Triangles of the body shown: the model's own, or the fine template's. */
   private triangles: Uint32Array | null = null;
   private readonly panel: ShapePanel;
+  private readonly population: Population;
   private readonly morph: MorphQueue;
   private readonly page = document.body;
   private readonly hostPrompt = new HostPrompt();
@@ -54,6 +56,8 @@ export class ShapeSpace {
     private readonly client: CoreClient,
     private readonly viewer: Viewer,
     private readonly banner: ErrorBanner,
+    /** The worker of population work (distributions, manikins), which Cancel may replace. */
+    populationClient: CoreClient,
   ) {
     this.morph = new MorphQueue(client, (body, _c, sentAt) => this.show(body, sentAt), (message) => this.banner.show([message]));
     this.panel = new ShapePanel({
@@ -74,7 +78,13 @@ export class ShapeSpace {
       onAddFits: (files) => void this.addFits(files),
       onOpenModel: (files) => void this.openModelFiles(files),
       onFindBody: (targets) => void this.findBody(targets),
+      onComputePopulation: () => void this.population.compute(),
+      onCancelPopulation: () => this.population.cancel(),
+      onManikins: (names, coverage) => void this.population.computeManikins(names, coverage),
+      onShowManikin: (index) => this.population.showManikin(index),
+      onExportManikins: () => void this.population.exportManikins(),
     });
+    this.population = new Population(populationClient, this.panel.population, this.panel.manikins, (sigma) => this.showWhole(sigma));
     client.onRestart(() => void this.recover());
     subjects.subscribe((all) => {
       const dropped = all.filter((s) => s.source === 'dropped').length;
@@ -167,6 +177,7 @@ export class ShapeSpace {
     try {
       const loaded = await this.client.call({ type: 'loadModel', bytes, fileName }, { transfer: [bytes] });
       this.modelFile = { bytes: copy, fileName };
+      this.population.setModel(this.modelFile);
       const wanted = this.resolution;
       this.adopt(loaded, source, fileName);
       await this.keepResolution(wanted);
@@ -314,16 +325,23 @@ export class ShapeSpace {
     this.page.dataset.findBody = 'running';
     try {
       const found = await this.client.call({ type: 'bodyFromMeasurements', targets });
-      this.coefficients = { whole: this.coefficients.whole.map((_, k) => quantiseSigma(found.sigma[k] ?? 0)), segments: SEGMENTS.map(() => null) };
-      this.panel.showView(this.panel.currentView, this.coefficients);
       this.panel.measurements.showFound(targets, found);
       this.page.dataset.findBodyMs = found.workerMs.toFixed(2);
-      this.redraw(false, true);
+      this.showWhole(found.sigma);
       this.page.dataset.findBody = 'done';
     } catch (error) {
       this.panel.measurements.showError(error instanceof Error ? error.message : String(error));
       this.page.dataset.findBody = 'error';
     }
+  }
+
+  /** Shows the whole body at σ values `sigma` on the sliders; every segment follows it. */
+  private showWhole(sigma: number[]): void {
+    if (!this.model) return;
+    this.suppressed = false;
+    this.coefficients = { whole: this.coefficients.whole.map((_, k) => quantiseSigma(sigma[k] ?? 0)), segments: SEGMENTS.map(() => null) };
+    this.panel.showView(this.panel.currentView, this.coefficients);
+    this.redraw(false, true);
   }
 
   private frameNext = false;
@@ -352,6 +370,7 @@ export class ShapeSpace {
     if (!this.suppressed) this.frameNext = false;
     this.page.dataset.shapeShown = String(!this.suppressed);
     this.panel.showBody(body, body.positions.length / 3, roundTripMs);
+    this.population.showBody(body.measurements);
     const p = this.page.dataset;
     // A pass over every coordinate: only for the body the sliders settle on (tests, links).
     if (this.morph.idle) p.shapeChecksum = positionsChecksum(body.positions);
@@ -481,6 +500,7 @@ export class ShapeSpace {
       );
       this.adopt(built, null, built.fileName);
       this.modelFile = { bytes: (await this.client.call({ type: 'modelFile' })).slice().buffer, fileName: built.fileName };
+      this.population.setModel(this.modelFile);
       onStatus(`Built from ${all.length} subjects.`);
       await this.keepResolution(wanted);
       this.redraw(true, true);

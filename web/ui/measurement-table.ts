@@ -53,6 +53,11 @@ export class MeasurementTable {
     return this.rows.get(name)?.population;
   }
 
+  /** The label of measurement `name` (its name when unknown). */
+  label(name: string): string {
+    return this.rows.get(name)?.reading.label ?? name;
+  }
+
   /** A body was found for `targets` and is being shown. */
   showFound(targets: Targets, found: FoundBody): void {
     this.found = { targets, tolerances: found.tolerances };

@@ -6,6 +6,8 @@ import { SEGMENTS } from '../shared/shape-results';
 import { byId, h } from './dom';
 import type { Targets } from '../shared/anthropometry';
 import { MeasurementTable } from './measurement-table';
+import { ManikinPanel } from './manikin-panel';
+import { PopulationView } from './population-view';
 import { qualityCharts } from './quality-charts';
 
 export type { PartName };
@@ -31,6 +33,12 @@ export interface ShapeActions {
   onOpenModel(files: File[]): void;
   /** The most likely body with `targets` (m, m³, m²), shown on the sliders. */
   onFindBody(targets: Targets): void;
+  /** Compute the population's distributions again, or stop computing them. */
+  onComputePopulation(): void;
+  onCancelPopulation(): void;
+  onManikins(names: string[], coverage: number): void;
+  onShowManikin(index: number): void;
+  onExportManikins(): void;
 }
 
 const LABELS: Record<PartName, string> = {
@@ -49,6 +57,8 @@ export class ShapePanel {
   private readonly head = h('div', { class: 'shape-head' });
   private readonly sliders = h('div', { class: 'shape-sliders', 'data-testid': 'shape-sliders' });
   readonly measurements: MeasurementTable;
+  readonly population: PopulationView;
+  readonly manikins: ManikinPanel;
   private readonly facts = h('dl', { class: 'facts', 'data-testid': 'shape-facts' });
   private readonly charts = h('div', {});
   private readonly linkField = h('input', { type: 'text', readonly: '', class: 'shape-link', 'data-testid': 'shape-link', 'aria-label': 'Link to this body' });
@@ -66,6 +76,13 @@ export class ShapePanel {
 
   constructor(private readonly actions: ShapeActions) {
     this.measurements = new MeasurementTable((targets) => actions.onFindBody(targets));
+    this.population = new PopulationView(this.measurements, { onCompute: () => actions.onComputePopulation(), onCancel: () => actions.onCancelPopulation() });
+    this.manikins = new ManikinPanel({
+      onCompute: (names, coverage) => actions.onManikins(names, coverage),
+      onCancel: () => actions.onCancelPopulation(),
+      onShow: (index) => actions.onShowManikin(index),
+      onExport: () => actions.onExportManikins(),
+    });
     for (const part of ['whole', ...SEGMENTS] as PartName[]) this.picker.append(h('option', { value: part }, LABELS[part]));
     this.picker.addEventListener('change', () => actions.onView(this.picker.value as PartName));
     this.resolutionPicker.append(h('option', { value: 'base' }, 'base (13,380 vertices)'), h('option', { value: 'fine' }, 'fine (214,050 vertices)'));
@@ -115,6 +132,9 @@ export class ShapePanel {
       h('h2', {}, 'Measurements'),
       h('p', { class: 'note' }, 'Enter targets for any of the measurements (lengths and girths in cm, volume in L, area in m²) and press Find body: the sliders move to the most likely body of the model that has them.'),
       this.measurements.element,
+      this.population.element,
+      h('h2', {}, 'Boundary manikins'),
+      this.manikins.element,
       this.facts,
       h('h2', {}, 'Quality of this part'),
       this.charts,

@@ -1,16 +1,24 @@
 //! Anthropometry for JavaScript on the loaded [`ShapeSpace`]: the body of the model that has
-//! target measurements ([`crate::pca::from_measurements`]) and the tolerances that say "met".
+//! target measurements ([`crate::pca::from_measurements`]) and the tolerances that say "met",
+//! the measurement distributions of the model's population
+//! ([`crate::pca::measurement_distribution`], held as a [`ModelPopulation`]) and its boundary
+//! manikins ([`crate::pca::boundary_manikins`]).
 //!
 //! Targets cross as a JSON object `{name: value}` (names of `docs/measurements.md`, values in
 //! m, m³, m²); results as JSON.
 
 use std::collections::BTreeMap;
 
+use js_sys::Function;
 use serde::Serialize;
 use wasm_bindgen::prelude::*;
 
 use crate::measure::Measure;
+use crate::pca::boundary_manikins::{boundary_manikins, ManikinParams};
 use crate::pca::from_measurements::{body_from_measurements, FromMeasurementsParams};
+use crate::pca::measurement_distribution::{
+    measurement_distribution, DistributionParams, MeasurementDistribution,
+};
 
 use super::model::{js, ShapeSpace};
 
@@ -21,6 +29,13 @@ struct Tolerances {
     girth: f64,
     volume: f64,
     area: f64,
+}
+
+/// A JavaScript progress callback as the core takes it; a failing callback only loses a report.
+fn reporter(on_progress: &Function) -> impl FnMut(f64) + '_ {
+    move |f: f64| {
+        let _ = on_progress.call1(&JsValue::NULL, &JsValue::from_f64(f));
+    }
 }
 
 /// `{name: value}` → targets in the order given; unknown names and non-numbers are refused.
@@ -79,4 +94,80 @@ impl ShapeSpace {
         })
         .map_err(js)
     }
+}
+
+/// The measurement distributions of one model, computed once ([`ShapeSpace::measure_population`])
+/// and kept for its boundary manikins.
+#[wasm_bindgen]
+pub struct ModelPopulation {
+    distribution: MeasurementDistribution,
+}
+
+#[wasm_bindgen]
+impl ShapeSpace {
+    /// Every measurement of the whole-body model over its training subjects and over bodies
+    /// sampled from it (the core's default count and seed); `on_progress(fraction)` is called as
+    /// bodies are measured.
+    #[wasm_bindgen(js_name = measurePopulation)]
+    pub fn measure_population(&self, on_progress: &Function) -> Result<ModelPopulation, JsError> {
+        let distribution = measurement_distribution(
+            &self.model().whole,
+            self.measurer(),
+            &DistributionParams::default(),
+            &mut reporter(on_progress),
+        )
+        .map_err(js)?;
+        Ok(ModelPopulation { distribution })
+    }
+}
+
+#[wasm_bindgen]
+impl ModelPopulation {
+    /// The distributions as JSON `{params, training, samples}`, each population `{bodies,
+    /// measures: [{name, kind, values (ascending), mean, sd, percentiles}], correlation
+    /// (row-major)}`; NaN is `null`.
+    pub fn json(&self) -> Result<String, JsError> {
+        serde_json::to_string(&self.distribution).map_err(js)
+    }
+
+    /// The boundary manikins of `names_json` (a JSON list of 2–4 measurement names) at
+    /// `coverage` (a share in (0, 1)) of the sampled bodies, on `space`'s model (the one this
+    /// population was measured on), as JSON `{manikins: BoundaryManikins, csv}`;
+    /// `on_progress(fraction)` after each manikin.
+    #[wasm_bindgen(js_name = boundaryManikinsJson)]
+    pub fn boundary_manikins_json(
+        &self,
+        space: &ShapeSpace,
+        names_json: &str,
+        coverage: f64,
+        on_progress: &Function,
+    ) -> Result<String, JsError> {
+        let names: Vec<String> = serde_json::from_str(names_json)
+            .map_err(|e| js(format!("measurements must be a JSON list of names: {e}")))?;
+        let measures = names
+            .iter()
+            .map(|n| Measure::from_name(n).ok_or_else(|| js(format!("unknown measurement {n:?}"))))
+            .collect::<Result<Vec<_>, _>>()?;
+        let params = ManikinParams {
+            coverage,
+            ..ManikinParams::default()
+        };
+        let found = boundary_manikins(
+            &space.model().whole,
+            space.measurer(),
+            &self.distribution.samples,
+            &measures,
+            &params,
+            &FromMeasurementsParams::default(),
+            &mut reporter(on_progress),
+        )
+        .map_err(js)?;
+        serde_json::to_string(&serde_json::json!({ "manikins": found })).map_err(js)
+    }
+}
+
+/// The defaults of boundary manikins as JSON `{coverage, ellipse_points}`.
+#[wasm_bindgen(js_name = manikinDefaultsJson)]
+pub fn manikin_defaults_json() -> Result<String, JsError> {
+    serde_json::to_string(&ManikinParams::default()).map_err(js)
 }
