@@ -58,12 +58,17 @@ mod native {
         ExportStatismo(bodyspace::cli::export_statismo::ExportStatismoArgs),
         /// Print a fit's whole-body and segment coefficients as JSON.
         Project(bodyspace::cli::project::ProjectArgs),
-        /// Measurements of a fit as JSON (`--mesh FIT [--model MODEL]`), or of every fit of a
-        /// folder as CSV (`--fits DIR --csv OUT.csv`); docs/measurements.md.
+        /// Measurements of a fit as JSON (`--mesh FIT [--model MODEL]`), of every fit of a folder
+        /// as CSV (`--fits DIR --csv OUT.csv`), or their distribution in a model (`--model MODEL
+        /// --distribution [--samples N] [--csv OUT.csv]`); docs/measurements.md.
         Measure(bodyspace::cli::measure::MeasureArgs),
         /// The most likely body of a model with given measurements:
         /// `body --model MODEL --measure stature=1.75 --measure waist_girth=0.82 --out body.ply`.
         Body(bodyspace::cli::body::BodyArgs),
+        /// Boundary manikins: the bodies on the boundary of the region holding a share of the
+        /// population in 2–4 measurements: `manikins --model MODEL --measure stature --measure
+        /// waist_girth --coverage 0.9 --out DIR` (PLY per manikin, manikins.csv).
+        Manikins(bodyspace::cli::manikins::ManikinsArgs),
         /// Write the stitched body for given coefficients as PLY (prints seam and measurements).
         Reconstruct(bodyspace::cli::reconstruct::ReconstructArgs),
     }
@@ -84,6 +89,7 @@ mod native {
             Command::Reconstruct(args) => bodyspace::cli::reconstruct::run(&args),
             Command::Measure(args) => bodyspace::cli::measure::run(&args),
             Command::Body(args) => bodyspace::cli::body::run(&args),
+            Command::Manikins(args) => bodyspace::cli::manikins::run(&args),
         };
         if let Err(message) = result {
             eprintln!("bodyspace: {message}");

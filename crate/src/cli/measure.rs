@@ -1,31 +1,51 @@
 //! `bodyspace measure`: the measurements of `crate::measure` (docs/measurements.md) of one fit as
 //! JSON (`--mesh FIT`, with `--model MODEL` also its percentile among the model's training
-//! subjects), or of every fit of a folder as one CSV (`--fits DIR --csv OUT.csv`).
+//! subjects), of every fit of a folder as one CSV (`--fits DIR --csv OUT.csv`), or their
+//! distribution in a model (`--model MODEL --distribution [--samples N] [--csv OUT.csv]`,
+//! [`crate::pca::measurement_distribution`]).
 
 use super::build_model::{fit_files, subject_of};
 use super::model::{base_measurer, load_model, measure_any_frame, read_fit};
-use crate::measure::{BodyMeasurer, Measure, Measurements};
+use crate::measure::{Measure, Measurements};
+use crate::pca::measurement_distribution::{
+    measurement_distribution, training_measurements, DistributionParams, PopulationMeasurements,
+};
 use crate::template::Template;
-use nalgebra::Point3;
 use std::fmt::Write;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 /// Arguments of `bodyspace measure`.
 #[derive(clap::Args, Debug)]
 pub struct MeasureArgs {
     /// A fitted mesh (PLY, OBJ, STL, optionally .gz) in template vertex order, base or fine, in
     /// any frame and in metres or millimetres (as `align` writes it).
-    #[arg(long, conflicts_with = "fits", required_unless_present = "fits")]
+    #[arg(
+        long,
+        conflicts_with_all = ["fits", "distribution"],
+        required_unless_present_any = ["fits", "distribution"]
+    )]
     pub mesh: Option<PathBuf>,
     /// With --mesh: also each measurement's percentile among the model's training subjects.
-    #[arg(long, requires = "mesh")]
+    /// With --distribution: the model whose distribution is printed.
+    #[arg(long)]
     pub model: Option<PathBuf>,
     /// A folder of fits (`batch`'s OUT/fits): one CSV row per fit, with --csv.
-    #[arg(long, requires = "csv")]
+    #[arg(long, requires = "csv", conflicts_with = "distribution")]
     pub fits: Option<PathBuf>,
+    /// Every measurement over the model's training subjects and over bodies sampled from it:
+    /// sorted values, percentiles 5/25/50/75/95, mean, sd and correlations, as JSON.
+    #[arg(long, requires = "model")]
+    pub distribution: bool,
+    /// With --distribution: bodies sampled from the model (default 300).
+    #[arg(long, requires = "distribution")]
+    pub samples: Option<usize>,
+    /// With --distribution: the seed of the samples (default 1).
+    #[arg(long, requires = "distribution")]
+    pub seed: Option<u64>,
     /// The population's CSV: `subject` then one column per measurement (m, m³, m²; empty: not
-    /// taken), rows in file-name order.
-    #[arg(long, requires = "fits")]
+    /// taken). With --fits: rows in file-name order; with --distribution: the training subjects
+    /// (`training:NAME`) then the samples (`sample_0001`, …).
+    #[arg(long)]
     pub csv: Option<PathBuf>,
 }
 
@@ -33,7 +53,15 @@ pub struct MeasureArgs {
 pub fn run(args: &MeasureArgs) -> Result<(), String> {
     let base = Template::embedded().map_err(|e| format!("embedded template: {e}"))?;
     let measurer = base_measurer()?;
+    if args.distribution {
+        let model = args
+            .model
+            .as_deref()
+            .ok_or("--distribution needs --model MODEL")?;
+        return distribution(model, args);
+    }
     match (&args.mesh, &args.fits, &args.csv) {
+        (Some(_), _, Some(_)) => Err("--csv goes with --fits DIR or --distribution".into()),
         (Some(mesh), _, _) => {
             let fit = read_fit(mesh)?;
             let m = measure_any_frame(&measurer, &base, &fit.positions)
@@ -43,7 +71,10 @@ pub fn run(args: &MeasureArgs) -> Result<(), String> {
                 "measurements": m,
             });
             if let Some(path) = &args.model {
-                let population = training_measurements(path, &measurer, &base)?;
+                let (model, _) = load_model(path)?;
+                let population = PopulationMeasurements::of_bodies(
+                    training_measurements(&model.whole, &measurer).map_err(|e| e.to_string())?,
+                );
                 summary["model"] = serde_json::json!(path.display().to_string());
                 summary["percentiles"] = percentiles(&m, &population);
             }
@@ -100,45 +131,54 @@ pub fn population_csv(rows: &[(String, Measurements)]) -> String {
     out
 }
 
-/// The measurements of every training subject of the model at `path` (whole-body scores).
-fn training_measurements(
-    path: &std::path::Path,
-    measurer: &BodyMeasurer,
-    base: &Template,
-) -> Result<Vec<Measurements>, String> {
-    let (model, _) = load_model(path)?;
-    let whole = &model.whole;
-    (0..model.subjects.len())
-        .map(|i| {
-            let scores: Vec<f64> = whole
-                .subject_scores(i)
-                .ok_or_else(|| format!("{}: subject {i} has no scores", path.display()))?
-                .iter()
-                .map(|&x| x as f64)
-                .collect();
-            let flat = whole.reconstruct(&scores).map_err(|e| e.to_string())?;
-            let points: Vec<Point3<f64>> = flat
-                .chunks_exact(3)
-                .map(|p| Point3::new(p[0], p[1], p[2]))
-                .collect();
-            measure_any_frame(measurer, base, &points)
-        })
-        .collect()
+/// `{name: percentile}`: the share of `population` below each value, ties counted half (%).
+fn percentiles(m: &Measurements, population: &PopulationMeasurements) -> serde_json::Value {
+    let map = Measure::ALL
+        .into_iter()
+        .zip(population.percentiles_of(m))
+        .map(|(k, p)| (k.definition().name.to_string(), serde_json::json!(p)))
+        .collect();
+    serde_json::Value::Object(map)
 }
 
-/// `{name: percentile}`: the share of `population` below each value, ties counted half (%).
-fn percentiles(m: &Measurements, population: &[Measurements]) -> serde_json::Value {
-    let mut out = serde_json::Map::new();
-    for k in Measure::ALL {
-        let value = m.get(k).and_then(|x| {
-            let values: Vec<f64> = population.iter().filter_map(|p| p.get(k)).collect();
-            (!values.is_empty()).then(|| {
-                let below = values.iter().filter(|&&v| v < x).count() as f64;
-                let equal = values.iter().filter(|&&v| v == x).count() as f64;
-                100.0 * (below + 0.5 * equal) / values.len() as f64
-            })
-        });
-        out.insert(k.definition().name.into(), serde_json::json!(value));
+/// `measure --model MODEL --distribution`: the distribution as JSON, with --csv every body's row.
+fn distribution(path: &Path, args: &MeasureArgs) -> Result<(), String> {
+    let defaults = DistributionParams::default();
+    let params = DistributionParams {
+        samples: args.samples.unwrap_or(defaults.samples),
+        seed: args.seed.unwrap_or(defaults.seed),
+    };
+    let (model, _) = load_model(path)?;
+    let measurer = base_measurer()?;
+    let started = std::time::Instant::now();
+    let d = measurement_distribution(&model.whole, &measurer, &params, &mut |_| {})
+        .map_err(|e| format!("{}: {e}", path.display()))?;
+    let seconds = started.elapsed().as_secs_f64();
+    if let Some(csv) = &args.csv {
+        let rows: Vec<(String, Measurements)> = model
+            .subjects
+            .iter()
+            .map(|s| format!("training:{s}"))
+            .zip(d.training.table.iter().cloned())
+            .chain(
+                (1..)
+                    .map(|i| format!("sample_{i:04}"))
+                    .zip(d.samples.table.iter().cloned()),
+            )
+            .collect();
+        std::fs::write(csv, population_csv(&rows))
+            .map_err(|e| format!("{}: {e}", csv.display()))?;
     }
-    serde_json::Value::Object(out)
+    let mut summary = serde_json::to_value(&d).map_err(|e| e.to_string())?;
+    summary["model"] = serde_json::json!(path.display().to_string());
+    summary["measures"] = serde_json::json!(Measure::ALL
+        .iter()
+        .map(|m| m.definition().name)
+        .collect::<Vec<_>>());
+    summary["seconds"] = serde_json::json!(seconds);
+    if let Some(csv) = &args.csv {
+        summary["csv"] = serde_json::json!(csv.display().to_string());
+    }
+    println!("{summary}");
+    Ok(())
 }

@@ -10,6 +10,7 @@ pub mod export_statismo;
 pub mod info;
 pub mod landmarks;
 pub mod manifest;
+pub mod manikins;
 pub mod measure;
 pub mod model;
 pub mod project;

@@ -71,6 +71,48 @@ pub struct BoundaryManikins {
     pub manikins: Vec<Manikin>,
 }
 
+impl BoundaryManikins {
+    /// One row per manikin: `name`, `distance` (achieved Mahalanobis distance; `radius` on the
+    /// boundary), `mahalanobis` (‖z‖ of the body), `target_M` and `achieved_M` of each chosen
+    /// measurement, then all 19 measurements by name (m, m³, m²; empty where not taken).
+    pub fn to_csv(&self) -> String {
+        use std::fmt::Write;
+        let mut out = String::from("name,distance,mahalanobis");
+        for m in &self.measures {
+            write!(out, ",target_{m}").ok();
+        }
+        for m in &self.measures {
+            write!(out, ",achieved_{m}").ok();
+        }
+        for m in Measure::ALL {
+            write!(out, ",{}", m.definition().name).ok();
+        }
+        out.push('\n');
+        for k in &self.manikins {
+            write!(
+                out,
+                "{},{:.4},{:.4}",
+                k.name, k.distance, k.body.mahalanobis
+            )
+            .ok();
+            for a in &k.body.achieved {
+                write!(out, ",{:.6}", a.target).ok();
+            }
+            for a in &k.body.achieved {
+                write!(out, ",{:.6}", a.achieved).ok();
+            }
+            for m in Measure::ALL {
+                out.push(',');
+                if let Some(v) = k.measurements.get(m) {
+                    write!(out, "{v:.6}").ok();
+                }
+            }
+            out.push('\n');
+        }
+        out
+    }
+}
+
 /// The unit directions u of the module doc for `k` measurements (2, 3 or 4); `ellipse_points`
 /// is used for k = 2. Empty for another k.
 pub fn boundary_directions(k: usize, ellipse_points: usize) -> Vec<Vec<f64>> {
