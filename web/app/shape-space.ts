@@ -200,6 +200,7 @@ export class ShapeSpace {
     this.coefficients = { whole: loaded.info.parts[0]!.variances.map(() => 0), segments: SEGMENTS.map(() => null) };
     this.panel.showModel(label, loaded.info.parts, loaded.info.subjects.length);
     this.panel.showView('whole', this.coefficients);
+    this.panel.measurements.setTargetable('whole', loaded.targetable.whole);
     this.page.dataset.shapeModel = label;
     this.page.dataset.shapeModes = String(loaded.info.parts[0]!.variances.length);
     this.showResolution({ resolution: loaded.info.template.resolution as TemplateResolution, vertexCount: loaded.info.template.vertex_count, triangles: loaded.triangles });
@@ -257,6 +258,7 @@ export class ShapeSpace {
       segments: link.coefficients.segments.map((s, i) => (s ? fit(s, parts[i + 1]!.variances.length) : null)),
     };
     this.panel.showView(link.view, this.coefficients);
+    this.panel.measurements.setTargetable(link.view, this.model!.targetable[link.view]);
     // The load asked to frame the camera; a link's own camera wins over that.
     this.frameNext = !link.camera;
     this.redraw(!link.camera, true);
@@ -283,6 +285,7 @@ export class ShapeSpace {
   private setView(part: PartName): void {
     this.suppressed = false;
     this.panel.showView(part, this.coefficients);
+    if (this.model) this.panel.measurements.setTargetable(part, this.model.targetable[part]);
     this.page.dataset.shapeView = part;
   }
 
@@ -316,18 +319,20 @@ export class ShapeSpace {
   }
 
   /**
-   * Moves the sliders to the most likely whole body with `targets` (found in the worker); every
-   * segment follows the whole body again, since the targets are met by the whole-body model.
+   * Moves the sliders to the most likely body with `targets` (found in the worker): in the whole
+   * body's view a whole body, every segment following it; in a segment's view that segment's own
+   * shape, the rest of the body held.
    */
   private async findBody(targets: Targets): Promise<void> {
     if (!this.model) return;
     this.suppressed = false;
     this.page.dataset.findBody = 'running';
     try {
-      const found = await this.client.call({ type: 'bodyFromMeasurements', targets });
+      const found = await this.client.call({ type: 'bodyFromMeasurements', targets, part: this.panel.currentView });
       this.panel.measurements.showFound(targets, found);
       this.page.dataset.findBodyMs = found.workerMs.toFixed(2);
-      this.showWhole(found.sigma);
+      if (found.part === 'whole') this.showWhole(found.sigma);
+      else this.showSegment(found.part, found.sigma);
       this.page.dataset.findBody = 'done';
     } catch (error) {
       this.panel.measurements.showError(error instanceof Error ? error.message : String(error));
@@ -340,6 +345,14 @@ export class ShapeSpace {
     if (!this.model) return;
     this.suppressed = false;
     this.coefficients = { whole: this.coefficients.whole.map((_, k) => quantiseSigma(sigma[k] ?? 0)), segments: SEGMENTS.map(() => null) };
+    this.panel.showView(this.panel.currentView, this.coefficients);
+    this.redraw(false, true);
+  }
+
+  /** Gives `part` its own shape at σ values `sigma`, the rest of the body as it is. */
+  private showSegment(part: SegmentName, sigma: number[]): void {
+    const i = SEGMENTS.indexOf(part);
+    this.coefficients.segments[i] = this.model!.info.parts[i + 1]!.variances.map((_, k) => quantiseSigma(sigma[k] ?? 0));
     this.panel.showView(this.panel.currentView, this.coefficients);
     this.redraw(false, true);
   }

@@ -1,6 +1,6 @@
 // Bodies from measurements: the targets a person enters (in the panel's units), what the core
 // found, and whether a value meets its target. No DOM here.
-import type { Reading } from './shape-results';
+import type { PartName, Reading } from './shape-results';
 
 /** Targets by measurement name, in the core's units: m, m³, m². */
 export type Targets = Record<string, number>;
@@ -18,7 +18,9 @@ export interface AchievedTarget {
 
 /** The body the core found for a set of targets (core `BodyFromMeasurements`) and its cost. */
 export interface FoundBody {
-  /** Whole-body coefficients in σ units. */
+  /** The model the coefficients are of: the whole body, or the segment in view. */
+  part: PartName;
+  /** Coefficients of `part`'s model in σ units. */
   sigma: number[];
   achieved: AchievedTarget[];
   iterations: number;
@@ -122,7 +124,7 @@ export interface Manikin {
   /** Its unit direction in the principal axes of the chosen measurements. */
   direction: number[];
   /** The body: σ-unit whole-body coefficients and target vs achieved of each chosen measurement. */
-  body: Omit<FoundBody, 'tolerances' | 'workerMs'>;
+  body: Omit<FoundBody, 'part' | 'tolerances' | 'workerMs'>;
   /** Mahalanobis distance of its chosen values from the population mean (the radius on the boundary). */
   distance: number;
   /** All its measurements `{name: value | null}` (m, m³, m²). */

@@ -47,8 +47,11 @@ export type CoreRequestBody =
   | { type: 'reconstruct'; coefficients: ShapeCoefficients }
   /** Shows the body at `resolution` (maps the model to fine on first use, with progress). */
   | { type: 'shapeResolution'; resolution: TemplateResolution }
-  /** The most likely whole body of the loaded model with `targets` (m, m³, m²); nothing shown changes. */
-  | { type: 'bodyFromMeasurements'; targets: Targets }
+  /**
+   * The most likely body of the loaded model with `targets` (m, m³, m²): of the whole-body model,
+   * or of segment `part`'s with the rest of the body shown held; nothing shown changes.
+   */
+  | { type: 'bodyFromMeasurements'; targets: Targets; part: PartName }
   /** Every measurement over the training subjects and bodies sampled from the loaded model; replies with progress. */
   | { type: 'measurementDistribution' }
   /** The boundary manikins of 2–4 measurements at `coverage` (a share) of the population measured before; replies with progress. */

@@ -3,7 +3,7 @@
 // target then says what the body on screen achieves and whether that meets it. Rows are built once
 // per set of measurements and updated in place, so typing in a target survives slider moves.
 import { meets, parseTarget, targetUnit, type FoundBody, type Targets, type TargetTolerances } from '../shared/anthropometry';
-import type { Measurements, Reading } from '../shared/shape-results';
+import type { Measurements, PartName, Reading } from '../shared/shape-results';
 import { button, h } from './dom';
 import { formatReading } from './format';
 
@@ -27,10 +27,15 @@ export class MeasurementTable {
   /** The targets of the last body found and the tolerances that say "met". */
   private found: { targets: Targets; tolerances: TargetTolerances } | null = null;
   private last: Measurements = [];
+  /** The part in view and the measurements its targets may name (others' entries are disabled). */
+  private part: PartName = 'whole';
+  private targetable: ReadonlySet<string> | null = null;
+  private readonly scope = h('p', { class: 'note', 'data-testid': 'target-scope' });
 
   constructor(private readonly onFind: (targets: Targets) => void) {
     this.element.append(
       h('table', { class: 'measurements', 'data-testid': 'shape-readings' }, h('thead', {}, h('tr', {}, h('th', {}, 'Measurement'), h('th', {}, 'Value'), h('th', {}, 'Target'), h('th', {}, 'Population'))), this.body),
+      this.scope,
       h('div', { class: 'row' }, button('find-body', 'Find body', 'button primary', () => this.find()), button('clear-targets', 'Clear targets', 'button', () => this.clear())),
       this.status,
     );
@@ -56,6 +61,29 @@ export class MeasurementTable {
   /** The label of measurement `name` (its name when unknown). */
   label(name: string): string {
     return this.rows.get(name)?.reading.label ?? name;
+  }
+
+  /** The part in view: in a segment's view only its own measurements take targets. */
+  setTargetable(part: PartName, names: readonly string[]): void {
+    this.part = part;
+    this.targetable = new Set(names);
+    this.applyTargetable();
+  }
+
+  private applyTargetable(): void {
+    const labels: string[] = [];
+    for (const [name, row] of this.rows) {
+      const ok = !this.targetable || this.targetable.has(name);
+      row.input.disabled = !ok;
+      row.input.title = ok ? '' : `Not a target of the ${this.part.replace('_', ' ')} model: it is measured on another part of the body.`;
+      if (ok) labels.push(row.reading.label);
+    }
+    this.scope.textContent =
+      this.part === 'whole'
+        ? ''
+        : labels.length
+          ? `In this segment's view, targets act on the ${this.part.replace('_', ' ')} model (the rest of the body held): ${labels.join(', ')}.`
+          : `No measurement is anchored on the ${this.part.replace('_', ' ')}: pick the whole body to enter targets.`;
   }
 
   /** A body was found for `targets` and is being shown. */
@@ -97,6 +125,7 @@ export class MeasurementTable {
       this.rows.set(reading.name, { reading, value, input, result, resultCell, population });
     }
     this.body.replaceChildren(...rows);
+    this.applyTargetable();
   }
 
   /** The targets entered, or what is wrong with them. */
@@ -104,6 +133,7 @@ export class MeasurementTable {
     const targets: Targets = {};
     const errors: string[] = [];
     for (const [name, row] of this.rows) {
+      if (row.input.disabled) continue;
       const parsed = parseTarget(row.reading, row.input.value);
       row.input.classList.toggle('invalid', Boolean(parsed.error));
       if (parsed.error) errors.push(parsed.error);

@@ -145,7 +145,7 @@ self.onmessage = async (event: MessageEvent<CoreRequest>) => {
         break;
       }
       case 'bodyFromMeasurements':
-        post({ id: request.id, type: 'result', result: models.bodyFromMeasurements(request.targets) });
+        post({ id: request.id, type: 'result', result: models.bodyFromMeasurements(request.targets, request.part) });
         break;
       case 'measurementDistribution': {
         const id = request.id;

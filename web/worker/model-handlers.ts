@@ -26,11 +26,12 @@ let population: ModelPopulation | null = null;
 function hold(next: ShapeSpace, fileName: string): LoadedModel {
   const info = JSON.parse(next.infoJson()) as ModelInfo;
   const triangles = next.triangles();
+  const targetable = JSON.parse(next.targetableJson()) as LoadedModel['targetable'];
   space?.free();
   space = next;
   population?.free();
   population = null;
-  return { info, triangles, fileName };
+  return { info, triangles, fileName, targetable };
 }
 
 function current(): ShapeSpace {
@@ -122,11 +123,14 @@ export function useResolution(
   return { resolution: model.resolution as 'base' | 'fine', vertexCount: model.vertexCount, triangles: model.triangles() };
 }
 
-/** The most likely whole body with `targets` (m, m³, m²); the body shown is not touched. */
-export function bodyFromMeasurements(targets: Targets): FoundBody {
+/**
+ * The most likely body with `targets` (m, m³, m²): of the whole-body model, or of the segment
+ * `part`'s model with the rest of the body shown held. The body shown is not touched.
+ */
+export function bodyFromMeasurements(targets: Targets, part: PartName): FoundBody {
   const model = current();
   const start = performance.now();
-  const found = JSON.parse(model.bodyFromMeasurementsJson(JSON.stringify(targets))) as Omit<FoundBody, 'tolerances' | 'workerMs'>;
+  const found = JSON.parse(model.bodyFromMeasurementsJson(JSON.stringify(targets), part)) as Omit<FoundBody, 'tolerances' | 'workerMs'>;
   const workerMs = performance.now() - start;
   return { ...found, tolerances: JSON.parse(model.targetTolerancesJson()) as TargetTolerances, workerMs };
 }

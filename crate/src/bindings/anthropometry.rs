@@ -19,8 +19,20 @@ use crate::pca::from_measurements::{body_from_measurements, FromMeasurementsPara
 use crate::pca::measurement_distribution::{
     measurement_distribution, DistributionParams, MeasurementDistribution,
 };
+use crate::pca::segment_targets::{segment_body_from_measurements, segment_measurements};
+use crate::template::Segment;
 
 use super::model::{js, ShapeSpace};
+
+/// A body found for targets (JSON of `ShapeSpace::bodyFromMeasurementsJson`): σ-unit
+/// coefficients of the part's model, each target's achieved value, iterations and ‖z‖.
+#[derive(Serialize)]
+struct Found<'a> {
+    /// "whole" or the segment whose model the coefficients are of.
+    part: &'a str,
+    #[serde(flatten)]
+    found: &'a crate::pca::from_measurements::BodyFromMeasurements,
+}
 
 /// How close "met" is per kind (JSON of `ShapeSpace::targetTolerancesJson`), m / m³ / m².
 #[derive(Serialize)]
@@ -64,21 +76,64 @@ fn parse_targets(json: &str) -> Result<Vec<(Measure, f64)>, JsError> {
 
 #[wasm_bindgen]
 impl ShapeSpace {
-    /// The whole-body σ coefficients meeting `targets_json` (`{name: value}`, m / m³ / m²) with
-    /// the least Mahalanobis norm, as JSON `{sigma, achieved: [{name, target, achieved, met}],
-    /// iterations, mahalanobis}`. Fails with the core's message on an empty target set, a
-    /// non-positive value or an unknown name. The body shown is not touched.
+    /// The coefficients of `part`'s model meeting `targets_json` (`{name: value}`, m / m³ /
+    /// m²) with the least Mahalanobis norm, as JSON `{part, sigma, achieved: [{name, target,
+    /// achieved, met}], iterations, mahalanobis}`. `part` "whole": whole-body σ values, every
+    /// segment following; a segment name: that segment model's σ values, on the stitched body
+    /// with the rest of the body shown held ([`segment_body_from_measurements`]). Fails with
+    /// the core's message on an empty target set, a non-positive value, an unknown name or a
+    /// target that does not belong to the segment. The body shown is not touched.
     #[wasm_bindgen(js_name = bodyFromMeasurementsJson)]
-    pub fn body_from_measurements_json(&self, targets_json: &str) -> Result<String, JsError> {
+    pub fn body_from_measurements_json(
+        &self,
+        targets_json: &str,
+        part: &str,
+    ) -> Result<String, JsError> {
         let targets = parse_targets(targets_json)?;
-        let found = body_from_measurements(
-            &self.model().whole,
-            self.measurer(),
-            &targets,
-            &FromMeasurementsParams::default(),
-        )
+        let params = FromMeasurementsParams::default();
+        let found = if part == "whole" {
+            body_from_measurements(&self.model().whole, self.measurer(), &targets, &params)
+        } else {
+            let segment = Segment::from_name(part)
+                .ok_or_else(|| js(format!("unknown part {part:?}: \"whole\" or a segment")))?;
+            segment_body_from_measurements(
+                self.model(),
+                segment,
+                self.shown_coefficients(),
+                self.measurer(),
+                &targets,
+                &params,
+            )
+            .map(|s| s.found)
+        }
         .map_err(js)?;
-        serde_json::to_string(&found).map_err(js)
+        serde_json::to_string(&Found {
+            part,
+            found: &found,
+        })
+        .map_err(js)
+    }
+
+    /// The measurements a target may name in each part's view, as JSON `{whole: [...], head:
+    /// [...], ...}` (whole: all; a segment: those anchored on it, docs/measurements.md).
+    #[wasm_bindgen(js_name = targetableJson)]
+    pub fn targetable_json(&self) -> Result<String, JsError> {
+        let mut out = BTreeMap::new();
+        out.insert(
+            "whole",
+            Measure::ALL
+                .iter()
+                .map(|m| m.definition().name)
+                .collect::<Vec<_>>(),
+        );
+        for s in Segment::ALL {
+            let names = segment_measurements(self.measurer(), &self.model().segment_weights, s)
+                .iter()
+                .map(|m| m.definition().name)
+                .collect();
+            out.insert(s.name(), names);
+        }
+        serde_json::to_string(&out).map_err(js)
     }
 
     /// The tolerances within which a target counts as met (the core's defaults), as JSON
@@ -162,7 +217,8 @@ impl ModelPopulation {
             &mut reporter(on_progress),
         )
         .map_err(js)?;
-        serde_json::to_string(&serde_json::json!({ "manikins": found })).map_err(js)
+        let csv = found.to_csv();
+        serde_json::to_string(&serde_json::json!({ "manikins": found, "csv": csv })).map_err(js)
     }
 }
 

@@ -123,6 +123,11 @@ impl ShapeSpace {
         &self.model
     }
 
+    /// The coefficients of the body shown (model units).
+    pub(super) fn shown_coefficients(&self) -> &Coefficients {
+        self.morph.coefficients()
+    }
+
     /// Measures bodies of the model on the base template's vertices.
     pub(super) fn measurer(&self) -> &BodyMeasurer {
         &self.measurer
