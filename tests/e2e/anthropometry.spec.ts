@@ -156,3 +156,29 @@ test('the population shows where the body sits; boundary manikins of two measure
     expect(Number(row[statureCol])).toBeLessThan(2.2);
   }
 });
+
+test('measuring the population shows progress and can be cancelled, then computed again', async ({ page }) => {
+  // Click Cancel as soon as the first progress shows it (in the page, so a fast run cannot finish first).
+  await page.addInitScript(() => {
+    new MutationObserver((_, observer) => {
+      const cancel = document.querySelector<HTMLButtonElement>('[data-testid="population-cancel"]');
+      if (!cancel || cancel.hidden) return;
+      observer.disconnect();
+      document.body.dataset.populationProgressSeen = document.querySelector('[data-testid="population-status"]')?.textContent ?? '';
+      cancel.click();
+    }).observe(document, { subtree: true, childList: true, attributes: true, attributeFilter: ['hidden'] });
+  });
+  await page.goto('/');
+  await shapeReady(page);
+  await expect(page.locator('body')).toHaveAttribute('data-population-ready', 'cancelled');
+  await expect(page.locator('body')).toHaveAttribute('data-population-progress-seen', /Measuring the training subjects and sampled bodies… \d+ %/);
+  await expect(page.getByTestId('population-status')).toHaveText('Cancelled: the population was not computed.');
+  await expect(page.getByTestId('percentile-stature')).toHaveCount(0);
+  // The body shown lives in another worker: it still answers.
+  const before = await page.getByTestId('measure-stature').innerText();
+  await page.getByTestId('shape-slider-0').fill('2');
+  await expect(page.getByTestId('measure-stature')).not.toHaveText(before);
+  await page.getByTestId('population-compute').click();
+  await expect(page.locator('body')).toHaveAttribute('data-population-ready', 'true', { timeout: 90_000 });
+  await expect(page.getByTestId('percentile-stature')).toHaveText(/^P\d+$/);
+});
