@@ -2,11 +2,17 @@
 //! measurements with the rest of the body held, measured on the stitched body
 //! ([`BodyModel::reconstruct`]), and which measurements belong to which segment.
 //!
-//! A measurement belongs to the segment holding the largest blend weight summed over the
-//! template vertices of its landmarks (head girth → head; upper-arm girth and arm length → right
-//! arm; knee height → right leg; chest, waist, hip → torso; the table is in
-//! docs/measurements.md). Stature, volume and surface area have no landmarks and belong to the
-//! whole body only.
+//! A measurement belongs to the segment whose surface it is taken on ([`measurement_segment`];
+//! docs/measurements.md): head and neck girth → head (the neck plane lies in the head
+//! segment's part of the neck); upper-arm girth and arm length → right arm (both are taken on
+//! the right arm); thigh girth and knee height → right leg (the right thigh's loop, the right
+//! knee over the right foot); the torso girths and waist-to-hip length → torso. Stature,
+//! cervicale, acromion and crotch height run from the floor through several segments, shoulder
+//! breadth joins the two arms' acromions, and volume and area cover every segment: they are
+//! whole-body targets only. (Anchoring this on
+//! the landmarks' blend weights alone puts the acromions in the arms and the crotch and
+//! trochanterion, hence thigh girth, in the torso, which is not where those values are taken.)
+//! The end-to-end test checks that every segment's model moves each of its measurements.
 //!
 //! The segment's σ-unit coefficients start where the held body is (its override, or the
 //! projection of the whole-body reconstruction onto the segment model) and the Gauss–Newton
@@ -20,39 +26,27 @@ use super::stitch::{Coefficients, ModeDelta, ModeTarget, StitchPlan};
 use crate::measure::{BodyMeasurer, Measure};
 use crate::template::Segment;
 
-/// The segment `m` belongs to (module doc), from `measurer`'s landmark vertices and the
-/// per-vertex blend weights `segment_weights` ([`Segment::ALL`] order); `None` for a measurement
-/// without landmarks.
-pub fn measurement_segment(
-    measurer: &BodyMeasurer,
-    segment_weights: &[[f32; 6]],
-    m: Measure,
-) -> Option<Segment> {
-    let anchors = measurer.anchor_vertices(m);
-    if anchors.is_empty() {
-        return None;
-    }
-    let mut sum = [0.0f64; 6];
-    for &v in anchors {
-        for (s, &w) in sum.iter_mut().zip(segment_weights.get(v as usize)?) {
-            *s += w as f64;
+/// The segment whose model a target of `m` acts on (module doc); `None` for a measurement of
+/// the whole body.
+pub fn measurement_segment(m: Measure) -> Option<Segment> {
+    use Measure::*;
+    match m {
+        HeadGirth | NeckGirth => Some(Segment::Head),
+        UpperArmGirth | ArmLength => Some(Segment::RightArm),
+        ThighGirth | KneeHeight => Some(Segment::RightLeg),
+        ChestGirth | BustGirth | UnderbustGirth | WaistGirth | HipGirth | WaistToHipBack => {
+            Some(Segment::Torso)
         }
+        Stature | CervicaleHeight | AcromionHeight | CrotchHeight | ShoulderBreadth | Volume
+        | SurfaceArea => None,
     }
-    (0..6)
-        .max_by(|&a, &b| sum[a].total_cmp(&sum[b]))
-        .filter(|&s| sum[s] > 0.0)
-        .map(|s| Segment::ALL[s])
 }
 
-/// The measurements that belong to `segment`, [`Measure::ALL`] order.
-pub fn segment_measurements(
-    measurer: &BodyMeasurer,
-    segment_weights: &[[f32; 6]],
-    segment: Segment,
-) -> Vec<Measure> {
+/// The measurements whose targets act on `segment`, [`Measure::ALL`] order.
+pub fn segment_measurements(segment: Segment) -> Vec<Measure> {
     Measure::ALL
         .into_iter()
-        .filter(|&m| measurement_segment(measurer, segment_weights, m) == Some(segment))
+        .filter(|&m| measurement_segment(m) == Some(segment))
         .collect()
 }
 
@@ -67,7 +61,7 @@ pub struct SegmentBodyFromMeasurements {
 
 /// The coefficients of `segment`'s model meeting `targets` on the stitched body of `model`, the
 /// other coefficients of `held` (model units) unchanged (module doc). Fails on a target that
-/// does not belong to `segment` ([`measurement_segment`]), and as
+/// does not act on `segment` ([`measurement_segment`]), and as
 /// [`super::from_measurements::body_from_measurements`] does.
 pub fn segment_body_from_measurements(
     model: &BodyModel,
@@ -78,12 +72,12 @@ pub fn segment_body_from_measurements(
     params: &FromMeasurementsParams,
 ) -> Result<SegmentBodyFromMeasurements, PcaError> {
     for (m, _) in targets {
-        if measurement_segment(measurer, &model.segment_weights, *m) != Some(segment) {
+        if measurement_segment(*m) != Some(segment) {
             let name = m.definition().name;
             return Err(PcaError::BadParameter(format!(
                 "{name} does not belong to the {} segment (its targets: {})",
                 segment.name(),
-                segment_measurements(measurer, &model.segment_weights, segment)
+                segment_measurements(segment)
                     .iter()
                     .map(|m| m.definition().name)
                     .collect::<Vec<_>>()
