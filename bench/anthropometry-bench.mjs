@@ -7,6 +7,7 @@
 //     the model opens (the per-body timings wait for it), and the boundary manikins of stature × waist girth at the default coverage once.
 // Usage: node bench/anthropometry-bench.mjs URL RUNS
 import { launchBenchPage } from './browser.mjs';
+import { row as tableRow } from './table.mjs';
 
 const [url, runsArg] = process.argv.slice(2);
 const runs = Number(runsArg ?? 30);
@@ -18,15 +19,7 @@ await page.waitForFunction(() => document.body.dataset.shapeSettled === 'true' &
 await page.waitForFunction(() => document.body.dataset.populationReady === 'true', null, { timeout: 600_000 });
 const populationMs = await page.evaluate(() => Number(document.body.dataset.populationMs));
 
-const stats = (xs) => {
-  const s = [...xs].sort((a, b) => a - b);
-  const m = Math.floor(s.length / 2);
-  return { median: s.length % 2 ? s[m] : (s[m - 1] + s[m]) / 2, min: s[0], max: s.at(-1) };
-};
-const row = (label, xs) => {
-  const { median, min, max } = stats(xs);
-  return `| ${label.padEnd(52)} | ${median.toFixed(2).padStart(8)} | ${min.toFixed(2).padStart(8)} | ${max.toFixed(2).padStart(8)} |`;
-};
+const row = (label, xs) => tableRow(label, xs, 52);
 const bodies = () => page.evaluate(() => Number(document.body.dataset.shapeBodies));
 const settledAfter = (n) => page.waitForFunction((b) => Number(document.body.dataset.shapeBodies) > b && document.body.dataset.shapeSettled === 'true', n, { timeout: 60_000 });
 

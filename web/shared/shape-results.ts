@@ -39,7 +39,7 @@ export interface LoadedModel {
   info: ModelInfo;
   triangles: Uint32Array;
   fileName: string;
-  /** The measurements a target may name in each part's view (whole: all; a segment: those anchored on it). */
+  /** The measurements a target may name in each part's view (whole: all; a segment: those that act on its model). */
   targetable: Record<PartName, string[]>;
 }
 

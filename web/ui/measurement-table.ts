@@ -83,7 +83,7 @@ export class MeasurementTable {
         ? ''
         : labels.length
           ? `In this segment's view, targets act on the ${this.part.replace('_', ' ')} model (the rest of the body held): ${labels.join(', ')}.`
-          : `No measurement is anchored on the ${this.part.replace('_', ' ')}: pick the whole body to enter targets.`;
+          : `No measurement acts on the ${this.part.replace('_', ' ')} model alone: pick the whole body to enter targets.`;
   }
 
   /** A body was found for `targets` and is being shown. */

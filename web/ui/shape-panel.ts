@@ -1,5 +1,6 @@
 // The "Shape space" panel: segment picker, one σ slider per mode of the part in view, reset and
-// random, live measurements, seam quality and timing, quality charts, CSV, exports, link, build.
+// random, live measurements with targets (Find body), the population and boundary manikins, seam
+// quality and timing, quality charts, CSV, exports, link, build.
 import type { ModelCsv, ModelGlbParts, ModelPart, PartName, ReconstructedBody, SegmentName, ShapeCoefficients } from '../shared/shape-results';
 import type { TemplateResolution } from '../shared/template-data';
 import { SEGMENTS } from '../shared/shape-results';

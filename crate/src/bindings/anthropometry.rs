@@ -50,7 +50,7 @@ fn reporter(on_progress: &Function) -> impl FnMut(f64) + '_ {
     }
 }
 
-/// `{name: value}` → targets in the order given; unknown names and non-numbers are refused.
+/// `{name: value}` → targets (sorted by name); unknown names and non-numbers are refused.
 fn parse_targets(json: &str) -> Result<Vec<(Measure, f64)>, JsError> {
     let raw: BTreeMap<String, serde_json::Value> = serde_json::from_str(json).map_err(|e| {
         js(format!(
@@ -115,7 +115,8 @@ impl ShapeSpace {
     }
 
     /// The measurements a target may name in each part's view, as JSON `{whole: [...], head:
-    /// [...], ...}` (whole: all; a segment: those anchored on it, docs/measurements.md).
+    /// [...], ...}` (whole: all; a segment: those that act on its model,
+    /// [`crate::pca::segment_targets::measurement_segment`]).
     #[wasm_bindgen(js_name = targetableJson)]
     pub fn targetable_json(&self) -> Result<String, JsError> {
         let mut out = BTreeMap::new();
@@ -127,7 +128,7 @@ impl ShapeSpace {
                 .collect::<Vec<_>>(),
         );
         for s in Segment::ALL {
-            let names = segment_measurements(self.measurer(), &self.model().segment_weights, s)
+            let names = segment_measurements(s)
                 .iter()
                 .map(|m| m.definition().name)
                 .collect();
