@@ -9,7 +9,12 @@
 //!
 //! W = diag(1 / tolerance) putting lengths, girths, volume and area on one scale, μ small: among
 //! the bodies that meet the targets, the one nearest the mean in σ units. Iterates until every
-//! target is within a quarter of its tolerance or `max_iterations`.
+//! target is within a quarter of its tolerance or `max_iterations`. A step that raises the cost
+//! ‖W·(m(z) − t)‖² + μ·‖z‖² or makes a body without one of the sections is refused and retried
+//! with Levenberg–Marquardt damping: targets no body of the model has (all 19 values of a
+//! person outside the population) end at the nearest body the model can make instead of at a
+//! degenerate one. (A segment model with the body held, [`super::segment_targets`], runs the
+//! same iteration from and towards its starting coefficients.)
 
 use super::error::PcaError;
 use super::shape_model::ShapeModel;
@@ -20,7 +25,7 @@ use serde::Serialize;
 /// Parameters of [`body_from_measurements`], with their defaults.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct FromMeasurementsParams {
-    /// Gauss–Newton iterations at most; default 8.
+    /// Gauss–Newton iterations (each a step tried) at most; default 12.
     pub max_iterations: usize,
     /// Forward-difference step in σ units; default 0.05.
     pub step: f64,
@@ -37,7 +42,7 @@ pub struct FromMeasurementsParams {
 impl Default for FromMeasurementsParams {
     fn default() -> Self {
         Self {
-            max_iterations: 8,
+            max_iterations: 12,
             step: 0.05,
             regularisation: 1e-4,
             length_tolerance: 0.002,
@@ -209,27 +214,61 @@ pub(crate) fn solve(
             .zip(w.iter())
             .all(|((v, t), w)| (v - t).abs() * w <= 0.25)
     };
+    let cost = |values: &DVector<f64>, z: &DVector<f64>| {
+        (values - &target).component_mul(&w).norm_squared()
+            + params.regularisation * (z - &prior).norm_squared()
+    };
+    let mut current = cost(&values, &DVector::from_vec(z.clone()));
+    // Levenberg–Marquardt damping λ towards the current z: 0 while Gauss–Newton steps lower the
+    // cost; raised when a step raises it or makes a body that cannot be measured (targets no body
+    // of the model has, e.g. a held-out subject's 19 values), lowered again after a success.
+    let mut damping = 0.0;
+    let mut jacobian: Option<DMatrix<f64>> = None;
     while iterations < params.max_iterations && !done(&values) {
         iterations += 1;
-        let mut jacobian = DMatrix::zeros(targets.len(), modes);
-        let mut moved = positions.clone();
-        for k in 0..modes {
-            model.moved(&positions, k, params.step, &mut moved)?;
-            let column = (measure(&moved)? - &values) / params.step;
-            jacobian.set_column(k, &column);
-        }
+        let j = match jacobian.take() {
+            Some(j) => j,
+            None => {
+                let mut j = DMatrix::zeros(targets.len(), modes);
+                let mut moved = positions.clone();
+                for k in 0..modes {
+                    // A forward step that loses a section falls back to a backward one.
+                    for h in [params.step, -params.step] {
+                        model.moved(&positions, k, h, &mut moved)?;
+                        if let Ok(m) = measure(&moved) {
+                            j.set_column(k, &((m - &values) / h));
+                            break;
+                        }
+                    }
+                }
+                j
+            }
+        };
         let zv = DVector::from_vec(z.clone());
-        let rhs = &target - &values + &jacobian * &zv;
-        let wj = DMatrix::from_fn(targets.len(), modes, |i, k| w[i] * jacobian[(i, k)]);
+        let rhs = &target - &values + &j * &zv;
+        let wj = DMatrix::from_fn(targets.len(), modes, |i, k| w[i] * j[(i, k)]);
         let wr = rhs.component_mul(&w);
-        let normal = wj.transpose() * &wj + DMatrix::identity(modes, modes) * params.regularisation;
+        let normal = wj.transpose() * &wj
+            + DMatrix::identity(modes, modes) * (params.regularisation + damping);
         let next = normal
             .lu()
-            .solve(&(wj.transpose() * wr + &prior * params.regularisation))
+            .solve(&(wj.transpose() * wr + &prior * params.regularisation + &zv * damping))
             .ok_or_else(|| bad("the linearised system is singular".into()))?;
-        z = next.iter().copied().collect();
-        positions = model.body(&z)?;
-        values = measure(&positions)?;
+        let trial = model.body(next.as_slice())?;
+        match measure(&trial) {
+            Ok(m) if cost(&m, &next) < current => {
+                current = cost(&m, &next);
+                z = next.iter().copied().collect();
+                positions = trial;
+                values = m;
+                damping /= 10.0;
+            }
+            _ => {
+                let scale = (wj.transpose() * &wj).trace() / modes as f64;
+                damping = (10.0 * damping).max(1e-2 * scale);
+                jacobian = Some(j);
+            }
+        }
     }
     let achieved = targets
         .iter()
