@@ -8,7 +8,10 @@
 #   align  alignment vs trimesh nricp_amberg (scripts/bench-align.sh), and of a ≈ 201K-vertex
 #          scan in the browser worker at base and fine (scripts/bench-align-browser.sh)
 #   anthro measurements of one body, a body from measurements, the population and boundary
-#          manikins of the demo model in the worker inside Chromium (bench/anthropometry-bench.mjs)
+#          manikins of the demo model in the worker inside Chromium (bench/anthropometry-bench.mjs),
+#          and natively: bodies from measurements (random targets inside the 5–95 % range;
+#          held-out subjects), distributions and boundary manikins
+#          (crate/examples/anthropometry_bench.rs)
 #   batch  20 synthetic subjects (`bodyspace synth --n 20 --seed 7`, as the CLI batch benchmark)
 #          picked at once in the app: wall time to the built model with the worker pool and with
 #          one worker (bench/batch-bench.mjs; BATCH_RUNS rounds, default 2)
@@ -61,6 +64,10 @@ if wants anthro; then
   echo
   echo "== anthropometry (public/models/demo.bsm) in the worker (WASM in Chromium)"
   node bench/anthropometry-bench.mjs "http://127.0.0.1:$port/" "${SHAPE_RUNS:-30}"
+  echo
+  echo "== anthropometry: bodies from measurements, distributions, boundary manikins (native)"
+  echo "load average before: $(cut -d' ' -f1-3 /proc/loadavg)"
+  cargo run --quiet --release --manifest-path crate/Cargo.toml --example anthropometry_bench
 fi
 echo "load average after: $(cut -d' ' -f1-3 /proc/loadavg)"
 if wants align; then
