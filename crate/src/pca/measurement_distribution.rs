@@ -235,11 +235,7 @@ pub fn training_measurements(
     measurer: &BodyMeasurer,
 ) -> Result<Vec<Measurements>, PcaError> {
     let modes = model.mode_count();
-    let subjects = if modes == 0 {
-        0
-    } else {
-        model.scores.len() / modes
-    };
+    let subjects = model.scores.len().checked_div(modes).unwrap_or(0);
     (0..subjects)
         .map(|i| {
             let b: Vec<f64> = model.scores[i * modes..(i + 1) * modes]
