@@ -10,6 +10,7 @@
 // (post → the new arrays in the body's vertex buffers; rendering excluded: the bench waits for
 // the frame to finish before the next move). Usage: node bench/shape-bench.mjs URL RUNS
 import { launchBenchPage } from './browser.mjs';
+import { row as tableRow } from './table.mjs';
 
 const [url, runsArg] = process.argv.slice(2);
 const runs = Number(runsArg ?? 30);
@@ -21,6 +22,9 @@ const b64 = values.toString('base64url');
 const segments = ['head', 'left_arm', 'right_arm', 'torso', 'left_leg', 'right_leg'].map((s) => `${s}.${b64}`).join('~');
 await page.goto(`${url}#m=models%2Fdemo.bsm&w=${b64}&s=${segments}&v=whole`);
 await page.waitForFunction(() => document.body.dataset.linkRestored === 'true' && document.body.dataset.shapeSettled === 'true', null, { timeout: 120_000 });
+// The population worker measures the model's sampled bodies for a few seconds after it opens:
+// wait for it, so its work on the other core does not count in these timings.
+await page.waitForFunction(() => document.body.dataset.populationReady === 'true', null, { timeout: 300_000 });
 
 const FIELDS = {
   core: 'shapeReconstructMs',
@@ -76,15 +80,7 @@ async function rebuilds() {
   return samples;
 }
 
-const stats = (xs) => {
-  const s = [...xs].sort((a, b) => a - b);
-  const m = Math.floor(s.length / 2);
-  return { median: s.length % 2 ? s[m] : (s[m - 1] + s[m]) / 2, min: s[0], max: s.at(-1) };
-};
-const row = (label, xs) => {
-  const { median, min, max } = stats(xs);
-  return `| ${label.padEnd(58)} | ${median.toFixed(2).padStart(8)} | ${min.toFixed(2).padStart(8)} | ${max.toFixed(2).padStart(8)} |`;
-};
+const row = (label, xs) => tableRow(label, xs, 58);
 
 function table(resolution, moves, full) {
   const info = `${resolution}: ${moves.length} slider moves, ${full.length} full rebuilds (ms)`;

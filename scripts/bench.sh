@@ -7,16 +7,19 @@
 #          worker inside Chromium and natively (crate/examples/pca_bench.rs morph)
 #   align  alignment vs trimesh nricp_amberg (scripts/bench-align.sh), and of a ≈ 201K-vertex
 #          scan in the browser worker at base and fine (scripts/bench-align-browser.sh)
+#   anthro measurements of one body, a body from measurements, the population and boundary
+#          manikins of the demo model in the worker inside Chromium (bench/anthropometry-bench.mjs),
+#          and natively: bodies from measurements (random targets inside the 5–95 % range;
+#          held-out subjects), distributions and boundary manikins
+#          (crate/examples/anthropometry_bench.rs)
 #   batch  20 synthetic subjects (`bodyspace synth --n 20 --seed 7`, as the CLI batch benchmark)
 #          picked at once in the app: wall time to the built model with the worker pool and with
 #          one worker (bench/batch-bench.mjs; BATCH_RUNS rounds, default 2)
-#   anthro bodies from measurements (random targets inside the 5–95 % range; held-out subjects),
-#          distributions and boundary manikins, natively (crate/examples/anthropometry_bench.rs)
-# BENCH_PARTS picks some (default: "parse shape align batch anthro"); RUNS / SHAPE_RUNS set the repetitions.
+# BENCH_PARTS picks some (default: "parse shape anthro align batch"); RUNS / SHAPE_RUNS set the repetitions.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 export PATH="$HOME/.cargo/bin:$PATH"
-parts="${BENCH_PARTS:-parse shape align batch anthro}"
+parts="${BENCH_PARTS:-parse shape anthro align batch}"
 runs="${RUNS:-7}"
 port="${BENCH_PORT:-4179}"
 work="$(mktemp -d)"
@@ -57,6 +60,15 @@ if wants shape; then
   echo "== shape model: morphing natively (release)"
   cargo run --quiet --release --manifest-path crate/Cargo.toml --example pca_bench -- morph
 fi
+if wants anthro; then
+  echo
+  echo "== anthropometry (public/models/demo.bsm) in the worker (WASM in Chromium)"
+  node bench/anthropometry-bench.mjs "http://127.0.0.1:$port/" "${SHAPE_RUNS:-30}"
+  echo
+  echo "== anthropometry: bodies from measurements, distributions, boundary manikins (native)"
+  echo "load average before: $(cut -d' ' -f1-3 /proc/loadavg)"
+  cargo run --quiet --release --manifest-path crate/Cargo.toml --example anthropometry_bench
+fi
 echo "load average after: $(cut -d' ' -f1-3 /proc/loadavg)"
 if wants align; then
   echo
@@ -73,12 +85,5 @@ if wants batch; then
   crate/target/release/bodyspace synth --n 20 --seed 7 --out "$work/batch" >/dev/null
   echo "load average before: $(cut -d' ' -f1-3 /proc/loadavg)"
   node bench/batch-bench.mjs "http://127.0.0.1:$port/" "$work/batch" "${BATCH_RUNS:-2}"
-  echo "load average after: $(cut -d' ' -f1-3 /proc/loadavg)"
-fi
-if wants anthro; then
-  echo
-  echo "== anthropometry: bodies from measurements, distributions, boundary manikins (native)"
-  echo "load average before: $(cut -d' ' -f1-3 /proc/loadavg)"
-  cargo run --quiet --release --manifest-path crate/Cargo.toml --example anthropometry_bench
   echo "load average after: $(cut -d' ' -f1-3 /proc/loadavg)"
 fi

@@ -26,6 +26,9 @@ const client = new CoreClient();
 const alignClient = new CoreClient();
 // The landmark estimate and its checks run in a third worker: cancelling an estimate stops only it.
 const landmarkClient = new CoreClient();
+// Population work (measurement distributions, boundary manikins) runs in a fourth: cancelling it
+// never touches the body shown.
+const populationClient = new CoreClient();
 let caesarNames: string[] = [];
 const session = new Session(() => caesarNames);
 const viewer = new Viewer(byId('viewport'));
@@ -53,7 +56,7 @@ templateView.onLoaded(() => {
 let lastReadMs = 0;
 let loads = 0;
 
-const shapeSpace = new ShapeSpace(client, viewer, banner);
+const shapeSpace = new ShapeSpace(client, viewer, banner, populationClient);
 
 // The batch aligns in a pool of workers of its own.
 const batch = startBatch({ client, viewer, templateView, warpStep, alignStep, shapeSpace, banner });

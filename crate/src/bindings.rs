@@ -11,7 +11,10 @@
 //! * `landmarks.rs`: `estimateLandmarks` ([`LandmarkEstimate`]), `flagSuspicious`;
 //! * `landmark_export.rs`: `writeLandmarks` (`.lnd`, CSV or JSON);
 //! * `model.rs`: `loadShapeModel` ([`ShapeSpace`]); `model_build.rs`: `buildShapeModel`;
-//!   `statismo.rs`: [`StatismoArrays`], `loadStatismoModel`, `ShapeSpace.statismoArrays`.
+//!   `statismo.rs`: [`StatismoArrays`], `loadStatismoModel`, `ShapeSpace.statismoArrays`;
+//!   `anthropometry.rs`: `ShapeSpace.bodyFromMeasurementsJson`, `targetTolerancesJson`,
+//!   `measurePopulation` ([`ModelPopulation`]: distributions, `boundaryManikinsJson`),
+//!   `manikinDefaultsJson`.
 
 mod align;
 mod landmark_export;
@@ -29,10 +32,12 @@ use js_sys::{Float32Array, Uint32Array};
 use serde::Serialize;
 use wasm_bindgen::prelude::*;
 
+mod anthropometry;
 mod model;
 mod model_build;
 mod statismo;
 
+pub use anthropometry::{manikin_defaults_json, ModelPopulation};
 pub use model::{load_shape_model, ShapeSpace};
 pub use model_build::build_shape_model;
 pub use statismo::{load_statismo_model, max_model_bytes, StatismoArrays};

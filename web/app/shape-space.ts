@@ -17,10 +17,12 @@ import {
   type ShownResolution,
 } from '../shared/shape-results';
 import type { TemplateResolution } from '../shared/template-data';
+import type { Targets } from '../shared/anthropometry';
 import type { ErrorBanner } from '../ui/error-banner';
 import { ShapePanel, type PartName } from '../ui/shape-panel';
 import type { Viewer } from '../view/viewer';
 import { MorphQueue } from './morph-queue';
+import { Population } from './population';
 import * as shapeExports from './shape-exports';
 import type { BodyFormat } from './shape-exports';
 import { readFits } from './read-fits';
@@ -40,6 +42,7 @@ export class ShapeSpace {
   /** Triangles of the body shown: the model's own, or the fine template's. */
   private triangles: Uint32Array | null = null;
   private readonly panel: ShapePanel;
+  private readonly population: Population;
   private readonly morph: MorphQueue;
   private readonly page = document.body;
   private readonly hostPrompt = new HostPrompt();
@@ -53,6 +56,8 @@ export class ShapeSpace {
     private readonly client: CoreClient,
     private readonly viewer: Viewer,
     private readonly banner: ErrorBanner,
+    /** The worker of population work (distributions, manikins), which Cancel may replace. */
+    populationClient: CoreClient,
   ) {
     this.morph = new MorphQueue(client, (body, _c, sentAt) => this.show(body, sentAt), (message) => this.banner.show([message]));
     this.panel = new ShapePanel({
@@ -72,7 +77,14 @@ export class ShapeSpace {
       onBuild: (variance) => void this.build(variance),
       onAddFits: (files) => void this.addFits(files),
       onOpenModel: (files) => void this.openModelFiles(files),
+      onFindBody: (targets) => void this.findBody(targets),
+      onComputePopulation: () => void this.population.compute(),
+      onCancelPopulation: () => this.population.cancel(),
+      onManikins: (names, coverage) => void this.population.computeManikins(names, coverage),
+      onShowManikin: (index) => this.population.showManikin(index),
+      onExportManikins: () => void this.population.exportManikins(),
     });
+    this.population = new Population(populationClient, this.panel.population, this.panel.manikins, (sigma) => this.showWhole(sigma));
     client.onRestart(() => void this.recover());
     subjects.subscribe((all) => {
       const dropped = all.filter((s) => s.source === 'dropped').length;
@@ -165,6 +177,7 @@ export class ShapeSpace {
     try {
       const loaded = await this.client.call({ type: 'loadModel', bytes, fileName }, { transfer: [bytes] });
       this.modelFile = { bytes: copy, fileName };
+      this.population.setModel(this.modelFile);
       const wanted = this.resolution;
       this.adopt(loaded, source, fileName);
       await this.keepResolution(wanted);
@@ -187,6 +200,7 @@ export class ShapeSpace {
     this.coefficients = { whole: loaded.info.parts[0]!.variances.map(() => 0), segments: SEGMENTS.map(() => null) };
     this.panel.showModel(label, loaded.info.parts, loaded.info.subjects.length);
     this.panel.showView('whole', this.coefficients);
+    this.panel.measurements.setTargetable('whole', loaded.targetable.whole);
     this.page.dataset.shapeModel = label;
     this.page.dataset.shapeModes = String(loaded.info.parts[0]!.variances.length);
     this.showResolution({ resolution: loaded.info.template.resolution as TemplateResolution, vertexCount: loaded.info.template.vertex_count, triangles: loaded.triangles });
@@ -244,6 +258,7 @@ export class ShapeSpace {
       segments: link.coefficients.segments.map((s, i) => (s ? fit(s, parts[i + 1]!.variances.length) : null)),
     };
     this.panel.showView(link.view, this.coefficients);
+    this.panel.measurements.setTargetable(link.view, this.model!.targetable[link.view]);
     // The load asked to frame the camera; a link's own camera wins over that.
     this.frameNext = !link.camera;
     this.redraw(!link.camera, true);
@@ -270,6 +285,7 @@ export class ShapeSpace {
   private setView(part: PartName): void {
     this.suppressed = false;
     this.panel.showView(part, this.coefficients);
+    if (this.model) this.panel.measurements.setTargetable(part, this.model.targetable[part]);
     this.page.dataset.shapeView = part;
   }
 
@@ -302,6 +318,45 @@ export class ShapeSpace {
     this.redraw(false, true);
   }
 
+  /**
+   * Moves the sliders to the most likely body with `targets` (found in the worker): in the whole
+   * body's view a whole body, every segment following it; in a segment's view that segment's own
+   * shape, the rest of the body held.
+   */
+  private async findBody(targets: Targets): Promise<void> {
+    if (!this.model) return;
+    this.suppressed = false;
+    this.page.dataset.findBody = 'running';
+    try {
+      const found = await this.client.call({ type: 'bodyFromMeasurements', targets, part: this.panel.currentView });
+      this.panel.measurements.showFound(targets, found);
+      this.page.dataset.findBodyMs = found.workerMs.toFixed(2);
+      if (found.part === 'whole') this.showWhole(found.sigma);
+      else this.showSegment(found.part, found.sigma);
+      this.page.dataset.findBody = 'done';
+    } catch (error) {
+      this.panel.measurements.showError(error instanceof Error ? error.message : String(error));
+      this.page.dataset.findBody = 'error';
+    }
+  }
+
+  /** Shows the whole body at σ values `sigma` on the sliders; every segment follows it. */
+  private showWhole(sigma: number[]): void {
+    if (!this.model) return;
+    this.suppressed = false;
+    this.coefficients = { whole: this.coefficients.whole.map((_, k) => quantiseSigma(sigma[k] ?? 0)), segments: SEGMENTS.map(() => null) };
+    this.panel.showView(this.panel.currentView, this.coefficients);
+    this.redraw(false, true);
+  }
+
+  /** Gives `part` its own shape at σ values `sigma`, the rest of the body as it is. */
+  private showSegment(part: SegmentName, sigma: number[]): void {
+    const i = SEGMENTS.indexOf(part);
+    this.coefficients.segments[i] = this.model!.info.parts[i + 1]!.variances.map((_, k) => quantiseSigma(sigma[k] ?? 0));
+    this.panel.showView(this.panel.currentView, this.coefficients);
+    this.redraw(false, true);
+  }
+
   private frameNext = false;
 
   /** Asks the worker for the body of the current coefficients; `rebuild`: from scratch. */
@@ -328,6 +383,7 @@ export class ShapeSpace {
     if (!this.suppressed) this.frameNext = false;
     this.page.dataset.shapeShown = String(!this.suppressed);
     this.panel.showBody(body, body.positions.length / 3, roundTripMs);
+    this.population.showBody(body.measurements);
     const p = this.page.dataset;
     // A pass over every coordinate: only for the body the sliders settle on (tests, links).
     if (this.morph.idle) p.shapeChecksum = positionsChecksum(body.positions);
@@ -457,6 +513,7 @@ export class ShapeSpace {
       );
       this.adopt(built, null, built.fileName);
       this.modelFile = { bytes: (await this.client.call({ type: 'modelFile' })).slice().buffer, fileName: built.fileName };
+      this.population.setModel(this.modelFile);
       onStatus(`Built from ${all.length} subjects.`);
       await this.keepResolution(wanted);
       this.redraw(true, true);

@@ -3,6 +3,7 @@ import type { AlignDefaults, AlignParams, AlignProgress, AlignResult, ScanInput,
 import type { LandmarkEstimate, SuspiciousLandmark } from './landmark-entry';
 import type { ParsedLandmarks, ParsedScan, SubjectPairing } from './results';
 import type { TemplateData, TemplateResolution } from './template-data';
+import type { FoundBody, ManikinDefaults, ManikinSet, MeasurementDistribution, Targets } from './anthropometry';
 import type { ExportBody, LoadedModel, ModelCsv, ModelGlbParts, PartName, ReconstructedBody, ShapeCoefficients, ShownResolution } from './shape-results';
 
 /** Every request the worker understands, without its `id` (the client adds it). */
@@ -46,6 +47,16 @@ export type CoreRequestBody =
   | { type: 'reconstruct'; coefficients: ShapeCoefficients }
   /** Shows the body at `resolution` (maps the model to fine on first use, with progress). */
   | { type: 'shapeResolution'; resolution: TemplateResolution }
+  /**
+   * The most likely body of the loaded model with `targets` (m, m³, m²): of the whole-body model,
+   * or of segment `part`'s with the rest of the body shown held; nothing shown changes.
+   */
+  | { type: 'bodyFromMeasurements'; targets: Targets; part: PartName }
+  /** Every measurement over the training subjects and bodies sampled from the loaded model; replies with progress. */
+  | { type: 'measurementDistribution' }
+  /** The boundary manikins of 2–4 measurements at `coverage` (a share) of the population measured before; replies with progress. */
+  | { type: 'boundaryManikins'; names: string[]; coverage: number }
+  | { type: 'manikinDefaults' }
   | { type: 'modelCsv'; kind: ModelCsv }
   | { type: 'modelGlb'; modes: number; parts: ModelGlbParts }
   | { type: 'modelFile' }
@@ -77,6 +88,10 @@ export interface CoreResults {
   morph: ReconstructedBody;
   reconstruct: ExportBody;
   shapeResolution: ShownResolution;
+  bodyFromMeasurements: FoundBody;
+  measurementDistribution: MeasurementDistribution;
+  boundaryManikins: ManikinSet;
+  manikinDefaults: ManikinDefaults;
   modelCsv: string;
   modelGlb: Uint8Array;
   modelFile: Uint8Array;

@@ -39,6 +39,8 @@ export interface LoadedModel {
   info: ModelInfo;
   triangles: Uint32Array;
   fileName: string;
+  /** The measurements a target may name in each part's view (whole: all; a segment: those that act on its model). */
+  targetable: Record<PartName, string[]>;
 }
 
 /** The resolution the body is shown at, with its triangles (`#F·3`). */

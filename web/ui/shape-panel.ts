@@ -1,10 +1,14 @@
 // The "Shape space" panel: segment picker, one σ slider per mode of the part in view, reset and
-// random, live measurements, seam quality and timing, quality charts, CSV, exports, link, build.
+// random, live measurements with targets (Find body), the population and boundary manikins, seam
+// quality and timing, quality charts, CSV, exports, link, build.
 import type { ModelCsv, ModelGlbParts, ModelPart, PartName, ReconstructedBody, SegmentName, ShapeCoefficients } from '../shared/shape-results';
 import type { TemplateResolution } from '../shared/template-data';
 import { SEGMENTS } from '../shared/shape-results';
 import { byId, h } from './dom';
-import { formatReading } from './format';
+import type { Targets } from '../shared/anthropometry';
+import { MeasurementTable } from './measurement-table';
+import { ManikinPanel } from './manikin-panel';
+import { PopulationView } from './population-view';
 import { qualityCharts } from './quality-charts';
 
 export type { PartName };
@@ -28,6 +32,14 @@ export interface ShapeActions {
   onBuild(variance: number): void;
   onAddFits(files: File[]): void;
   onOpenModel(files: File[]): void;
+  /** The most likely body with `targets` (m, m³, m²), shown on the sliders. */
+  onFindBody(targets: Targets): void;
+  /** Compute the population's distributions again, or stop computing them. */
+  onComputePopulation(): void;
+  onCancelPopulation(): void;
+  onManikins(names: string[], coverage: number): void;
+  onShowManikin(index: number): void;
+  onExportManikins(): void;
 }
 
 const LABELS: Record<PartName, string> = {
@@ -45,7 +57,10 @@ export class ShapePanel {
   private readonly root = byId('shape-panel');
   private readonly head = h('div', { class: 'shape-head' });
   private readonly sliders = h('div', { class: 'shape-sliders', 'data-testid': 'shape-sliders' });
-  private readonly readings = h('dl', { class: 'facts', 'data-testid': 'shape-readings' });
+  readonly measurements: MeasurementTable;
+  readonly population: PopulationView;
+  readonly manikins: ManikinPanel;
+  private readonly facts = h('dl', { class: 'facts', 'data-testid': 'shape-facts' });
   private readonly charts = h('div', {});
   private readonly linkField = h('input', { type: 'text', readonly: '', class: 'shape-link', 'data-testid': 'shape-link', 'aria-label': 'Link to this body' });
   private readonly linkNote = h('p', { class: 'note', 'data-testid': 'shape-link-note' });
@@ -61,6 +76,14 @@ export class ShapePanel {
   private view: PartName = 'whole';
 
   constructor(private readonly actions: ShapeActions) {
+    this.measurements = new MeasurementTable((targets) => actions.onFindBody(targets));
+    this.population = new PopulationView(this.measurements, { onCompute: () => actions.onComputePopulation(), onCancel: () => actions.onCancelPopulation() });
+    this.manikins = new ManikinPanel({
+      onCompute: (names, coverage) => actions.onManikins(names, coverage),
+      onCancel: () => actions.onCancelPopulation(),
+      onShow: (index) => actions.onShowManikin(index),
+      onExport: () => actions.onExportManikins(),
+    });
     for (const part of ['whole', ...SEGMENTS] as PartName[]) this.picker.append(h('option', { value: part }, LABELS[part]));
     this.picker.addEventListener('change', () => actions.onView(this.picker.value as PartName));
     this.resolutionPicker.append(h('option', { value: 'base' }, 'base (13,380 vertices)'), h('option', { value: 'fine' }, 'fine (214,050 vertices)'));
@@ -108,7 +131,12 @@ export class ShapePanel {
       h('div', { class: 'row' }, button('Reset to mean', 'shape-reset', () => this.actions.onReset()), button('Random body', 'shape-random', () => this.actions.onRandom())),
       this.sliders,
       h('h2', {}, 'Measurements'),
-      this.readings,
+      h('p', { class: 'note' }, 'Enter targets for any of the measurements (lengths and girths in cm, volume in L, area in m²) and press Find body: the sliders move to the most likely body of the model that has them.'),
+      this.measurements.element,
+      this.population.element,
+      h('h2', {}, 'Boundary manikins'),
+      this.manikins.element,
+      this.facts,
       h('h2', {}, 'Quality of this part'),
       this.charts,
       h('div', { class: 'row' }, button('Eigenvalues CSV', 'csv-eigenvalues', () => this.actions.onCsv('eigenvalues')), button('Scores CSV', 'csv-scores', () => this.actions.onCsv('scores')), button('Quality CSV', 'csv-quality', () => this.actions.onCsv('quality'))),
@@ -200,9 +228,8 @@ export class ShapePanel {
     const m = body.measurements;
     const fact = (label: string, testid: string, value: string) => [h('dt', {}, label), h('dd', { 'data-testid': testid }, value)];
     const seam = body.seam.segments && body.seam.max_jump > 0 ? `${(body.seam.max_jump * 1000).toFixed(2)} mm (${body.seam.segments.join(' / ')})` : '0 mm';
-    this.readings.replaceChildren(
-      // A long name may wrap; a value never does.
-      ...m.flatMap((r) => [h('dt', { class: 'wrap' }, r.label), h('dd', { class: 'reading', 'data-testid': `measure-${r.name}` }, formatReading(r.kind, r.value))]),
+    this.measurements.show(m);
+    this.facts.replaceChildren(
       ...fact('Largest seam jump', 'seam-jump', seam),
       ...fact('Reconstruction', 'reconstruct-ms', `${body.reconstructMs.toFixed(2)} ms (${body.rebuilt ? 'full rebuild' : `${body.deltas} rank-1 update${body.deltas === 1 ? '' : 's'}`})`),
       ...fact('Normals', 'normals-ms', `${body.normalsMs.toFixed(1)} ms`),

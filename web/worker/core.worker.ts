@@ -144,6 +144,24 @@ self.onmessage = async (event: MessageEvent<CoreRequest>) => {
         post({ id, type: 'result', result: shown }, [shown.triangles.buffer]);
         break;
       }
+      case 'bodyFromMeasurements':
+        post({ id: request.id, type: 'result', result: models.bodyFromMeasurements(request.targets, request.part) });
+        break;
+      case 'measurementDistribution': {
+        const id = request.id;
+        const d = models.measurementDistribution((fraction, label) => post({ id, type: 'progress', fraction, label }));
+        post({ id, type: 'result', result: d });
+        break;
+      }
+      case 'boundaryManikins': {
+        const id = request.id;
+        const set = models.boundaryManikins(request.names, request.coverage, (fraction, label) => post({ id, type: 'progress', fraction, label }));
+        post({ id, type: 'result', result: set });
+        break;
+      }
+      case 'manikinDefaults':
+        post({ id: request.id, type: 'result', result: models.manikinDefaults() });
+        break;
       case 'modelCsv':
         post({ id: request.id, type: 'result', result: models.modelCsv(request.kind) });
         break;

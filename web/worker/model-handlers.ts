@@ -1,7 +1,7 @@
 // Shape-model requests of the core worker: keeps the one loaded ShapeSpace, which holds the body
 // shown; morphs it (rank-1 updates per slider move, a full rebuild when asked), switches it to
 // the fine template, measures it, and exports CSV / GLB / the model file / statismo HDF5.
-import { buildShapeModel, loadShapeModel, loadStatismoModel, type ShapeSpace } from '../pkg/bodyspace.js';
+import { buildShapeModel, loadShapeModel, loadStatismoModel, manikinDefaultsJson, type ModelPopulation, type ShapeSpace } from '../pkg/bodyspace.js';
 import type {
   ExportBody,
   LoadedModel,
@@ -14,18 +14,24 @@ import type {
   ShownResolution,
 } from '../shared/shape-results';
 import type { TemplateResolution } from '../shared/template-data';
+import type { FoundBody, ManikinDefaults, ManikinSet, MeasurementDistribution, Targets, TargetTolerances } from '../shared/anthropometry';
 import { isHdf5, readStatismoH5, writeStatismoH5 } from './statismo-h5';
 import { templateHandle } from './template-handlers';
 
 let space: ShapeSpace | null = null;
+/** The measurement distributions of `space`'s model, once computed (boundary manikins need them). */
+let population: ModelPopulation | null = null;
 
 /** Replaces the held model only once the new one is read: a failure leaves the old one. */
 function hold(next: ShapeSpace, fileName: string): LoadedModel {
   const info = JSON.parse(next.infoJson()) as ModelInfo;
   const triangles = next.triangles();
+  const targetable = JSON.parse(next.targetableJson()) as LoadedModel['targetable'];
   space?.free();
   space = next;
-  return { info, triangles, fileName };
+  population?.free();
+  population = null;
+  return { info, triangles, fileName, targetable };
 }
 
 function current(): ShapeSpace {
@@ -115,6 +121,43 @@ export function useResolution(
   const template = templateHandle(resolution === 'fine' ? 'fine' : 'base');
   model.useResolution(resolution, template, (f: number) => progress(0.2 + 0.8 * f, label));
   return { resolution: model.resolution as 'base' | 'fine', vertexCount: model.vertexCount, triangles: model.triangles() };
+}
+
+/**
+ * The most likely body with `targets` (m, m³, m²): of the whole-body model, or of the segment
+ * `part`'s model with the rest of the body shown held. The body shown is not touched.
+ */
+export function bodyFromMeasurements(targets: Targets, part: PartName): FoundBody {
+  const model = current();
+  const start = performance.now();
+  const found = JSON.parse(model.bodyFromMeasurementsJson(JSON.stringify(targets), part)) as Omit<FoundBody, 'tolerances' | 'workerMs'>;
+  const workerMs = performance.now() - start;
+  return { ...found, tolerances: JSON.parse(model.targetTolerancesJson()) as TargetTolerances, workerMs };
+}
+
+/** Every measurement over the model's training subjects and sampled bodies (core defaults: count, seed). */
+export function measurementDistribution(progress: (fraction: number, label: string) => void): MeasurementDistribution {
+  const start = performance.now();
+  const label = 'Measuring the training subjects and sampled bodies';
+  const next = current().measurePopulation((f: number) => progress(f, label));
+  population?.free();
+  population = next;
+  const d = JSON.parse(next.json()) as Omit<MeasurementDistribution, 'workerMs'>;
+  return { ...d, workerMs: performance.now() - start };
+}
+
+/** The boundary manikins of `names` at `coverage` of the population measured before. */
+export function boundaryManikins(names: string[], coverage: number, progress: (fraction: number, label: string) => void): ManikinSet {
+  if (!population) throw new Error('the population of this model has not been measured yet');
+  const start = performance.now();
+  const label = `Finding the boundary manikins of ${names.join(', ')}`;
+  const found = JSON.parse(population.boundaryManikinsJson(current(), JSON.stringify(names), coverage, (f: number) => progress(f, label))) as Omit<ManikinSet, 'workerMs'>;
+  return { ...found, workerMs: performance.now() - start };
+}
+
+/** The core's defaults of boundary manikins. */
+export function manikinDefaults(): ManikinDefaults {
+  return JSON.parse(manikinDefaultsJson()) as ManikinDefaults;
 }
 
 export function modelCsv(kind: ModelCsv): string {

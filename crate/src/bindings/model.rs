@@ -123,6 +123,16 @@ impl ShapeSpace {
         &self.model
     }
 
+    /// The coefficients of the body shown (model units).
+    pub(super) fn shown_coefficients(&self) -> &Coefficients {
+        self.morph.coefficients()
+    }
+
+    /// Measures bodies of the model on the base template's vertices.
+    pub(super) fn measurer(&self) -> &BodyMeasurer {
+        &self.measurer
+    }
+
     /// The model whose body is shown.
     fn shown(&self) -> &BodyModel {
         match (&self.fine, self.at_fine) {
