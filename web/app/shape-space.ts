@@ -200,6 +200,7 @@ export class ShapeSpace {
     this.coefficients = { whole: loaded.info.parts[0]!.variances.map(() => 0), segments: SEGMENTS.map(() => null) };
     this.panel.showModel(label, loaded.info.parts, loaded.info.subjects.length);
     this.panel.showView('whole', this.coefficients);
+    this.panel.measurements.clear();
     this.panel.measurements.setTargetable('whole', loaded.targetable.whole);
     this.page.dataset.shapeModel = label;
     this.page.dataset.shapeModes = String(loaded.info.parts[0]!.variances.length);

@@ -153,7 +153,8 @@ export class MeasurementTable {
     this.onFind(targets);
   }
 
-  private clear(): void {
+  /** Empties every target and forgets the last body found (a new model's body was never found for them). */
+  clear(): void {
     for (const row of this.rows.values()) {
       row.input.value = '';
       row.input.classList.remove('invalid');
