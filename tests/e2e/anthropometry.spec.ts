@@ -73,8 +73,8 @@ test('in a segment view, targets act on that segment: the torso meets a waist ta
   await expect(page.getByTestId('shape-segment-state')).toContainText('has its own shape');
 });
 
-/** Every download the page makes while `act` runs, until `done` holds on the page. */
-async function downloads(page: Page, act: () => Promise<void>, done: () => Promise<void>): Promise<Map<string, Buffer>> {
+/** The files `act` downloads, once `done` holds and `count` downloads have started (the page may finish before the last download event arrives). */
+async function downloads(page: Page, act: () => Promise<void>, done: () => Promise<void>, count: number): Promise<Map<string, Buffer>> {
   const files = new Map<string, Buffer>();
   const pending: Promise<void>[] = [];
   const listener = (d: Download) => {
@@ -83,6 +83,7 @@ async function downloads(page: Page, act: () => Promise<void>, done: () => Promi
   page.on('download', listener);
   await act();
   await done();
+  await expect.poll(() => pending.length).toBe(count);
   await Promise.all(pending);
   page.off('download', listener);
   return files;
@@ -127,6 +128,7 @@ test('the population shows where the body sits; boundary manikins of two measure
     page,
     () => page.getByTestId('manikin-export').click(),
     () => expect(page.locator('body')).toHaveAttribute('data-manikins-exported', '8'),
+    10,
   );
   const names = [...files.keys()].sort();
   expect(names).toEqual(['manikin_01.ply', 'manikin_02.ply', 'manikin_03.ply', 'manikin_04.ply', 'manikin_05.ply', 'manikin_06.ply', 'manikin_07.ply', 'manikin_08.ply', 'manikins.csv', 'manikins.glb']);
