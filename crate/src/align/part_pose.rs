@@ -15,7 +15,7 @@
 use nalgebra::Point3;
 
 use crate::landmarks::estimate::segments::{blend, dominant_part, parts};
-use crate::landmarks::{Landmark, LandmarkSet};
+use crate::landmarks::LandmarkSet;
 use crate::mesh::similarity::{similarity, Similarity};
 use crate::template::Template;
 
@@ -90,18 +90,7 @@ pub fn pose_parts(
         };
     }
     let posed = blend(&parts, &transforms, rest);
-    let landmarks = LandmarkSet {
-        landmarks: template
-            .landmark_vertices()
-            .iter()
-            .map(|(name, v)| Landmark {
-                name: name.clone(),
-                position: posed[*v as usize],
-            })
-            .collect(),
-        missing: Vec::new(),
-        unknown: Vec::new(),
-    };
+    let landmarks = template.landmarks_at(&posed);
     Some((posed, landmarks))
 }
 
