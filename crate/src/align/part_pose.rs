@@ -38,8 +38,8 @@ const POSED: [&str; 5] = [
 const MIN_LANDMARKS: usize = 3;
 
 /// `template` posed to `scan_landmarks` (scan frame and units): its `#V` vertex positions and its
-/// CAESAR landmarks at their posed vertices. `None` when fewer than three landmark pairs match by
-/// name or they are degenerate (the caller warps the rest template then).
+/// CAESAR landmarks at their posed vertices. `None` when fewer than three of the torso's landmarks
+/// match by name or they are degenerate (the caller warps the rest template then).
 pub fn pose_parts(
     template: &Template,
     scan_landmarks: &LandmarkSet,
@@ -50,9 +50,6 @@ pub fn pose_parts(
         .iter()
         .filter_map(|(name, v)| Some((*v, scan_landmarks.get(name)?)))
         .collect();
-    if pairs.len() < 3 {
-        return None;
-    }
     let parts = parts(template);
     // The torso's landmarks alone fix the global similarity: the limbs' would turn it with
     // their pose.
@@ -61,6 +58,9 @@ pub fn pose_parts(
         .filter(|(v, _)| dominant_part(&parts, *v) == 0)
         .map(|(v, q)| (rest[*v as usize], *q))
         .unzip();
+    if from.len() < 3 {
+        return None;
+    }
     let global = similarity(&from, &to, true)?;
     let mut transforms: Vec<Similarity> = vec![global; parts.len()];
     for (k, part) in parts.iter().enumerate() {
@@ -111,6 +111,17 @@ mod tests {
             .fold(0.0, f64::max);
         assert!(worst < 1e-9, "moved by {worst} m");
         assert_eq!(landmarks.landmarks.len(), t.landmark_vertices().len());
+    }
+
+    #[test]
+    fn without_three_torso_landmarks_nothing_is_posed() {
+        let t = Template::embedded().unwrap();
+        let mut scan = t.landmark_positions();
+        scan.landmarks
+            .retain(|l| ["Suprasternale", "Crotch", "Lt. Radiale"].contains(&l.name.as_str()));
+        assert!(pose_parts(&t, &scan).is_none());
+        scan.landmarks.clear();
+        assert!(pose_parts(&t, &scan).is_none());
     }
 
     #[test]
