@@ -6,6 +6,7 @@
 //!  [--relative-tolerance T] [--displacement-tolerance M] [--landmark-weight W] [--scan-term W]
 //!  [--scan-term-samples N] [--scan-term-from STIFFNESS] [--scan-term-max-distance M]
 //!  [--skip-boundary-matches 0|1] [--tangential-weight W] [--sole-weight W] [--follow 0|1]
+//!  [--virtual-landmarks 0|1] [--pose-parts 0|1]
 //!  [--preset paper|anchored (first: later options change it)] [--quiet]
 //!  [--export DIR] [--first K] [--resolution fine [--fine-max-iterations N]
 //!  [--fine-iterations-per-round N] [--fine-anneal INIT:DECAY] [--fine-displacement-tolerance M]
@@ -119,6 +120,8 @@ mod native {
                 }
                 "--tangential-weight" => options.params.fine.tangential_weight = num()?,
                 "--sole-weight" => options.params.fine.sole_weight = num()?,
+                "--pose-parts" => options.params.pose_parts = num()? != 0.0,
+                "--virtual-landmarks" => options.params.rbf.virtual_landmarks = num()? != 0.0,
                 "--follow" => options.params.fine.unseen_follow_neighbours = num()? != 0.0,
                 "--preset" => {
                     options.params = Preset::from_name(&value)
@@ -320,9 +323,11 @@ mod native {
         let names: Vec<&str> = Segment::ALL.iter().map(|s| s.name()).collect();
         println!("population: {}", population(&options.dir));
         println!(
-        "preset {}; rbf {:?}; fine a={} b={} max_it={} it/round={} anneal={}:{} rel_tol={} disp_tol={} landmark_weight={} scan_term={}x{}@{}<{} skip_rims={} tangential={} soles={} follow={}",
+        "preset {}; pose_parts={}; rbf {:?} virtual_landmarks={}; fine a={} b={} max_it={} it/round={} anneal={}:{} rel_tol={} disp_tol={} landmark_weight={} scan_term={}x{}@{}<{} skip_rims={} tangential={} soles={} follow={}",
         options.params.preset.name(),
+        options.params.pose_parts,
         options.params.rbf.kernel,
+        options.params.rbf.virtual_landmarks,
         options.params.fine.a,
         options.params.fine.b,
         options.params.fine.max_iterations,

@@ -121,6 +121,7 @@ fn full_align_fits_the_scan_and_keeps_correspondences() {
     assert_eq!(r["params"]["preset"], "anchored");
     assert_eq!(r["params"]["fine"]["b"], 0.2);
     assert_eq!(r["params"]["fine"]["tangential_weight"], 0.1);
+    assert_eq!(r["params"]["pose_parts"], true);
     assert_correspondence_kept(&r);
     let _ = std::fs::remove_dir_all(&dir);
 }

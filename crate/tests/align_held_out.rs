@@ -69,13 +69,40 @@ fn held_out_subjects_are_fitted_within_tolerance_by_both_presets() {
             assert!(f.p95_mm <= 19.0, "{}: p95 {} mm", preset.name(), f.p95_mm);
             assert!(f.max_mm <= 75.0, "{}: max {} mm", preset.name(), f.max_mm);
             if preset == Preset::Anchored {
-                // What the tangential term buys: no vertex beyond 55 mm (paper: 53.8, 58.5).
-                assert!(f.max_mm <= 55.0, "anchored: max {} mm", f.max_mm);
+                // Here 5.71 / 15.0 / 50.8 and 6.22 / 17.7 / 55.9 mm (paper: 5.58 / 15.9 / 53.8 and
+                // 6.01 / 17.0 / 58.5 — these two stand arms down, where posing the arms costs
+                // 0.1–0.2 mm of mean; it pays on posed arms, next test).
+                assert!(f.mean_mm <= 6.4, "anchored: mean {} mm", f.mean_mm);
+                assert!(f.p95_mm <= 18.5, "anchored: p95 {} mm", f.p95_mm);
+                assert!(f.max_mm <= 58.0, "anchored: max {} mm", f.max_mm);
             }
             let parts: Vec<&str> = c.parts.iter().map(|p| p.part).collect();
             assert_eq!(parts, ["head", "torso", "arms", "hands", "legs", "feet"]);
         }
     }
+}
+
+#[test]
+fn anchored_poses_the_arms_of_a_hands_on_hips_subject_before_the_warp() {
+    // Held-out subject 003 stands with its hands on its hips (elbows bent 82° and 87°). The
+    // `paper` preset bends the template's straight arms by the RBF alone: hands 7.1 mm mean,
+    // 44 mm worst, whole body 7.05 mm (docs/benchmarks.md). `anchored` poses head and arms to
+    // their landmarks first: hands 2.75 / 7.9 mm, whole body 5.72 mm.
+    let id = SubjectId {
+        profile: PopulationProfile::HeldOut,
+        seed: 912,
+        index: 2,
+    };
+    let (rms, c) = fit(id, &Preset::Anchored.params());
+    let hands = &c.parts.iter().find(|p| p.part == "hands").unwrap().error;
+    eprintln!(
+        "anchored, held-out subject 003: RMS {rms:.3} mm, mean {:.2}, hands {:.2} / max {:.2}",
+        c.fitted.mean_mm, hands.mean_mm, hands.max_mm
+    );
+    assert!(rms <= 1.4, "RMS {rms} mm");
+    assert!(c.fitted.mean_mm <= 6.2, "mean {} mm", c.fitted.mean_mm);
+    assert!(hands.mean_mm <= 4.0, "hands: mean {} mm", hands.mean_mm);
+    assert!(hands.max_mm <= 12.0, "hands: max {} mm", hands.max_mm);
 }
 
 #[test]

@@ -4,6 +4,7 @@
 //!   fine or coarse-to-fine alignment → [`AlignmentReport`]; the one place the chain is assembled.
 //! * [`observer`] — [`Progress`], [`Stage`] and [`AlignObserver`]: progress, rounds, cancel.
 //! * [`fine_align()`] (`fine_align.rs`) — the outer loop: find correspondences, minimise, repeat.
+//! * [`part_pose`] — the template posed part by part to the scan's landmarks before the warp.
 //! * [`follow`] — regions without data take their neighbours' transforms (harmonic extension).
 //! * [`coarse_to_fine_align`] (`coarse_to_fine.rs`) — the `fine` template: base fit, carried to
 //!   fine by the subdivision operator, then a short fine-level alignment.
@@ -34,6 +35,7 @@ pub mod follow;
 pub mod lbfgs;
 pub mod observer;
 pub mod params;
+pub mod part_pose;
 pub mod pipeline;
 pub mod quality;
 pub mod report;

@@ -278,10 +278,11 @@ pub enum Preset {
     /// 2 iterations per round, displacement stop). The default: today's figures.
     #[default]
     Paper,
-    /// `paper` plus what issue 12 kept: the tangential term (weight 0.1) holding vertices along
-    /// the RBF-warped surface, never-scanned regions following their neighbours, b = 0.1.
-    /// Lower 95th percentile and largest correspondence errors, the same mean, a slightly higher
-    /// scan→template RMS (docs/benchmarks.md, "Held-out population").
+    /// `paper` plus what issue 12 kept: head and arms posed to the scan's landmarks before the
+    /// RBF warp (`pose_parts`), the tangential term (weight 0.1) holding vertices along the
+    /// RBF-warped surface, never-scanned regions following their neighbours, b = 0.1. Lower
+    /// mean, 95th percentile and largest correspondence errors on the held-out population
+    /// (docs/benchmarks.md, "Held-out population").
     Anchored,
 }
 
@@ -308,6 +309,7 @@ impl Preset {
             Preset::Paper => paper,
             Preset::Anchored => AlignParams {
                 preset: self,
+                pose_parts: true,
                 fine: FineAlignParams {
                     b: 0.1,
                     tangential_weight: 0.1,
@@ -328,6 +330,9 @@ impl Preset {
 pub struct AlignParams {
     /// The preset these parameters started from (`paper` by default).
     pub preset: Preset,
+    /// Pose the template's parts to the scan's landmarks before the RBF warp
+    /// ([`crate::align::part_pose`]; not in the paper). Off in `paper`.
+    pub pose_parts: bool,
     /// The RBF warp (paper §3.1).
     pub rbf: RbfParams,
     /// Fine alignment (paper §3.2) — at `fine`, of its base stage.

@@ -1,4 +1,5 @@
-//! The whole alignment of one scan, in one place: scan → units → RBF warp (paper §3.1) → data
+//! The whole alignment of one scan, in one place: scan → units → (parts posed, `pose_parts`) →
+//! RBF warp (paper §3.1) → data
 //! weights and landmark anchors → scan index → fine alignment (§3.2), coarse to fine at the `fine`
 //! resolution → report. The command line, the WASM bindings, the examples and the tests all call
 //! [`align_scan`]; nothing else assembles this chain.
@@ -22,6 +23,7 @@ use super::fine_align::fine_align;
 use super::fine_input::FineAlignInput;
 use super::observer::AlignObserver;
 use super::params::AlignParams;
+use super::part_pose::pose_parts;
 use super::surface_index::SurfaceIndex;
 use super::weights::data_weights;
 use crate::landmarks::LandmarkSet;
@@ -123,13 +125,24 @@ pub fn align_scan(
     );
     let landmarks = input.landmarks.scaled(to_m);
 
-    let warp = rbf_warp_mesh(
-        warped_template.mesh(),
-        &warped_template.landmark_positions(),
-        &scan,
-        &landmarks,
-        &params.rbf,
-    )?;
+    let posed = params
+        .pose_parts
+        .then(|| pose_parts(&warped_template, &landmarks))
+        .flatten();
+    let (start, start_landmarks) = match posed {
+        Some((positions, posed_landmarks)) => (
+            Cow::Owned(Mesh::new(
+                positions,
+                warped_template.mesh().triangles.clone(),
+            )),
+            posed_landmarks,
+        ),
+        None => (
+            Cow::Borrowed(warped_template.mesh()),
+            warped_template.landmark_positions(),
+        ),
+    };
+    let warp = rbf_warp_mesh(&start, &start_landmarks, &scan, &landmarks, &params.rbf)?;
     let rough_ms = now_ms() - started;
     let anchors = landmark_anchors(&warped_template, &warp.positions, &warp.pairing.used);
     let mut report = AlignmentReport {

@@ -121,6 +121,7 @@ impl AlignArgs {
         fine.scan_term_weight = self.scan_term_weight.unwrap_or(fine.scan_term_weight);
         let params = AlignParams {
             preset,
+            pose_parts: defaults.pose_parts,
             rbf: RbfParams {
                 kernel,
                 affine: !self.no_affine,

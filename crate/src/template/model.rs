@@ -164,13 +164,19 @@ impl Template {
 
     /// The landmarks at their vertices' positions.
     pub fn landmark_positions(&self) -> LandmarkSet {
+        self.landmarks_at(&self.mesh.positions)
+    }
+
+    /// The landmarks at their vertices' positions in `positions` (`#V` of this template, e.g.
+    /// the template deformed onto a subject).
+    pub fn landmarks_at(&self, positions: &[Point3<f64>]) -> LandmarkSet {
         LandmarkSet {
             landmarks: self
                 .landmarks
                 .iter()
                 .map(|(name, v)| Landmark {
                     name: name.clone(),
-                    position: self.mesh.positions[*v as usize],
+                    position: positions[*v as usize],
                 })
                 .collect(),
             missing: Vec::new(),
