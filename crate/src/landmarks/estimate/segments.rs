@@ -360,7 +360,10 @@ mod tests {
             stretch: 2.0,
             ..pose
         };
-        let wanted: Vec<_> = wanted.iter().map(|(p, _)| (*p, part.apply(&far, p))).collect();
+        let wanted: Vec<_> = wanted
+            .iter()
+            .map(|(p, _)| (*p, part.apply(&far, p)))
+            .collect();
         let s = fit_stretch(&part, &part.axis.unwrap(), &transform, &wanted).unwrap();
         assert_eq!(s, STRETCH_RANGE.1);
     }
