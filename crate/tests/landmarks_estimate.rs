@@ -94,7 +94,7 @@ fn every_frame_and_pose_is_found_and_the_landmarks_land_near_the_truth() {
         assert_eq!(r.given, 0);
         assert_eq!(r.estimated, 73);
         assert!(r.flagged.is_empty(), "{:?}", r.flagged);
-        // Measured 12–31 mm mean on 10 subjects (docs/landmarks-estimate.md).
+        // Measured 11–32 mm mean (31.7: hands on hips), worst 87 mm (docs/landmarks-estimate.md).
         assert!(
             mean < 35.0,
             "{} / {}: mean {mean} mm",
@@ -102,12 +102,20 @@ fn every_frame_and_pose_is_found_and_the_landmarks_land_near_the_truth() {
             pose.name
         );
         assert!(
-            worst < 130.0,
+            worst < 110.0,
             "{} / {}: worst {worst} mm",
             frame.name,
             pose.name
         );
         assert!(e.confidence.iter().all(|c| (0.0..=1.0).contains(c)));
+        // The confidence follows the typical error: a foot above a fingertip.
+        let at = |name: &str| {
+            CAESAR_LANDMARKS
+                .iter()
+                .position(|l| l.name == name)
+                .unwrap()
+        };
+        assert!(e.confidence[at("Rt. Digit II")] > e.confidence[at("Rt. Dactylion")]);
     }
 }
 

@@ -10,7 +10,8 @@
 //!    flagged (`expected.rs`, `suspicious.rs`);
 //! 5. the landmark-free fine alignment (paper §3.2, stiff to soft), the unflagged given landmarks
 //!    anchored;
-//! 6. the landmark vertices read off the fit, each with a confidence (`confidence.rs`); given
+//! 6. the landmark vertices read off the fit, each with a confidence from its typical error on
+//!    the development subjects and the fit's local residual (`confidence.rs`); given
 //!    landmarks are returned exactly as given.
 
 use std::borrow::Cow;
@@ -18,7 +19,7 @@ use std::borrow::Cow;
 use nalgebra::Point3;
 
 use super::candidates::{even_sample, fit_similarity, FittedCandidate};
-use super::confidence::{confidence, neighbourhoods, residual, sharpness};
+use super::confidence::{confidence, neighbourhoods, residual};
 use super::error::EstimateError;
 use super::expected::expected_positions;
 use super::frame::{frame_candidates, FrameReport};
@@ -28,6 +29,7 @@ use super::report::{CandidateReport, EstimateReport, LandmarkReport};
 use super::segments::{dominant_part, fit_segments, parts};
 use super::suspicious::flag_suspicious;
 use super::tick::Ticker;
+use super::typical_error::TYPICAL_ERROR_MM;
 use crate::align::{
     data_weights, fine_align, AlignObserver, FineAlignInput, FineAlignParams, SurfaceIndex,
 };
@@ -266,11 +268,7 @@ pub fn estimate_landmarks(
                     &near[k],
                     params.outlier_distance,
                 );
-                let c = confidence(
-                    sharpness(&rest_normals, v, &near[k]),
-                    r,
-                    params.confidence_residual,
-                );
+                let c = confidence(TYPICAL_ERROR_MM[k] / 1000.0, r, params);
                 (finite.then(|| p / to_m), if finite { c } else { 0.0 })
             }
         };
