@@ -12,7 +12,8 @@ use std::process::Command;
 
 use bodyspace::io::{read_landmarks, write_landmarks_csv, write_ply};
 use bodyspace::landmarks::estimate::{
-    estimate_landmarks, EstimateInput, EstimateParams, LandmarkEstimate, SuspicionKind,
+    estimate_landmarks, flag_given, given_landmarks, EstimateInput, EstimateParams,
+    LandmarkEstimate, SuspicionKind,
 };
 use bodyspace::landmarks::{LandmarkSet, CAESAR_LANDMARKS};
 use bodyspace::mesh::units::Units;
@@ -157,6 +158,28 @@ fn given_landmarks_are_never_moved_and_a_swapped_pair_and_a_typo_are_flagged() {
     wrong.landmarks[lt].position = p;
     let sellion = at(&wrong, "Sellion");
     wrong.landmarks[sellion].position.z += 300.0;
+    // An edit re-checked against the partial estimate's prediction, without a fit: the same
+    // three are flagged.
+    let rest = &template.mesh().positions;
+    let landmark_rest: Vec<_> = template
+        .landmark_vertices()
+        .iter()
+        .map(|(_, v)| rest[*v as usize])
+        .collect();
+    let mut rechecked: Vec<String> = flag_given(
+        &landmark_rest,
+        &e.part,
+        &given_landmarks(&wrong),
+        &e.predicted,
+        &EstimateParams::default(),
+        e.scale_to_metres,
+    )
+    .into_iter()
+    .map(|f| f.name)
+    .collect();
+    rechecked.sort();
+    assert_eq!(rechecked, ["Lt. Acromion", "Rt. Acromion", "Sellion"]);
+
     let e = estimate(&c, &wrong);
     let flags: Vec<(&str, SuspicionKind)> = e
         .report
