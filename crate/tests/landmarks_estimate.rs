@@ -12,7 +12,8 @@ use std::process::Command;
 
 use bodyspace::io::{read_landmarks, write_landmarks_csv, write_ply};
 use bodyspace::landmarks::estimate::{
-    estimate_landmarks, EstimateInput, EstimateParams, LandmarkEstimate, SuspicionKind,
+    estimate_landmarks, flag_given, given_landmarks, EstimateInput, EstimateParams,
+    LandmarkEstimate, SuspicionKind,
 };
 use bodyspace::landmarks::{LandmarkSet, CAESAR_LANDMARKS};
 use bodyspace::mesh::units::Units;
@@ -94,7 +95,7 @@ fn every_frame_and_pose_is_found_and_the_landmarks_land_near_the_truth() {
         assert_eq!(r.given, 0);
         assert_eq!(r.estimated, 73);
         assert!(r.flagged.is_empty(), "{:?}", r.flagged);
-        // Measured 12–31 mm mean on 10 subjects (docs/landmarks-estimate.md).
+        // Measured 11–32 mm mean (31.7: hands on hips), worst 87 mm (docs/landmarks-estimate.md).
         assert!(
             mean < 35.0,
             "{} / {}: mean {mean} mm",
@@ -102,12 +103,20 @@ fn every_frame_and_pose_is_found_and_the_landmarks_land_near_the_truth() {
             pose.name
         );
         assert!(
-            worst < 130.0,
+            worst < 110.0,
             "{} / {}: worst {worst} mm",
             frame.name,
             pose.name
         );
         assert!(e.confidence.iter().all(|c| (0.0..=1.0).contains(c)));
+        // The confidence follows the typical error: a foot above a fingertip.
+        let at = |name: &str| {
+            CAESAR_LANDMARKS
+                .iter()
+                .position(|l| l.name == name)
+                .unwrap()
+        };
+        assert!(e.confidence[at("Rt. Digit II")] > e.confidence[at("Rt. Dactylion")]);
     }
 }
 
@@ -149,6 +158,28 @@ fn given_landmarks_are_never_moved_and_a_swapped_pair_and_a_typo_are_flagged() {
     wrong.landmarks[lt].position = p;
     let sellion = at(&wrong, "Sellion");
     wrong.landmarks[sellion].position.z += 300.0;
+    // An edit re-checked against the partial estimate's prediction, without a fit: the same
+    // three are flagged.
+    let rest = &template.mesh().positions;
+    let landmark_rest: Vec<_> = template
+        .landmark_vertices()
+        .iter()
+        .map(|(_, v)| rest[*v as usize])
+        .collect();
+    let mut rechecked: Vec<String> = flag_given(
+        &landmark_rest,
+        &e.part,
+        &given_landmarks(&wrong),
+        &e.predicted,
+        &EstimateParams::default(),
+        e.scale_to_metres,
+    )
+    .into_iter()
+    .map(|f| f.name)
+    .collect();
+    rechecked.sort();
+    assert_eq!(rechecked, ["Lt. Acromion", "Rt. Acromion", "Sellion"]);
+
     let e = estimate(&c, &wrong);
     let flags: Vec<(&str, SuspicionKind)> = e
         .report

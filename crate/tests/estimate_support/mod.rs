@@ -9,8 +9,8 @@ use bodyspace::landmarks::{Landmark, LandmarkSet};
 use bodyspace::mesh::Mesh;
 use bodyspace::synth::output::to_output_frame;
 use bodyspace::synth::{
-    make_subject, sample_subject, subject_rng, MakeHumanData, PopulationProfile, PoseParams,
-    ScannerParams, Subject, Units,
+    make_subject, subject_rng, MakeHumanData, PopulationProfile, PoseParams, ScannerParams,
+    Subject, SubjectId, Units,
 };
 use bodyspace::template::Template;
 use nalgebra::{Matrix3, Point3, Rotation3, Vector3};
@@ -153,30 +153,36 @@ pub fn case(
     pose: &Pose,
     frame: &Frame,
 ) -> Case {
+    let id = SubjectId {
+        profile: PopulationProfile::Tuning,
+        seed,
+        index,
+    };
     case_scanned(
         data,
         template,
-        seed,
-        index,
-        pose,
+        id,
+        Some(pose),
         frame,
         &ScannerParams::default(),
     )
 }
 
-/// [`case`] with the scanner's parameters (a finer step makes a larger scan).
+/// Subject `id` of its profile (the `held-out` one for honest figures) with `pose` (`None`: the
+/// profile's own pose), scanned by `scanner` (a finer step makes a larger scan), in `frame`.
 pub fn case_scanned(
     data: &MakeHumanData,
     template: &Template,
-    seed: u64,
-    index: u64,
-    pose: &Pose,
+    id: SubjectId,
+    pose: Option<&Pose>,
     frame: &Frame,
     scanner: &ScannerParams,
 ) -> Case {
-    let mut rng = subject_rng(seed, index);
-    let mut params = sample_subject(PopulationProfile::Tuning, &mut rng);
-    params.pose = pose.pose;
+    let mut rng = subject_rng(id.seed, id.index);
+    let mut params = id.profile.sample_subject(&mut rng);
+    if let Some(pose) = pose {
+        params.pose = pose.pose;
+    }
     let subject = make_subject(data, &params, scanner, &mut rng).unwrap();
     let place = |p: &Point3<f64>| frame.apply(&to_output_frame(p, Units::Metres));
     let scan = Mesh::new(

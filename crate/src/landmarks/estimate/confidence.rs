@@ -1,17 +1,16 @@
-//! Each estimated landmark's confidence in [0, 1]: how sharply the landmark is defined on the
-//! surface (a bony tip or a crease, where the normals turn, is found again on any body; a point
-//! on a flat or gently curved stretch slides) times how well the fit went around it.
+//! Each estimated landmark's confidence in [0, 1]: how far the estimate typically lands from
+//! the landmark (its mean error on the development subjects, `typical_error.rs`) and how well
+//! the fit went around it.
 //!
-//! confidence = (½ + ½·sharpness) · exp(−(residual / σ)²), where sharpness = s/(s + s₀) with
-//! s the mean of 1 − n·n_j over the template vertices j within `radius` of the landmark vertex
-//! (normals of the template at rest), s₀ = [`SHARPNESS_HALF`]; residual is the RMS distance to
-//! the scan of the fitted vertices within `radius`, σ = `confidence_residual`.
+//! confidence = exp(−typical / `confidence_error` − (residual / `confidence_residual`)²), the
+//! residual being the RMS distance to the scan of the fitted vertices within
+//! `confidence_radius` of the landmark vertex. Measured against alternatives (the surface's
+//! sharpness from the template's normals, the residual alone) in docs/landmarks-estimate.md;
+//! [`spearman`] is the measure.
 
-use nalgebra::{Point3, Vector3};
+use nalgebra::Point3;
 
-/// The normal spread s at which the sharpness is ½ (about the spread of a 5 cm sphere cap of
-/// 2.5 cm radius, the curvature of a wrist or an ankle).
-pub const SHARPNESS_HALF: f64 = 0.03;
+use super::params::EstimateParams;
 
 /// Template vertices within `radius` of each landmark vertex (rest positions, `#V` metres).
 pub fn neighbourhoods(rest: &[Point3<f64>], landmarks: &[u32], radius: f64) -> Vec<Vec<u32>> {
@@ -24,17 +23,6 @@ pub fn neighbourhoods(rest: &[Point3<f64>], landmarks: &[u32], radius: f64) -> V
                 .collect()
         })
         .collect()
-}
-
-/// Sharpness in [0, 1) of the surface at `centre` over `neighbours`, from unit `normals`.
-pub fn sharpness(normals: &[Vector3<f64>], centre: u32, neighbours: &[u32]) -> f64 {
-    let n0 = normals[centre as usize];
-    let spread = neighbours
-        .iter()
-        .map(|&v| 1.0 - n0.dot(&normals[v as usize]))
-        .sum::<f64>()
-        / neighbours.len().max(1) as f64;
-    spread / (spread + SHARPNESS_HALF)
 }
 
 /// The fit's RMS distance (m) to the scan over `neighbours`, from the per-vertex distances;
@@ -54,9 +42,49 @@ pub fn residual(distances: &[f64], neighbours: &[u32], missing: f64) -> f64 {
     (sum / neighbours.len().max(1) as f64).sqrt()
 }
 
-/// The confidence from a sharpness and a residual (m), with σ (m).
-pub fn confidence(sharpness: f64, residual: f64, sigma: f64) -> f64 {
-    (0.5 + 0.5 * sharpness) * (-(residual / sigma).powi(2)).exp()
+/// The confidence of a landmark with `typical` error (m) and local `residual` (m).
+pub fn confidence(typical: f64, residual: f64, params: &EstimateParams) -> f64 {
+    (-typical / params.confidence_error - (residual / params.confidence_residual).powi(2)).exp()
+}
+
+/// Spearman's rank correlation of `a` and `b` (equal lengths; ties get their mean rank): how
+/// well the confidence ranks the measured errors (−1: the highest confidence always has the
+/// smallest error). 0 for fewer than two values or a constant series.
+pub fn spearman(a: &[f64], b: &[f64]) -> f64 {
+    fn ranks(x: &[f64]) -> Vec<f64> {
+        let mut order: Vec<usize> = (0..x.len()).collect();
+        order.sort_by(|&i, &j| x[i].total_cmp(&x[j]));
+        let mut r = vec![0.0; x.len()];
+        let mut i = 0;
+        while i < order.len() {
+            let mut j = i;
+            while j + 1 < order.len() && x[order[j + 1]] == x[order[i]] {
+                j += 1;
+            }
+            for &k in &order[i..=j] {
+                r[k] = (i + j) as f64 / 2.0;
+            }
+            i = j + 1;
+        }
+        r
+    }
+    let n = a.len().min(b.len());
+    if n < 2 {
+        return 0.0;
+    }
+    let (ra, rb) = (ranks(&a[..n]), ranks(&b[..n]));
+    let mean = (n - 1) as f64 / 2.0;
+    let (mut ab, mut aa, mut bb) = (0.0, 0.0, 0.0);
+    for (x, y) in ra.iter().zip(&rb) {
+        ab += (x - mean) * (y - mean);
+        aa += (x - mean).powi(2);
+        bb += (y - mean).powi(2);
+    }
+    if aa == 0.0 || bb == 0.0 {
+        0.0
+    } else {
+        ab / (aa * bb).sqrt()
+    }
 }
 
 #[cfg(test)]
@@ -64,22 +92,14 @@ mod tests {
     use super::*;
 
     #[test]
-    fn flat_is_dull_and_a_fold_is_sharp() {
-        let flat = vec![Vector3::z(); 5];
-        assert_eq!(sharpness(&flat, 0, &[0, 1, 2, 3, 4]), 0.0);
-        let mut fold = flat.clone();
-        fold[3] = Vector3::x();
-        fold[4] = Vector3::x();
-        let s = sharpness(&fold, 0, &[0, 1, 2, 3, 4]);
-        assert!(s > 0.9, "{s}");
-    }
-
-    #[test]
     fn confidence_falls_with_the_residual() {
-        assert_eq!(confidence(1.0, 0.0, 0.004), 1.0);
-        assert_eq!(confidence(0.0, 0.0, 0.004), 0.5);
-        let c = confidence(1.0, 0.004, 0.004);
+        let params = EstimateParams::default();
+        assert_eq!(confidence(0.0, 0.0, &params), 1.0);
+        let c = confidence(params.confidence_error, 0.0, &params);
         assert!((c - (-1.0f64).exp()).abs() < 1e-12);
+        let c = confidence(0.0, params.confidence_residual, &params);
+        assert!((c - (-1.0f64).exp()).abs() < 1e-12);
+        assert!(confidence(0.008, 0.004, &params) > confidence(0.03, 0.004, &params));
         let r = residual(&[0.003, f64::NAN, 0.004], &[0, 2], 0.05);
         assert!((r - (0.0000125f64).sqrt()).abs() < 1e-12);
         assert_eq!(residual(&[f64::NAN], &[0], 0.05), 0.05);
@@ -96,5 +116,17 @@ mod tests {
             neighbourhoods(&rest, &[0, 2], 0.02),
             vec![vec![0, 1], vec![2]]
         );
+    }
+
+    #[test]
+    fn spearman_ranks() {
+        let a = [1.0, 2.0, 3.0, 4.0];
+        assert!((spearman(&a, &[10.0, 20.0, 30.0, 400.0]) - 1.0).abs() < 1e-12);
+        assert!((spearman(&a, &[4.0, 3.0, 2.0, 1.0]) + 1.0).abs() < 1e-12);
+        // Ties share their mean rank: ranks (0.5, 0.5, 2, 3) against (0, 1, 2, 3).
+        let r = spearman(&[1.0, 1.0, 2.0, 3.0], &a);
+        assert!((r - 0.9486832980505138).abs() < 1e-12, "{r}");
+        assert_eq!(spearman(&[1.0; 3], &a[..3]), 0.0);
+        assert_eq!(spearman(&[1.0], &[2.0]), 0.0);
     }
 }

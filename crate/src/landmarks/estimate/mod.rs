@@ -9,7 +9,7 @@
 //! * [`matching`] — closest compatible scan points, the ICP energy.
 //! * [`suspicious`] — [`flag_suspicious`]: given landmarks far from where they are expected;
 //!   [`expected`] — where: from the other given landmarks of the part, or from the fit.
-//! * [`confidence`] — sharpness of the surface and residual of the fit per landmark.
+//! * [`confidence`] — the typical error of each landmark (`typical_error`) and the fit's residual.
 //! * [`tick`] — progress and cancel through the caller's `AlignObserver`.
 //! * [`EstimateParams`] (`params.rs`), [`EstimateReport`] (`report.rs`), [`EstimateError`]
 //!   (`error.rs`).
@@ -26,10 +26,11 @@ pub mod segments;
 pub mod steps;
 pub mod suspicious;
 pub mod tick;
+pub mod typical_error;
 
 pub use error::EstimateError;
 pub use frame::FrameReport;
 pub use params::EstimateParams;
 pub use report::EstimateReport;
-pub use steps::{estimate_landmarks, given_landmarks, EstimateInput, LandmarkEstimate};
+pub use steps::{estimate_landmarks, flag_given, given_landmarks, EstimateInput, LandmarkEstimate};
 pub use suspicious::{flag_suspicious, SuspicionKind, SuspiciousLandmark};

@@ -34,10 +34,14 @@ pub struct EstimateParams {
     /// segment-wise fit. Default 120 mm: above the fit's worst error on the synthetic subjects
     /// (≈ 9 cm, fingertips), below a swapped pair's distance.
     pub suspicious_distance_fit: f64,
-    /// Radius (m) around a landmark vertex over which the fit's residual and the surface's
-    /// sharpness are taken for the confidence. Default 25 mm.
+    /// Radius (m) around a landmark vertex over which the fit's residual is taken for the
+    /// confidence. Default 25 mm.
     pub confidence_radius: f64,
-    /// The residual (m) at which the fit's part of the confidence falls to e⁻¹. Default 4 mm.
+    /// The typical error (m) at which the confidence falls to e⁻¹. Default 30 mm (the hands'
+    /// typical error: ≈ 0.3; the feet's 8 mm: ≈ 0.75).
+    pub confidence_error: f64,
+    /// The local residual (m) that lowers the confidence by a further factor e⁻¹. Default 10 mm:
+    /// above the fit's usual 3–5 mm, so only a landmark over a hole or a failed fit drops.
     pub confidence_residual: f64,
 }
 
@@ -57,7 +61,8 @@ impl Default for EstimateParams {
             suspicious_distance: 0.06,
             suspicious_distance_fit: 0.12,
             confidence_radius: 0.025,
-            confidence_residual: 0.004,
+            confidence_error: 0.03,
+            confidence_residual: 0.01,
         }
     }
 }

@@ -4,6 +4,12 @@
 //! points, the vertex positions blended by the weights as in linear blend skinning. It takes the
 //! template from the similarity fit to the scan's pose (arms down or raised, hands on hips, feet
 //! apart or together) before the stiff non-rigid fit; no skeleton and no shape model are needed.
+//!
+//! The thigh and the lower leg also stretch along their own axis (about the hip or the knee):
+//! the body's common scale leaves them as long as the template's, whatever the subject's leg
+//! proportions. (Stretching the arm parts, a hand part of its own and pulling a thigh towards
+//! where the lower leg puts the knee were measured and made the estimate worse:
+//! docs/landmarks-estimate.md.)
 
 use std::ops::ControlFlow;
 
@@ -19,19 +25,50 @@ use crate::template::{Segment, Template};
 /// knee.
 const LIMB_BLEND: f64 = 0.05;
 
-/// One rigid part: its weight at every vertex, its parent and the joint (template frame) it
-/// shares with the parent.
+/// The range of a leg part's stretch along its axis (a quarter shorter to a third longer than
+/// the template's at the body's scale).
+const STRETCH_RANGE: (f64, f64) = (0.75, 1.33);
+
+/// One part: its weight at every vertex, its parent, the joint (template frame) it shares with
+/// the parent, and for a leg part the axis (unit, template frame, through the joint) along which
+/// it stretches.
 #[derive(Debug, Clone)]
 pub struct Part {
     pub name: &'static str,
     pub weights: Vec<f64>,
     pub parent: Option<usize>,
     pub joint: Point3<f64>,
+    pub axis: Option<Vector3<f64>>,
+}
+
+/// Where a part is: a similarity (at the body's scale) after a stretch by `stretch` along the
+/// part's axis about its joint.
+#[derive(Debug, Clone, Copy)]
+pub struct PartPose {
+    pub transform: Similarity,
+    pub stretch: f64,
+}
+
+impl Part {
+    /// `p` (template frame) stretched along the part's axis about its joint.
+    fn stretched(&self, p: &Point3<f64>, stretch: f64) -> Point3<f64> {
+        match self.axis {
+            Some(a) => p + a * ((stretch - 1.0) * (p - self.joint).dot(&a)),
+            None => *p,
+        }
+    }
+
+    /// `p` (template frame) where `pose` puts it.
+    pub fn apply(&self, pose: &PartPose, p: &Point3<f64>) -> Point3<f64> {
+        pose.transform.apply(&self.stretched(p, pose.stretch))
+    }
 }
 
 /// The ten parts of `template` (base resolution): torso, head, and upper and lower part of each
 /// limb, parents before children. The shoulder, hip and neck joints are the centres of the
-/// segments' overlap bands; the elbow and knee the midpoints of the epicondyle landmarks.
+/// segments' overlap bands; the elbow and knee the midpoints of the epicondyle landmarks. The
+/// thigh stretches along the line from the hip to the knee, the lower leg along the line from
+/// the knee to the midpoint of the malleoli.
 pub fn parts(template: &Template) -> Vec<Part> {
     let rest = &template.mesh().positions;
     let n = rest.len();
@@ -63,41 +100,49 @@ pub fn parts(template: &Template) -> Vec<Part> {
             weights: (0..n).map(|v| w(v, Segment::Torso)).collect(),
             parent: None,
             joint: Point3::origin(),
+            axis: None,
         },
         Part {
             name: "head",
             weights: (0..n).map(|v| w(v, Segment::Head)).collect(),
             parent: Some(0),
             joint: band_centre(Segment::Head),
+            axis: None,
         },
     ];
+    // Segment, its parts, the prefix of its epicondyles, the prefix of the malleoli that end a
+    // stretching lower part (None: the parts do not stretch).
     let limbs = [
         (
             Segment::LeftArm,
             "left upper arm",
             "left forearm",
             "Lt. Humeral",
+            None,
         ),
         (
             Segment::RightArm,
             "right upper arm",
             "right forearm",
             "Rt. Humeral",
+            None,
         ),
         (
             Segment::LeftLeg,
             "left thigh",
             "left lower leg",
             "Lt. Femoral",
+            Some("Lt."),
         ),
         (
             Segment::RightLeg,
             "right thigh",
             "right lower leg",
             "Rt. Femoral",
+            Some("Rt."),
         ),
     ];
-    for (segment, upper, lower, epicondyles) in limbs {
+    for (segment, upper, lower, epicondyles, malleoli) in limbs {
         let root = band_centre(segment);
         let limb: Vec<f64> = (0..n).map(|v| w(v, segment)).collect();
         let bend = midpoint(
@@ -110,10 +155,20 @@ pub fn parts(template: &Template) -> Vec<Part> {
                 weights: limb,
                 parent: Some(0),
                 joint: root,
+                axis: None,
             });
             continue;
         };
         let axis = (bend - root).normalize();
+        let ankle = malleoli.and_then(|side| {
+            midpoint(
+                &format!("{side} Lateral Malleolus"),
+                &format!("{side} Medial Malleolus"),
+            )
+        });
+        let lower_axis = ankle
+            .filter(|a| (a - bend).norm() > 1e-6)
+            .map(|a| (a - bend).normalize());
         let at_bend = (bend - root).dot(&axis);
         let lower_share = |p: &Point3<f64>| {
             let t = ((p - root).dot(&axis) - at_bend) / (2.0 * LIMB_BLEND) + 0.5;
@@ -128,12 +183,14 @@ pub fn parts(template: &Template) -> Vec<Part> {
                 .collect(),
             parent: Some(0),
             joint: root,
+            axis: lower_axis.map(|_| axis),
         });
         parts.push(Part {
             name: lower,
             weights: (0..n).map(|v| limb[v] * lower_share(&rest[v])).collect(),
             parent: Some(upper_index),
             joint: bend,
+            axis: lower_axis,
         });
     }
     parts
@@ -149,32 +206,52 @@ pub fn dominant_part(parts: &[Part], vertex: u32) -> usize {
 }
 
 /// The blended positions Σ_p w_p(v)·T_p(v) of the `rest` vertices.
-pub fn blend(parts: &[Part], transforms: &[Similarity], rest: &[Point3<f64>]) -> Vec<Point3<f64>> {
+pub fn blend(parts: &[Part], poses: &[PartPose], rest: &[Point3<f64>]) -> Vec<Point3<f64>> {
     rest.iter()
         .enumerate()
         .map(|(v, p)| {
             let mut sum = Vector3::zeros();
             let mut total = 0.0;
-            for (part, t) in parts.iter().zip(transforms) {
+            for (part, pose) in parts.iter().zip(poses) {
                 let w = part.weights[v];
                 if w > 0.0 {
-                    sum += t.apply(p).coords * w;
+                    sum += part.apply(pose, p).coords * w;
                     total += w;
                 }
             }
             if total > 0.0 {
                 Point3::from(sum / total)
             } else {
-                transforms[0].apply(p)
+                poses[0].transform.apply(p)
             }
         })
         .collect()
 }
 
-/// Fits every part rigidly (at `start`'s scale) by ICP from `start`: each iteration blends the
-/// template, matches `vertices` to the scan, then fits each part, parents first, to the matches
-/// of the vertices it dominates plus its joint held where its (already moved) parent puts it.
-/// Returns the blended positions, or `None` when the caller cancelled.
+/// The stretch along `part`'s axis that best explains `wanted` (template point, where it should
+/// go) in the placement `transform`: the least-squares ratio of the axial distances from the
+/// joint, target over template, within [`STRETCH_RANGE`].
+fn fit_stretch(
+    part: &Part,
+    axis: &Vector3<f64>,
+    transform: &Similarity,
+    wanted: &[(Point3<f64>, Point3<f64>)],
+) -> Option<f64> {
+    let (mut num, mut den) = (0.0, 0.0);
+    for (p, q) in wanted {
+        let u = (p - part.joint).dot(axis);
+        num += u * (transform.apply_inverse(q) - part.joint).dot(axis);
+        den += u * u;
+    }
+    (den > 0.0).then(|| (num / den).clamp(STRETCH_RANGE.0, STRETCH_RANGE.1))
+}
+
+/// Fits every part (rigid at `start`'s scale, a leg part stretched along its axis) by ICP from
+/// `start`: each iteration blends the template, matches `vertices` to the scan, then fits each
+/// part, parents first, to the matches of the vertices it dominates plus its joint held where
+/// its (already moved) parent puts it — first the stretch in the part's last placement, then
+/// the rigid motion of the stretched part. Returns the blended positions, or `None` when the
+/// caller cancelled.
 pub fn fit_segments(
     template: &Template,
     parts: &[Part],
@@ -187,7 +264,13 @@ pub fn fit_segments(
     let rest = &template.mesh().positions;
     let triangles = &template.mesh().triangles;
     let scale = start.scale;
-    let mut transforms = vec![start; parts.len()];
+    let mut poses = vec![
+        PartPose {
+            transform: start,
+            stretch: 1.0,
+        };
+        parts.len()
+    ];
     let dominant: Vec<Option<usize>> = (0..rest.len())
         .map(|v| {
             (0..parts.len())
@@ -196,40 +279,92 @@ pub fn fit_segments(
         })
         .collect();
     for _ in 0..iterations {
-        let positions = blend(parts, &transforms, rest);
+        let positions = blend(parts, &poses, rest);
         let normals = vertex_normals(&positions, triangles);
         let pairs = matching.pairs(vertices, &positions, &normals);
         if ticker.tick(Matching::rms(&pairs), pairs.len()) == ControlFlow::Break(()) {
             return None;
         }
         for (k, part) in parts.iter().enumerate() {
-            let mut from = Vec::new();
-            let mut to = Vec::new();
-            for p in &pairs {
-                if dominant[p.vertex as usize] == Some(k) {
-                    from.push(rest[p.vertex as usize] * scale);
-                    to.push(p.target);
-                }
-            }
-            if from.len() < 10 {
+            let mut wanted: Vec<(Point3<f64>, Point3<f64>)> = pairs
+                .iter()
+                .filter(|p| dominant[p.vertex as usize] == Some(k))
+                .map(|p| (rest[p.vertex as usize], p.target))
+                .collect();
+            if wanted.len() < 10 {
                 continue;
             }
             if let Some(parent) = part.parent {
                 // The joint stays attached: as many copies as a fifth of the part's matches.
-                let held = transforms[parent].apply(&part.joint);
-                for _ in 0..(from.len() / 5).max(3) {
-                    from.push(part.joint * scale);
-                    to.push(held);
-                }
+                let held = parts[parent].apply(&poses[parent], &part.joint);
+                let copies = (wanted.len() / 5).max(3);
+                wanted.extend(std::iter::repeat_n((part.joint, held), copies));
             }
+            let stretch = part
+                .axis
+                .and_then(|a| fit_stretch(part, &a, &poses[k].transform, &wanted))
+                .unwrap_or(poses[k].stretch);
+            let from: Vec<_> = wanted
+                .iter()
+                .map(|(p, _)| part.stretched(p, stretch) * scale)
+                .collect();
+            let to: Vec<_> = wanted.iter().map(|(_, q)| *q).collect();
             if let Some(rigid) = similarity(&from, &to, false) {
-                transforms[k] = Similarity {
-                    scale,
-                    rotation: rigid.rotation,
-                    translation: rigid.translation,
+                poses[k] = PartPose {
+                    transform: Similarity {
+                        scale,
+                        rotation: rigid.rotation,
+                        translation: rigid.translation,
+                    },
+                    stretch,
                 };
             }
         }
     }
-    Some(blend(parts, &transforms, rest))
+    Some(blend(parts, &poses, rest))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_stretched_part_is_fitted_back() {
+        let part = Part {
+            name: "thigh",
+            weights: Vec::new(),
+            parent: None,
+            joint: Point3::new(0.0, 0.0, 1.0),
+            axis: Some(-Vector3::z()),
+        };
+        // The part 1.2 times as long along its axis, turned by the transform.
+        let transform = Similarity {
+            scale: 1.0,
+            rotation: *nalgebra::Rotation3::from_axis_angle(&Vector3::x_axis(), 0.3).matrix(),
+            translation: Vector3::new(0.1, 0.2, 0.3),
+        };
+        let pose = PartPose {
+            transform,
+            stretch: 1.2,
+        };
+        let wanted: Vec<_> = (0..20)
+            .map(|i| {
+                let p = Point3::new(0.05 * (i % 3) as f64, 0.02, 1.0 - 0.02 * i as f64);
+                (p, part.apply(&pose, &p))
+            })
+            .collect();
+        let s = fit_stretch(&part, &part.axis.unwrap(), &transform, &wanted).unwrap();
+        assert!((s - 1.2).abs() < 1e-12, "{s}");
+        // Beyond the range it is clamped.
+        let far = PartPose {
+            stretch: 2.0,
+            ..pose
+        };
+        let wanted: Vec<_> = wanted
+            .iter()
+            .map(|(p, _)| (*p, part.apply(&far, p)))
+            .collect();
+        let s = fit_stretch(&part, &part.axis.unwrap(), &transform, &wanted).unwrap();
+        assert_eq!(s, STRETCH_RANGE.1);
+    }
 }

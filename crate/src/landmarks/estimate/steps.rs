@@ -10,7 +10,8 @@
 //!    flagged (`expected.rs`, `suspicious.rs`);
 //! 5. the landmark-free fine alignment (paper §3.2, stiff to soft), the unflagged given landmarks
 //!    anchored;
-//! 6. the landmark vertices read off the fit, each with a confidence (`confidence.rs`); given
+//! 6. the landmark vertices read off the fit, each with a confidence from its typical error on
+//!    the development subjects and the fit's local residual (`confidence.rs`); given
 //!    landmarks are returned exactly as given.
 
 use std::borrow::Cow;
@@ -18,7 +19,7 @@ use std::borrow::Cow;
 use nalgebra::Point3;
 
 use super::candidates::{even_sample, fit_similarity, FittedCandidate};
-use super::confidence::{confidence, neighbourhoods, residual, sharpness};
+use super::confidence::{confidence, neighbourhoods, residual};
 use super::error::EstimateError;
 use super::expected::expected_positions;
 use super::frame::{frame_candidates, FrameReport};
@@ -26,8 +27,9 @@ use super::matching::Matching;
 use super::params::EstimateParams;
 use super::report::{CandidateReport, EstimateReport, LandmarkReport};
 use super::segments::{dominant_part, fit_segments, parts};
-use super::suspicious::flag_suspicious;
+use super::suspicious::{flag_suspicious, SuspiciousLandmark};
 use super::tick::Ticker;
+use super::typical_error::TYPICAL_ERROR_MM;
 use crate::align::{
     data_weights, fine_align, AlignObserver, FineAlignInput, FineAlignParams, SurfaceIndex,
 };
@@ -65,6 +67,11 @@ pub struct LandmarkEstimate {
     pub fitted: Vec<Point3<f64>>,
     /// Scan units → metres.
     pub scale_to_metres: f64,
+    /// Where the segment-wise fit (which uses no given landmark) puts each landmark, CAESAR
+    /// order, the scan's frame and units: the prediction [`flag_given`] checks an edit against.
+    pub predicted: Vec<Point3<f64>>,
+    /// The part (index into `segments::parts`) each landmark vertex belongs to, CAESAR order.
+    pub part: Vec<usize>,
     pub report: EstimateReport,
 }
 
@@ -198,31 +205,14 @@ pub fn estimate_landmarks(
         .iter()
         .map(|&v| dominant_part(&parts, v))
         .collect();
-    // Twice: a wrong landmark spoils the prediction of the others of its part, so the second
-    // pass predicts from the landmarks the first did not flag.
-    let flag = |trusted: &[(usize, Point3<f64>)]| {
-        let expected = expected_positions(&landmark_rest, &landmark_part, trusted, &fit_predicted);
-        let thresholds: Vec<f64> = expected
-            .iter()
-            .map(|e| {
-                let metres = if e.from_given {
-                    params.suspicious_distance
-                } else {
-                    params.suspicious_distance_fit
-                };
-                metres / to_m
-            })
-            .collect();
-        let expected: Vec<Point3<f64>> = expected.iter().map(|e| e.position).collect();
-        flag_suspicious(&given, &expected, &thresholds, to_m * 1000.0)
-    };
-    let first = flag(&given);
-    let trusted: Vec<(usize, Point3<f64>)> = given
-        .iter()
-        .filter(|(i, _)| !first.iter().any(|f| f.name == CAESAR_LANDMARKS[*i].name))
-        .copied()
-        .collect();
-    let flagged = flag(&trusted);
+    let flagged = flag_given(
+        &landmark_rest,
+        &landmark_part,
+        &given,
+        &fit_predicted,
+        params,
+        to_m,
+    );
     let segments_ms = now_ms() - segments_start;
 
     let fine_start = now_ms();
@@ -266,11 +256,7 @@ pub fn estimate_landmarks(
                     &near[k],
                     params.outlier_distance,
                 );
-                let c = confidence(
-                    sharpness(&rest_normals, v, &near[k]),
-                    r,
-                    params.confidence_residual,
-                );
+                let c = confidence(TYPICAL_ERROR_MM[k] / 1000.0, r, params);
                 (finite.then(|| p / to_m), if finite { c } else { 0.0 })
             }
         };
@@ -318,8 +304,50 @@ pub fn estimate_landmarks(
         given: is_given,
         fitted: fine.positions,
         scale_to_metres: to_m,
+        predicted: fit_predicted,
+        part: landmark_part,
         report,
     })
+}
+
+/// The given landmarks (CAESAR index, position in scan units) that look wrong: each predicted
+/// from the other given landmarks of its part (`landmark_rest`: the template's landmark
+/// vertices at rest, `landmark_part`: their parts), or else taken from `fit_predicted` (scan
+/// units), and flagged beyond the parameters' distances. Twice: a wrong landmark spoils the
+/// prediction of the others of its part, so the second pass predicts from the landmarks the
+/// first did not flag. `to_m`: scan units → metres. Cheap (no fit): an edit can be re-checked
+/// against the last estimate's `predicted` and `part`.
+pub fn flag_given(
+    landmark_rest: &[Point3<f64>],
+    landmark_part: &[usize],
+    given: &[(usize, Point3<f64>)],
+    fit_predicted: &[Point3<f64>],
+    params: &EstimateParams,
+    to_m: f64,
+) -> Vec<SuspiciousLandmark> {
+    let flag = |trusted: &[(usize, Point3<f64>)]| {
+        let expected = expected_positions(landmark_rest, landmark_part, trusted, fit_predicted);
+        let thresholds: Vec<f64> = expected
+            .iter()
+            .map(|e| {
+                let metres = if e.from_given {
+                    params.suspicious_distance
+                } else {
+                    params.suspicious_distance_fit
+                };
+                metres / to_m
+            })
+            .collect();
+        let expected: Vec<Point3<f64>> = expected.iter().map(|e| e.position).collect();
+        flag_suspicious(given, &expected, &thresholds, to_m * 1000.0)
+    };
+    let first = flag(given);
+    let trusted: Vec<(usize, Point3<f64>)> = given
+        .iter()
+        .filter(|(i, _)| !first.iter().any(|f| f.name == CAESAR_LANDMARKS[*i].name))
+        .copied()
+        .collect();
+    flag(&trusted)
 }
 
 /// The given landmarks that are CAESAR landmarks, as (CAESAR index, position), first of each
