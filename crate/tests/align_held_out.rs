@@ -69,8 +69,9 @@ fn held_out_subjects_are_fitted_within_tolerance_by_both_presets() {
             assert!(f.p95_mm <= 19.0, "{}: p95 {} mm", preset.name(), f.p95_mm);
             assert!(f.max_mm <= 75.0, "{}: max {} mm", preset.name(), f.max_mm);
             if preset == Preset::Anchored {
-                // What the tangential term buys: no vertex beyond 55 mm (paper: 53.8, 58.5).
-                assert!(f.max_mm <= 55.0, "anchored: max {} mm", f.max_mm);
+                // What the tangential term buys: no vertex beyond 56 mm (paper: 53.8, 58.5). It
+                // was 55 mm until the landmark definitions of 2026-11-24 put subject 1 at 55.6.
+                assert!(f.max_mm <= 56.0, "anchored: max {} mm", f.max_mm);
             }
             let parts: Vec<&str> = c.parts.iter().map(|p| p.part).collect();
             assert_eq!(parts, ["head", "torso", "arms", "hands", "legs", "feet"]);
@@ -81,8 +82,9 @@ fn held_out_subjects_are_fitted_within_tolerance_by_both_presets() {
 #[test]
 fn the_paper_preset_reproduces_todays_figures() {
     assert_eq!(Preset::Paper.params(), AlignParams::default());
-    // Subject 001 of the demo population (seed 2026, index 0), docs/benchmarks.md: RMS 0.944 mm,
-    // correspondence 4.91 mm, p95 13.89 mm, max 70.53 mm.
+    // Subject 001 of the demo population (seed 2026, index 0): RMS 0.945 mm, correspondence
+    // 4.96 mm, p95 14.14 mm, max 72.49 mm since the template's landmark definitions of 2026-11-24
+    // (Cervicale, 10th Rib Midspine, ASIS, Iliocristale moved; before: 0.944, 4.91, 13.89, 70.53).
     let id = SubjectId {
         profile: PopulationProfile::Tuning,
         seed: 2026,
@@ -94,8 +96,8 @@ fn the_paper_preset_reproduces_todays_figures() {
         "paper, tuning subject 001: RMS {rms:.3} mm, mean {:.2}, p95 {:.2}, max {:.2}",
         f.mean_mm, f.p95_mm, f.max_mm
     );
-    assert!((rms - 0.944).abs() < 0.002, "RMS {rms}");
-    assert!((f.mean_mm - 4.91).abs() < 0.01, "mean {}", f.mean_mm);
-    assert!((f.p95_mm - 13.89).abs() < 0.02, "p95 {}", f.p95_mm);
-    assert!((f.max_mm - 70.53).abs() < 0.02, "max {}", f.max_mm);
+    assert!((rms - 0.945).abs() < 0.002, "RMS {rms}");
+    assert!((f.mean_mm - 4.96).abs() < 0.01, "mean {}", f.mean_mm);
+    assert!((f.p95_mm - 14.14).abs() < 0.02, "p95 {}", f.p95_mm);
+    assert!((f.max_mm - 72.49).abs() < 0.02, "max {}", f.max_mm);
 }
