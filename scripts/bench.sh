@@ -6,7 +6,8 @@
 #          (rank-1 updates), full rebuilds and the round trip to the vertex buffers, in the
 #          worker inside Chromium and natively (crate/examples/pca_bench.rs morph)
 #   align  alignment vs trimesh nricp_amberg (scripts/bench-align.sh), and of a ≈ 201K-vertex
-#          scan in the browser worker at base and fine (scripts/bench-align-browser.sh)
+#          scan in the browser worker at base and fine, and the landmark
+#          estimate of that scan alone (scripts/bench-align-browser.sh)
 #   batch  20 synthetic subjects (`bodyspace synth --n 20 --seed 7`, as the CLI batch benchmark)
 #          picked at once in the app: wall time to the built model with the worker pool and with
 #          one worker (bench/batch-bench.mjs; BATCH_RUNS rounds, default 2)
