@@ -6,6 +6,9 @@
 # +simd128) and the app, serves it, and aligns at base (ALIGN_RUNS, default 3) and fine
 # (ALIGN_FINE_RUNS, default 2) in Chromium through the app's Align button (ALIGN_RESOLUTIONS
 # picks them, default "base fine").
+# The same subject's scan alone is then dropped ESTIMATE_RUNS times (default 3) for the landmark
+# estimate in the app's landmark worker (issue 11: ≤ 5 s in the browser, ≤ 2 s natively), and
+# estimated natively by `bodyspace landmarks`. ALIGN_RESOLUTIONS=none runs the estimate alone.
 # SIMD or not: `WASM_FEATURES= bash scripts/bench-align-browser.sh`, then without the variable.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -34,7 +37,9 @@ echo
 echo "== machine"
 lscpu | grep -E '^(Model name|CPU\(s\)|Thread|Core|Socket)' || true
 echo "nproc: $(nproc); load average: $(cut -d' ' -f1-3 /proc/loadavg); WASM target features: $(cat web/pkg/target-features 2>/dev/null || echo unknown)"
-for resolution in ${ALIGN_RESOLUTIONS:-base fine}; do
+resolutions="${ALIGN_RESOLUTIONS:-base fine}"
+[ "$resolutions" = none ] && resolutions=""
+for resolution in $resolutions; do
   echo
   echo "== browser worker, $resolution template"
   runs="${ALIGN_RUNS:-3}"
@@ -42,9 +47,8 @@ for resolution in ${ALIGN_RESOLUTIONS:-base fine}; do
   node bench/align-bench.mjs "http://127.0.0.1:$port/" "$scan" "$landmarks" "$resolution" "$runs"
 done
 
-echo
-echo "== native (release, $(nproc) threads for the correspondence search), same subject"
-for resolution in base fine; do
+[ -n "$resolutions" ] && echo && echo "== native (release, $(nproc) threads for the correspondence search), same subject"
+for resolution in $resolutions; do
   "$bin" align --resolution "$resolution" --scan "$scan" --landmarks "$landmarks" --truth "$truth" \
     --out "$work/fit-$resolution.ply" --report "$work/report-$resolution.json" >/dev/null
   node -e '
@@ -55,3 +59,14 @@ for resolution in base fine; do
       `RMS ${f.scan_to_template.rms_mm.toFixed(3)} mm; correspondence ${r.correspondence.fitted.mean_mm.toFixed(2)} mm`);
   ' "$work/report-$resolution.json"
 done
+
+echo
+echo "== landmark estimate of the bare scan: browser, the landmark worker"
+node bench/estimate-bench.mjs "http://127.0.0.1:$port/" "$scan" "${ESTIMATE_RUNS:-3}"
+echo "== landmark estimate: native (release), same scan"
+for run in $(seq 1 "${ESTIMATE_RUNS:-3}"); do
+  "$bin" landmarks --scan "$scan" --out "$work/landmarks.csv" | node -e '
+    let s = ""; process.stdin.on("data", (d) => (s += d)).on("end", () => { const r = JSON.parse(s);
+      console.log(`${r.total_ms.toFixed(0)} ms (candidates ${r.candidates_ms.toFixed(0)}, segments ${r.segments_ms.toFixed(0)}, fine ${r.fine_ms.toFixed(0)}); fit RMS ${r.fit_rms_mm.toFixed(2)} mm`); });'
+done
+echo "load average after: $(cut -d' ' -f1-3 /proc/loadavg)"

@@ -6,7 +6,8 @@
 #          (rank-1 updates), full rebuilds and the round trip to the vertex buffers, in the
 #          worker inside Chromium and natively (crate/examples/pca_bench.rs morph)
 #   align  alignment vs trimesh nricp_amberg (scripts/bench-align.sh), and of a ≈ 201K-vertex
-#          scan in the browser worker at base and fine (scripts/bench-align-browser.sh)
+#          scan in the browser worker at base and fine, and the landmark
+#          estimate of that scan alone (scripts/bench-align-browser.sh)
 #   anthro measurements of one body, a body from measurements, the population and boundary
 #          manikins of the demo model in the worker inside Chromium (bench/anthropometry-bench.mjs),
 #          and natively: bodies from measurements (random targets inside the 5–95 % range;

@@ -108,8 +108,9 @@ fn anchored_poses_the_arms_of_a_hands_on_hips_subject_before_the_warp() {
 #[test]
 fn the_paper_preset_reproduces_todays_figures() {
     assert_eq!(Preset::Paper.params(), AlignParams::default());
-    // Subject 001 of the demo population (seed 2026, index 0), docs/benchmarks.md: RMS 0.944 mm,
-    // correspondence 4.91 mm, p95 13.89 mm, max 70.53 mm.
+    // Subject 001 of the demo population (seed 2026, index 0): RMS 0.945 mm, correspondence
+    // 4.96 mm, p95 14.14 mm, max 72.49 mm since the template's landmark definitions of 2026-11-24
+    // (Cervicale, 10th Rib Midspine, ASIS, Iliocristale moved; before: 0.944, 4.91, 13.89, 70.53).
     let id = SubjectId {
         profile: PopulationProfile::Tuning,
         seed: 2026,
@@ -121,8 +122,8 @@ fn the_paper_preset_reproduces_todays_figures() {
         "paper, tuning subject 001: RMS {rms:.3} mm, mean {:.2}, p95 {:.2}, max {:.2}",
         f.mean_mm, f.p95_mm, f.max_mm
     );
-    assert!((rms - 0.944).abs() < 0.002, "RMS {rms}");
-    assert!((f.mean_mm - 4.91).abs() < 0.01, "mean {}", f.mean_mm);
-    assert!((f.p95_mm - 13.89).abs() < 0.02, "p95 {}", f.p95_mm);
-    assert!((f.max_mm - 70.53).abs() < 0.02, "max {}", f.max_mm);
+    assert!((rms - 0.945).abs() < 0.002, "RMS {rms}");
+    assert!((f.mean_mm - 4.96).abs() < 0.01, "mean {}", f.mean_mm);
+    assert!((f.p95_mm - 14.14).abs() < 0.02, "p95 {}", f.p95_mm);
+    assert!((f.max_mm - 72.49).abs() < 0.02, "max {}", f.max_mm);
 }

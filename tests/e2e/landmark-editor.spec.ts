@@ -114,11 +114,13 @@ test('a scan without landmarks gets an estimate; move one by clicking, align, ex
 
 test('edit a partial landmark set on the scan, align with it and export it as .lnd', async ({ page }) => {
   test.setTimeout(300_000);
-  // Every second landmark of the sample's 73 (37 given, 36 absent), as a file clicked by hand might hold.
+  // Every second landmark of the sample's 73 (37 given), as a file clicked by hand might hold: the
+  // estimate fills in the other 36 by itself.
   await openWithSample(page, [sampleFile('scan_001.ply.gz'), partialCsv((_, i) => i % 2 === 0)]);
+  await expect(body(page)).toHaveAttribute('data-estimate-state', 'done', { timeout: 120_000 });
   await expect(body(page)).toHaveAttribute('data-rbf-state', 'done', { timeout: 60_000 });
   await expect(page.getByTestId('landmark-list').locator('li[data-state="given"]')).toHaveCount(37);
-  await expect(page.getByTestId('landmark-list').locator('li[data-state="absent"]')).toHaveCount(36);
+  await expect(page.getByTestId('landmark-list').locator('li[data-state="estimated"]')).toHaveCount(36);
 
   // Hovering a landmark in the list rings it on the template.
   await row(page, 'Substernale').hover();
@@ -165,12 +167,13 @@ test('edit a partial landmark set on the scan, align with it and export it as .l
   await expect(page.getByTestId('rbf-skipped')).toContainText('Rt. Radial Styloid');
 
   // Align with the edited set: with the full file this sample fits to 0.92 mm RMS
-  // (rbf-align.spec.ts); with half the landmarks and one moved, 1.04 mm on 2026-11-24. Then export
-  // as .lnd: 73 lines in CAESAR order, −999 for the absent ones, the moved one where it is now.
+  // (rbf-align.spec.ts); with half the landmarks given, the rest estimated and one moved, 1.04 mm
+  // on 2026-11-24. Then export as .lnd: 73 lines in CAESAR order, −999 for the absent one, the
+  // moved one where it is now.
   const lnd = await alignThenExportLnd(page, [0.7, 1.3]);
   expect(lnd.fileName).toBe('scan_001-landmarks.lnd');
   expect(lnd.count).toBe(73);
-  expect([...lnd.at.values()].filter((p) => p === null)).toHaveLength(37);
+  expect([...lnd.at.values()].filter((p) => p === null)).toHaveLength(1);
   expect(lnd.at.get('Rt. Radial Styloid')).toBeNull();
   const written = lnd.at.get('Substernale')!;
   written.forEach((v, i) => expect(v).toBeCloseTo(moved[i]!, 2));
@@ -181,6 +184,45 @@ test('edit a partial landmark set on the scan, align with it and export it as .l
   await expect(row(page, 'Rt. Radial Styloid')).toHaveAttribute('data-state', 'given');
   await expect(body(page)).toHaveAttribute('data-align-state', 'idle');
   await expect(page.locator('#viewport')).not.toHaveAttribute('data-fitted-vertices', /[1-9]/);
+});
+
+test('a partial file of 10 landmarks is filled in by the estimate and never moved; a nearly full one is only checked', async ({ page }) => {
+  test.setTimeout(300_000);
+  // Ten landmarks a person might click by hand, spread over the body.
+  const HAND_PICKED = [
+    'Sellion', 'Suprasternale', 'Rt. Acromion', 'Lt. Acromion', 'Rt. Radial Styloid',
+    'Lt. Radial Styloid', 'Rt. ASIS', 'Lt. ASIS', 'Rt. Lateral Malleolus', 'Lt. Lateral Malleolus',
+  ];
+  const file = truth();
+  await openWithSample(page, [sampleFile('scan_001.ply.gz'), partialCsv((name) => HAND_PICKED.includes(name))]);
+  await expect(body(page)).toHaveAttribute('data-estimate-state', 'done', { timeout: 120_000 });
+  await expect(page.getByTestId('landmark-list').locator('li[data-state="given"]')).toHaveCount(10);
+  await expect(page.getByTestId('landmark-list').locator('li[data-state="estimated"]')).toHaveCount(63);
+  await expect(page.locator('#viewport')).toHaveAttribute('data-scan-markers', '73');
+  // The given ones are where the file put them, to the micrometre (the list shows 3 decimals of mm).
+  for (const name of HAND_PICKED) {
+    await expect(row(page, name)).toHaveAttribute('data-state', 'given');
+    (await positionMm(page, name)).forEach((v, i) => expect(Math.abs(v - file.get(name)![i]!)).toBeLessThan(0.002));
+  }
+  // The estimated ones against the sample's true landmarks, which the page never saw.
+  const errors: number[] = [];
+  for (const [name, p] of file) {
+    if (HAND_PICKED.includes(name)) continue;
+    const q = await positionMm(page, name);
+    errors.push(Math.hypot(...q.map((v, i) => v - p[i]!)));
+  }
+  expect(errors).toHaveLength(63);
+  expect(errors.reduce((a, b) => a + b, 0) / errors.length).toBeLessThan(25);
+
+  // A CAESAR file missing two landmarks is nearly full: checked, not filled in (the warp runs
+  // without the two; "Estimate" would fill them in).
+  const MISSING = ['Rt. Gonion', 'Lt. Dactylion'];
+  await dropFiles(page, [partialCsv((name) => !MISSING.includes(name))]);
+  await waitForLoads(page, 2);
+  await expect(page.getByTestId('landmark-list').locator('li[data-state="given"]')).toHaveCount(71);
+  await expect(page.getByTestId('landmark-list').locator('li[data-state="absent"]')).toHaveCount(2);
+  await expect(body(page)).toHaveAttribute('data-suspicious-state', 'done', { timeout: 120_000 });
+  await expect(body(page)).toHaveAttribute('data-estimate-state', 'none');
 });
 
 test('the edited set survives a trap of the alignment worker and a failed landmark file', async ({ page }) => {

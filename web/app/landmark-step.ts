@@ -20,6 +20,12 @@ import { LandmarkEdits } from './landmark-edits';
 import { estimateInput, scanInput, scanTransfer } from './scan-input';
 import type { Session } from './session';
 
+/** A landmark file with at least this many of the 73 is nearly full: not filled in by itself. */
+export const NEARLY_FULL = 64;
+
+/** Quiet time (ms) after an edit before the set is checked for suspicious landmarks. */
+const CHECK_DELAY_MS = 400;
+
 export class LandmarkStep {
   readonly panel: LandmarksPanel;
   private selected: string | null = null;
@@ -33,6 +39,8 @@ export class LandmarkStep {
   private recheck = false;
   /** Counts estimates and resets, so a stale estimate's reply is dropped. */
   private generation = 0;
+  /** The check waiting for a pause in the edits (a burst of clicks or undos is checked once). */
+  private checkTimer: ReturnType<typeof setTimeout> | null = null;
 
   /**
    * `client` writes the exports; `estimator` is the landmark worker's client (estimate and check).
@@ -79,16 +87,24 @@ export class LandmarkStep {
   /** A new landmark file or scan: nothing picked, no estimate or check of the old set running or shown. */
   reset(): void {
     this.generation++;
+    if (this.checkTimer !== null) clearTimeout(this.checkTimer);
+    this.checkTimer = null;
     if (this.estimator.busy) this.estimator.cancel();
     this.selected = null;
     this.suspicious = null;
     this.estimate = { state: 'none' };
   }
 
-  /** After a load: a scan without landmarks gets an estimate, a scan with some gets checked. */
+  /**
+   * After a load: a scan without landmarks, or with a partial file (fewer than
+   * `NEARLY_FULL` CAESAR landmarks), gets an estimate of the rest, the given ones kept as given
+   * (the estimate also flags the suspicious ones); a nearly full file (a CAESAR file missing a
+   * few) is only checked: its missing landmarks stay absent, the warp runs without them, and
+   * "Estimate" fills them in on request.
+   */
   afterLoad(): void {
     if (!this.session.scan) return;
-    if (this.session.edits?.placed().names.length) this.check();
+    if ((this.session.edits?.placed().names.length ?? 0) >= NEARLY_FULL) this.check();
     else void this.estimateLandmarks();
   }
 
@@ -260,7 +276,20 @@ export class LandmarkStep {
     this.showMarkers();
     this.render();
     this.onEdited(true);
-    this.check();
+    this.scheduleCheck();
+  }
+
+  /**
+   * Checks the set once the edits pause for `CHECK_DELAY_MS`: the check fits the template to the
+   * scan (seconds in the worker), too much to run on every click of a burst.
+   */
+  private scheduleCheck(): void {
+    if (this.checkTimer !== null) clearTimeout(this.checkTimer);
+    document.body.dataset.suspiciousState = 'pending';
+    this.checkTimer = setTimeout(() => {
+      this.checkTimer = null;
+      this.check();
+    }, CHECK_DELAY_MS);
   }
 
   private showMarkers(): void {

@@ -1,17 +1,19 @@
-//! Anatomical landmarks: the CAESAR list, name normalisation, landmark sets, and the estimate of
-//! the landmarks on a bare scan ([`estimate`]).
+//! Anatomical landmarks: the CAESAR list, how sharply each is defined, name normalisation,
+//! landmark sets, and the estimate of the landmarks on a bare scan ([`estimate`]).
 
 pub mod caesar;
 pub mod estimate;
 pub mod names;
 pub mod report;
 pub mod set;
+pub mod sharpness;
 pub mod virtual_landmarks;
 
 pub use caesar::{CaesarLandmark, CAESAR_LANDMARKS, CAESAR_LANDMARK_COUNT};
 pub use names::canonical_name;
 pub use report::{report, LandmarkReport};
 pub use set::{Landmark, LandmarkSet};
+pub use sharpness::{definition_sharpness, DefinitionSharpness, DEFINITION_SHARPNESS};
 pub use virtual_landmarks::{
     virtual_landmarks, virtual_landmarks_detailed, VirtualLandmark, VIRTUAL_LANDMARK_COUNT,
     VIRTUAL_PREFIX,

@@ -257,63 +257,78 @@ pub fn place_landmarks(
         |p| p.x + 0.3 * p.z,
     )?;
     left.push(("10th Rib", rib));
+    let hip = f.j("upperleg01.L____head")?;
+    // Greater trochanter: lateral-most relative to the thigh axis, level with the hip joint.
+    let knee = f.j("lowerleg01.L____head")?;
+    let a_thigh = (knee - hip).normalize();
+    let lat_thigh = perp(x, &a_thigh);
+    let troch = f.best(
+        "Lt. Trochanterion",
+        |v, p| {
+            p.x > 0.0 && (-0.01..0.03).contains(&(p - hip).dot(&a_thigh)) && f.arm_weight(v) < 0.05
+        },
+        |p| p.coords.dot(&lat_thigh),
+    )?;
+    left.push(("Trochanterion", troch));
+    // The pelvis's antero-lateral corner, about 7 cm above the hip joint (Bell et al. 1990: the
+    // hip joint centre lies 30 % of the inter-ASIS breadth below the ASIS) and at 60–75 % of the
+    // trochanters' half-breadth (a bispinous breadth about 0.68 of the hip breadth): extreme
+    // towards the front and the side at once, where the belly turns into the flank.
+    let x_troch = f.p(troch).x;
+    let asis = f.best(
+        "Lt. ASIS",
+        |v, p| {
+            f.front(v)
+                && (0.6 * x_troch..0.75 * x_troch).contains(&p.x)
+                && (p.y - (hip.y + 0.07)).abs() < 0.015
+        },
+        |p| p.x + p.z,
+    )?;
+    left.push(("ASIS", asis));
+
+    // Torso, back.
+    let neck = f.j("neck01____head")?;
+    let back_mid = |v: u32, p: &Point3<f64>| p.x.abs() < MIDLINE && p.z < neck.z && f.back(v);
+    // Cervicale: the vertebra prominens is no bump on this smooth mesh, so take its level on the
+    // back midline: 85.9 % of the stature (cervicale height / stature, ANSUR 1988 men and women
+    // alike). The profile's steepest point where the upper back turns into the neck, 4 cm lower,
+    // put it level with the acromion, 5–7 cm below where independent placements find it.
+    let stature = (0..ctx.vertex_count() as u32)
+        .map(|v| f.p(v).y)
+        .fold(f64::NEG_INFINITY, f64::max);
+    let y_c7 = 0.859 * stature;
+    let cervicale = f.best(
+        "Cervicale",
+        |v, p| back_mid(v, p) && (p.y - y_c7).abs() < 0.02,
+        |p| -(p.y - y_c7).abs(),
+    )?;
+    mid.push(("Cervicale", cervicale));
+    let psis = f.best(
+        "Lt. PSIS",
+        |v, p| (p.x - 0.045).abs() < 0.01 && (p.y - f.p(asis).y).abs() < 0.015 && f.back(v),
+        |p| -p.z,
+    )?;
+    left.push(("PSIS", psis));
+    // Levels on the back as fractions of the Cervicale → PSIS height (Ernst et al. 2013: the
+    // spinous process of T10 at 54 %, of L4 at 86 %). The 10th rib joins the spine at T10; the
+    // top of the iliac crest is level with L4 (Tuffier's line).
+    let (y_c7, y_psis) = (f.p(cervicale).y, f.p(psis).y);
+    let y_t10 = y_c7 - 0.541 * (y_c7 - y_psis);
     mid.push((
         "10th Rib Midspine",
         f.best(
             "10th Rib Midspine",
-            |v, p| p.x.abs() < MIDLINE && f.back(v) && (p.y - f.p(rib).y).abs() < 0.02,
-            |p| -(p.y - f.p(rib).y).abs(),
+            |v, p| back_mid(v, p) && (p.y - y_t10).abs() < 0.02,
+            |p| -(p.y - y_t10).abs(),
         )?,
     ));
-    let hip = f.j("upperleg01.L____head")?;
-    let asis = f.best(
-        "Lt. ASIS",
-        |_, p| p.x > 0.07 && p.x < 0.11 && p.y > hip.y + 0.03 && p.y < hip.y + 0.07,
-        |p| p.z,
-    )?;
-    left.push(("ASIS", asis));
-    let y_ilio = f.p(asis).y + 0.04;
+    let y_ilio = y_c7 - 0.861 * (y_c7 - y_psis);
     let ilio = f.best(
         "Lt. Iliocristale",
         |v, p| p.x > 0.0 && (p.y - y_ilio).abs() < 0.006 && f.arm_weight(v) < 0.05,
         |p| p.x,
     )?;
     left.push(("Iliocristale", ilio));
-    // Greater trochanter: lateral-most relative to the thigh axis, level with the hip joint.
-    let knee = f.j("lowerleg01.L____head")?;
-    let a_thigh = (knee - hip).normalize();
-    let lat_thigh = perp(x, &a_thigh);
-    f.push_left(
-        &mut left,
-        "Trochanterion",
-        |v, p| {
-            p.x > 0.0 && (-0.01..0.03).contains(&(p - hip).dot(&a_thigh)) && f.arm_weight(v) < 0.05
-        },
-        |p| p.coords.dot(&lat_thigh),
-    )?;
-
-    // Torso, back.
-    let neck = f.j("neck01____head")?;
-    mid.push((
-        "Cervicale",
-        f.best(
-            "Cervicale",
-            |v, p| {
-                p.x.abs() < MIDLINE
-                    && f.back(v)
-                    && p.z < neck.z
-                    && p.y > neck.y - 0.04
-                    && p.y < neck.y + 0.02
-            },
-            |p| -p.z,
-        )?,
-    ));
-    f.push_left(
-        &mut left,
-        "PSIS",
-        |v, p| (p.x - 0.045).abs() < 0.01 && (p.y - f.p(asis).y).abs() < 0.008 && f.back(v),
-        |p| -p.z,
-    )?;
     let y_waist = narrowest_waist(&f, f.p(ilio).y, f.p(rib).y);
     mid.push((
         "Waist, Preferred, Post.",
