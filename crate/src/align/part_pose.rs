@@ -14,7 +14,7 @@
 
 use nalgebra::Point3;
 
-use crate::landmarks::estimate::segments::{blend, dominant_part, parts};
+use crate::landmarks::estimate::segments::{blend, dominant_part, parts, PartPose};
 use crate::landmarks::LandmarkSet;
 use crate::mesh::similarity::{similarity, Similarity};
 use crate::template::Template;
@@ -89,7 +89,15 @@ pub fn pose_parts(
             (None, None) => global,
         };
     }
-    let posed = blend(&parts, &transforms, rest);
+    // Rigid at the body's scale: no stretch along a part's axis.
+    let poses: Vec<PartPose> = transforms
+        .into_iter()
+        .map(|transform| PartPose {
+            transform,
+            stretch: 1.0,
+        })
+        .collect();
+    let posed = blend(&parts, &poses, rest);
     let landmarks = template.landmarks_at(&posed);
     Some((posed, landmarks))
 }
