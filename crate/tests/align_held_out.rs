@@ -69,12 +69,14 @@ fn held_out_subjects_are_fitted_within_tolerance_by_both_presets() {
             assert!(f.p95_mm <= 19.0, "{}: p95 {} mm", preset.name(), f.p95_mm);
             assert!(f.max_mm <= 75.0, "{}: max {} mm", preset.name(), f.max_mm);
             if preset == Preset::Anchored {
-                // Here 5.71 / 15.0 / 50.8 and 6.22 / 17.7 / 55.9 mm (paper: 5.58 / 15.9 / 53.8 and
-                // 6.01 / 17.0 / 58.5 — these two stand arms down, where posing the arms costs
-                // 0.1–0.2 mm of mean; it pays on posed arms, next test).
+                // Here 5.76 / 15.7 / 50.8 and 6.25 / 18.1 / 59.4 mm (paper: 5.62 / 17.2 / 53.7 and
+                // 6.06 / 17.8 / 62.9 — these two stand arms down, where posing the arms costs
+                // 0.1–0.2 mm of mean; it pays on posed arms, next test). The landmark definitions
+                // of 2026-11-24 (Cervicale, 10th Rib Midspine, ASIS, Iliocristale) moved the worst
+                // vertex of subject 1 from 55.9 to 59.4 mm (paper 58.5 to 62.9).
                 assert!(f.mean_mm <= 6.4, "anchored: mean {} mm", f.mean_mm);
                 assert!(f.p95_mm <= 18.5, "anchored: p95 {} mm", f.p95_mm);
-                assert!(f.max_mm <= 58.0, "anchored: max {} mm", f.max_mm);
+                assert!(f.max_mm <= 60.5, "anchored: max {} mm", f.max_mm);
             }
             let parts: Vec<&str> = c.parts.iter().map(|p| p.part).collect();
             assert_eq!(parts, ["head", "torso", "arms", "hands", "legs", "feet"]);
