@@ -20,7 +20,6 @@
 //! 5. The manikins' population model: the sampled bodies' covariance against the linear map from
 //!    scores (J·Jᵀ at the mean body).
 
-use bodyspace::cli::model::template_identity;
 use bodyspace::measure::{upright, BodyMeasurer, Kind, Measure, MeasureParams, Measurements};
 use bodyspace::mesh::similarity::similarity;
 use bodyspace::pca::boundary_manikins::{boundary_manikins, ManikinParams};
@@ -29,7 +28,7 @@ use bodyspace::pca::measurement_distribution::{
     measurement_distribution, DistributionParams, MeasurementDistribution,
 };
 use bodyspace::pca::random::NormalRng;
-use bodyspace::pca::{build_body_model, BodyModel, BuildParams, TrainingSet};
+use bodyspace::pca::{build_body_model, BodyModel, BuildParams, TemplateIdentity, TrainingSet};
 use bodyspace::synth::subject::{fit_height, shape_and_pose};
 use bodyspace::synth::{subject_rng, MakeHumanData, PopulationProfile};
 use bodyspace::template::{Resolution, Segment, Template};
@@ -123,7 +122,7 @@ fn main() {
         })
         .collect();
     let set = TrainingSet {
-        template: template_identity(&template),
+        template: TemplateIdentity::of_template(&template),
         triangles: template.mesh().triangles.clone(),
         segment_weights: template.segment_weight_table().to_vec(),
         names: (0..train).map(|i| format!("tuning_{i:03}")).collect(),
