@@ -8,7 +8,7 @@
 //!   positions, triangles, normals, summary), `parseLandmarks`, `pairSubjectFiles`;
 //! * `template.rs`: `loadTemplate` ([`TemplateHandle`]);
 //! * `align.rs`: `alignDefaults`, [`ScanWithLandmarks`], `rbfWarp`, `alignScan`, `exportMesh`;
-//! * `landmarks.rs`: `estimateLandmarks` ([`LandmarkEstimate`]), `flagSuspicious`;
+//! * `landmarks.rs`: `estimateLandmarks` ([`LandmarkEstimate`]), `checkLandmarks`;
 //! * `landmark_export.rs`: `writeLandmarks` (`.lnd`, CSV or JSON);
 //! * `model.rs`: `loadShapeModel` ([`ShapeSpace`]); `model_build.rs`: `buildShapeModel`;
 //!   `statismo.rs`: [`StatismoArrays`], `loadStatismoModel`, `ShapeSpace.statismoArrays`;
@@ -25,7 +25,7 @@ pub use align::{
     align_defaults, align_scan_js, export_mesh, rbf_warp_js, AlignOutcome, ScanWithLandmarks,
 };
 pub use landmark_export::write_landmarks;
-pub use landmarks::{estimate_landmarks_js, flag_suspicious_js, LandmarkEstimate};
+pub use landmarks::{check_landmarks_js, estimate_landmarks_js, LandmarkEstimate};
 pub use template::{load_template, TemplateHandle};
 
 use js_sys::{Float32Array, Uint32Array};

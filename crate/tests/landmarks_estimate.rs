@@ -12,7 +12,7 @@ use std::process::Command;
 
 use bodyspace::io::{read_landmarks, write_landmarks_csv, write_ply};
 use bodyspace::landmarks::estimate::{
-    estimate_landmarks, flag_given, given_landmarks, EstimateInput, EstimateParams,
+    estimate_landmarks, flag_given, given_landmarks, landmark_rest, EstimateInput, EstimateParams,
     LandmarkEstimate, SuspicionKind,
 };
 use bodyspace::landmarks::{LandmarkSet, CAESAR_LANDMARKS};
@@ -160,14 +160,8 @@ fn given_landmarks_are_never_moved_and_a_swapped_pair_and_a_typo_are_flagged() {
     wrong.landmarks[sellion].position.z += 300.0;
     // An edit re-checked against the partial estimate's prediction, without a fit: the same
     // three are flagged.
-    let rest = &template.mesh().positions;
-    let landmark_rest: Vec<_> = template
-        .landmark_vertices()
-        .iter()
-        .map(|(_, v)| rest[*v as usize])
-        .collect();
     let mut rechecked: Vec<String> = flag_given(
-        &landmark_rest,
+        &landmark_rest(&template),
         &e.part,
         &given_landmarks(&wrong),
         &e.predicted,

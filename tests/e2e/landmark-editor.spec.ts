@@ -223,6 +223,17 @@ test('a partial file of 10 landmarks is filled in by the estimate and never move
   await expect(page.getByTestId('landmark-list').locator('li[data-state="absent"]')).toHaveCount(2);
   await expect(body(page)).toHaveAttribute('data-suspicious-state', 'done', { timeout: 120_000 });
   await expect(body(page)).toHaveAttribute('data-estimate-state', 'none');
+  await expect(page.getByTestId('landmarks-suspicious-none')).toBeVisible();
+  // The right acromion clicked next to the left one: the edit is checked against the first check's
+  // prediction and flagged, with its distance; the set is not filled in.
+  const left = await pickMarker(page, 'Lt. Acromion');
+  await row(page, 'Rt. Acromion').click();
+  await page.mouse.click(left.x, left.y + 12);
+  await expect(row(page, 'Rt. Acromion')).toHaveAttribute('data-state', 'edited');
+  const flagged = page.getByTestId('landmarks-suspicious').locator('li[data-name="Rt. Acromion"]');
+  await expect(flagged).toBeVisible({ timeout: 60_000 });
+  expect(parseFloat((await flagged.locator('.distance').textContent())!)).toBeGreaterThan(200);
+  await expect(page.getByTestId('landmark-list').locator('li[data-state="absent"]')).toHaveCount(2);
 });
 
 test('the edited set survives a trap of the alignment worker and a failed landmark file', async ({ page }) => {

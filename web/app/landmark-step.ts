@@ -3,12 +3,13 @@
 // in the list and clicking on the scan to place it, dragging markers along the surface, marking
 // one absent, undo / redo (buttons, Ctrl+Z, Ctrl+Shift+Z), export by the core's writers. A scan
 // without landmarks gets the core's estimate, in a worker of its own (Cancel stops that worker
-// alone); the set is checked for suspicious landmarks there after every change. Every committed
+// alone); the set is checked for suspicious landmarks there after every change, against the
+// estimate's prediction (no new fit). Every committed
 // change is reported through `onEdited`, which invalidates the warp and the fit as a new landmark
 // file does.
 import { CancelledError, type CoreClient } from '../client/core-client';
 import { baseName } from '../shared/file-kind';
-import type { EstimateReport, LandmarkEntry, Point, SuspiciousLandmark } from '../shared/landmark-entry';
+import type { EstimateReport, LandmarkEntry, LandmarkPrediction, Point, SuspiciousLandmark } from '../shared/landmark-entry';
 import { METRES_PER_UNIT } from '../shared/results';
 import type { TemplateData } from '../shared/template-data';
 import { download } from '../ui/download';
@@ -32,6 +33,8 @@ export class LandmarkStep {
   private facts: LandmarkFacts | null = null;
   private estimate: EstimateView = { state: 'none' };
   private suspicious: SuspiciousLandmark[] | null = null;
+  /** The last estimate's prediction for this scan, with the scan scale it was made at. */
+  private prediction: (LandmarkPrediction & { scale: number }) | null = null;
   /** What the list shows before anything is loaded: every landmark absent. */
   private empty: LandmarkEdits | null = null;
   /** A check for suspicious landmarks is running / another is wanted after it. */
@@ -92,6 +95,7 @@ export class LandmarkStep {
     if (this.estimator.busy) this.estimator.cancel();
     this.selected = null;
     this.suspicious = null;
+    this.prediction = null;
     this.estimate = { state: 'none' };
   }
 
@@ -132,6 +136,7 @@ export class LandmarkStep {
       if (!current()) return;
       edits.fillEstimate(result.names, result.positions, result.confidence, result.given);
       this.suspicious = result.report.flagged;
+      this.prediction = { ...result.prediction, scale: this.session.scanScale };
       this.estimate = { state: 'done', assumed: this.assumed(result.report), seconds: result.workerMs / 1000 };
       document.body.dataset.estimateWorkerMs = result.workerMs.toFixed(0);
       this.showMarkers();
@@ -170,13 +175,11 @@ export class LandmarkStep {
       return;
     }
     const edits = this.session.edits;
-    const input = scanInput(this.session, 'base');
-    if (!edits || !input) return;
+    if (!edits) return;
     this.checking = true;
     const data = document.body.dataset;
     data.suspiciousState = 'checking';
-    this.estimator
-      .call({ type: 'flagSuspicious', scan: input }, { transfer: scanTransfer(input) })
+    this.suspiciousIn(edits)
       .then((list) => {
         if (this.session.edits !== edits) return;
         this.suspicious = list;
@@ -197,6 +200,29 @@ export class LandmarkStep {
           this.check();
         }
       });
+  }
+
+  /**
+   * The suspicious landmarks of the set placed so far: against the last estimate's prediction
+   * (milliseconds); before any estimate of this scan (a nearly full file), a landmark-free fit of the
+   * scan finds them (seconds) and its prediction is kept for the checks after it.
+   */
+  private async suspiciousIn(edits: LandmarkEdits): Promise<SuspiciousLandmark[]> {
+    const set = edits.placed();
+    const prediction = this.prediction;
+    if (prediction) {
+      const k = this.session.scanScale / prediction.scale;
+      const positions = k === 1 ? prediction.positions.slice() : prediction.positions.map((v) => v * k);
+      return this.estimator.call(
+        { type: 'checkLandmarks', names: set.names, positions: set.positions.slice(), prediction: { positions, parts: prediction.parts.slice() } },
+      );
+    }
+    const input = scanInput(this.session, 'base');
+    if (!input) return [];
+    const generation = this.generation;
+    const fit = await this.estimator.call({ type: 'estimateLandmarks', scan: input }, { transfer: scanTransfer(input) });
+    if (generation === this.generation) this.prediction = { ...fit.prediction, scale: this.session.scanScale };
+    return fit.report.flagged;
   }
 
   /** Shows the set with the landmark file's `facts` (null without a file). */
@@ -280,8 +306,8 @@ export class LandmarkStep {
   }
 
   /**
-   * Checks the set once the edits pause for `CHECK_DELAY_MS`: the check fits the template to the
-   * scan (seconds in the worker), too much to run on every click of a burst.
+   * Checks the set once the edits pause for `CHECK_DELAY_MS`, so a burst of clicks is checked once
+   * (the first check of a scan without an estimate fits the template to it: seconds).
    */
   private scheduleCheck(): void {
     if (this.checkTimer !== null) clearTimeout(this.checkTimer);

@@ -39,6 +39,16 @@ export interface EstimateReport {
 }
 
 /** A landmark estimate as the worker returns it: the 73 CAESAR landmarks in file order. */
+/**
+ * The estimate's own prediction of the 73 landmarks, which `checkLandmarks` checks an edited set
+ * against without a new fit: positions `73·3` (metres, the frame the scan was sent in) and the rigid
+ * part of the fit each belongs to.
+ */
+export interface LandmarkPrediction {
+  positions: Float64Array;
+  parts: Uint32Array;
+}
+
 export interface LandmarkEstimate {
   names: string[];
   /** `73·3` metres, the frame the scan was sent in; NaN where nothing was placed. */
@@ -47,6 +57,8 @@ export interface LandmarkEstimate {
   confidence: Float64Array;
   /** `73` flags: 1 = kept as given. */
   given: Uint8Array;
+  /** Where the landmark-free part fit puts each landmark: what an edited set is checked against. */
+  prediction: LandmarkPrediction;
   report: EstimateReport;
   /** The whole call in the worker. */
   workerMs: number;

@@ -1,6 +1,6 @@
 // Messages between the UI thread and the core worker. No DOM here: shared by both threads.
 import type { AlignDefaults, AlignParams, AlignProgress, AlignResult, ScanInput, WarpResult } from './align-types';
-import type { LandmarkEstimate, SuspiciousLandmark } from './landmark-entry';
+import type { LandmarkEstimate, LandmarkPrediction, SuspiciousLandmark } from './landmark-entry';
 import type { ParsedLandmarks, ParsedScan, SubjectPairing } from './results';
 import type { TemplateData, TemplateResolution } from './template-data';
 import type { FoundBody, ManikinDefaults, ManikinSet, MeasurementDistribution, Targets } from './anthropometry';
@@ -23,8 +23,8 @@ export type CoreRequestBody =
   | { type: 'align'; scan: ScanInput; params: AlignParams }
   /** The 73 CAESAR landmarks of a scan with a partial or empty set (kept as given); replies with progress. */
   | { type: 'estimateLandmarks'; scan: ScanInput }
-  /** The suspicious landmarks of the scan's set. */
-  | { type: 'flagSuspicious'; scan: ScanInput }
+  /** The suspicious landmarks of a set (`positions` `#names·3`, metres) against an estimate's prediction. */
+  | { type: 'checkLandmarks'; names: string[]; positions: Float64Array; prediction: LandmarkPrediction }
   | { type: 'exportMesh'; positions: Float32Array; triangles: Uint32Array; format: 'ply' | 'obj' }
   /**
    * A landmark set as a file by the core's writer of `format`: `names` with `positions` (`#L·3`,
@@ -80,7 +80,7 @@ export interface CoreResults {
   rbfWarp: WarpResult;
   align: AlignResult;
   estimateLandmarks: LandmarkEstimate;
-  flagSuspicious: SuspiciousLandmark[];
+  checkLandmarks: SuspiciousLandmark[];
   exportMesh: Uint8Array;
   writeLandmarks: Uint8Array;
   loadModel: LoadedModel;

@@ -5,7 +5,7 @@ import type { AlignResult } from '../shared/align-types';
 import type { CoreReply, CoreRequest } from '../shared/messages';
 import type { MeshSummary, ParsedLandmarks, ParsedScan, SubjectPairing } from '../shared/results';
 import { runAlign, runAlignDefaults, runExport, runRbfWarp } from './align-handlers';
-import { runEstimate, runFlagSuspicious } from './landmark-handlers';
+import { runCheck, runEstimate } from './landmark-handlers';
 import { templateData, templateTransfer } from './template-handlers';
 import * as models from './model-handlers';
 
@@ -98,11 +98,12 @@ self.onmessage = async (event: MessageEvent<CoreRequest>) => {
         const id = request.id;
         post({ id, type: 'progress', fraction: 0, label: 'Estimating the landmarks: finding the frame' });
         const estimate = runEstimate(request.scan, (fraction, label) => post({ id, type: 'progress', fraction, label }));
-        post({ id, type: 'result', result: estimate }, [estimate.positions.buffer, estimate.confidence.buffer, estimate.given.buffer]);
+        const transfer = [estimate.positions.buffer, estimate.confidence.buffer, estimate.given.buffer, estimate.prediction.positions.buffer, estimate.prediction.parts.buffer];
+        post({ id, type: 'result', result: estimate }, transfer);
         break;
       }
-      case 'flagSuspicious':
-        post({ id: request.id, type: 'result', result: runFlagSuspicious(request.scan) });
+      case 'checkLandmarks':
+        post({ id: request.id, type: 'result', result: runCheck(request.names, request.positions, request.prediction) });
         break;
       case 'exportMesh': {
         const bytes = runExport(request.positions, request.triangles, request.format);

@@ -1,8 +1,8 @@
-// The landmark estimate and the check for suspicious landmarks in the worker, both the core's.
-// Progress goes out after every iteration of the estimate.
-import { estimateLandmarks, flagSuspicious } from '../pkg/bodyspace.js';
+// The landmark estimate and the check of an edited set for suspicious landmarks in the worker, both
+// the core's. Progress goes out after every iteration of the estimate; the check needs no fit.
+import { checkLandmarks, estimateLandmarks } from '../pkg/bodyspace.js';
 import type { AlignProgress, ScanInput } from '../shared/align-types';
-import type { EstimateReport, LandmarkEstimate, SuspiciousLandmark } from '../shared/landmark-entry';
+import type { EstimateReport, LandmarkEstimate, LandmarkPrediction, SuspiciousLandmark } from '../shared/landmark-entry';
 import { withScan } from './align-handlers';
 import { templateHandle } from './template-handlers';
 
@@ -20,6 +20,7 @@ export function runEstimate(scan: ScanInput, onProgress: (fraction: number, labe
       positions: estimate.positions(),
       confidence: estimate.confidence(),
       given: estimate.given(),
+      prediction: { positions: estimate.predicted(), parts: estimate.parts() },
       report: JSON.parse(estimate.reportJson()) as EstimateReport,
       workerMs: performance.now() - t0,
     };
@@ -28,6 +29,8 @@ export function runEstimate(scan: ScanInput, onProgress: (fraction: number, labe
   }
 }
 
-export function runFlagSuspicious(scan: ScanInput): SuspiciousLandmark[] {
-  return JSON.parse(withScan(scan, (input) => flagSuspicious(input))) as SuspiciousLandmark[];
+/** The suspicious landmarks of `names` / `positions` (metres) against an estimate's `prediction`. */
+export function runCheck(names: string[], positions: Float64Array, prediction: LandmarkPrediction): SuspiciousLandmark[] {
+  const json = checkLandmarks(templateHandle('base'), names.join('\n'), positions, prediction.positions, prediction.parts);
+  return JSON.parse(json) as SuspiciousLandmark[];
 }

@@ -279,7 +279,7 @@ pub(super) fn landmark_names<'a>(
     Ok(names)
 }
 
-fn scan_landmarks(names: &str, positions: &[f64]) -> Result<LandmarkSet, JsError> {
+pub(super) fn scan_landmarks(names: &str, positions: &[f64]) -> Result<LandmarkSet, JsError> {
     let names = landmark_names(names, positions, "landmarks").map_err(|e| JsError::new(&e))?;
     let landmarks = names
         .iter()

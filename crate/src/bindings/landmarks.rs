@@ -1,19 +1,23 @@
-//! `estimateLandmarks` and `flagSuspicious`: the core's landmark estimate
+//! `estimateLandmarks` and `checkLandmarks`: the core's landmark estimate
 //! ([`crate::landmarks::estimate::estimate_landmarks`]) on a scan sent from the page, which may
-//! carry a partial or empty landmark set. Everything crosses in metres (the page scales the scan
-//! before making the `ScanWithLandmarks`); positions come back in the same frame and units.
+//! carry a partial or empty landmark set, and the check of an edited set against the last
+//! estimate's prediction ([`crate::landmarks::estimate::flag_given`], no fit). Everything crosses
+//! in metres (the page scales the scan before making the `ScanWithLandmarks`); positions come
+//! back in the same frame and units.
 
-use js_sys::{Float64Array, Function, Uint8Array};
+use js_sys::{Float64Array, Function, Uint32Array, Uint8Array};
+use nalgebra::Point3;
 use wasm_bindgen::prelude::*;
 
-use super::align::{JsObserver, ScanWithLandmarks};
+use super::align::{scan_landmarks, JsObserver, ScanWithLandmarks};
 use super::template::TemplateHandle;
 use crate::landmarks::estimate::{
-    estimate_landmarks, EstimateInput, EstimateParams, LandmarkEstimate as Estimate,
+    estimate_landmarks, flag_given, given_landmarks, landmark_rest, EstimateInput, EstimateParams,
+    LandmarkEstimate as Estimate,
 };
 use crate::landmarks::CAESAR_LANDMARKS;
 use crate::mesh::units::Units;
-use crate::template::Template;
+use crate::template::{Resolution, Template};
 
 /// The 73 landmarks of a scan, CAESAR order.
 #[wasm_bindgen]
@@ -21,6 +25,8 @@ pub struct LandmarkEstimate {
     positions: Vec<f64>,
     confidence: Vec<f64>,
     given: Vec<u8>,
+    predicted: Vec<f64>,
+    parts: Vec<u32>,
     report: String,
 }
 
@@ -45,6 +51,16 @@ impl LandmarkEstimate {
     pub fn given(&self) -> Uint8Array {
         Uint8Array::from(self.given.as_slice())
     }
+    /// `73·3` positions (metres, the scan's frame) where the landmark-free part fit puts each
+    /// landmark: with [`LandmarkEstimate::parts`], what `checkLandmarks` checks an edited set
+    /// against.
+    pub fn predicted(&self) -> Float64Array {
+        Float64Array::from(self.predicted.as_slice())
+    }
+    /// `73` part indices: the rigid part of the fit each landmark belongs to.
+    pub fn parts(&self) -> Uint32Array {
+        Uint32Array::from(self.parts.as_slice())
+    }
     /// The core's `EstimateReport` as JSON: frame and units assumed, candidates, per-landmark
     /// confidence, flagged landmarks with distance (mm) and suggestion, times (ms).
     #[wasm_bindgen(js_name = reportJson)]
@@ -62,7 +78,7 @@ pub fn estimate_landmarks_js(
     scan: &ScanWithLandmarks,
     on_progress: &Function,
 ) -> Result<LandmarkEstimate, JsError> {
-    let estimate = run(&template.template, scan, Some(on_progress))?;
+    let estimate = run(&template.template, scan, on_progress)?;
     Ok(LandmarkEstimate {
         positions: estimate
             .positions
@@ -71,27 +87,64 @@ pub fn estimate_landmarks_js(
             .collect(),
         confidence: estimate.confidence.clone(),
         given: estimate.given.iter().map(|&g| g as u8).collect(),
+        predicted: estimate
+            .predicted
+            .iter()
+            .flat_map(|p| [p.x, p.y, p.z])
+            .collect(),
+        parts: estimate.part.iter().map(|&p| p as u32).collect(),
         report: serde_json::to_string(&estimate.report)
             .map_err(|e| JsError::new(&e.to_string()))?,
     })
 }
 
-/// The suspicious landmarks of a set the user placed or edited, as JSON: a list of
-/// `{name, distance_mm, kind, suggestion, expected}` (`kind`: swapped, coordinate,
-/// other_landmark, far; `expected` in metres, the scan's frame). Fits the embedded base
-/// template to the scan without the landmarks and compares.
-#[wasm_bindgen(js_name = flagSuspicious)]
-pub fn flag_suspicious_js(scan: &ScanWithLandmarks) -> Result<String, JsError> {
-    let template =
-        Template::embedded().map_err(|e| JsError::new(&format!("embedded template: {e}")))?;
-    let estimate = run(&template, scan, None)?;
-    serde_json::to_string(&estimate.report.flagged).map_err(|e| JsError::new(&e.to_string()))
+/// The suspicious landmarks of a set the user placed or edited (`landmark_names` one per line,
+/// `landmark_positions` `#L·3` metres), checked against the prediction of the last estimate on the
+/// same scan (`predicted` `73·3` metres, `parts` `73`, from [`LandmarkEstimate`]): no fit, so it
+/// can run after every edit. JSON: a list of `{name, distance_mm, kind, suggestion, expected}`
+/// (`kind`: swapped, coordinate, other_landmark, far; `expected` in metres, the scan's frame).
+/// `template` is the base template the estimate fitted.
+#[wasm_bindgen(js_name = checkLandmarks)]
+pub fn check_landmarks_js(
+    template: &TemplateHandle,
+    landmark_names: &str,
+    landmark_positions: &[f64],
+    predicted: &[f64],
+    parts: &[u32],
+) -> Result<String, JsError> {
+    let n = CAESAR_LANDMARKS.len();
+    if predicted.len() != 3 * n || parts.len() != n {
+        return Err(JsError::new(&format!(
+            "the prediction has {} values and {} parts; the estimate gives {} and {n}",
+            predicted.len(),
+            parts.len(),
+            3 * n
+        )));
+    }
+    if template.template.resolution() != Resolution::Base {
+        return Err(JsError::new("checkLandmarks takes the base template"));
+    }
+    let set = scan_landmarks(landmark_names, landmark_positions)?;
+    let predicted: Vec<Point3<f64>> = predicted
+        .chunks_exact(3)
+        .map(|p| Point3::new(p[0], p[1], p[2]))
+        .collect();
+    let parts: Vec<usize> = parts.iter().map(|&p| p as usize).collect();
+    let flagged = flag_given(
+        &landmark_rest(&template.template),
+        &parts,
+        &given_landmarks(&set),
+        &predicted,
+        &EstimateParams::default(),
+        1.0,
+    );
+    serde_json::to_string(&flagged).map_err(|e| JsError::new(&e.to_string()))
 }
 
 fn run(
     template: &Template,
     scan: &ScanWithLandmarks,
-    on_progress: Option<&Function>,
+    on_progress: &Function,
 ) -> Result<Estimate, JsError> {
     let input = EstimateInput {
         template,
@@ -99,17 +152,10 @@ fn run(
         given: &scan.landmarks,
         units: Some(Units::Metres),
     };
-    let params = EstimateParams::default();
-    let result = match on_progress {
-        Some(on_progress) => estimate_landmarks(
-            &input,
-            &params,
-            &mut JsObserver {
-                on_progress,
-                on_round: None,
-            },
-        ),
-        None => estimate_landmarks(&input, &params, &mut ()),
+    let mut observer = JsObserver {
+        on_progress,
+        on_round: None,
     };
-    result.map_err(|e| JsError::new(&e.to_string()))
+    estimate_landmarks(&input, &EstimateParams::default(), &mut observer)
+        .map_err(|e| JsError::new(&e.to_string()))
 }

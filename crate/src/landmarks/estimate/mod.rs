@@ -32,5 +32,7 @@ pub use error::EstimateError;
 pub use frame::FrameReport;
 pub use params::EstimateParams;
 pub use report::EstimateReport;
-pub use steps::{estimate_landmarks, flag_given, given_landmarks, EstimateInput, LandmarkEstimate};
+pub use steps::{
+    estimate_landmarks, flag_given, given_landmarks, landmark_rest, EstimateInput, LandmarkEstimate,
+};
 pub use suspicious::{flag_suspicious, SuspicionKind, SuspiciousLandmark};

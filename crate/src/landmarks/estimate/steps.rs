@@ -197,10 +197,7 @@ pub fn estimate_landmarks(
         .iter()
         .map(|&v| posed[v as usize] / to_m)
         .collect();
-    let landmark_rest: Vec<Point3<f64>> = landmark_vertices
-        .iter()
-        .map(|&v| rest[v as usize])
-        .collect();
+    let landmark_rest = landmark_rest(&template);
     let landmark_part: Vec<usize> = landmark_vertices
         .iter()
         .map(|&v| dominant_part(&parts, v))
@@ -348,6 +345,17 @@ pub fn flag_given(
         .copied()
         .collect();
     flag(&trusted)
+}
+
+/// The template's landmark vertices at rest, CAESAR order: what [`flag_given`] predicts the
+/// given landmarks from (`template` at base resolution, as the estimate fits it).
+pub fn landmark_rest(template: &Template) -> Vec<Point3<f64>> {
+    let rest = &template.mesh().positions;
+    template
+        .landmark_vertices()
+        .iter()
+        .map(|(_, v)| rest[*v as usize])
+        .collect()
 }
 
 /// The given landmarks that are CAESAR landmarks, as (CAESAR index, position), first of each
