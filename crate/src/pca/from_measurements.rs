@@ -25,7 +25,7 @@ use serde::Serialize;
 /// Parameters of [`body_from_measurements`], with their defaults.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct FromMeasurementsParams {
-    /// Gauss–Newton iterations (each a step tried) at most; default 12.
+    /// Gauss–Newton iterations (each a step tried) at most; default 16.
     pub max_iterations: usize,
     /// Forward-difference step in σ units; default 0.05.
     pub step: f64,
@@ -42,7 +42,7 @@ pub struct FromMeasurementsParams {
 impl Default for FromMeasurementsParams {
     fn default() -> Self {
         Self {
-            max_iterations: 12,
+            max_iterations: 16,
             step: 0.05,
             regularisation: 1e-4,
             length_tolerance: 0.002,
@@ -217,10 +217,13 @@ pub(crate) fn solve(
     // cost; raised when a step raises it or makes a body that cannot be measured (targets no body
     // of the model has, e.g. a held-out subject's 19 values), lowered again after a success.
     let mut damping = 0.0;
-    let mut jacobian: Option<DMatrix<f64>> = None;
+    // The Jacobian by forward differences (one body measured per mode) only at the start and
+    // after a failed step; a successful step updates it by Broyden's rank-one rule, since the
+    // measurements are close to linear in z. `fresh`: made by differences at the current z.
+    let mut jacobian: Option<(DMatrix<f64>, bool)> = None;
     while iterations < params.max_iterations && !done(&values) {
         iterations += 1;
-        let j = match jacobian.take() {
+        let (j, fresh) = match jacobian.take() {
             Some(j) => j,
             None => {
                 let mut j = DMatrix::zeros(targets.len(), modes);
@@ -235,7 +238,7 @@ pub(crate) fn solve(
                         }
                     }
                 }
-                j
+                (j, true)
             }
         };
         let zv = DVector::from_vec(z.clone());
@@ -252,15 +255,26 @@ pub(crate) fn solve(
         match measure(&trial) {
             Ok(m) if cost(&m, &next) < current => {
                 current = cost(&m, &next);
+                let dz = &next - &zv;
+                let predicted = &j * &dz;
+                let moved = dz.norm_squared();
+                let broyden = if moved > 0.0 {
+                    j + (&m - &values - predicted) * dz.transpose() / moved
+                } else {
+                    j
+                };
+                jacobian = Some((broyden, false));
                 z = next.iter().copied().collect();
                 positions = trial;
                 values = m;
                 damping /= 10.0;
             }
+            // An updated Jacobian may be what failed: the step is tried again from a fresh one.
+            _ if !fresh => jacobian = None,
             _ => {
                 let scale = (wj.transpose() * &wj).trace() / modes as f64;
                 damping = (10.0 * damping).max(1e-2 * scale);
-                jacobian = Some(j);
+                jacobian = Some((j, true));
             }
         }
     }
