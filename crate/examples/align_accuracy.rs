@@ -10,7 +10,7 @@
 //!  [--preset paper|anchored (first: later options change it)] [--quiet]
 //!  [--export DIR] [--first K] [--resolution fine [--fine-max-iterations N]
 //!  [--fine-iterations-per-round N] [--fine-anneal INIT:DECAY] [--fine-displacement-tolerance M]
-//!  [--fine-memory M]]`
+//!  [--fine-memory M] [--fine-tangential-weight W]]`
 //!
 //! DIR holds `scan_XXX.ply`, `landmarks_XXX.lnd` and `truth_XXX.ply` (the `base` template's
 //! vertices on the subject, scan frame and units). Prints per subject and the mean: scan→template
@@ -90,6 +90,9 @@ mod native {
                 }
                 "--fine-displacement-tolerance" => {
                     fine_stage(&mut options, &flag)?.displacement_tolerance = num()?
+                }
+                "--fine-tangential-weight" => {
+                    fine_stage(&mut options, &flag)?.tangential_weight = num()?
                 }
                 "--fine-memory" => fine_stage(&mut options, &flag)?.lbfgs_memory = num()? as usize,
                 "--fine-anneal" => {
