@@ -5,7 +5,7 @@
 //!  [--lambda L] [--a A] [--b B] [--max-iterations N] [--iterations-per-round N] [--anneal INIT:DECAY]
 //!  [--relative-tolerance T] [--displacement-tolerance M] [--landmark-weight W] [--scan-term W]
 //!  [--scan-term-samples N] [--scan-term-from STIFFNESS] [--scan-term-max-distance M]
-//!  [--skip-boundary-matches 0|1] [--tangential-weight W] [--sole-weight W] [--follow 0|1]
+//!  [--skip-boundary-matches 0|1] [--max-match-distance M] [--tangential-weight W] [--sole-weight W] [--follow 0|1]
 //!  [--virtual-landmarks 0|1] [--pose-parts 0|1]
 //!  [--preset paper|anchored (first: later options change it)] [--quiet]
 //!  [--export DIR] [--first K] [--resolution fine [--fine-max-iterations N]
@@ -121,6 +121,7 @@ mod native {
                 "--skip-boundary-matches" => {
                     options.params.fine.skip_boundary_matches = num()? != 0.0
                 }
+                "--max-match-distance" => options.params.fine.max_match_distance = num()?,
                 "--tangential-weight" => options.params.fine.tangential_weight = num()?,
                 "--sole-weight" => options.params.fine.sole_weight = num()?,
                 "--pose-parts" => options.params.pose_parts = num()? != 0.0,

@@ -289,7 +289,9 @@ pub enum Preset {
     Paper,
     /// `paper` plus what issue 12 kept: head and arms posed to the scan's landmarks before the
     /// RBF warp (`pose_parts`), the tangential term (weight 0.1) holding vertices along the
-    /// RBF-warped surface, never-scanned regions following their neighbours, b = 0.1. Lower
+    /// RBF-warped surface, never-scanned regions following their neighbours, b = 0.1, no match
+    /// farther than 20 mm (a vertex the scanner never saw, e.g. under the chin, is not pulled
+    /// across the gap to the neck). Lower
     /// mean, 95th percentile and largest correspondence errors on the held-out population
     /// (docs/benchmarks.md, "Held-out population").
     Anchored,
@@ -323,6 +325,7 @@ impl Preset {
                     b: 0.1,
                     tangential_weight: 0.1,
                     unseen_follow_neighbours: true,
+                    max_match_distance: 0.02,
                     ..paper.fine
                 },
                 ..paper
