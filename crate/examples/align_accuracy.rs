@@ -27,12 +27,17 @@
 //! subdivision (`idx_ms` stays the scan index) and fine stage. `--first K` starts at subject K.
 
 #[cfg(not(target_arch = "wasm32"))]
+#[path = "support/subject_files.rs"]
+mod subject_files;
+
+#[cfg(not(target_arch = "wasm32"))]
 mod native {
+    use super::subject_files::{read_subject, SubjectFiles};
     use bodyspace::align::{
         align_scan, landmark_anchors, scan_to_template_distances, AlignInput, AlignParams,
         DistanceStats, Preset, SurfaceIndex,
     };
-    use bodyspace::io::{read_landmarks, read_scan, write_ply};
+    use bodyspace::io::write_ply;
     use bodyspace::mesh::Mesh;
     use bodyspace::rbf::Kernel;
     use bodyspace::template::{BodyPart, Resolution, Segment, Template};
@@ -161,12 +166,6 @@ mod native {
         }
     }
 
-    fn read_mesh(path: &Path) -> Result<Mesh, String> {
-        let name = path.display().to_string();
-        let bytes = std::fs::read(path).map_err(|e| format!("{name}: {e}"))?;
-        read_scan(&bytes, &name).map_err(|e| e.to_string())
-    }
-
     /// One subject's figures; lengths in mm, times in ms.
     #[derive(Default, Clone)]
     struct Row {
@@ -197,13 +196,11 @@ mod native {
         base: &Template,
         id: usize,
     ) -> Result<Row, String> {
-        let file = |stem: &str, ext: &str| options.dir.join(format!("{stem}_{id:03}.{ext}"));
-        let scan = read_mesh(&file("scan", "ply"))?;
-        let truth = read_mesh(&file("truth", "ply"))?;
-        let lnd = file("landmarks", "lnd");
-        let bytes = std::fs::read(&lnd).map_err(|e| format!("{}: {e}", lnd.display()))?;
-        let landmarks =
-            read_landmarks(&bytes, &lnd.display().to_string()).map_err(|e| e.to_string())?;
+        let SubjectFiles {
+            scan,
+            truth,
+            landmarks,
+        } = read_subject(&options.dir, id)?;
         let input = AlignInput {
             template,
             base_template: Some(base),

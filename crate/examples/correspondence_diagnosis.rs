@@ -23,11 +23,15 @@
 //!    subject of this generator).
 
 #[cfg(not(target_arch = "wasm32"))]
+#[path = "support/subject_files.rs"]
+mod subject_files;
+
+#[cfg(not(target_arch = "wasm32"))]
 mod native {
+    use super::subject_files::{read_subject, SubjectFiles};
     use bodyspace::align::{
         align_scan, AlignInput, CorrespondenceMode, MatchQuery, Preset, SurfaceIndex,
     };
-    use bodyspace::io::{read_landmarks, read_scan};
     use bodyspace::mesh::normals::vertex_normals;
     use bodyspace::mesh::similarity::similarity;
     use bodyspace::mesh::Mesh;
@@ -44,12 +48,6 @@ mod native {
         truth_to_scan_mm: Vec<f64>,
     }
 
-    fn read_mesh(path: &Path) -> Result<Mesh, String> {
-        let name = path.display().to_string();
-        let bytes = std::fs::read(path).map_err(|e| format!("{name}: {e}"))?;
-        read_scan(&bytes, &name).map_err(|e| e.to_string())
-    }
-
     fn fit(
         dir: &Path,
         id: usize,
@@ -57,13 +55,11 @@ mod native {
         base: &Template,
         preset: Preset,
     ) -> Result<Fit, String> {
-        let file = |stem: &str, ext: &str| dir.join(format!("{stem}_{id:03}.{ext}"));
-        let scan = read_mesh(&file("scan", "ply"))?;
-        let truth = read_mesh(&file("truth", "ply"))?;
-        let lnd = file("landmarks", "lnd");
-        let bytes = std::fs::read(&lnd).map_err(|e| format!("{}: {e}", lnd.display()))?;
-        let landmarks =
-            read_landmarks(&bytes, &lnd.display().to_string()).map_err(|e| e.to_string())?;
+        let SubjectFiles {
+            scan,
+            truth,
+            landmarks,
+        } = read_subject(dir, id)?;
         let input = AlignInput {
             template,
             base_template: Some(base),
