@@ -221,8 +221,9 @@ fn positive_or_infinite(name: &'static str, value: f64) -> Result<(), AlignError
 /// stiffly it runs, and how strongly it holds vertices along the surface, differ. Defaults: no
 /// stiffness annealing (the base stage has done it), 2 iterations per round, at most 8
 /// iterations, stop when a round moves the surface by less than 0.1 mm RMS, L-BFGS memory 3 (the
-/// fine level has 16× the unknowns; memory 7 would hold ≈ 390 MB of correction pairs), tangential term 10 (vertices held along the carried base fit:
-/// the fine stage adds detail across the surface without sliding the base correspondence).
+/// fine level has 16× the unknowns; memory 7 would hold ≈ 390 MB of correction pairs),
+/// tangential term 10 (vertices held along the carried base fit: the fine stage adds detail
+/// across the surface without sliding the base correspondence).
 /// Measured in docs/fine-alignment.md, "Coarse to fine", and docs/benchmarks.md, "Held-out
 /// population".
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -291,9 +292,8 @@ pub enum Preset {
     /// RBF warp (`pose_parts`), the tangential term (weight 0.1) holding vertices along the
     /// RBF-warped surface, never-scanned regions following their neighbours, b = 0.1, no match
     /// farther than 20 mm (a vertex the scanner never saw, e.g. under the chin, is not pulled
-    /// across the gap to the neck). Lower
-    /// mean, 95th percentile and largest correspondence errors on the held-out population
-    /// (docs/benchmarks.md, "Held-out population").
+    /// across the gap to the neck). Lower mean, 95th percentile and largest correspondence errors
+    /// on the held-out population (docs/benchmarks.md, "Held-out population").
     Anchored,
 }
 
