@@ -5,12 +5,12 @@
 //!  [--lambda L] [--a A] [--b B] [--max-iterations N] [--iterations-per-round N] [--anneal INIT:DECAY]
 //!  [--relative-tolerance T] [--displacement-tolerance M] [--landmark-weight W] [--scan-term W]
 //!  [--scan-term-samples N] [--scan-term-from STIFFNESS] [--scan-term-max-distance M]
-//!  [--skip-boundary-matches 0|1] [--tangential-weight W] [--sole-weight W] [--follow 0|1]
+//!  [--skip-boundary-matches 0|1] [--max-match-distance M] [--tangential-weight W] [--sole-weight W] [--follow 0|1]
 //!  [--virtual-landmarks 0|1] [--pose-parts 0|1]
 //!  [--preset paper|anchored (first: later options change it)] [--quiet]
 //!  [--export DIR] [--first K] [--resolution fine [--fine-max-iterations N]
 //!  [--fine-iterations-per-round N] [--fine-anneal INIT:DECAY] [--fine-displacement-tolerance M]
-//!  [--fine-memory M]]`
+//!  [--fine-memory M] [--fine-tangential-weight W]]`
 //!
 //! DIR holds `scan_XXX.ply`, `landmarks_XXX.lnd` and `truth_XXX.ply` (the `base` template's
 //! vertices on the subject, scan frame and units). Prints per subject and the mean: scan→template
@@ -27,12 +27,17 @@
 //! subdivision (`idx_ms` stays the scan index) and fine stage. `--first K` starts at subject K.
 
 #[cfg(not(target_arch = "wasm32"))]
+#[path = "support/subject_files.rs"]
+mod subject_files;
+
+#[cfg(not(target_arch = "wasm32"))]
 mod native {
+    use super::subject_files::{read_subject, SubjectFiles};
     use bodyspace::align::{
         align_scan, landmark_anchors, scan_to_template_distances, AlignInput, AlignParams,
         DistanceStats, Preset, SurfaceIndex,
     };
-    use bodyspace::io::{read_landmarks, read_scan, write_ply};
+    use bodyspace::io::write_ply;
     use bodyspace::mesh::Mesh;
     use bodyspace::rbf::Kernel;
     use bodyspace::template::{BodyPart, Resolution, Segment, Template};
@@ -91,6 +96,9 @@ mod native {
                 "--fine-displacement-tolerance" => {
                     fine_stage(&mut options, &flag)?.displacement_tolerance = num()?
                 }
+                "--fine-tangential-weight" => {
+                    fine_stage(&mut options, &flag)?.tangential_weight = num()?
+                }
                 "--fine-memory" => fine_stage(&mut options, &flag)?.lbfgs_memory = num()? as usize,
                 "--fine-anneal" => {
                     let (init, decay) = value.split_once(':').ok_or("--fine-anneal INIT:DECAY")?;
@@ -118,6 +126,7 @@ mod native {
                 "--skip-boundary-matches" => {
                     options.params.fine.skip_boundary_matches = num()? != 0.0
                 }
+                "--max-match-distance" => options.params.fine.max_match_distance = num()?,
                 "--tangential-weight" => options.params.fine.tangential_weight = num()?,
                 "--sole-weight" => options.params.fine.sole_weight = num()?,
                 "--pose-parts" => options.params.pose_parts = num()? != 0.0,
@@ -157,12 +166,6 @@ mod native {
         }
     }
 
-    fn read_mesh(path: &Path) -> Result<Mesh, String> {
-        let name = path.display().to_string();
-        let bytes = std::fs::read(path).map_err(|e| format!("{name}: {e}"))?;
-        read_scan(&bytes, &name).map_err(|e| e.to_string())
-    }
-
     /// One subject's figures; lengths in mm, times in ms.
     #[derive(Default, Clone)]
     struct Row {
@@ -193,13 +196,11 @@ mod native {
         base: &Template,
         id: usize,
     ) -> Result<Row, String> {
-        let file = |stem: &str, ext: &str| options.dir.join(format!("{stem}_{id:03}.{ext}"));
-        let scan = read_mesh(&file("scan", "ply"))?;
-        let truth = read_mesh(&file("truth", "ply"))?;
-        let lnd = file("landmarks", "lnd");
-        let bytes = std::fs::read(&lnd).map_err(|e| format!("{}: {e}", lnd.display()))?;
-        let landmarks =
-            read_landmarks(&bytes, &lnd.display().to_string()).map_err(|e| e.to_string())?;
+        let SubjectFiles {
+            scan,
+            truth,
+            landmarks,
+        } = read_subject(&options.dir, id)?;
         let input = AlignInput {
             template,
             base_template: Some(base),

@@ -13,7 +13,7 @@ use std::sync::OnceLock;
 use bodyspace::align::{align_scan, AlignInput, AlignParams, CorrespondenceReport, Preset};
 use bodyspace::mesh::units::Units as ScanUnits;
 use bodyspace::synth::*;
-use bodyspace::template::Template;
+use bodyspace::template::{Resolution, Template};
 use synth_support::{base_template_and_data, subject_in_metres};
 
 fn data() -> &'static (MakeHumanData, Template) {
@@ -24,19 +24,30 @@ fn data() -> &'static (MakeHumanData, Template) {
     })
 }
 
-/// Subject `id` aligned with `params`: (scan→template RMS mm, correspondence report).
+/// Subject `id` aligned with `params` at `base`: (scan→template RMS mm, correspondence report).
 fn fit(id: SubjectId, params: &AlignParams) -> (f64, CorrespondenceReport) {
-    let (data, template) = data();
-    let (scan, landmarks, truth) = subject_in_metres(data, template, id, &id.profile.scanner());
+    fit_at(id, params, Resolution::Base)
+}
+
+/// Subject `id` aligned with `params` at `resolution` (coarse to fine at `fine`), the
+/// correspondence measured on the base vertices.
+fn fit_at(
+    id: SubjectId,
+    params: &AlignParams,
+    resolution: Resolution,
+) -> (f64, CorrespondenceReport) {
+    let (data, base) = data();
+    let (scan, landmarks, truth) = subject_in_metres(data, base, id, &id.profile.scanner());
+    let template = &base.at_resolution(resolution);
     let input = AlignInput {
         template,
-        base_template: None,
+        base_template: Some(base),
         scan: &scan,
         landmarks: &landmarks,
         units: Some(ScanUnits::Metres),
     };
     let mut result = align_scan(&input, params, &mut ()).unwrap();
-    result.compare_with_truth(template, &truth);
+    result.compare_with_truth(base, &truth);
     let rms = result.report.fine.as_ref().unwrap().scan_to_template.rms_mm;
     (rms, result.report.correspondence.unwrap())
 }
@@ -69,14 +80,15 @@ fn held_out_subjects_are_fitted_within_tolerance_by_both_presets() {
             assert!(f.p95_mm <= 19.0, "{}: p95 {} mm", preset.name(), f.p95_mm);
             assert!(f.max_mm <= 75.0, "{}: max {} mm", preset.name(), f.max_mm);
             if preset == Preset::Anchored {
-                // Here 5.76 / 15.7 / 50.8 and 6.25 / 18.1 / 59.4 mm (paper: 5.62 / 17.2 / 53.7 and
+                // Here 5.68 / 15.4 / 47.8 and 6.09 / 17.6 / 48.7 mm (paper: 5.62 / 17.2 / 53.7 and
                 // 6.06 / 17.8 / 62.9 — these two stand arms down, where posing the arms costs
-                // 0.1–0.2 mm of mean; it pays on posed arms, next test). The landmark definitions
-                // of 2026-11-24 (Cervicale, 10th Rib Midspine, ASIS, Iliocristale) moved the worst
-                // vertex of subject 1 from 55.9 to 59.4 mm (paper 58.5 to 62.9).
-                assert!(f.mean_mm <= 6.4, "anchored: mean {} mm", f.mean_mm);
-                assert!(f.p95_mm <= 18.5, "anchored: p95 {} mm", f.p95_mm);
-                assert!(f.max_mm <= 60.5, "anchored: max {} mm", f.max_mm);
+                // 0.1–0.2 mm of mean; it pays on posed arms, next test). Since 2026-11-24 16:40
+                // anchored takes no match farther than 20 mm: the jaw line is no longer pulled
+                // across the unscanned gap under the chin to the neck (before: 5.76 / 15.7 / 50.8
+                // and 6.25 / 18.1 / 59.4 mm).
+                assert!(f.mean_mm <= 6.3, "anchored: mean {} mm", f.mean_mm);
+                assert!(f.p95_mm <= 18.0, "anchored: p95 {} mm", f.p95_mm);
+                assert!(f.max_mm <= 52.0, "anchored: max {} mm", f.max_mm);
             }
             let parts: Vec<&str> = c.parts.iter().map(|p| p.part).collect();
             assert_eq!(parts, ["head", "torso", "arms", "hands", "legs", "feet"]);
@@ -128,4 +140,47 @@ fn the_paper_preset_reproduces_todays_figures() {
     assert!((f.mean_mm - 4.96).abs() < 0.01, "mean {}", f.mean_mm);
     assert!((f.p95_mm - 14.14).abs() < 0.02, "p95 {}", f.p95_mm);
     assert!((f.max_mm - 72.49).abs() < 0.02, "max {}", f.max_mm);
+}
+
+#[test]
+fn fine_keeps_the_base_correspondence_on_its_base_vertices() {
+    // Issue 12: coarse to fine used to lose correspondence on the base vertices (5 held-out
+    // subjects: +0.1 mm mean, +4–7 mm on the largest errors): new vertices on the rim of the
+    // never-scanned mouth cavity got data, and the fine stage slid the base fit along the
+    // surface. Now fine vertices get no more data weight than their base sources and the fine
+    // stage holds each vertex along the carried base fit (`FineStageParams::tangential_weight`).
+    // Held-out subject 001, anchored: base 5.68 / 15.4 / 47.8 mm, fine 5.69 / 15.4 / 47.6 mm
+    // (mean / p95 / max; RMS 1.193 → 1.006 mm).
+    let id = SubjectId {
+        profile: PopulationProfile::HeldOut,
+        seed: 912,
+        index: 0,
+    };
+    let params = Preset::Anchored.params();
+    let (base_rms, base) = fit_at(id, &params, Resolution::Base);
+    let (fine_rms, fine) = fit_at(id, &params, Resolution::Fine);
+    let (b, f) = (&base.fitted, &fine.fitted);
+    eprintln!(
+        "anchored, held-out subject 001: base RMS {base_rms:.3}, {:.3} / {:.2} / {:.2} mm; fine RMS {fine_rms:.3}, {:.3} / {:.2} / {:.2} mm",
+        b.mean_mm, b.p95_mm, b.max_mm, f.mean_mm, f.p95_mm, f.max_mm
+    );
+    assert!(fine_rms < base_rms, "fine fits the surface closer");
+    assert!(
+        f.mean_mm <= b.mean_mm + 0.05,
+        "mean {} vs {}",
+        f.mean_mm,
+        b.mean_mm
+    );
+    assert!(
+        f.p95_mm <= b.p95_mm + 0.3,
+        "p95 {} vs {}",
+        f.p95_mm,
+        b.p95_mm
+    );
+    assert!(
+        f.max_mm <= b.max_mm + 2.0,
+        "max {} vs {}",
+        f.max_mm,
+        b.max_mm
+    );
 }

@@ -8,6 +8,8 @@
 //! chord sag (≈ 0.5 mm) of the scan, so the fine level needs a few rounds at the paper's b and
 //! no annealing. Both stages are [`fine_align`]; a and b carry across the resolutions
 //! through `reference_edge_length` (docs/fine-alignment.md, "How a and b scale with the mesh").
+//! The fine stage keeps the base fit's correspondence: its tangential term holds each vertex
+//! along the carried surface, and a fine vertex gets no more data weight than its base sources.
 
 use std::ops::ControlFlow;
 
@@ -121,11 +123,23 @@ pub fn coarse_to_fine_align(
     };
     let (iteration_offset, round_offset) = (base.report.iterations, base.report.rounds);
     let elapsed_offset = now_ms() - start;
+    // A fine vertex gets no more data weight than the base vertices it is made from: the new
+    // vertices on the rim of a never-scanned region stay without data, as the base rim does.
+    let fine_weights: Vec<f64> = refinement
+        .stencils
+        .iter()
+        .zip(fine_weights)
+        .map(|(stencil, w)| {
+            stencil
+                .iter()
+                .fold(*w, |m, &(v, _)| m.min(base_input.weights[v as usize]))
+        })
+        .collect();
     let fine = fine_align(
         &FineAlignInput {
             positions: &fine_start,
             triangles: &refinement.triangles,
-            weights: fine_weights,
+            weights: &fine_weights,
             ..base_input
         },
         &fine_params,

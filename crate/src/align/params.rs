@@ -217,11 +217,15 @@ fn positive_or_infinite(name: &'static str, value: f64) -> Result<(), AlignError
 }
 
 /// The schedule of the fine stage. Its energy (a, b, the treatments, the landmark and
-/// scan-to-template weights, the correspondence search) is the base stage's; only how long and
-/// how stiffly it runs differ. Defaults: no stiffness annealing (the base stage has done it),
-/// 2 iterations per round, at most 8 iterations, stop when a round moves the surface by less
-/// than 0.1 mm RMS, L-BFGS memory 3 (the fine level has 16× the unknowns; memory 7 would hold
-/// ≈ 390 MB of correction pairs). Measured in docs/fine-alignment.md, "Coarse to fine".
+/// scan-to-template weights, the correspondence search) is the base stage's; how long and how
+/// stiffly it runs, and how strongly it holds vertices along the surface, differ. Defaults: no
+/// stiffness annealing (the base stage has done it), 2 iterations per round, at most 8
+/// iterations, stop when a round moves the surface by less than 0.1 mm RMS, L-BFGS memory 3 (the
+/// fine level has 16× the unknowns; memory 7 would hold ≈ 390 MB of correction pairs),
+/// tangential term 10 (vertices held along the carried base fit: the fine stage adds detail
+/// across the surface without sliding the base correspondence).
+/// Measured in docs/fine-alignment.md, "Coarse to fine", and docs/benchmarks.md, "Held-out
+/// population".
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(default)]
 pub struct FineStageParams {
@@ -237,6 +241,10 @@ pub struct FineStageParams {
     pub initial_stiffness: f64,
     /// Factor by which the stiffness multiplier shrinks per round.
     pub stiffness_decay: f64,
+    /// Weight of the tangential term in the fine stage (replaces the base stage's
+    /// [`FineAlignParams::tangential_weight`]): each vertex is held along the carried base fit,
+    /// free across it, so the fine stage adds detail without sliding the base correspondence.
+    pub tangential_weight: f64,
 }
 
 impl Default for FineStageParams {
@@ -248,6 +256,7 @@ impl Default for FineStageParams {
             lbfgs_memory: 3,
             initial_stiffness: 1.0,
             stiffness_decay: 0.7,
+            tangential_weight: 10.0,
         }
     }
 }
@@ -262,6 +271,7 @@ impl FineStageParams {
             lbfgs_memory: self.lbfgs_memory,
             initial_stiffness: self.initial_stiffness,
             stiffness_decay: self.stiffness_decay,
+            tangential_weight: self.tangential_weight,
             ..base.clone()
         }
     }
@@ -280,9 +290,10 @@ pub enum Preset {
     Paper,
     /// `paper` plus what issue 12 kept: head and arms posed to the scan's landmarks before the
     /// RBF warp (`pose_parts`), the tangential term (weight 0.1) holding vertices along the
-    /// RBF-warped surface, never-scanned regions following their neighbours, b = 0.1. Lower
-    /// mean, 95th percentile and largest correspondence errors on the held-out population
-    /// (docs/benchmarks.md, "Held-out population").
+    /// RBF-warped surface, never-scanned regions following their neighbours, b = 0.1, no match
+    /// farther than 20 mm (a vertex the scanner never saw, e.g. under the chin, is not pulled
+    /// across the gap to the neck). Lower mean, 95th percentile and largest correspondence errors
+    /// on the held-out population (docs/benchmarks.md, "Held-out population").
     Anchored,
 }
 
@@ -314,6 +325,7 @@ impl Preset {
                     b: 0.1,
                     tangential_weight: 0.1,
                     unseen_follow_neighbours: true,
+                    max_match_distance: 0.02,
                     ..paper.fine
                 },
                 ..paper
