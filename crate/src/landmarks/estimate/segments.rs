@@ -16,6 +16,7 @@ use std::ops::ControlFlow;
 use nalgebra::{Point3, Vector3};
 
 use super::matching::Matching;
+use super::profile::{fraction, profile, register, surface_samples, LimbLine};
 use super::tick::Ticker;
 use crate::mesh::normals::vertex_normals;
 use crate::mesh::similarity::{similarity, Similarity};
@@ -39,6 +40,9 @@ pub struct Part {
     pub parent: Option<usize>,
     pub joint: Point3<f64>,
     pub axis: Option<Vector3<f64>>,
+    /// For the lower part of a limb, the limb's end (template frame): the midpoint of the
+    /// malleoli or of the wrist's styloids.
+    pub end: Option<Point3<f64>>,
 }
 
 /// Where a part is: a similarity (at the body's scale) after a stretch by `stretch` along the
@@ -101,6 +105,7 @@ pub fn parts(template: &Template) -> Vec<Part> {
             parent: None,
             joint: Point3::origin(),
             axis: None,
+            end: None,
         },
         Part {
             name: "head",
@@ -108,41 +113,46 @@ pub fn parts(template: &Template) -> Vec<Part> {
             parent: Some(0),
             joint: band_centre(Segment::Head),
             axis: None,
+            end: None,
         },
     ];
-    // Segment, its parts, the prefix of its epicondyles, the prefix of the malleoli that end a
-    // stretching lower part (None: the parts do not stretch).
+    // Segment, its parts, the prefix of its epicondyles, the two landmarks whose midpoint ends
+    // the limb (the wrist's styloids, the malleoli), whether the parts stretch.
     let limbs = [
         (
             Segment::LeftArm,
             "left upper arm",
             "left forearm",
             "Lt. Humeral",
-            None,
+            ["Lt. Radial Styloid", "Lt. Ulnar Styloid"],
+            false,
         ),
         (
             Segment::RightArm,
             "right upper arm",
             "right forearm",
             "Rt. Humeral",
-            None,
+            ["Rt. Radial Styloid", "Rt. Ulnar Styloid"],
+            false,
         ),
         (
             Segment::LeftLeg,
             "left thigh",
             "left lower leg",
             "Lt. Femoral",
-            Some("Lt."),
+            ["Lt. Lateral Malleolus", "Lt. Medial Malleolus"],
+            true,
         ),
         (
             Segment::RightLeg,
             "right thigh",
             "right lower leg",
             "Rt. Femoral",
-            Some("Rt."),
+            ["Rt. Lateral Malleolus", "Rt. Medial Malleolus"],
+            true,
         ),
     ];
-    for (segment, upper, lower, epicondyles, malleoli) in limbs {
+    for (segment, upper, lower, epicondyles, [end_a, end_b], stretches) in limbs {
         let root = band_centre(segment);
         let limb: Vec<f64> = (0..n).map(|v| w(v, segment)).collect();
         let bend = midpoint(
@@ -156,16 +166,13 @@ pub fn parts(template: &Template) -> Vec<Part> {
                 parent: Some(0),
                 joint: root,
                 axis: None,
+                end: None,
             });
             continue;
         };
         let axis = (bend - root).normalize();
-        let ankle = malleoli.and_then(|side| {
-            midpoint(
-                &format!("{side} Lateral Malleolus"),
-                &format!("{side} Medial Malleolus"),
-            )
-        });
+        let end = midpoint(end_a, end_b).filter(|a| (a - bend).norm() > 1e-6);
+        let ankle = end.filter(|_| stretches);
         let lower_axis = ankle
             .filter(|a| (a - bend).norm() > 1e-6)
             .map(|a| (a - bend).normalize());
@@ -184,6 +191,7 @@ pub fn parts(template: &Template) -> Vec<Part> {
             parent: Some(0),
             joint: root,
             axis: lower_axis.map(|_| axis),
+            end: None,
         });
         parts.push(Part {
             name: lower,
@@ -191,6 +199,7 @@ pub fn parts(template: &Template) -> Vec<Part> {
             parent: Some(upper_index),
             joint: bend,
             axis: lower_axis,
+            end,
         });
     }
     parts
@@ -246,12 +255,25 @@ fn fit_stretch(
     (den > 0.0).then(|| (num / den).clamp(STRETCH_RANGE.0, STRETCH_RANGE.1))
 }
 
+/// Iterations of the segment-wise fit after the knees are placed by the legs' profiles, the
+/// leg parts' stretches then held (out of the fit's iterations).
+const PROFILE_ITERATIONS: usize = 5;
+
+/// Spacing (m) of the points on the template's surface its profile is taken from.
+const TEMPLATE_SAMPLES: f64 = 0.004;
+
+/// The arm's line runs on beyond the wrist by this fraction of the forearm, over the hand, so
+/// that a hand beside the thigh is not taken for the thigh.
+const HAND_REACH: f64 = 0.7;
+
 /// Fits every part (rigid at `start`'s scale, a leg part stretched along its axis) by ICP from
 /// `start`: each iteration blends the template, matches `vertices` to the scan, then fits each
 /// part, parents first, to the matches of the vertices it dominates plus its joint held where
 /// its (already moved) parent puts it — first the stretch in the part's last placement, then
-/// the rigid motion of the stretched part. Returns the blended positions, or `None` when the
-/// caller cancelled.
+/// the rigid motion of the stretched part. Before the last [`PROFILE_ITERATIONS`] the knees are
+/// moved along the legs to where the legs' cross-section profiles put them (`profile.rs`) and
+/// the legs' stretches held. Returns the blended positions, or `None` when the caller
+/// cancelled.
 pub fn fit_segments(
     template: &Template,
     parts: &[Part],
@@ -262,8 +284,6 @@ pub fn fit_segments(
     ticker: &mut Ticker<'_>,
 ) -> Option<Vec<Point3<f64>>> {
     let rest = &template.mesh().positions;
-    let triangles = &template.mesh().triangles;
-    let scale = start.scale;
     let mut poses = vec![
         PartPose {
             transform: start,
@@ -271,57 +291,165 @@ pub fn fit_segments(
         };
         parts.len()
     ];
-    let dominant: Vec<Option<usize>> = (0..rest.len())
+    let after_profile = PROFILE_ITERATIONS.min(iterations / 2);
+    let mut held = vec![false; parts.len()];
+    let fit = Fit {
+        template,
+        parts,
+        vertices,
+        matching,
+        dominant: dominant_parts(parts, rest.len()),
+    };
+    fit.iterate(&mut poses, &held, iterations - after_profile, ticker)?;
+    let surface = surface_samples(rest, &template.mesh().triangles, TEMPLATE_SAMPLES);
+    for k in place_knees(parts, &mut poses, &surface, matching.scan.positions()) {
+        held[k] = true;
+    }
+    fit.iterate(&mut poses, &held, after_profile, ticker)?;
+    Some(blend(parts, &poses, rest))
+}
+
+/// Per vertex, the part whose weight there is largest and at least ½.
+fn dominant_parts(parts: &[Part], n: usize) -> Vec<Option<usize>> {
+    (0..n)
         .map(|v| {
             (0..parts.len())
                 .filter(|&k| parts[k].weights[v] >= 0.5)
                 .max_by(|&a, &b| parts[a].weights[v].total_cmp(&parts[b].weights[v]))
         })
-        .collect();
-    for _ in 0..iterations {
-        let positions = blend(parts, &poses, rest);
-        let normals = vertex_normals(&positions, triangles);
-        let pairs = matching.pairs(vertices, &positions, &normals);
-        if ticker.tick(Matching::rms(&pairs), pairs.len()) == ControlFlow::Break(()) {
-            return None;
+        .collect()
+}
+
+/// What the iterations of [`fit_segments`] share.
+struct Fit<'a> {
+    template: &'a Template,
+    parts: &'a [Part],
+    vertices: &'a [u32],
+    matching: &'a Matching<'a>,
+    dominant: Vec<Option<usize>>,
+}
+
+impl Fit<'_> {
+    /// `iterations` of the fit from `poses`; a part whose `held` is set keeps its stretch.
+    /// `None` when the caller cancelled.
+    fn iterate(
+        &self,
+        poses: &mut [PartPose],
+        held: &[bool],
+        iterations: usize,
+        ticker: &mut Ticker<'_>,
+    ) -> Option<()> {
+        let rest = &self.template.mesh().positions;
+        let triangles = &self.template.mesh().triangles;
+        let scale = poses[0].transform.scale;
+        for _ in 0..iterations {
+            let positions = blend(self.parts, poses, rest);
+            let normals = vertex_normals(&positions, triangles);
+            let pairs = self.matching.pairs(self.vertices, &positions, &normals);
+            if ticker.tick(Matching::rms(&pairs), pairs.len()) == ControlFlow::Break(()) {
+                return None;
+            }
+            for (k, part) in self.parts.iter().enumerate() {
+                let mut wanted: Vec<(Point3<f64>, Point3<f64>)> = pairs
+                    .iter()
+                    .filter(|p| self.dominant[p.vertex as usize] == Some(k))
+                    .map(|p| (rest[p.vertex as usize], p.target))
+                    .collect();
+                if wanted.len() < 10 {
+                    continue;
+                }
+                if let Some(parent) = part.parent {
+                    // The joint stays attached: as many copies as a fifth of the part's matches.
+                    let at = self.parts[parent].apply(&poses[parent], &part.joint);
+                    let copies = (wanted.len() / 5).max(3);
+                    wanted.extend(std::iter::repeat_n((part.joint, at), copies));
+                }
+                let stretch = part
+                    .axis
+                    .filter(|_| !held[k])
+                    .and_then(|a| fit_stretch(part, &a, &poses[k].transform, &wanted))
+                    .unwrap_or(poses[k].stretch);
+                let from: Vec<_> = wanted
+                    .iter()
+                    .map(|(p, _)| part.stretched(p, stretch) * scale)
+                    .collect();
+                let to: Vec<_> = wanted.iter().map(|(_, q)| *q).collect();
+                if let Some(rigid) = similarity(&from, &to, false) {
+                    poses[k] = PartPose {
+                        transform: Similarity {
+                            scale,
+                            rotation: rigid.rotation,
+                            translation: rigid.translation,
+                        },
+                        stretch,
+                    };
+                }
+            }
         }
-        for (k, part) in parts.iter().enumerate() {
-            let mut wanted: Vec<(Point3<f64>, Point3<f64>)> = pairs
-                .iter()
-                .filter(|p| dominant[p.vertex as usize] == Some(k))
-                .map(|p| (rest[p.vertex as usize], p.target))
-                .collect();
-            if wanted.len() < 10 {
-                continue;
-            }
-            if let Some(parent) = part.parent {
-                // The joint stays attached: as many copies as a fifth of the part's matches.
-                let held = parts[parent].apply(&poses[parent], &part.joint);
-                let copies = (wanted.len() / 5).max(3);
-                wanted.extend(std::iter::repeat_n((part.joint, held), copies));
-            }
-            let stretch = part
-                .axis
-                .and_then(|a| fit_stretch(part, &a, &poses[k].transform, &wanted))
-                .unwrap_or(poses[k].stretch);
-            let from: Vec<_> = wanted
-                .iter()
-                .map(|(p, _)| part.stretched(p, stretch) * scale)
-                .collect();
-            let to: Vec<_> = wanted.iter().map(|(_, q)| *q).collect();
-            if let Some(rigid) = similarity(&from, &to, false) {
-                poses[k] = PartPose {
-                    transform: Similarity {
-                        scale,
-                        rotation: rigid.rotation,
-                        translation: rigid.translation,
-                    },
-                    stretch,
-                };
-            }
-        }
+        Some(())
     }
-    Some(blend(parts, &poses, rest))
+}
+
+/// Moves each knee along its leg to where the leg's cross-section profile on `scan` puts it
+/// (the template's profile from `surface`, points on its surface at rest, registered to the
+/// scan's, `profile.rs`): the thigh's and the lower leg's stretches scaled so that the knee's
+/// fraction of the hip → ankle line is the profile's. Returns the thighs, whose stretch is then
+/// held; the lower leg's is only a start (holding it too left the ankles and feet ≈ 1 mm worse
+/// on the development subjects).
+fn place_knees(
+    parts: &[Part],
+    poses: &mut [PartPose],
+    surface: &[Point3<f64>],
+    scan: &[Point3<f64>],
+) -> Vec<usize> {
+    // Each limb: (upper part, lower part, its end), its line at rest and where the fit put it.
+    let limbs: Vec<(usize, usize, Point3<f64>)> = parts
+        .iter()
+        .enumerate()
+        .filter_map(|(k, p)| Some((p.parent?, k, p.end?)))
+        .collect();
+    let line = |(upper, lower, end): (usize, usize, Point3<f64>), posed: bool| {
+        let place = |k: usize, p: &Point3<f64>| {
+            if posed {
+                parts[k].apply(&poses[k], p)
+            } else {
+                *p
+            }
+        };
+        let root = place(upper, &parts[upper].joint);
+        let bend = place(lower, &parts[lower].joint);
+        let end = place(lower, &end);
+        let reach = if parts[lower].axis.is_some() {
+            0.0
+        } else {
+            HAND_REACH
+        };
+        LimbLine {
+            root,
+            end: end + (end - bend) * reach,
+        }
+    };
+    let at_rest: Vec<LimbLine> = limbs.iter().map(|l| line(*l, false)).collect();
+    let posed: Vec<LimbLine> = limbs.iter().map(|l| line(*l, true)).collect();
+    let mut held = Vec::new();
+    for (i, &(upper, lower, _)) in limbs.iter().enumerate() {
+        if parts[lower].axis.is_none() || parts[upper].axis.is_none() {
+            continue;
+        }
+        let joint = fraction(&at_rest[i], &parts[lower].joint);
+        let knee = parts[lower].apply(&poses[lower], &parts[lower].joint);
+        let now = fraction(&posed[i], &knee);
+        let template_profile = profile(surface, &at_rest, i);
+        let scan_profile = profile(scan, &posed, i);
+        let Some(f) = register(&template_profile, &scan_profile, joint, now) else {
+            continue;
+        };
+        let clamp = |s: f64| s.clamp(STRETCH_RANGE.0, STRETCH_RANGE.1);
+        poses[upper].stretch = clamp(poses[upper].stretch * f / now);
+        poses[lower].stretch = clamp(poses[lower].stretch * (1.0 - f) / (1.0 - now));
+        held.push(upper);
+    }
+    held
 }
 
 #[cfg(test)]
@@ -336,6 +464,7 @@ mod tests {
             parent: None,
             joint: Point3::new(0.0, 0.0, 1.0),
             axis: Some(-Vector3::z()),
+            end: None,
         };
         // The part 1.2 times as long along its axis, turned by the transform.
         let transform = Similarity {
