@@ -12,9 +12,6 @@ const BINS: usize = 60;
 /// A bin with fewer points than this has no width.
 const MIN_POINTS: usize = 6;
 
-/// Points farther than this (m) from the limb's axis are not part of the limb.
-const RADIUS: f64 = 0.14;
-
 /// The fractions of the limb (root 0, end 1) over which the profiles are compared: below the
 /// crotch and the hands hanging beside the thigh, above the foot.
 const WINDOW: (f64, f64) = (0.3, 0.92);
@@ -40,15 +37,20 @@ impl LimbLine {
 }
 
 /// The width of limb `k` of `limbs` at each of [`BINS`] heights: per bin, of the `points` that
-/// are nearer to limb `k`'s line than to every other line of `limbs` and within [`RADIUS`] of it,
+/// are nearer to limb `k`'s line than to every other line of `limbs` and within `radius` (m) of it,
 /// the median distance across the axis from the points' mean. `None` for a bin with too few.
-pub fn profile(points: &[Point3<f64>], limbs: &[LimbLine], k: usize) -> Vec<Option<f64>> {
+pub fn profile(
+    points: &[Point3<f64>],
+    limbs: &[LimbLine],
+    k: usize,
+    radius: f64,
+) -> Vec<Option<f64>> {
     let line = limbs[k];
     let axis: Vector3<f64> = (line.end - line.root).normalize();
     let mut bins: Vec<Vec<Vector3<f64>>> = vec![Vec::new(); BINS];
     for p in points {
         let (u, r) = line.locate(p);
-        if !(0.0..1.0).contains(&u) || r > RADIUS {
+        if !(0.0..1.0).contains(&u) || r > radius {
             continue;
         }
         let nearer_other = limbs
@@ -211,9 +213,9 @@ mod tests {
             root: Point3::new(0.0, 0.0, 1.0),
             end: Point3::origin(),
         }];
-        let template = profile(&limb(leg(0.5, 1.0)), &line, 0);
+        let template = profile(&limb(leg(0.5, 1.0)), &line, 0, 0.14);
         // The scan's knee sits lower (0.55) and its leg is thicker; the fit put it at 0.5.
-        let scan = profile(&limb(leg(0.55, 1.2)), &line, 0);
+        let scan = profile(&limb(leg(0.55, 1.2)), &line, 0, 0.14);
         let f = register(&template, &scan, 0.5, 0.5).unwrap();
         assert!((f - 0.55).abs() < 0.01, "{f}");
         // Points nearer another limb's line are not this limb's.
@@ -221,7 +223,7 @@ mod tests {
             root: Point3::new(0.02, 0.0, 1.0),
             end: Point3::new(0.02, 0.0, 0.0),
         };
-        let half = profile(&limb(leg(0.5, 1.0)), &[line[0], other], 0);
+        let half = profile(&limb(leg(0.5, 1.0)), &[line[0], other], 0, 0.14);
         assert!(half.iter().flatten().count() > 0);
         assert_ne!(half, template);
     }

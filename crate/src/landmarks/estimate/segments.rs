@@ -7,9 +7,12 @@
 //!
 //! The thigh and the lower leg also stretch along their own axis (about the hip or the knee):
 //! the body's common scale leaves them as long as the template's, whatever the subject's leg
-//! proportions. (Stretching the arm parts, a hand part of its own and pulling a thigh towards
-//! where the lower leg puts the knee were measured and made the estimate worse:
-//! docs/landmarks-estimate.md.)
+//! proportions. Nearest points do not see where along a near-cylindrical limb the knee or the
+//! elbow is, so before the last iterations each limb's cross-section profile places its knee or
+//! elbow (`profile.rs`): the thigh's and the upper arm's stretches are set from it and held, the
+//! lower leg's refitted, the forearm kept rigid. (Fitting the arm parts' stretch by ICP, a hand
+//! part of its own and pulling a thigh towards where the lower leg puts the knee were measured
+//! and made the estimate worse: docs/landmarks-estimate.md.)
 
 use std::ops::ControlFlow;
 
@@ -26,12 +29,12 @@ use crate::template::{Segment, Template};
 /// knee.
 const LIMB_BLEND: f64 = 0.05;
 
-/// The range of a leg part's stretch along its axis (a quarter shorter to a third longer than
+/// The range of a limb part's stretch along its axis (a quarter shorter to a third longer than
 /// the template's at the body's scale).
 const STRETCH_RANGE: (f64, f64) = (0.75, 1.33);
 
 /// One part: its weight at every vertex, its parent, the joint (template frame) it shares with
-/// the parent, and for a leg part the axis (unit, template frame, through the joint) along which
+/// the parent, and for a limb part the axis (unit, template frame, through the joint) along which
 /// it stretches.
 #[derive(Debug, Clone)]
 pub struct Part {
@@ -43,6 +46,8 @@ pub struct Part {
     /// For the lower part of a limb, the limb's end (template frame): the midpoint of the
     /// malleoli or of the wrist's styloids.
     pub end: Option<Point3<f64>>,
+    /// Whether the ICP fits the stretch (the legs); an arm's is set only by its profile.
+    pub stretches: bool,
 }
 
 /// Where a part is: a similarity (at the body's scale) after a stretch by `stretch` along the
@@ -71,8 +76,8 @@ impl Part {
 /// The ten parts of `template` (base resolution): torso, head, and upper and lower part of each
 /// limb, parents before children. The shoulder, hip and neck joints are the centres of the
 /// segments' overlap bands; the elbow and knee the midpoints of the epicondyle landmarks. The
-/// thigh stretches along the line from the hip to the knee, the lower leg along the line from
-/// the knee to the midpoint of the malleoli.
+/// upper part's axis is the line from the shoulder or hip to the elbow or knee, the lower
+/// part's from there to the midpoint of the styloids or malleoli (the limb's `end`).
 pub fn parts(template: &Template) -> Vec<Part> {
     let rest = &template.mesh().positions;
     let n = rest.len();
@@ -106,6 +111,7 @@ pub fn parts(template: &Template) -> Vec<Part> {
             joint: Point3::origin(),
             axis: None,
             end: None,
+            stretches: false,
         },
         Part {
             name: "head",
@@ -114,6 +120,7 @@ pub fn parts(template: &Template) -> Vec<Part> {
             joint: band_centre(Segment::Head),
             axis: None,
             end: None,
+            stretches: false,
         },
     ];
     // Segment, its parts, the prefix of its epicondyles, the two landmarks whose midpoint ends
@@ -167,13 +174,13 @@ pub fn parts(template: &Template) -> Vec<Part> {
                 joint: root,
                 axis: None,
                 end: None,
+                stretches: false,
             });
             continue;
         };
         let axis = (bend - root).normalize();
         let end = midpoint(end_a, end_b).filter(|a| (a - bend).norm() > 1e-6);
-        let ankle = end.filter(|_| stretches);
-        let lower_axis = ankle
+        let lower_axis = end
             .filter(|a| (a - bend).norm() > 1e-6)
             .map(|a| (a - bend).normalize());
         let at_bend = (bend - root).dot(&axis);
@@ -192,6 +199,7 @@ pub fn parts(template: &Template) -> Vec<Part> {
             joint: root,
             axis: lower_axis.map(|_| axis),
             end: None,
+            stretches,
         });
         parts.push(Part {
             name: lower,
@@ -200,6 +208,7 @@ pub fn parts(template: &Template) -> Vec<Part> {
             joint: bend,
             axis: lower_axis,
             end,
+            stretches,
         });
     }
     parts
@@ -255,12 +264,23 @@ fn fit_stretch(
     (den > 0.0).then(|| (num / den).clamp(STRETCH_RANGE.0, STRETCH_RANGE.1))
 }
 
-/// Iterations of the segment-wise fit after the knees are placed by the legs' profiles, the
-/// leg parts' stretches then held (out of the fit's iterations).
+/// Iterations of the segment-wise fit after the knees and elbows are placed by the limbs'
+/// profiles, the thighs' and upper arms' stretches then held (out of the fit's iterations).
 const PROFILE_ITERATIONS: usize = 5;
 
 /// Spacing (m) of the points on the template's surface its profile is taken from.
 const TEMPLATE_SAMPLES: f64 = 0.004;
+
+/// A limb bent more than this (degrees) at the elbow or knee is not placed by its profile: the
+/// profile is taken across the straight root → end line.
+const MAX_BEND: f64 = 60.0;
+
+/// Scan points farther than this (m) from a leg's line are not the leg (a thigh's radius is up to
+/// ≈ 10 cm).
+const LEG_RADIUS: f64 = 0.14;
+
+/// The same for an arm: narrower, so that an arm held against the trunk takes less of it.
+const ARM_RADIUS: f64 = 0.08;
 
 /// The arm's line runs on beyond the wrist by this fraction of the forearm, over the hand, so
 /// that a hand beside the thigh is not taken for the thigh.
@@ -270,9 +290,9 @@ const HAND_REACH: f64 = 0.7;
 /// `start`: each iteration blends the template, matches `vertices` to the scan, then fits each
 /// part, parents first, to the matches of the vertices it dominates plus its joint held where
 /// its (already moved) parent puts it — first the stretch in the part's last placement, then
-/// the rigid motion of the stretched part. Before the last [`PROFILE_ITERATIONS`] the knees are
-/// moved along the legs to where the legs' cross-section profiles put them (`profile.rs`) and
-/// the legs' stretches held. Returns the blended positions, or `None` when the caller
+/// the rigid motion of the stretched part. Before the last [`PROFILE_ITERATIONS`] the knees and
+/// elbows are moved along the limbs to where the limbs' cross-section profiles put them
+/// (`profile.rs`, [`place_joints`]). Returns the blended positions, or `None` when the caller
 /// cancelled.
 pub fn fit_segments(
     template: &Template,
@@ -302,7 +322,7 @@ pub fn fit_segments(
     };
     fit.iterate(&mut poses, &held, iterations - after_profile, ticker)?;
     let surface = surface_samples(rest, &template.mesh().triangles, TEMPLATE_SAMPLES);
-    for k in place_knees(parts, &mut poses, &surface, matching.scan.positions()) {
+    for k in place_joints(parts, &mut poses, &surface, matching.scan.positions()) {
         held[k] = true;
     }
     fit.iterate(&mut poses, &held, after_profile, ticker)?;
@@ -366,7 +386,7 @@ impl Fit<'_> {
                 }
                 let stretch = part
                     .axis
-                    .filter(|_| !held[k])
+                    .filter(|_| part.stretches && !held[k])
                     .and_then(|a| fit_stretch(part, &a, &poses[k].transform, &wanted))
                     .unwrap_or(poses[k].stretch);
                 let from: Vec<_> = wanted
@@ -390,13 +410,15 @@ impl Fit<'_> {
     }
 }
 
-/// Moves each knee along its leg to where the leg's cross-section profile on `scan` puts it
-/// (the template's profile from `surface`, points on its surface at rest, registered to the
-/// scan's, `profile.rs`): the thigh's and the lower leg's stretches scaled so that the knee's
-/// fraction of the hip → ankle line is the profile's. Returns the thighs, whose stretch is then
-/// held; the lower leg's is only a start (holding it too left the ankles and feet ≈ 1 mm worse
-/// on the development subjects).
-fn place_knees(
+/// Moves each knee and elbow along its limb to where the limb's cross-section profile on `scan`
+/// puts it (the template's profile from `surface`, points on its surface at rest, registered to
+/// the scan's, `profile.rs`): the upper part's stretch scaled so that the joint's fraction of the
+/// root → end line (hip → ankle, shoulder → wrist) is the profile's. A leg's lower part is
+/// stretched to keep the ankle where it was, as a start for its own stretch fit; the forearm
+/// stays rigid and moves with the elbow (stretching it to keep the wrist made the hands worse,
+/// 39 → 48 mm on the development subjects). Returns the upper parts, whose stretch is then held
+/// (holding a lower leg's too left the ankles and feet ≈ 1 mm worse).
+fn place_joints(
     parts: &[Part],
     poses: &mut [PartPose],
     surface: &[Point3<f64>],
@@ -419,7 +441,7 @@ fn place_knees(
         let root = place(upper, &parts[upper].joint);
         let bend = place(lower, &parts[lower].joint);
         let end = place(lower, &end);
-        let reach = if parts[lower].axis.is_some() {
+        let reach = if parts[lower].stretches {
             0.0
         } else {
             HAND_REACH
@@ -432,21 +454,29 @@ fn place_knees(
     let at_rest: Vec<LimbLine> = limbs.iter().map(|l| line(*l, false)).collect();
     let posed: Vec<LimbLine> = limbs.iter().map(|l| line(*l, true)).collect();
     let mut held = Vec::new();
-    for (i, &(upper, lower, _)) in limbs.iter().enumerate() {
+    for (i, &(upper, lower, end)) in limbs.iter().enumerate() {
         if parts[lower].axis.is_none() || parts[upper].axis.is_none() {
             continue;
         }
+        let arm = !parts[lower].stretches;
+        let bend = parts[lower].apply(&poses[lower], &parts[lower].joint);
+        let end = parts[lower].apply(&poses[lower], &end);
+        if (bend - posed[i].root).angle(&(end - bend)) > MAX_BEND.to_radians() {
+            continue;
+        }
         let joint = fraction(&at_rest[i], &parts[lower].joint);
-        let knee = parts[lower].apply(&poses[lower], &parts[lower].joint);
-        let now = fraction(&posed[i], &knee);
-        let template_profile = profile(surface, &at_rest, i);
-        let scan_profile = profile(scan, &posed, i);
+        let now = fraction(&posed[i], &bend);
+        let radius = if arm { ARM_RADIUS } else { LEG_RADIUS };
+        let template_profile = profile(surface, &at_rest, i, radius);
+        let scan_profile = profile(scan, &posed, i, radius);
         let Some(f) = register(&template_profile, &scan_profile, joint, now) else {
             continue;
         };
         let clamp = |s: f64| s.clamp(STRETCH_RANGE.0, STRETCH_RANGE.1);
         poses[upper].stretch = clamp(poses[upper].stretch * f / now);
-        poses[lower].stretch = clamp(poses[lower].stretch * (1.0 - f) / (1.0 - now));
+        if !arm {
+            poses[lower].stretch = clamp(poses[lower].stretch * (1.0 - f) / (1.0 - now));
+        }
         held.push(upper);
     }
     held
@@ -465,6 +495,7 @@ mod tests {
             joint: Point3::new(0.0, 0.0, 1.0),
             axis: Some(-Vector3::z()),
             end: None,
+            stretches: true,
         };
         // The part 1.2 times as long along its axis, turned by the transform.
         let transform = Similarity {
