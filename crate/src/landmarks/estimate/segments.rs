@@ -23,6 +23,7 @@ use super::profile::{fraction, profile, register, surface_samples, LimbLine};
 use super::tick::Ticker;
 use crate::mesh::normals::vertex_normals;
 use crate::mesh::similarity::{similarity, Similarity};
+use crate::mesh::Mesh;
 use crate::template::{Segment, Template};
 
 /// Half-width (m) of the blend between the upper and lower part of a limb around the elbow or
@@ -268,8 +269,9 @@ fn fit_stretch(
 /// profiles, the thighs' and upper arms' stretches then held (out of the fit's iterations).
 const PROFILE_ITERATIONS: usize = 5;
 
-/// Spacing (m) of the points on the template's surface its profile is taken from.
-const TEMPLATE_SAMPLES: f64 = 0.004;
+/// Spacing (m) of the points on the template's and the scan's surface the profiles are taken
+/// from.
+const SURFACE_SPACING: f64 = 0.004;
 
 /// A limb bent more than this (degrees) at the elbow or knee is not placed by its profile: the
 /// profile is taken across the straight root → end line.
@@ -292,11 +294,14 @@ const HAND_REACH: f64 = 0.7;
 /// its (already moved) parent puts it — first the stretch in the part's last placement, then
 /// the rigid motion of the stretched part. Before the last [`PROFILE_ITERATIONS`] the knees and
 /// elbows are moved along the limbs to where the limbs' cross-section profiles put them
-/// (`profile.rs`, [`place_joints`]). Returns the blended positions, or `None` when the caller
-/// cancelled.
+/// (`profile.rs`, [`place_joints`]), both profiles taken from points spread over the surfaces
+/// (`scan`, metres, is the mesh `matching` indexes): a coarse mesh's vertices alone lie in rings
+/// too far apart. Returns the blended positions, or `None` when the caller cancelled.
+#[allow(clippy::too_many_arguments)]
 pub fn fit_segments(
     template: &Template,
     parts: &[Part],
+    scan: &Mesh,
     start: Similarity,
     vertices: &[u32],
     matching: &Matching<'_>,
@@ -321,8 +326,9 @@ pub fn fit_segments(
         dominant: dominant_parts(parts, rest.len()),
     };
     fit.iterate(&mut poses, &held, iterations - after_profile, ticker)?;
-    let surface = surface_samples(rest, &template.mesh().triangles, TEMPLATE_SAMPLES);
-    for k in place_joints(parts, &mut poses, &surface, matching.scan.positions()) {
+    let surface = surface_samples(rest, &template.mesh().triangles, SURFACE_SPACING);
+    let scan_surface = surface_samples(&scan.positions, &scan.triangles, SURFACE_SPACING);
+    for k in place_joints(parts, &mut poses, &surface, &scan_surface) {
         held[k] = true;
     }
     fit.iterate(&mut poses, &held, after_profile, ticker)?;
@@ -412,7 +418,7 @@ impl Fit<'_> {
 
 /// Moves each knee and elbow along its limb to where the limb's cross-section profile on `scan`
 /// puts it (the template's profile from `surface`, points on its surface at rest, registered to
-/// the scan's, `profile.rs`): the upper part's stretch scaled so that the joint's fraction of the
+/// the one from `scan`, points on the scan's surface, `profile.rs`): the upper part's stretch scaled so that the joint's fraction of the
 /// root → end line (hip → ankle, shoulder → wrist) is the profile's. A leg's lower part is
 /// stretched to keep the ankle where it was, as a start for its own stretch fit; the forearm
 /// stays rigid and moves with the elbow (stretching it to keep the wrist made the hands worse,
