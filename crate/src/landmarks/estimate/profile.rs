@@ -1,8 +1,9 @@
-//! Where a knee sits along the leg, from the leg's cross-section profile: its width at each
-//! height from the hip to the ankle. Real legs narrow from the thigh to the knee and bulge at
-//! the calf below it; nearest-point matching does not see that (the leg is close to a
-//! cylinder), a profile does. The template's own profile is registered to the scan's with a
-//! stretch above and below the knee; the knee lands where the template's knee maps.
+//! Where a knee (elbow) sits along the limb, from the limb's cross-section profile: its width at
+//! each height from the hip to the ankle (the shoulder to the wrist). Real legs narrow from the
+//! thigh to the knee and bulge at the calf below it, forearms bulge below the elbow; nearest-point
+//! matching does not see that (a limb is close to a cylinder), a profile does. The template's own
+//! profile is registered to the scan's with a stretch above and below the joint; the joint lands
+//! where the template's maps.
 
 use nalgebra::{Point3, Vector3};
 
