@@ -21,6 +21,7 @@ pub mod expected;
 pub mod frame;
 pub mod matching;
 pub mod params;
+pub mod profile;
 pub mod report;
 pub mod segments;
 pub mod steps;

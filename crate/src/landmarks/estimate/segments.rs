@@ -7,30 +7,35 @@
 //!
 //! The thigh and the lower leg also stretch along their own axis (about the hip or the knee):
 //! the body's common scale leaves them as long as the template's, whatever the subject's leg
-//! proportions. (Stretching the arm parts, a hand part of its own and pulling a thigh towards
-//! where the lower leg puts the knee were measured and made the estimate worse:
-//! docs/landmarks-estimate.md.)
+//! proportions. Nearest points do not see where along a near-cylindrical limb the knee or the
+//! elbow is, so before the last iterations each limb's cross-section profile places its knee or
+//! elbow (`profile.rs`): the thigh's and the upper arm's stretches are set from it and held, the
+//! lower leg's refitted, the forearm kept rigid. (Fitting the arm parts' stretch by ICP, a hand
+//! part of its own and pulling a thigh towards where the lower leg puts the knee were measured
+//! and made the estimate worse: docs/landmarks-estimate.md.)
 
 use std::ops::ControlFlow;
 
 use nalgebra::{Point3, Vector3};
 
 use super::matching::Matching;
+use super::profile::{fraction, profile, register, surface_samples, LimbLine};
 use super::tick::Ticker;
 use crate::mesh::normals::vertex_normals;
 use crate::mesh::similarity::{similarity, Similarity};
+use crate::mesh::Mesh;
 use crate::template::{Segment, Template};
 
 /// Half-width (m) of the blend between the upper and lower part of a limb around the elbow or
 /// knee.
 const LIMB_BLEND: f64 = 0.05;
 
-/// The range of a leg part's stretch along its axis (a quarter shorter to a third longer than
+/// The range of a limb part's stretch along its axis (a quarter shorter to a third longer than
 /// the template's at the body's scale).
 const STRETCH_RANGE: (f64, f64) = (0.75, 1.33);
 
 /// One part: its weight at every vertex, its parent, the joint (template frame) it shares with
-/// the parent, and for a leg part the axis (unit, template frame, through the joint) along which
+/// the parent, and for a limb part the axis (unit, template frame, through the joint) along which
 /// it stretches.
 #[derive(Debug, Clone)]
 pub struct Part {
@@ -39,6 +44,11 @@ pub struct Part {
     pub parent: Option<usize>,
     pub joint: Point3<f64>,
     pub axis: Option<Vector3<f64>>,
+    /// For the lower part of a limb, the limb's end (template frame): the midpoint of the
+    /// malleoli or of the wrist's styloids.
+    pub end: Option<Point3<f64>>,
+    /// Whether the ICP fits the stretch (the legs); an arm's is set only by its profile.
+    pub stretches: bool,
 }
 
 /// Where a part is: a similarity (at the body's scale) after a stretch by `stretch` along the
@@ -67,8 +77,8 @@ impl Part {
 /// The ten parts of `template` (base resolution): torso, head, and upper and lower part of each
 /// limb, parents before children. The shoulder, hip and neck joints are the centres of the
 /// segments' overlap bands; the elbow and knee the midpoints of the epicondyle landmarks. The
-/// thigh stretches along the line from the hip to the knee, the lower leg along the line from
-/// the knee to the midpoint of the malleoli.
+/// upper part's axis is the line from the shoulder or hip to the elbow or knee, the lower
+/// part's from there to the midpoint of the styloids or malleoli (the limb's `end`).
 pub fn parts(template: &Template) -> Vec<Part> {
     let rest = &template.mesh().positions;
     let n = rest.len();
@@ -101,6 +111,8 @@ pub fn parts(template: &Template) -> Vec<Part> {
             parent: None,
             joint: Point3::origin(),
             axis: None,
+            end: None,
+            stretches: false,
         },
         Part {
             name: "head",
@@ -108,41 +120,47 @@ pub fn parts(template: &Template) -> Vec<Part> {
             parent: Some(0),
             joint: band_centre(Segment::Head),
             axis: None,
+            end: None,
+            stretches: false,
         },
     ];
-    // Segment, its parts, the prefix of its epicondyles, the prefix of the malleoli that end a
-    // stretching lower part (None: the parts do not stretch).
+    // Segment, its parts, the prefix of its epicondyles, the two landmarks whose midpoint ends
+    // the limb (the wrist's styloids, the malleoli), whether the parts stretch.
     let limbs = [
         (
             Segment::LeftArm,
             "left upper arm",
             "left forearm",
             "Lt. Humeral",
-            None,
+            ["Lt. Radial Styloid", "Lt. Ulnar Styloid"],
+            false,
         ),
         (
             Segment::RightArm,
             "right upper arm",
             "right forearm",
             "Rt. Humeral",
-            None,
+            ["Rt. Radial Styloid", "Rt. Ulnar Styloid"],
+            false,
         ),
         (
             Segment::LeftLeg,
             "left thigh",
             "left lower leg",
             "Lt. Femoral",
-            Some("Lt."),
+            ["Lt. Lateral Malleolus", "Lt. Medial Malleolus"],
+            true,
         ),
         (
             Segment::RightLeg,
             "right thigh",
             "right lower leg",
             "Rt. Femoral",
-            Some("Rt."),
+            ["Rt. Lateral Malleolus", "Rt. Medial Malleolus"],
+            true,
         ),
     ];
-    for (segment, upper, lower, epicondyles, malleoli) in limbs {
+    for (segment, upper, lower, epicondyles, [end_a, end_b], stretches) in limbs {
         let root = band_centre(segment);
         let limb: Vec<f64> = (0..n).map(|v| w(v, segment)).collect();
         let bend = midpoint(
@@ -156,17 +174,14 @@ pub fn parts(template: &Template) -> Vec<Part> {
                 parent: Some(0),
                 joint: root,
                 axis: None,
+                end: None,
+                stretches: false,
             });
             continue;
         };
         let axis = (bend - root).normalize();
-        let ankle = malleoli.and_then(|side| {
-            midpoint(
-                &format!("{side} Lateral Malleolus"),
-                &format!("{side} Medial Malleolus"),
-            )
-        });
-        let lower_axis = ankle
+        let end = midpoint(end_a, end_b).filter(|a| (a - bend).norm() > 1e-6);
+        let lower_axis = end
             .filter(|a| (a - bend).norm() > 1e-6)
             .map(|a| (a - bend).normalize());
         let at_bend = (bend - root).dot(&axis);
@@ -184,6 +199,8 @@ pub fn parts(template: &Template) -> Vec<Part> {
             parent: Some(0),
             joint: root,
             axis: lower_axis.map(|_| axis),
+            end: None,
+            stretches,
         });
         parts.push(Part {
             name: lower,
@@ -191,6 +208,8 @@ pub fn parts(template: &Template) -> Vec<Part> {
             parent: Some(upper_index),
             joint: bend,
             axis: lower_axis,
+            end,
+            stretches,
         });
     }
     parts
@@ -246,15 +265,43 @@ fn fit_stretch(
     (den > 0.0).then(|| (num / den).clamp(STRETCH_RANGE.0, STRETCH_RANGE.1))
 }
 
+/// Iterations of the segment-wise fit after the knees and elbows are placed by the limbs'
+/// profiles, the thighs' and upper arms' stretches then held (out of the fit's iterations).
+const PROFILE_ITERATIONS: usize = 5;
+
+/// Spacing (m) of the points on the template's and the scan's surface the profiles are taken
+/// from.
+const SURFACE_SPACING: f64 = 0.004;
+
+/// A limb bent more than this (degrees) at the elbow or knee is not placed by its profile: the
+/// profile is taken across the straight root → end line.
+const MAX_BEND: f64 = 60.0;
+
+/// Scan points farther than this (m) from a leg's line are not the leg (a thigh's radius is up to
+/// ≈ 10 cm).
+const LEG_RADIUS: f64 = 0.14;
+
+/// The same for an arm: narrower, so that an arm held against the trunk takes less of it.
+const ARM_RADIUS: f64 = 0.08;
+
+/// The arm's line runs on beyond the wrist by this fraction of the forearm, over the hand, so
+/// that a hand beside the thigh is not taken for the thigh.
+const HAND_REACH: f64 = 0.7;
+
 /// Fits every part (rigid at `start`'s scale, a leg part stretched along its axis) by ICP from
 /// `start`: each iteration blends the template, matches `vertices` to the scan, then fits each
 /// part, parents first, to the matches of the vertices it dominates plus its joint held where
 /// its (already moved) parent puts it — first the stretch in the part's last placement, then
-/// the rigid motion of the stretched part. Returns the blended positions, or `None` when the
-/// caller cancelled.
+/// the rigid motion of the stretched part. Before the last [`PROFILE_ITERATIONS`] the knees and
+/// elbows are moved along the limbs to where the limbs' cross-section profiles put them
+/// (`profile.rs`, [`place_joints`]), both profiles taken from points spread over the surfaces
+/// (`scan`, metres, is the mesh `matching` indexes): a coarse mesh's vertices alone lie in rings
+/// too far apart. Returns the blended positions, or `None` when the caller cancelled.
+#[allow(clippy::too_many_arguments)]
 pub fn fit_segments(
     template: &Template,
     parts: &[Part],
+    scan: &Mesh,
     start: Similarity,
     vertices: &[u32],
     matching: &Matching<'_>,
@@ -262,8 +309,6 @@ pub fn fit_segments(
     ticker: &mut Ticker<'_>,
 ) -> Option<Vec<Point3<f64>>> {
     let rest = &template.mesh().positions;
-    let triangles = &template.mesh().triangles;
-    let scale = start.scale;
     let mut poses = vec![
         PartPose {
             transform: start,
@@ -271,57 +316,176 @@ pub fn fit_segments(
         };
         parts.len()
     ];
-    let dominant: Vec<Option<usize>> = (0..rest.len())
+    let after_profile = PROFILE_ITERATIONS.min(iterations / 2);
+    let mut held = vec![false; parts.len()];
+    let fit = Fit {
+        template,
+        parts,
+        vertices,
+        matching,
+        dominant: dominant_parts(parts, rest.len()),
+    };
+    fit.iterate(&mut poses, &held, iterations - after_profile, ticker)?;
+    let surface = surface_samples(rest, &template.mesh().triangles, SURFACE_SPACING);
+    let scan_surface = surface_samples(&scan.positions, &scan.triangles, SURFACE_SPACING);
+    for k in place_joints(parts, &mut poses, &surface, &scan_surface) {
+        held[k] = true;
+    }
+    fit.iterate(&mut poses, &held, after_profile, ticker)?;
+    Some(blend(parts, &poses, rest))
+}
+
+/// Per vertex, the part whose weight there is largest and at least ½.
+fn dominant_parts(parts: &[Part], n: usize) -> Vec<Option<usize>> {
+    (0..n)
         .map(|v| {
             (0..parts.len())
                 .filter(|&k| parts[k].weights[v] >= 0.5)
                 .max_by(|&a, &b| parts[a].weights[v].total_cmp(&parts[b].weights[v]))
         })
-        .collect();
-    for _ in 0..iterations {
-        let positions = blend(parts, &poses, rest);
-        let normals = vertex_normals(&positions, triangles);
-        let pairs = matching.pairs(vertices, &positions, &normals);
-        if ticker.tick(Matching::rms(&pairs), pairs.len()) == ControlFlow::Break(()) {
-            return None;
+        .collect()
+}
+
+/// What the iterations of [`fit_segments`] share.
+struct Fit<'a> {
+    template: &'a Template,
+    parts: &'a [Part],
+    vertices: &'a [u32],
+    matching: &'a Matching<'a>,
+    dominant: Vec<Option<usize>>,
+}
+
+impl Fit<'_> {
+    /// `iterations` of the fit from `poses`; a part whose `held` is set keeps its stretch.
+    /// `None` when the caller cancelled.
+    fn iterate(
+        &self,
+        poses: &mut [PartPose],
+        held: &[bool],
+        iterations: usize,
+        ticker: &mut Ticker<'_>,
+    ) -> Option<()> {
+        let rest = &self.template.mesh().positions;
+        let triangles = &self.template.mesh().triangles;
+        let scale = poses[0].transform.scale;
+        for _ in 0..iterations {
+            let positions = blend(self.parts, poses, rest);
+            let normals = vertex_normals(&positions, triangles);
+            let pairs = self.matching.pairs(self.vertices, &positions, &normals);
+            if ticker.tick(Matching::rms(&pairs), pairs.len()) == ControlFlow::Break(()) {
+                return None;
+            }
+            for (k, part) in self.parts.iter().enumerate() {
+                let mut wanted: Vec<(Point3<f64>, Point3<f64>)> = pairs
+                    .iter()
+                    .filter(|p| self.dominant[p.vertex as usize] == Some(k))
+                    .map(|p| (rest[p.vertex as usize], p.target))
+                    .collect();
+                if wanted.len() < 10 {
+                    continue;
+                }
+                if let Some(parent) = part.parent {
+                    // The joint stays attached: as many copies as a fifth of the part's matches.
+                    let at = self.parts[parent].apply(&poses[parent], &part.joint);
+                    let copies = (wanted.len() / 5).max(3);
+                    wanted.extend(std::iter::repeat_n((part.joint, at), copies));
+                }
+                let stretch = part
+                    .axis
+                    .filter(|_| part.stretches && !held[k])
+                    .and_then(|a| fit_stretch(part, &a, &poses[k].transform, &wanted))
+                    .unwrap_or(poses[k].stretch);
+                let from: Vec<_> = wanted
+                    .iter()
+                    .map(|(p, _)| part.stretched(p, stretch) * scale)
+                    .collect();
+                let to: Vec<_> = wanted.iter().map(|(_, q)| *q).collect();
+                if let Some(rigid) = similarity(&from, &to, false) {
+                    poses[k] = PartPose {
+                        transform: Similarity {
+                            scale,
+                            rotation: rigid.rotation,
+                            translation: rigid.translation,
+                        },
+                        stretch,
+                    };
+                }
+            }
         }
-        for (k, part) in parts.iter().enumerate() {
-            let mut wanted: Vec<(Point3<f64>, Point3<f64>)> = pairs
-                .iter()
-                .filter(|p| dominant[p.vertex as usize] == Some(k))
-                .map(|p| (rest[p.vertex as usize], p.target))
-                .collect();
-            if wanted.len() < 10 {
-                continue;
-            }
-            if let Some(parent) = part.parent {
-                // The joint stays attached: as many copies as a fifth of the part's matches.
-                let held = parts[parent].apply(&poses[parent], &part.joint);
-                let copies = (wanted.len() / 5).max(3);
-                wanted.extend(std::iter::repeat_n((part.joint, held), copies));
-            }
-            let stretch = part
-                .axis
-                .and_then(|a| fit_stretch(part, &a, &poses[k].transform, &wanted))
-                .unwrap_or(poses[k].stretch);
-            let from: Vec<_> = wanted
-                .iter()
-                .map(|(p, _)| part.stretched(p, stretch) * scale)
-                .collect();
-            let to: Vec<_> = wanted.iter().map(|(_, q)| *q).collect();
-            if let Some(rigid) = similarity(&from, &to, false) {
-                poses[k] = PartPose {
-                    transform: Similarity {
-                        scale,
-                        rotation: rigid.rotation,
-                        translation: rigid.translation,
-                    },
-                    stretch,
-                };
-            }
-        }
+        Some(())
     }
-    Some(blend(parts, &poses, rest))
+}
+
+/// Moves each knee and elbow along its limb to where the limb's cross-section profile on `scan`
+/// puts it (the template's profile from `surface`, points on its surface at rest, registered to
+/// the one from `scan`, points on the scan's surface, `profile.rs`): the upper part's stretch scaled so that the joint's fraction of the
+/// root → end line (hip → ankle, shoulder → wrist) is the profile's. A leg's lower part is
+/// stretched to keep the ankle where it was, as a start for its own stretch fit; the forearm
+/// stays rigid and moves with the elbow (stretching it to keep the wrist made the hands worse,
+/// 39 → 48 mm on the development subjects). Returns the upper parts, whose stretch is then held
+/// (holding a lower leg's too left the ankles and feet ≈ 1 mm worse).
+fn place_joints(
+    parts: &[Part],
+    poses: &mut [PartPose],
+    surface: &[Point3<f64>],
+    scan: &[Point3<f64>],
+) -> Vec<usize> {
+    // Each limb: (upper part, lower part, its end), its line at rest and where the fit put it.
+    let limbs: Vec<(usize, usize, Point3<f64>)> = parts
+        .iter()
+        .enumerate()
+        .filter_map(|(k, p)| Some((p.parent?, k, p.end?)))
+        .collect();
+    let line = |(upper, lower, end): (usize, usize, Point3<f64>), posed: bool| {
+        let place = |k: usize, p: &Point3<f64>| {
+            if posed {
+                parts[k].apply(&poses[k], p)
+            } else {
+                *p
+            }
+        };
+        let root = place(upper, &parts[upper].joint);
+        let bend = place(lower, &parts[lower].joint);
+        let end = place(lower, &end);
+        let reach = if parts[lower].stretches {
+            0.0
+        } else {
+            HAND_REACH
+        };
+        LimbLine {
+            root,
+            end: end + (end - bend) * reach,
+        }
+    };
+    let at_rest: Vec<LimbLine> = limbs.iter().map(|l| line(*l, false)).collect();
+    let posed: Vec<LimbLine> = limbs.iter().map(|l| line(*l, true)).collect();
+    let mut held = Vec::new();
+    for (i, &(upper, lower, end)) in limbs.iter().enumerate() {
+        if parts[lower].axis.is_none() || parts[upper].axis.is_none() {
+            continue;
+        }
+        let arm = !parts[lower].stretches;
+        let bend = parts[lower].apply(&poses[lower], &parts[lower].joint);
+        let end = parts[lower].apply(&poses[lower], &end);
+        if (bend - posed[i].root).angle(&(end - bend)) > MAX_BEND.to_radians() {
+            continue;
+        }
+        let joint = fraction(&at_rest[i], &parts[lower].joint);
+        let now = fraction(&posed[i], &bend);
+        let radius = if arm { ARM_RADIUS } else { LEG_RADIUS };
+        let template_profile = profile(surface, &at_rest, i, radius);
+        let scan_profile = profile(scan, &posed, i, radius);
+        let Some(f) = register(&template_profile, &scan_profile, joint, now) else {
+            continue;
+        };
+        let clamp = |s: f64| s.clamp(STRETCH_RANGE.0, STRETCH_RANGE.1);
+        poses[upper].stretch = clamp(poses[upper].stretch * f / now);
+        if !arm {
+            poses[lower].stretch = clamp(poses[lower].stretch * (1.0 - f) / (1.0 - now));
+        }
+        held.push(upper);
+    }
+    held
 }
 
 #[cfg(test)]
@@ -336,6 +500,8 @@ mod tests {
             parent: None,
             joint: Point3::new(0.0, 0.0, 1.0),
             axis: Some(-Vector3::z()),
+            end: None,
+            stretches: true,
         };
         // The part 1.2 times as long along its axis, turned by the transform.
         let transform = Similarity {

@@ -184,6 +184,7 @@ pub fn estimate_landmarks(
     let posed = fit_segments(
         &template,
         &parts,
+        &scan,
         best,
         &all,
         &matching,

@@ -1,0 +1,231 @@
+//! Where a knee (elbow) sits along the limb, from the limb's cross-section profile: its width at
+//! each height from the hip to the ankle (the shoulder to the wrist). Real legs narrow from the
+//! thigh to the knee and bulge at the calf below it, forearms bulge below the elbow; nearest-point
+//! matching does not see that (a limb is close to a cylinder), a profile does. The template's own
+//! profile is registered to the scan's with a stretch above and below the joint; the joint lands
+//! where the template's maps.
+
+use nalgebra::{Point3, Vector3};
+
+/// Bins of a profile from the root of the limb (hip) to its end (ankle).
+const BINS: usize = 60;
+
+/// A bin with fewer points than this has no width.
+const MIN_POINTS: usize = 6;
+
+/// The fractions of the limb (root 0, end 1) over which the profiles are compared: below the
+/// crotch and the hands hanging beside the thigh, above the foot.
+const WINDOW: (f64, f64) = (0.3, 0.92);
+
+/// How far (fraction of the limb) the knee may move from where the fit put it.
+const SEARCH: f64 = 0.08;
+
+/// A limb as a line: root (hip) to end (ankle).
+#[derive(Debug, Clone, Copy)]
+pub struct LimbLine {
+    pub root: Point3<f64>,
+    pub end: Point3<f64>,
+}
+
+impl LimbLine {
+    /// Fraction along the line and distance from the segment of `p`.
+    fn locate(&self, p: &Point3<f64>) -> (f64, f64) {
+        let d = self.end - self.root;
+        let u = (p - self.root).dot(&d) / d.norm_squared();
+        let on = self.root + d * u.clamp(0.0, 1.0);
+        (u, (p - on).norm())
+    }
+}
+
+/// The width of limb `k` of `limbs` at each of [`BINS`] heights: per bin, of the `points` that
+/// are nearer to limb `k`'s line than to every other line of `limbs` and within `radius` (m) of it,
+/// the median distance across the axis from the points' mean. `None` for a bin with too few.
+pub fn profile(
+    points: &[Point3<f64>],
+    limbs: &[LimbLine],
+    k: usize,
+    radius: f64,
+) -> Vec<Option<f64>> {
+    let line = limbs[k];
+    let axis: Vector3<f64> = (line.end - line.root).normalize();
+    let mut bins: Vec<Vec<Vector3<f64>>> = vec![Vec::new(); BINS];
+    for p in points {
+        let (u, r) = line.locate(p);
+        if !(0.0..1.0).contains(&u) || r > radius {
+            continue;
+        }
+        let nearer_other = limbs
+            .iter()
+            .enumerate()
+            .any(|(j, l)| j != k && l.locate(p).1 < r);
+        if nearer_other {
+            continue;
+        }
+        let across = (p - line.root) - axis * (p - line.root).dot(&axis);
+        bins[((u * BINS as f64) as usize).min(BINS - 1)].push(across);
+    }
+    bins.iter()
+        .map(|b| {
+            if b.len() < MIN_POINTS {
+                return None;
+            }
+            let mean = b.iter().sum::<Vector3<f64>>() / b.len() as f64;
+            let mut r: Vec<f64> = b.iter().map(|q| (q - mean).norm()).collect();
+            r.sort_by(f64::total_cmp);
+            Some(r[r.len() / 2])
+        })
+        .collect()
+}
+
+/// The profile's value at fraction `u` (linear between bin centres), `None` off its ends or
+/// next to an empty bin.
+fn at(profile: &[Option<f64>], u: f64) -> Option<f64> {
+    let x = u * profile.len() as f64 - 0.5;
+    if x < 0.0 {
+        return None;
+    }
+    let i = x as usize;
+    let t = x - i as f64;
+    match (profile.get(i)?, profile.get(i + 1)?) {
+        (Some(a), Some(b)) => Some(a + (b - a) * t),
+        _ => None,
+    }
+}
+
+/// The fraction along the scan's limb where the template's joint (fraction `joint` along the
+/// template's limb) lands: of the piecewise-linear maps taking `joint` to `f` (`f` within
+/// [`SEARCH`] of `start`), the one under which the template's profile, times a fitted gain (the
+/// subject's girth), is nearest the scan's over [`WINDOW`]. `None` when too little of the
+/// profiles overlaps.
+pub fn register(
+    template: &[Option<f64>],
+    scan: &[Option<f64>],
+    joint: f64,
+    start: f64,
+) -> Option<f64> {
+    let mut best: Option<(f64, f64)> = None;
+    let steps = 64;
+    for s in 0..=steps {
+        let f = start - SEARCH + 2.0 * SEARCH * s as f64 / steps as f64;
+        if f <= 0.05 || f >= 0.95 {
+            continue;
+        }
+        let pairs: Vec<(f64, f64)> = scan
+            .iter()
+            .enumerate()
+            .filter_map(|(i, w)| {
+                let u = (i as f64 + 0.5) / scan.len() as f64;
+                if !(WINDOW.0..=WINDOW.1).contains(&u) {
+                    return None;
+                }
+                let ut = if u < f {
+                    u * joint / f
+                } else {
+                    joint + (u - f) * (1.0 - joint) / (1.0 - f)
+                };
+                Some(((*w)?, at(template, ut)?))
+            })
+            .collect();
+        if pairs.len() < scan.len() / 3 {
+            continue;
+        }
+        let st: f64 = pairs.iter().map(|(s, t)| s * t).sum();
+        let tt: f64 = pairs.iter().map(|(_, t)| t * t).sum();
+        if tt <= 0.0 {
+            continue;
+        }
+        let gain = st / tt;
+        let cost = pairs
+            .iter()
+            .map(|(s, t)| (s - gain * t).powi(2))
+            .sum::<f64>()
+            / pairs.len() as f64;
+        if best.is_none_or(|(c, _)| cost < c) {
+            best = Some((cost, f));
+        }
+    }
+    best.map(|(_, f)| f)
+}
+
+/// Points spread over the triangles of a mesh (`positions`, `triangles`) about `spacing` (m)
+/// apart: on each triangle a barycentric grid with as many steps per edge as its longest edge
+/// holds `spacing`. A coarse template's vertices lie in rings too far apart for a profile's bins
+/// (and more densely where the mesh is finer); its surface does not.
+pub fn surface_samples(
+    positions: &[Point3<f64>],
+    triangles: &[[u32; 3]],
+    spacing: f64,
+) -> Vec<Point3<f64>> {
+    let mut out = Vec::new();
+    for t in triangles {
+        let [a, b, c] = t.map(|v| positions[v as usize]);
+        let longest = (b - a).norm().max((c - b).norm()).max((a - c).norm());
+        let n = ((longest / spacing).ceil() as usize).clamp(1, 64);
+        for i in 0..n {
+            for j in 0..n - i {
+                // Grid cell centres (a third of a step in), so shared edges are not counted twice.
+                let u = (i as f64 + 1.0 / 3.0) / n as f64;
+                let v = (j as f64 + 1.0 / 3.0) / n as f64;
+                out.push(a + (b - a) * u + (c - a) * v);
+            }
+        }
+    }
+    out
+}
+
+/// Fraction along `line` of the projection of `p`.
+pub fn fraction(line: &LimbLine, p: &Point3<f64>) -> f64 {
+    line.locate(p).0
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Rings around the z axis from z = 1 (root) to 0 (end), radius `r(u)`.
+    fn limb(r: impl Fn(f64) -> f64) -> Vec<Point3<f64>> {
+        let mut out = Vec::new();
+        for i in 0..400 {
+            let u = (i as f64 + 0.5) / 400.0;
+            for j in 0..24 {
+                let a = j as f64 / 24.0 * std::f64::consts::TAU;
+                out.push(Point3::new(r(u) * a.cos(), r(u) * a.sin(), 1.0 - u));
+            }
+        }
+        out
+    }
+
+    /// A leg: wide thigh narrowing to the knee at `k`, a calf bulge below it.
+    fn leg(k: f64, girth: f64) -> impl Fn(f64) -> f64 {
+        move |u: f64| {
+            let r = if u < k {
+                0.08 - 0.03 * u / k
+            } else {
+                let t = (u - k) / (1.0 - k);
+                0.05 + 0.015 * (std::f64::consts::PI * t.min(0.6) / 0.6).sin() - 0.02 * t
+            };
+            r * girth
+        }
+    }
+
+    #[test]
+    fn the_knee_is_found_where_the_profile_puts_it() {
+        let line = [LimbLine {
+            root: Point3::new(0.0, 0.0, 1.0),
+            end: Point3::origin(),
+        }];
+        let template = profile(&limb(leg(0.5, 1.0)), &line, 0, 0.14);
+        // The scan's knee sits lower (0.55) and its leg is thicker; the fit put it at 0.5.
+        let scan = profile(&limb(leg(0.55, 1.2)), &line, 0, 0.14);
+        let f = register(&template, &scan, 0.5, 0.5).unwrap();
+        assert!((f - 0.55).abs() < 0.01, "{f}");
+        // Points nearer another limb's line are not this limb's.
+        let other = LimbLine {
+            root: Point3::new(0.02, 0.0, 1.0),
+            end: Point3::new(0.02, 0.0, 0.0),
+        };
+        let half = profile(&limb(leg(0.5, 1.0)), &[line[0], other], 0, 0.14);
+        assert!(half.iter().flatten().count() > 0);
+        assert_ne!(half, template);
+    }
+}
