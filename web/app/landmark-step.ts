@@ -175,7 +175,7 @@ export class LandmarkStep {
       return;
     }
     const edits = this.session.edits;
-    if (!edits) return;
+    if (!edits || !this.session.scan || edits.placed().names.length === 0) return;
     this.checking = true;
     const data = document.body.dataset;
     data.suspiciousState = 'checking';
@@ -218,7 +218,7 @@ export class LandmarkStep {
       );
     }
     const input = scanInput(this.session, 'base');
-    if (!input) return [];
+    if (!input) throw new Error('no scan or no landmark to check');
     const generation = this.generation;
     const fit = await this.estimator.call({ type: 'estimateLandmarks', scan: input }, { transfer: scanTransfer(input) });
     if (generation === this.generation) this.prediction = { ...fit.prediction, scale: this.session.scanScale };
