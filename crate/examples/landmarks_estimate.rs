@@ -13,8 +13,8 @@
 //! ≈ 200K vertices).
 //!
 //! Subject i (1..=N) gets pose i mod 5 and frame (i / 5) mod 5 (so N = 25 covers every pair).
-//! Prints per subject the mean and worst landmark error and the time, then per landmark the mean
-//! and worst error over all subjects. `--partial K` gives the estimate K landmarks (spread over
+//! Prints per subject the mean and worst landmark error and the time (and a `held-out` subject's
+//! pose), then per landmark the mean and worst error over all subjects. `--partial K` gives the estimate K landmarks (spread over
 //! the body, see `PARTIAL`) and measures the others. `--align` also aligns each subject with the
 //! estimated and with the true landmarks (`align_scan`, defaults) and compares the mean
 //! correspondence error and the scan→template RMS; `--rounds 2` aligns a second time from the
@@ -33,6 +33,7 @@ mod native {
     use bodyspace::landmarks::estimate::confidence::spearman;
     use bodyspace::landmarks::estimate::{estimate_landmarks, EstimateInput, EstimateParams};
     use bodyspace::landmarks::{LandmarkSet, CAESAR_LANDMARKS};
+    use bodyspace::synth::population::A_POSE_ARM_DEG;
     use bodyspace::synth::{PopulationProfile, ScannerParams, SubjectId};
     use bodyspace::template::Template;
     use nalgebra::Point3;
@@ -175,6 +176,20 @@ mod native {
                     r.candidates_ms,
                     r.segments_ms,
                     r.fine_ms,
+                );
+            }
+            if !quiet && pose.is_none() {
+                let q = &c.subject.params.pose;
+                println!(
+                    "           pose: arms {:.0}° / {:.0}° from the body (left / right), elbows {:.0}° / {:.0}°, hips {:.0}° / {:.0}°, trunk {:.0}° turned {:.0}°",
+                    q.left_shoulder_abduction + A_POSE_ARM_DEG,
+                    q.right_shoulder_abduction + A_POSE_ARM_DEG,
+                    q.left_elbow_flexion,
+                    q.right_elbow_flexion,
+                    q.left_hip_abduction,
+                    q.right_hip_abduction,
+                    q.trunk_flexion,
+                    q.trunk_turn,
                 );
             }
             if align {
