@@ -3,7 +3,7 @@
 //!
 //! `cargo run --release --example landmarks_estimate -- [--n N] [--seed S] [--partial K]
 //!  [--fine-iterations N] [--segment-iterations N] [--step MM] [--pose K] [--frame K]
-//!  [--first K] [--profile tuning|held-out] [--align] [--rounds 2] [--quiet]`
+//!  [--first K] [--profile tuning|held-out] [--align] [--rounds 2] [--perturb MM] [--quiet]`
 //!
 //! `--profile held-out` draws the subjects from the generator's `held-out` profile (shapes,
 //! scanner and poses the estimate was not developed on: arms 20–60° from the body, arms down,
@@ -18,7 +18,9 @@
 //! the body, see `PARTIAL`) and measures the others. `--align` also aligns each subject with the
 //! estimated and with the true landmarks (`align_scan`, defaults) and compares the mean
 //! correspondence error and the scan→template RMS; `--rounds 2` aligns a second time from the
-//! landmark vertices of the first alignment from the estimate. Also printed: the mean and worst
+//! landmark vertices of the first alignment from the estimate. `--perturb MM` aligns from the true
+//! landmarks each moved MM along the surface in a random direction instead of from the estimate:
+//! what landmarks that far off cost the alignment. Also printed: the mean and worst
 //! error per landmark group and Spearman's ρ between the confidence and the error (the
 //! confidence should fall as the error grows: ρ < 0).
 
@@ -28,15 +30,19 @@ mod support;
 
 #[cfg(not(target_arch = "wasm32"))]
 mod native {
-    use super::support::{case_scanned, frames, load, poses, PARTIAL};
+    use super::support::{case_scanned, frames, load, poses, Case, PARTIAL};
     use bodyspace::align::{align_scan, AlignInput, AlignParams};
     use bodyspace::landmarks::estimate::confidence::spearman;
     use bodyspace::landmarks::estimate::{estimate_landmarks, EstimateInput, EstimateParams};
     use bodyspace::landmarks::{LandmarkSet, CAESAR_LANDMARKS};
+    use bodyspace::mesh::normals::vertex_normals;
     use bodyspace::synth::population::A_POSE_ARM_DEG;
     use bodyspace::synth::{PopulationProfile, ScannerParams, SubjectId};
     use bodyspace::template::Template;
     use nalgebra::Point3;
+    use nalgebra::Vector3;
+    use rand::{Rng, SeedableRng};
+    use rand_chacha::ChaCha8Rng;
 
     pub fn main() {
         let mut n = 10u64;
@@ -48,6 +54,7 @@ mod native {
         let mut scanner: Option<ScannerParams> = None;
         let mut profile = PopulationProfile::Tuning;
         let mut rounds = 1usize;
+        let mut perturb = 0.0f64;
         let (mut pose_at, mut frame_at, mut first): (Option<usize>, Option<usize>, u64) =
             (None, None, 1);
         let mut args = std::env::args().skip(1);
@@ -97,11 +104,23 @@ mod native {
                 "--frame" => frame_at = args.next().and_then(|v| v.parse().ok()),
                 "--first" => first = args.next().and_then(|v| v.parse().ok()).expect("--first K"),
                 "--align" => align = true,
+                "--perturb" => {
+                    perturb = args
+                        .next()
+                        .and_then(|v| v.parse().ok())
+                        .expect("--perturb MM");
+                    align = true;
+                }
                 "--quiet" => quiet = true,
                 other => panic!("unknown option {other}"),
             }
         }
         let (template, data) = load();
+        let from = if perturb > 0.0 {
+            format!("the true landmarks moved {perturb} mm")
+        } else {
+            "estimate".to_string()
+        };
         let (poses, frames) = (poses(), frames());
         let scanner = scanner.unwrap_or(profile.scanner());
         // (error mm, confidence) of every estimated landmark, for the groups and the ranking.
@@ -193,17 +212,22 @@ mod native {
                 );
             }
             if align {
+                let estimated = if perturb > 0.0 {
+                    displaced(&template, &c, perturb / to_mm, i)
+                } else {
+                    estimate.to_set()
+                };
                 let (e, t) = compare_fits(
                     &template,
                     &c.scan,
-                    &estimate.to_set(),
+                    &estimated,
                     &c.landmarks,
                     &c.truth,
                     rounds,
                 );
                 if !quiet {
                     println!(
-                        "           fit from estimate: correspondence {:.2} mm, RMS {:.3} mm; from true landmarks: {:.2} mm, {:.3} mm",
+                        "           fit from {from}: correspondence {:.2} mm, RMS {:.3} mm; from true landmarks: {:.2} mm, {:.3} mm",
                         e.0, e.1, t.0, t.1
                     );
                 }
@@ -221,7 +245,7 @@ mod native {
         );
         if align {
             println!(
-                "fit from estimate: correspondence {:.2} mm, RMS {:.3} mm; from true landmarks: {:.2} mm, {:.3} mm; ratio {:.2}",
+                "fit from {from}: correspondence {:.2} mm, RMS {:.3} mm; from true landmarks: {:.2} mm, {:.3} mm; ratio {:.2}",
                 est_corr / nf,
                 est_rms / nf,
                 true_corr / nf,
@@ -310,6 +334,26 @@ mod native {
             ],
         ),
     ];
+
+    /// The true landmarks, each moved `distance` (scan units) along the surface in a random
+    /// direction (seeded by the subject): what the alignment makes of landmarks placed that far
+    /// off, the yardstick for the fit from the estimate (`--perturb MM`).
+    fn displaced(template: &Template, c: &Case, distance: f64, subject: u64) -> LandmarkSet {
+        let normals = vertex_normals(&c.truth, &template.mesh().triangles);
+        let mut rng = ChaCha8Rng::seed_from_u64(subject);
+        let mut set = c.landmarks.clone();
+        for (l, (_, v)) in set.landmarks.iter_mut().zip(template.landmark_vertices()) {
+            let n = normals[*v as usize];
+            let r = Vector3::new(
+                rng.gen_range(-1.0..1.0),
+                rng.gen_range(-1.0..1.0),
+                rng.gen_range(-1.0..1.0),
+            );
+            let tangent = (r - n * n.dot(&r)).normalize();
+            l.position += tangent * distance;
+        }
+        set
+    }
 
     /// (mean correspondence error mm, scan→template RMS mm) of `align_scan` with the estimated
     /// and with the true landmarks; with `rounds` 2 the estimated run is repeated from the
