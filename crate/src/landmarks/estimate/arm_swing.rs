@@ -245,18 +245,15 @@ mod tests {
         };
         let vertices: Vec<u32> = (0..rest.len() as u32).step_by(2).collect();
         let dominant = dominant_parts(&parts, rest.len());
-        let mut poses = vec![identity; parts.len()];
-        let kept = swing_arms(
-            &parts,
-            &mut poses,
-            rest,
-            triangles,
-            &vertices,
-            &dominant,
-            &matching,
-            |_| Some(()),
-        )
-        .unwrap();
+        // From the template's pose, the refinement (here none, or cancelled) given.
+        let swing = |refine: fn(&mut [PartPose]) -> Option<()>| {
+            let mut poses = vec![identity; parts.len()];
+            let kept = swing_arms(
+                &parts, &mut poses, rest, triangles, &vertices, &dominant, &matching, refine,
+            );
+            kept.map(|k| (k, poses))
+        };
+        let (kept, poses) = swing(|_| Some(())).unwrap();
         assert_eq!(kept, vec![30.0, 30.0]);
         // The turned arms now lie on the scan's.
         let fitted = blend(&parts, &poses, rest);
@@ -267,17 +264,7 @@ mod tests {
             .fold(0.0, f64::max);
         assert!(worst < 1e-9, "{worst}");
         // A cancelled refinement cancels the swing.
-        let mut poses = vec![identity; parts.len()];
-        let cancelled = swing_arms(
-            &parts,
-            &mut poses,
-            rest,
-            triangles,
-            &vertices,
-            &dominant,
-            &matching,
-            |_| None,
-        );
+        let cancelled = swing(|_| None);
         assert!(cancelled.is_none());
     }
 
