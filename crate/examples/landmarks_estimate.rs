@@ -3,7 +3,11 @@
 //!
 //! `cargo run --release --example landmarks_estimate -- [--n N] [--seed S] [--partial K]
 //!  [--fine-iterations N] [--segment-iterations N] [--step MM] [--pose K] [--frame K]
-//!  [--first K] [--profile tuning|held-out] [--align] [--rounds 2] [--perturb MM] [--quiet]`
+//!  [--first K] [--profile tuning|held-out] [--align] [--rounds 2] [--perturb MM] [--quiet]
+//!  [--params JSON]`
+//!
+//! `--params JSON` sets any of the estimate's parameters (`EstimateParams` fields, the rest
+//! default), e.g. `--params '{"fine": {"scan_term_weight": 0}}'`.
 //!
 //! `--profile held-out` draws the subjects from the generator's `held-out` profile (shapes,
 //! scanner and poses the estimate was not developed on: arms 20–60° from the body, arms down,
@@ -103,6 +107,12 @@ mod native {
                 "--pose" => pose_at = args.next().and_then(|v| v.parse().ok()),
                 "--frame" => frame_at = args.next().and_then(|v| v.parse().ok()),
                 "--first" => first = args.next().and_then(|v| v.parse().ok()).expect("--first K"),
+                "--params" => {
+                    params = args
+                        .next()
+                        .and_then(|v| serde_json::from_str(&v).ok())
+                        .expect("--params JSON (EstimateParams fields)")
+                }
                 "--align" => align = true,
                 "--perturb" => {
                     perturb = args
@@ -175,6 +185,17 @@ mod native {
             }
             let mean = errors.iter().sum::<f64>() / errors.len().max(1) as f64;
             let max = errors.iter().cloned().fold(0.0, f64::max);
+            // The segment-wise fit's landmarks (before the fine fit), over the same landmarks.
+            let segment_errors: Vec<f64> = c
+                .landmarks
+                .landmarks
+                .iter()
+                .enumerate()
+                .filter(|(k, _)| !estimate.given[*k])
+                .map(|(k, l)| (estimate.predicted[k] - l.position).norm() * to_mm)
+                .collect();
+            let segment_mean =
+                segment_errors.iter().sum::<f64>() / segment_errors.len().max(1) as f64;
             let ms = estimate.report.total_ms;
             sum_mean += mean;
             worst = worst.max(max);
@@ -183,7 +204,7 @@ mod native {
             let r = &estimate.report;
             if !quiet {
                 println!(
-                    "subject {i:2} {:24} {:26} {:7} scan vertices: mean {mean:5.1} mm, worst {max:6.1} mm, frame up {} facing {}, segment RMS {:.1} mm, fit RMS {:.2} mm, flagged {}, {ms:6.0} ms (candidates {:.0}, segments {:.0}, fine {:.0})",
+                    "subject {i:2} {:24} {:26} {:7} scan vertices: mean {mean:5.1} mm, worst {max:6.1} mm, frame up {} facing {}, segment RMS {:.1} mm (mean {segment_mean:.1} mm), fit RMS {:.2} mm, flagged {}, {ms:6.0} ms (candidates {:.0}, segments {:.0}, fine {:.0})",
                     pose.map_or(profile.name(), |p| p.name),
                     frame.name,
                     c.scan.positions.len(),

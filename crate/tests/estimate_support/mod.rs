@@ -45,7 +45,7 @@ pub struct Pose {
 }
 
 /// The poses of issue 11: arms raised, arms low, asymmetric arms, head and trunk turned, hands
-/// on hips (elbows bent), feet apart and together.
+/// on hips (elbows bent), feet apart and together, arms down (touching the body).
 pub fn poses() -> Vec<Pose> {
     let p = |name, l, r, trunk, head_turn, head_flexion| Pose {
         name,
@@ -76,6 +76,8 @@ pub fn poses() -> Vec<Pose> {
         with(p("hands-on-hips", 0.0, 0.0, 0.0, 0.0, 0.0), 95.0, 0.0),
         with(p("feet-apart", 0.0, 0.0, 0.0, 0.0, 0.0), 0.0, 8.0),
         with(p("feet-together", -10.0, -10.0, 0.0, 0.0, 0.0), 0.0, -3.0),
+        // Arms down, ≈ 10° from the body (the A-pose's arms hang 39.6° from it).
+        p("arms-down", -30.0, -30.0, 0.0, 0.0, 0.0),
     ]
 }
 

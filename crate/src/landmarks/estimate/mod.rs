@@ -6,6 +6,7 @@
 //! * [`frame`] — principal axes and the four frame candidates; [`FrameReport`].
 //! * [`candidates`] — the similarity ICP of each candidate.
 //! * [`segments`] — the segment-wise rigid fit of the template's parts (the pose).
+//!   [`arm_swing`] — each arm's swing about the shoulder tried from several starts.
 //! * [`matching`] — closest compatible scan points, the ICP energy.
 //! * [`suspicious`] — [`flag_suspicious`]: given landmarks far from where they are expected;
 //!   [`expected`] — where: from the other given landmarks of the part, or from the fit.
@@ -14,6 +15,7 @@
 //! * [`EstimateParams`] (`params.rs`), [`EstimateReport`] (`report.rs`), [`EstimateError`]
 //!   (`error.rs`).
 
+pub mod arm_swing;
 pub mod candidates;
 pub mod confidence;
 pub mod error;

@@ -18,6 +18,7 @@ use std::ops::ControlFlow;
 
 use nalgebra::{Point3, Vector3};
 
+use super::arm_swing::{swing_arms, SWING_AFTER, SWING_ITERATIONS};
 use super::matching::Matching;
 use super::profile::{fraction, profile, register, surface_samples, LimbLine};
 use super::tick::Ticker;
@@ -292,7 +293,9 @@ const HAND_REACH: f64 = 0.7;
 /// `start`: each iteration blends the template, matches `vertices` to the scan, then fits each
 /// part, parents first, to the matches of the vertices it dominates plus its joint held where
 /// its (already moved) parent puts it — first the stretch in the part's last placement, then
-/// the rigid motion of the stretched part. Before the last [`PROFILE_ITERATIONS`] the knees and
+/// the rigid motion of the stretched part. After [`SWING_AFTER`] iterations each arm is tried
+/// at several turns about its shoulder (`arm_swing.rs`): nearest points alone leave an arm
+/// held down along the body out at the template's A-pose. Before the last [`PROFILE_ITERATIONS`] the knees and
 /// elbows are moved along the limbs to where the limbs' cross-section profiles put them
 /// (`profile.rs`, [`place_joints`]), both profiles taken from points spread over the surfaces
 /// (`scan`, metres, is the mesh `matching` indexes): a coarse mesh's vertices alone lie in rings
@@ -325,7 +328,24 @@ pub fn fit_segments(
         matching,
         dominant: dominant_parts(parts, rest.len()),
     };
-    fit.iterate(&mut poses, &held, iterations - after_profile, ticker)?;
+    let before_swing = SWING_AFTER.min(iterations - after_profile);
+    fit.iterate(&mut poses, &held, before_swing, ticker)?;
+    swing_arms(
+        parts,
+        &mut poses,
+        rest,
+        &template.mesh().triangles,
+        vertices,
+        &fit.dominant,
+        matching,
+        |run| fit.iterate(run, &held, SWING_ITERATIONS, ticker),
+    )?;
+    fit.iterate(
+        &mut poses,
+        &held,
+        iterations - after_profile - before_swing,
+        ticker,
+    )?;
     let surface = surface_samples(rest, &template.mesh().triangles, SURFACE_SPACING);
     let scan_surface = surface_samples(&scan.positions, &scan.triangles, SURFACE_SPACING);
     for k in place_joints(parts, &mut poses, &surface, &scan_surface) {
@@ -336,7 +356,7 @@ pub fn fit_segments(
 }
 
 /// Per vertex, the part whose weight there is largest and at least ½.
-fn dominant_parts(parts: &[Part], n: usize) -> Vec<Option<usize>> {
+pub(crate) fn dominant_parts(parts: &[Part], n: usize) -> Vec<Option<usize>> {
     (0..n)
         .map(|v| {
             (0..parts.len())

@@ -18,6 +18,7 @@ use std::borrow::Cow;
 
 use nalgebra::Point3;
 
+use super::arm_swing::{SWING_DEG, SWING_ITERATIONS};
 use super::candidates::{even_sample, fit_similarity, FittedCandidate};
 use super::confidence::{confidence, neighbourhoods, residual};
 use super::error::EstimateError;
@@ -147,6 +148,7 @@ pub fn estimate_landmarks(
     }
     let max_iterations = starts.len() * (params.candidate_iterations + 1)
         + params.segment_iterations
+        + SWING_ITERATIONS * SWING_DEG.len()
         + params.fine.max_iterations;
     let mut ticker = Ticker::new(observer, max_iterations);
 

@@ -1,0 +1,302 @@
+//! The arms' swing about the shoulder tried from several starts: the segment-wise fit's nearest
+//! points only find an arm within about 20° of where the similarity fit left it (the template's
+//! A-pose). An arm held down along the body (≈ 10° from it, 30° from the template's) stays
+//! out at the side, its forearm and hand matched to the hip and thigh, and the fine fit then
+//! drags the template's hand across the body (docs/landmarks-estimate.md). So each arm, with its
+//! upper and lower part together, is turned about its shoulder in the body's frontal plane by
+//! each of [`SWING_DEG`] and kept at the turn whose matches fit best; the ICP then goes on from
+//! there.
+
+use nalgebra::{Point3, Rotation3, Unit, Vector3};
+
+use super::matching::{Matching, Pair};
+use super::segments::{blend, Part, PartPose};
+use crate::mesh::normals::vertex_normals;
+use crate::mesh::similarity::Similarity;
+
+/// The turns tried about each shoulder (degrees, positive towards the body) from where the fit
+/// has the arm: arms from down along the body to raised, as people are scanned.
+pub const SWING_DEG: [f64; 3] = [0.0, 15.0, 30.0];
+
+/// Iterations of the segment-wise fit run from each turn before the turns are compared.
+pub const SWING_ITERATIONS: usize = 3;
+
+/// Iterations of the segment-wise fit before the arms are swung (the torso settled first).
+pub const SWING_AFTER: usize = 5;
+
+/// A match farther than this (m) counts as this far in a turn's energy, an unmatched vertex
+/// too: the arm's inner side, pressed against the trunk, has no surface of its own on the scan,
+/// and must not count against the right turn more than a wrong turn's far matches.
+const SWING_CAP: f64 = 0.03;
+
+/// An arm: its upper and lower part (indices into the parts).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Arm {
+    pub upper: usize,
+    pub lower: usize,
+}
+
+/// The arms among `parts`: a limb's lower part that does not stretch (`segments::parts`) and
+/// its parent.
+pub fn arms(parts: &[Part]) -> Vec<Arm> {
+    parts
+        .iter()
+        .enumerate()
+        .filter(|(_, p)| !p.stretches && p.end.is_some())
+        .filter_map(|(lower, p)| {
+            Some(Arm {
+                upper: p.parent?,
+                lower,
+            })
+        })
+        .collect()
+}
+
+/// The template's frontal-plane normal (unit, template frame): across the shoulders (the arms'
+/// joints) and the trunk's up (the torso's centroid of weight to the head's joint).
+fn front_axis(parts: &[Part], arms: &[Arm], rest: &[Point3<f64>]) -> Option<Vector3<f64>> {
+    let [a, b] = arms else { return None };
+    let across = parts[a.upper].joint - parts[b.upper].joint;
+    let (mut sum, mut total) = (Vector3::zeros(), 0.0);
+    for (p, w) in rest.iter().zip(&parts[0].weights) {
+        sum += p.coords * *w;
+        total += w;
+    }
+    let head = parts.iter().find(|p| p.name == "head")?;
+    let up = head.joint.coords - sum / f64::max(total, 1e-12);
+    across.cross(&up).try_normalize(1e-9)
+}
+
+/// Side (m) of the cells of [`Claimed`].
+const CLAIM_CELL: f64 = 0.015;
+
+/// The scan's surface the rest of the body (trunk, head, legs) already explains: the cells of
+/// its matches' targets. An arm turned into the trunk matches the trunk's surface as closely as
+/// a right turn matches the arm's own; its matches there explain nothing new and count as
+/// unmatched.
+#[derive(Debug, Default)]
+pub struct Claimed(std::collections::HashSet<[i64; 3]>);
+
+impl Claimed {
+    fn cell(p: &Point3<f64>) -> [i64; 3] {
+        p.coords.map(|c| (c / CLAIM_CELL).floor() as i64).into()
+    }
+
+    /// The cells of `pairs`' targets.
+    pub fn of(pairs: &[Pair]) -> Self {
+        Self(pairs.iter().map(|p| Self::cell(&p.target)).collect())
+    }
+
+    /// Whether `p` lies in a claimed cell.
+    pub fn contains(&self, p: &Point3<f64>) -> bool {
+        self.0.contains(&Self::cell(p))
+    }
+}
+
+/// The capped energy of `pairs` out of `tried` vertices (see [`SWING_CAP`]), a match on
+/// `claimed` surface counting as unmatched.
+fn capped_energy(pairs: &[Pair], tried: usize, claimed: &Claimed) -> f64 {
+    let own: Vec<f64> = pairs
+        .iter()
+        .filter(|p| !claimed.contains(&p.target))
+        .map(|p| p.distance.min(SWING_CAP).powi(2))
+        .collect();
+    let unmatched = tried.saturating_sub(own.len()) as f64;
+    (own.iter().sum::<f64>() + unmatched * SWING_CAP * SWING_CAP) / tried.max(1) as f64
+}
+
+/// `transform` followed by the rotation `r` about `centre`.
+fn turned(transform: &Similarity, r: &Rotation3<f64>, centre: &Point3<f64>) -> Similarity {
+    Similarity {
+        scale: transform.scale,
+        rotation: r.matrix() * transform.rotation,
+        translation: r * (transform.translation - centre.coords) + centre.coords,
+    }
+}
+
+/// Turns each arm of `poses` about its shoulder, in the body's frontal plane, by each turn of
+/// [`SWING_DEG`] (both arms at once), lets `refine` (the segment-wise fit's iterations, all
+/// parts) go on from there for [`SWING_ITERATIONS`], and keeps for each arm the run whose
+/// matches of the arm's `vertices` (those `dominant` says are its parts') have the lowest
+/// capped energy; the other parts are left as they were. Returns the turn kept per arm (degrees
+/// towards the body), or `None` when `refine` was cancelled.
+#[allow(clippy::too_many_arguments)]
+pub fn swing_arms(
+    parts: &[Part],
+    poses: &mut [PartPose],
+    rest: &[Point3<f64>],
+    triangles: &[[u32; 3]],
+    vertices: &[u32],
+    dominant: &[Option<usize>],
+    matching: &Matching<'_>,
+    mut refine: impl FnMut(&mut [PartPose]) -> Option<()>,
+) -> Option<Vec<f64>> {
+    let arms = arms(parts);
+    let Some(front) = front_axis(parts, &arms, rest) else {
+        return Some(Vec::new());
+    };
+    let of_arm = |v: u32, arm: &Arm| matches!(dominant[v as usize], Some(k) if k == arm.upper || k == arm.lower);
+    let rest_of_body: Vec<u32> = vertices
+        .iter()
+        .copied()
+        .filter(|&v| !arms.iter().any(|a| of_arm(v, a)))
+        .collect();
+    let own: Vec<Vec<u32>> = arms
+        .iter()
+        .map(|arm| {
+            vertices
+                .iter()
+                .copied()
+                .filter(|&v| of_arm(v, arm))
+                .collect()
+        })
+        .collect();
+    let axis = Unit::new_normalize(poses[0].transform.rotation * front);
+    let head = parts.iter().find(|p| p.name == "head");
+    // Each arm's shoulder and the sign of a turn towards the body: the one that moves the
+    // elbow away from the head's side.
+    let pivots: Vec<(Point3<f64>, f64)> = arms
+        .iter()
+        .map(|arm| {
+            let shoulder = parts[arm.upper].apply(&poses[arm.upper], &parts[arm.upper].joint);
+            let elbow = parts[arm.lower].apply(&poses[arm.lower], &parts[arm.lower].joint);
+            let up = head.map_or(Vector3::zeros(), |h| {
+                poses[0].transform.apply(&h.joint) - shoulder
+            });
+            let down = axis.cross(&(elbow - shoulder)).dot(&up) <= 0.0;
+            (shoulder, if down { 1.0 } else { -1.0 })
+        })
+        .collect();
+    let start = poses.to_vec();
+    // Per arm: (energy, turn, upper pose, lower pose) of the best run.
+    let mut best: Vec<(f64, f64, PartPose, PartPose)> = arms
+        .iter()
+        .map(|a| (f64::INFINITY, 0.0, start[a.upper], start[a.lower]))
+        .collect();
+    for deg in SWING_DEG {
+        let mut run = start.clone();
+        for (arm, (shoulder, sign)) in arms.iter().zip(&pivots) {
+            let r = Rotation3::from_axis_angle(&axis, sign * deg.to_radians());
+            run[arm.upper].transform = turned(&start[arm.upper].transform, &r, shoulder);
+            run[arm.lower].transform = turned(&start[arm.lower].transform, &r, shoulder);
+        }
+        refine(&mut run)?;
+        let positions = blend(parts, &run, rest);
+        let normals = vertex_normals(&positions, triangles);
+        let claimed = Claimed::of(&matching.pairs(&rest_of_body, &positions, &normals));
+        for (a, arm) in arms.iter().enumerate() {
+            let pairs = matching.pairs(&own[a], &positions, &normals);
+            let energy = capped_energy(&pairs, own[a].len(), &claimed);
+            if energy < best[a].0 {
+                best[a] = (energy, deg, run[arm.upper], run[arm.lower]);
+            }
+        }
+    }
+    for (arm, (_, _, upper, lower)) in arms.iter().zip(&best) {
+        poses[arm.upper] = *upper;
+        poses[arm.lower] = *lower;
+    }
+    Some(best.iter().map(|b| b.1).collect())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::align::SurfaceIndex;
+    use crate::landmarks::estimate::segments::{dominant_parts, parts};
+    use crate::mesh::Mesh;
+    use crate::template::{Resolution, Template};
+
+    #[test]
+    fn arms_held_down_along_the_body_are_found() {
+        let template = Template::embedded()
+            .unwrap()
+            .at_resolution(Resolution::Base);
+        let rest = &template.mesh().positions;
+        let triangles = &template.mesh().triangles;
+        let parts = parts(&template);
+        let identity = PartPose {
+            transform: Similarity::identity(),
+            stretch: 1.0,
+        };
+        // The "scan": the template with both arms turned 30° towards the body, the pivots and
+        // directions as `swing_arms` finds them at rest.
+        let arms = arms(&parts);
+        assert_eq!(arms.len(), 2);
+        let front = Unit::new_normalize(front_axis(&parts, &arms, rest).unwrap());
+        let head = parts.iter().find(|p| p.name == "head").unwrap().joint;
+        let mut scan_poses = vec![identity; parts.len()];
+        for arm in &arms {
+            let shoulder = parts[arm.upper].joint;
+            let elbow = parts[arm.lower].joint;
+            let down = front.cross(&(elbow - shoulder)).dot(&(head - shoulder)) <= 0.0;
+            let sign = if down { 1.0 } else { -1.0 };
+            let r = Rotation3::from_axis_angle(&front, sign * 30f64.to_radians());
+            for k in [arm.upper, arm.lower] {
+                scan_poses[k].transform = turned(&identity.transform, &r, &shoulder);
+            }
+        }
+        let scan = Mesh::new(blend(&parts, &scan_poses, rest), triangles.clone());
+        let index = SurfaceIndex::new(&scan).unwrap();
+        let matching = Matching {
+            scan: &index,
+            min_cos: 0.5,
+            outlier_distance: 0.1,
+        };
+        let vertices: Vec<u32> = (0..rest.len() as u32).step_by(2).collect();
+        let dominant = dominant_parts(&parts, rest.len());
+        // From the template's pose, the refinement (here none, or cancelled) given.
+        let swing = |refine: fn(&mut [PartPose]) -> Option<()>| {
+            let mut poses = vec![identity; parts.len()];
+            let kept = swing_arms(
+                &parts, &mut poses, rest, triangles, &vertices, &dominant, &matching, refine,
+            );
+            kept.map(|k| (k, poses))
+        };
+        let (kept, poses) = swing(|_| Some(())).unwrap();
+        assert_eq!(kept, vec![30.0, 30.0]);
+        // The turned arms now lie on the scan's.
+        let fitted = blend(&parts, &poses, rest);
+        let worst = fitted
+            .iter()
+            .zip(&scan.positions)
+            .map(|(p, q)| (p - q).norm())
+            .fold(0.0, f64::max);
+        assert!(worst < 1e-9, "{worst}");
+        // A cancelled refinement cancels the swing.
+        let cancelled = swing(|_| None);
+        assert!(cancelled.is_none());
+    }
+
+    #[test]
+    fn a_turn_about_a_centre_keeps_the_centre_and_turns_the_rest() {
+        let t = Similarity {
+            scale: 2.0,
+            rotation: *Rotation3::from_axis_angle(&Vector3::z_axis(), 0.4).matrix(),
+            translation: Vector3::new(1.0, -2.0, 0.5),
+        };
+        let centre = Point3::new(0.3, 0.1, 1.2);
+        let r = Rotation3::from_axis_angle(&Vector3::y_axis(), 0.7);
+        let u = turned(&t, &r, &centre);
+        for p in [Point3::origin(), Point3::new(0.2, -0.5, 0.9)] {
+            let want = r * (t.apply(&p) - centre) + centre.coords;
+            assert!((u.apply(&p).coords - want).norm() < 1e-12);
+        }
+    }
+
+    #[test]
+    fn unmatched_and_far_matches_count_as_the_cap() {
+        let pair = |d: f64| Pair {
+            vertex: 0,
+            target: Point3::origin(),
+            distance: d,
+        };
+        let e = capped_energy(&[pair(0.01), pair(0.5)], 3, &Claimed::default());
+        let want = (0.01f64.powi(2) + 2.0 * SWING_CAP.powi(2)) / 3.0;
+        assert!((e - want).abs() < 1e-15);
+        // A match on surface the rest of the body explains counts as unmatched.
+        let claimed = Claimed::of(&[pair(0.0)]);
+        let e = capped_energy(&[pair(0.01)], 1, &claimed);
+        assert!((e - SWING_CAP.powi(2)).abs() < 1e-15);
+    }
+}
