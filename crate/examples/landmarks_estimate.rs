@@ -12,8 +12,8 @@
 //! K` starts at subject K. `--step MM` sets the virtual scanner's sampling step (default 3 mm; 2.6 mm makes scans of
 //! ≈ 200K vertices).
 //!
-//! Subject i (1..=N) gets pose i mod 5 and frame (i / 5) mod 5 (so N = 25 covers every pair).
-//! Prints per subject the mean and worst landmark error and the time (and a `held-out` subject's
+//! Subject i (1..=N) gets pose i mod 8 and frame (i / 8) mod 5 (indices into `poses()`, `frames()`).
+//! Prints per subject the mean and worst landmark error, the wrists' and hands' mean and the time (and a `held-out` subject's
 //! pose), then per landmark the mean and worst error over all subjects. `--partial K` gives the estimate K landmarks (spread over
 //! the body, see `PARTIAL`) and measures the others. `--align` also aligns each subject with the
 //! estimated and with the true landmarks (`align_scan`, defaults) and compares the mean
@@ -156,6 +156,17 @@ mod native {
             }
             let mean = errors.iter().sum::<f64>() / errors.len().max(1) as f64;
             let max = errors.iter().cloned().fold(0.0, f64::max);
+            let hand: Vec<f64> = all
+                .iter()
+                .skip(all.len() - errors.len())
+                .filter(|(k, _, _)| {
+                    HAND_GROUP
+                        .iter()
+                        .any(|m| CAESAR_LANDMARKS[*k].name.contains(m))
+                })
+                .map(|(_, e, _)| *e)
+                .collect();
+            let hands = hand.iter().sum::<f64>() / hand.len().max(1) as f64;
             let ms = estimate.report.total_ms;
             sum_mean += mean;
             worst = worst.max(max);
@@ -164,7 +175,7 @@ mod native {
             let r = &estimate.report;
             if !quiet {
                 println!(
-                    "subject {i:2} {:24} {:26} {:7} scan vertices: mean {mean:5.1} mm, worst {max:6.1} mm, frame up {} facing {}, segment RMS {:.1} mm, fit RMS {:.2} mm, flagged {}, {ms:6.0} ms (candidates {:.0}, segments {:.0}, fine {:.0})",
+                    "subject {i:2} {:24} {:26} {:7} scan vertices: mean {mean:5.1} mm, worst {max:6.1} mm, wrists and hands {hands:5.1} mm, frame up {} facing {}, segment RMS {:.1} mm, fit RMS {:.2} mm, flagged {}, {ms:6.0} ms (candidates {:.0}, segments {:.0}, fine {:.0})",
                     pose.map_or(profile.name(), |p| p.name),
                     frame.name,
                     c.scan.positions.len(),
@@ -265,6 +276,9 @@ mod native {
 
     /// Landmark groups for the summary: (name, substrings of the members' names). Every
     /// CAESAR landmark is in exactly one.
+    /// The wrist and hand landmarks (issue 11's hand step is measured on them per subject).
+    const HAND_GROUP: &[&str] = &["Styloid", "Metacarpal", "Dactylion"];
+
     const GROUPS: [(&str, &[&str]); 6] = [
         (
             "head and neck",
@@ -297,7 +311,7 @@ mod native {
             ],
         ),
         ("elbows", &["Olecranon", "Humeral", "Radiale"]),
-        ("wrists and hands", &["Styloid", "Metacarpal", "Dactylion"]),
+        ("wrists and hands", HAND_GROUP),
         ("knees", &["Knee Crease", "Femoral"]),
         (
             "ankles and feet",

@@ -23,6 +23,7 @@ use super::confidence::{confidence, neighbourhoods, residual};
 use super::error::EstimateError;
 use super::expected::expected_positions;
 use super::frame::{frame_candidates, FrameReport};
+use super::hand::{hands, pose_hands};
 use super::matching::Matching;
 use super::params::EstimateParams;
 use super::report::{CandidateReport, EstimateReport, LandmarkReport};
@@ -181,7 +182,7 @@ pub fn estimate_landmarks(
         .collect();
     let parts = parts(&template);
     let best = fitted[0].1.transform;
-    let posed = fit_segments(
+    let mut posed = fit_segments(
         &template,
         &parts,
         &scan,
@@ -192,6 +193,7 @@ pub fn estimate_landmarks(
         &mut ticker,
     )
     .ok_or(EstimateError::Cancelled)?;
+    pose_hands(&hands(&template), &mut posed, &scan);
     let posed_normals = crate::mesh::normals::vertex_normals(&posed, triangles);
     let segment_rms = Matching::rms(&matching.pairs(&all, &posed, &posed_normals));
     let fit_predicted: Vec<Point3<f64>> = landmark_vertices
