@@ -156,16 +156,7 @@ mod native {
             }
             let mean = errors.iter().sum::<f64>() / errors.len().max(1) as f64;
             let max = errors.iter().cloned().fold(0.0, f64::max);
-            let hand: Vec<f64> = all
-                .iter()
-                .skip(all.len() - errors.len())
-                .filter(|(k, _, _)| {
-                    HAND_GROUP
-                        .iter()
-                        .any(|m| CAESAR_LANDMARKS[*k].name.contains(m))
-                })
-                .map(|(_, e, _)| *e)
-                .collect();
+            let hand = group_errors(&all[all.len() - errors.len()..], HAND_GROUP);
             let hands = hand.iter().sum::<f64>() / hand.len().max(1) as f64;
             let ms = estimate.report.total_ms;
             sum_mean += mean;
@@ -249,15 +240,7 @@ mod native {
         );
         println!("\n| group | mean (mm) | worst (mm) |\n| --- | --- | --- |");
         for (group, members) in GROUPS {
-            let e: Vec<f64> = all
-                .iter()
-                .filter(|(k, _, _)| {
-                    members
-                        .iter()
-                        .any(|m| CAESAR_LANDMARKS[*k].name.contains(m))
-                })
-                .map(|(_, e, _)| *e)
-                .collect();
+            let e = group_errors(&all, members);
             if !e.is_empty() {
                 println!(
                     "| {group} | {:.1} | {:.1} |",
@@ -276,6 +259,19 @@ mod native {
 
     /// Landmark groups for the summary: (name, substrings of the members' names). Every
     /// CAESAR landmark is in exactly one.
+    /// The errors of `all` (landmark, error, confidence) whose landmark's name contains one of
+    /// `members`.
+    fn group_errors(all: &[(usize, f64, f64)], members: &[&str]) -> Vec<f64> {
+        all.iter()
+            .filter(|(k, _, _)| {
+                members
+                    .iter()
+                    .any(|m| CAESAR_LANDMARKS[*k].name.contains(m))
+            })
+            .map(|(_, e, _)| *e)
+            .collect()
+    }
+
     /// The wrist and hand landmarks (issue 11's hand step is measured on them per subject).
     const HAND_GROUP: &[&str] = &["Styloid", "Metacarpal", "Dactylion"];
 

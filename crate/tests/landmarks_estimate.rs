@@ -37,35 +37,35 @@ fn estimate(c: &Case, given: &LandmarkSet) -> LandmarkEstimate {
 
 /// Mean and worst distance (mm) of the estimated landmarks that were not given.
 fn errors_mm(c: &Case, e: &LandmarkEstimate) -> (f64, f64) {
-    let to_mm = e.scale_to_metres * 1000.0;
-    let errors: Vec<f64> = c
-        .landmarks
-        .landmarks
-        .iter()
-        .enumerate()
-        .filter(|(k, _)| !e.given[*k])
-        .map(|(k, l)| (e.positions[k].unwrap() - l.position).norm() * to_mm)
-        .collect();
+    let errors = landmark_errors_mm(c, e, |k, _| !e.given[k]);
     let mean = errors.iter().sum::<f64>() / errors.len() as f64;
     (mean, errors.iter().cloned().fold(0.0, f64::max))
 }
 
 /// The wrists' and hands' mean error (mm): styloids, metacarpals, dactylions.
 fn hands_mm(c: &Case, e: &LandmarkEstimate) -> f64 {
+    let errors = landmark_errors_mm(c, e, |_, name| {
+        ["Styloid", "Metacarpal", "Dactylion"]
+            .iter()
+            .any(|m| name.contains(m))
+    });
+    errors.iter().sum::<f64>() / errors.len() as f64
+}
+
+/// The distance (mm) from the truth of each estimated landmark `keep` (index, name) holds.
+fn landmark_errors_mm(
+    c: &Case,
+    e: &LandmarkEstimate,
+    keep: impl Fn(usize, &str) -> bool,
+) -> Vec<f64> {
     let to_mm = e.scale_to_metres * 1000.0;
-    let errors: Vec<f64> = c
-        .landmarks
+    c.landmarks
         .landmarks
         .iter()
         .enumerate()
-        .filter(|(_, l)| {
-            ["Styloid", "Metacarpal", "Dactylion"]
-                .iter()
-                .any(|m| l.name.contains(m))
-        })
+        .filter(|(k, l)| keep(*k, &l.name))
         .map(|(k, l)| (e.positions[k].unwrap() - l.position).norm() * to_mm)
-        .collect();
-    errors.iter().sum::<f64>() / errors.len() as f64
+        .collect()
 }
 
 fn axis_name(frame: &Frame, v: Vector3<f64>) -> String {

@@ -324,7 +324,10 @@ pub fn hand_rotation(
     let across = |cov: &Matrix3<f64>| {
         let flat = Matrix3::identity() - along * along.transpose();
         let eigen = (flat * cov * flat).symmetric_eigen();
-        eigen.eigenvectors.column(eigen.eigenvalues.imax()).into_owned()
+        eigen
+            .eigenvectors
+            .column(eigen.eigenvalues.imax())
+            .into_owned()
     };
     let t_across = across(&(bend.matrix() * t_cov * bend.matrix().transpose()));
     let s_across = across(&s_cov);

@@ -5,7 +5,8 @@
 //! 2. frame candidates from the principal axes (`frame.rs`), plus one from the given landmarks
 //!    when there are at least four; each fitted by similarity ICP, the lowest energy kept
 //!    (`candidates.rs`);
-//! 3. the segment-wise rigid fit of the template's parts to the scan's pose (`segments.rs`);
+//! 3. the segment-wise rigid fit of the template's parts to the scan's pose (`segments.rs`),
+//!    then each free hand's wrist and turn from the scan's surface beyond the wrist (`hand.rs`);
 //! 4. given landmarks far from where the others of their part (or else the fit) put them are
 //!    flagged (`expected.rs`, `suspicious.rs`);
 //! 5. the landmark-free fine alignment (paper §3.2, stiff to soft), the unflagged given landmarks
