@@ -7,6 +7,7 @@
 //! * [`candidates`] — the similarity ICP of each candidate.
 //! * [`segments`] — the segment-wise rigid fit of the template's parts (the pose).
 //!   [`arm_swing`] — each arm's swing about the shoulder tried from several starts.
+//! * [`hand`] — the hand's pose about the wrist, from the scan's surface beyond it.
 //! * [`matching`] — closest compatible scan points, the ICP energy.
 //! * [`suspicious`] — [`flag_suspicious`]: given landmarks far from where they are expected;
 //!   [`expected`] — where: from the other given landmarks of the part, or from the fit.
@@ -21,6 +22,7 @@ pub mod confidence;
 pub mod error;
 pub mod expected;
 pub mod frame;
+pub mod hand;
 pub mod matching;
 pub mod params;
 pub mod profile;

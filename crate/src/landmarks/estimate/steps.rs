@@ -5,7 +5,8 @@
 //! 2. frame candidates from the principal axes (`frame.rs`), plus one from the given landmarks
 //!    when there are at least four; each fitted by similarity ICP, the lowest energy kept
 //!    (`candidates.rs`);
-//! 3. the segment-wise rigid fit of the template's parts to the scan's pose (`segments.rs`);
+//! 3. the segment-wise rigid fit of the template's parts to the scan's pose (`segments.rs`),
+//!    then each free hand's wrist and turn from the scan's surface beyond the wrist (`hand.rs`);
 //! 4. given landmarks far from where the others of their part (or else the fit) put them are
 //!    flagged (`expected.rs`, `suspicious.rs`);
 //! 5. the landmark-free fine alignment (paper §3.2, stiff to soft), the unflagged given landmarks
@@ -24,6 +25,7 @@ use super::confidence::{confidence, neighbourhoods, residual};
 use super::error::EstimateError;
 use super::expected::expected_positions;
 use super::frame::{frame_candidates, FrameReport};
+use super::hand::{hands, pose_hands};
 use super::matching::Matching;
 use super::params::EstimateParams;
 use super::report::{CandidateReport, EstimateReport, LandmarkReport};
@@ -183,7 +185,7 @@ pub fn estimate_landmarks(
         .collect();
     let parts = parts(&template);
     let best = fitted[0].1.transform;
-    let posed = fit_segments(
+    let mut posed = fit_segments(
         &template,
         &parts,
         &scan,
@@ -194,6 +196,7 @@ pub fn estimate_landmarks(
         &mut ticker,
     )
     .ok_or(EstimateError::Cancelled)?;
+    pose_hands(&hands(&template), &mut posed, &scan);
     let posed_normals = crate::mesh::normals::vertex_normals(&posed, triangles);
     let segment_rms = Matching::rms(&matching.pairs(&all, &posed, &posed_normals));
     let fit_predicted: Vec<Point3<f64>> = landmark_vertices

@@ -1,0 +1,427 @@
+//! The hand's pose about the wrist. After the segment-wise fit the hand has moved rigidly with
+//! the forearm (which keeps the template's length and moves with the elbow): a wrist that sits
+//! higher or lower along the arm than the template's, or a hand turned at the wrist, is not
+//! followed — nearest-point matching of a whole forearm part barely sees the hand. Here the
+//! scan's surface beyond the wrist (within the hand's reach, on the far side of the plane across
+//! the forearm at the wrist) is compared with the posed template's hand surface there:
+//!
+//! 1. the wrist slides along the forearm (the forearm stretched, the hand carried along) until
+//!    the two hands' centroids lie equally far along it, the region taken again at each new
+//!    wrist;
+//! 2. the hand turns about the wrist: the shortest rotation of the template hand's axis (wrist →
+//!    centroid) onto the scan's, then about that axis the turn that brings the widest direction
+//!    across the hand (the flat side) onto the scan's. The rotation is blended to nothing at
+//!    the wrist.
+//!
+//! A hand that is not free (on the hip, against the thigh) or not seen (a hole) shows there as
+//! much more or much less surface than a hand: it is left as the fit put it.
+
+use nalgebra::{Matrix3, Point3, Rotation3, Vector3};
+
+use crate::mesh::Mesh;
+use crate::template::{Segment, Template};
+
+/// The hand's share of the rotation rises from 0 at this distance (m) before the wrist's plane to
+/// 1 this far beyond it (the skin over the carpus follows the hand).
+const BLEND: (f64, f64) = (-0.01, 0.02);
+
+/// The surface compared starts this far (m) beyond the wrist's plane: the forearm's skin just
+/// below the wrist stays out whatever the hand's pose.
+const BEYOND: f64 = 0.01;
+
+/// The region's radius about the wrist, times the template hand's reach (its farthest vertex
+/// from the wrist).
+const REACH: f64 = 1.2;
+
+/// A hand-like cluster has this range of area, relative to the template's hand surface in the
+/// same region (on the development subjects free hands have 0.73–1.07, a hand on the hip 1.8).
+const AREA_RANGE: (f64, f64) = (0.6, 1.5);
+
+/// Rounds of the wrist's slide along the forearm (each region taken at the last wrist: a wrist
+/// placed too high brings forearm into the region, so one round corrects about 60%).
+const SLIDE_ITERATIONS: usize = 5;
+
+/// The wrist slides at most this far (m) along the forearm.
+const MAX_SLIDE: f64 = 0.06;
+
+/// A larger turn (degrees) is not believed: a hand's flexion or deviation at the wrist is within
+/// it, a match to the thigh or the hip often is not.
+const MAX_TURN: f64 = 60.0;
+
+/// One hand of the template: the vertices that make the wrist and the elbow, the hand's vertices
+/// with their share of the rotation, the forearm's and the hand's with their share of the slide.
+#[derive(Debug, Clone)]
+pub struct Hand {
+    pub side: &'static str,
+    styloids: [u32; 2],
+    epicondyles: [u32; 2],
+    share: Vec<(u32, f64)>,
+    /// Fraction of the slide: 0 at the elbow, 1 at the wrist and beyond.
+    slide: Vec<(u32, f64)>,
+    /// The template's triangles with every corner in the hand.
+    triangles: Vec<[u32; 3]>,
+}
+
+/// Where a hand was moved: the wrist's slide along the forearm (m) and the turn about it.
+#[derive(Debug, Clone, Copy)]
+pub struct HandPose {
+    pub slide: f64,
+    pub rotation: Option<Rotation3<f64>>,
+}
+
+/// A surface as area-weighted points (triangle centroid, area).
+pub type Surface = [(Point3<f64>, f64)];
+
+/// The template's two hands (`template` at the resolution fitted): the arm segment's vertices
+/// (weight ≥ ½) beyond the plane across the forearm at the wrist (the forearm from the midpoint
+/// of the humeral epicondyles to that of the styloids). A side whose landmark vertices are
+/// missing has no hand.
+pub fn hands(template: &Template) -> Vec<Hand> {
+    let rest = &template.mesh().positions;
+    let vertex = |name: String| {
+        template
+            .landmark_vertices()
+            .iter()
+            .find(|(n, _)| *n == name)
+            .map(|(_, v)| *v)
+    };
+    let mut out = Vec::new();
+    for (side, segment) in [("Lt.", Segment::LeftArm), ("Rt.", Segment::RightArm)] {
+        let pair = |a: &str, b: &str| {
+            Some([
+                vertex(format!("{side} {a}"))?,
+                vertex(format!("{side} {b}"))?,
+            ])
+        };
+        let (Some(styloids), Some(epicondyles)) = (
+            pair("Radial Styloid", "Ulnar Styloid"),
+            pair("Humeral Lateral Epicn", "Humeral Medial Epicn"),
+        ) else {
+            continue;
+        };
+        let (wrist, axis) = wrist_and_axis(rest, styloids, epicondyles);
+        let elbow = mid(rest, epicondyles);
+        let arm: Vec<(usize, &Point3<f64>)> = rest
+            .iter()
+            .enumerate()
+            .filter(|(v, _)| template.segment_weights(*v as u32)[segment.index()] >= 0.5)
+            .collect();
+        let slide = arm
+            .iter()
+            .filter_map(|(v, p)| {
+                let u = (*p - elbow).dot(&(wrist - elbow)) / (wrist - elbow).norm_squared();
+                (u > 0.0).then_some((*v as u32, u.min(1.0)))
+            })
+            .collect();
+        let share: Vec<(u32, f64)> = arm
+            .iter()
+            .filter_map(|(v, p)| {
+                let t = ((*p - wrist).dot(&axis) - BLEND.0) / (BLEND.1 - BLEND.0);
+                let s = smoothstep(t);
+                (s > 0.0).then_some((*v as u32, s))
+            })
+            .collect();
+        let mut member = vec![false; rest.len()];
+        for (v, _) in &share {
+            member[*v as usize] = true;
+        }
+        let triangles = template
+            .mesh()
+            .triangles
+            .iter()
+            .filter(|t| t.iter().all(|&v| member[v as usize]))
+            .copied()
+            .collect();
+        out.push(Hand {
+            side,
+            styloids,
+            epicondyles,
+            share,
+            slide,
+            triangles,
+        });
+    }
+    out
+}
+
+fn smoothstep(t: f64) -> f64 {
+    let t = t.clamp(0.0, 1.0);
+    t * t * (3.0 - 2.0 * t)
+}
+
+/// The midpoint of two vertices.
+fn mid(positions: &[Point3<f64>], [a, b]: [u32; 2]) -> Point3<f64> {
+    Point3::from((positions[a as usize].coords + positions[b as usize].coords) / 2.0)
+}
+
+/// The wrist (midpoint of the styloids) and the forearm's unit direction (from the midpoint of
+/// the epicondyles to the wrist) at `positions`.
+fn wrist_and_axis(
+    positions: &[Point3<f64>],
+    styloids: [u32; 2],
+    epicondyles: [u32; 2],
+) -> (Point3<f64>, Vector3<f64>) {
+    let wrist = mid(positions, styloids);
+    (wrist, (wrist - mid(positions, epicondyles)).normalize())
+}
+
+/// Moves each hand of `hands` in `positions` (the segment-wise fit's, metres) to the scan's hand
+/// (`scan`, metres): the slide along the forearm, then the turn about the wrist. Per hand, what
+/// was done (`None`: the scan's surface beyond the wrist is not hand-like; left as it was).
+pub fn pose_hands(
+    hands: &[Hand],
+    positions: &mut [Point3<f64>],
+    scan: &Mesh,
+) -> Vec<Option<HandPose>> {
+    let scan_surface = surface(&scan.positions, &scan.triangles);
+    hands
+        .iter()
+        .map(|hand| pose_hand(hand, positions, &scan_surface))
+        .collect()
+}
+
+fn pose_hand(
+    hand: &Hand,
+    positions: &mut [Point3<f64>],
+    scan_surface: &Surface,
+) -> Option<HandPose> {
+    let reach = |positions: &[Point3<f64>], wrist: Point3<f64>| {
+        hand.share
+            .iter()
+            .map(|(v, _)| (positions[*v as usize] - wrist).norm())
+            .fold(0.0, f64::max)
+            * REACH
+    };
+    let (wrist, axis) = wrist_and_axis(positions, hand.styloids, hand.epicondyles);
+    let r = reach(positions, wrist);
+    // Only the scan's surface the slide can bring into the region.
+    let near: Vec<(Point3<f64>, f64)> = scan_surface
+        .iter()
+        .filter(|(p, _)| (p - wrist).norm() < r + MAX_SLIDE)
+        .copied()
+        .collect();
+    let template = surface(positions, &hand.triangles);
+    if !hand_like(wrist, axis, r, &template, &near) {
+        return None;
+    }
+    let mut slide = 0.0;
+    for _ in 0..SLIDE_ITERATIONS {
+        let (wrist, axis) = wrist_and_axis(positions, hand.styloids, hand.epicondyles);
+        let template = surface(positions, &hand.triangles);
+        let Some(step) = hand_slide(wrist, axis, reach(positions, wrist), &template, &near) else {
+            break;
+        };
+        let step = (slide + step).clamp(-MAX_SLIDE, MAX_SLIDE) - slide;
+        slide += step;
+        for (v, u) in &hand.slide {
+            positions[*v as usize] += axis * (step * u);
+        }
+    }
+    let (wrist, axis) = wrist_and_axis(positions, hand.styloids, hand.epicondyles);
+    let template = surface(positions, &hand.triangles);
+    let rotation = hand_rotation(wrist, axis, reach(positions, wrist), &template, &near);
+    if let Some(rotation) = rotation {
+        for (v, s) in &hand.share {
+            let p = &mut positions[*v as usize];
+            let turn = Rotation3::from_scaled_axis(rotation.scaled_axis() * *s);
+            *p = wrist + turn * (*p - wrist);
+        }
+    }
+    Some(HandPose { slide, rotation })
+}
+
+/// The triangles of `triangles` as area-weighted centroids.
+fn surface(positions: &[Point3<f64>], triangles: &[[u32; 3]]) -> Vec<(Point3<f64>, f64)> {
+    triangles
+        .iter()
+        .map(|t| {
+            let [a, b, c] = t.map(|v| positions[v as usize]);
+            let area = (b - a).cross(&(c - a)).norm() / 2.0;
+            (Point3::from((a.coords + b.coords + c.coords) / 3.0), area)
+        })
+        .collect()
+}
+
+/// Area, centroid and covariance (area-weighted) of the part of `surface` beyond the plane
+/// through `wrist` across `axis` ([`BEYOND`]) and within `reach` of the wrist.
+fn moments(
+    surface: &Surface,
+    wrist: Point3<f64>,
+    axis: Vector3<f64>,
+    reach: f64,
+) -> Option<(f64, Point3<f64>, Matrix3<f64>)> {
+    let inside = || {
+        surface
+            .iter()
+            .filter(move |(p, _)| (p - wrist).dot(&axis) > BEYOND && (p - wrist).norm() < reach)
+    };
+    let area: f64 = inside().map(|(_, a)| a).sum();
+    if area <= 0.0 {
+        return None;
+    }
+    let centroid = inside().map(|(p, a)| p.coords * *a).sum::<Vector3<f64>>() / area;
+    let covariance = inside()
+        .map(|(p, a)| {
+            let d = p.coords - centroid;
+            d * d.transpose() * *a
+        })
+        .sum::<Matrix3<f64>>()
+        / area;
+    Some((area, Point3::from(centroid), covariance))
+}
+
+/// Whether the scan's surface (`scan`) beyond the wrist's plane across `axis` (the forearm's
+/// direction) and within `reach` of `wrist` is hand-like: its area within [`AREA_RANGE`] of the
+/// template hand's (`template`) there.
+pub fn hand_like(
+    wrist: Point3<f64>,
+    axis: Vector3<f64>,
+    reach: f64,
+    template: &Surface,
+    scan: &Surface,
+) -> bool {
+    match (
+        moments(template, wrist, axis, reach),
+        moments(scan, wrist, axis, reach),
+    ) {
+        (Some((t, _, _)), Some((s, _, _))) => (AREA_RANGE.0..=AREA_RANGE.1).contains(&(s / t)),
+        _ => false,
+    }
+}
+
+/// How far (m) the wrist is to slide along `axis` for the template hand's centroid to lie as far
+/// along the forearm as the scan's (the surfaces taken as in [`hand_like`]). `None` when either
+/// has no surface there.
+pub fn hand_slide(
+    wrist: Point3<f64>,
+    axis: Vector3<f64>,
+    reach: f64,
+    template: &Surface,
+    scan: &Surface,
+) -> Option<f64> {
+    let (_, t, _) = moments(template, wrist, axis, reach)?;
+    let (_, s, _) = moments(scan, wrist, axis, reach)?;
+    Some((s - t).dot(&axis))
+}
+
+/// The rotation about `wrist` that takes the template's hand onto the scan's (the surfaces taken
+/// as in [`hand_like`]): the shortest rotation of the template hand's axis (wrist → centroid)
+/// onto the scan's, then the turn about it that brings the widest direction across the template
+/// hand onto the scan's (the smaller of the two: the direction has no sign). `None` when either
+/// has no surface there or the turn exceeds [`MAX_TURN`].
+pub fn hand_rotation(
+    wrist: Point3<f64>,
+    axis: Vector3<f64>,
+    reach: f64,
+    template: &Surface,
+    scan: &Surface,
+) -> Option<Rotation3<f64>> {
+    let (_, t_centroid, t_cov) = moments(template, wrist, axis, reach)?;
+    let (_, s_centroid, s_cov) = moments(scan, wrist, axis, reach)?;
+    let (t_axis, s_axis) = (t_centroid - wrist, s_centroid - wrist);
+    let bend = Rotation3::rotation_between(&t_axis, &s_axis)?;
+    let along = s_axis.normalize();
+    let across = |cov: &Matrix3<f64>| {
+        let flat = Matrix3::identity() - along * along.transpose();
+        let eigen = (flat * cov * flat).symmetric_eigen();
+        eigen
+            .eigenvectors
+            .column(eigen.eigenvalues.imax())
+            .into_owned()
+    };
+    let t_across = across(&(bend.matrix() * t_cov * bend.matrix().transpose()));
+    let s_across = across(&s_cov);
+    let mut angle = t_across
+        .cross(&s_across)
+        .dot(&along)
+        .atan2(t_across.dot(&s_across));
+    if angle > std::f64::consts::FRAC_PI_2 {
+        angle -= std::f64::consts::PI;
+    } else if angle < -std::f64::consts::FRAC_PI_2 {
+        angle += std::f64::consts::PI;
+    }
+    let rotation = Rotation3::new(along * angle) * bend;
+    (rotation.angle() <= MAX_TURN.to_radians()).then_some(rotation)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A flat hand as a box's surface, area-weighted points 2 mm apart: along +z from 3 cm to
+    /// 20 cm beyond a wrist at the origin, 8 cm wide (x), 2 cm thick (y).
+    fn hand() -> Vec<(Point3<f64>, f64)> {
+        let step = 0.002;
+        let mut out = Vec::new();
+        let grid = |n: f64| (0..(n / step).round() as usize).map(move |i| (i as f64 + 0.5) * step);
+        for z in grid(0.17).map(|z| z + 0.03) {
+            for x in grid(0.08).map(|x| x - 0.04) {
+                for y in [-0.01, 0.01] {
+                    out.push((Point3::new(x, y, z), step * step));
+                }
+            }
+            for y in grid(0.02).map(|y| y - 0.01) {
+                for x in [-0.04, 0.04] {
+                    out.push((Point3::new(x, y, z), step * step));
+                }
+            }
+        }
+        out
+    }
+
+    fn moved(
+        surface: &Surface,
+        f: impl Fn(&Point3<f64>) -> Point3<f64>,
+    ) -> Vec<(Point3<f64>, f64)> {
+        surface.iter().map(|(p, a)| (f(p), *a)).collect()
+    }
+
+    const REACH_M: f64 = 0.25;
+
+    #[test]
+    fn a_turned_hand_gives_back_its_rotation() {
+        let template = hand();
+        // Flexed 25° about the wrist's x axis after a 15° turn about its own axis.
+        let turn = Rotation3::from_axis_angle(&Vector3::x_axis(), 25f64.to_radians())
+            * Rotation3::from_axis_angle(&Vector3::z_axis(), 15f64.to_radians());
+        let scan = moved(&template, |p| turn * p);
+        let (wrist, axis) = (Point3::origin(), Vector3::z());
+        assert!(hand_like(wrist, axis, REACH_M, &template, &scan));
+        let found = hand_rotation(wrist, axis, REACH_M, &template, &scan).unwrap();
+        assert!(found.angle_to(&turn).to_degrees() < 0.5, "{found:?}");
+        // The template's own pose: no turn.
+        let same = hand_rotation(wrist, axis, REACH_M, &template, &template).unwrap();
+        assert!(same.angle().to_degrees() < 1e-6);
+        // Beyond the largest turn believed: none.
+        let far = Rotation3::from_axis_angle(&Vector3::x_axis(), 75f64.to_radians());
+        let scan = moved(&template, |p| far * p);
+        assert!(hand_rotation(wrist, axis, REACH_M, &template, &scan).is_none());
+    }
+
+    #[test]
+    fn a_wrist_lower_on_the_arm_gives_back_the_slide() {
+        let template = hand();
+        let scan = moved(&template, |p| p + Vector3::z() * 0.02);
+        let (wrist, axis) = (Point3::origin(), Vector3::z());
+        let slide = hand_slide(wrist, axis, REACH_M, &template, &scan).unwrap();
+        assert!((slide - 0.02).abs() < 1e-9, "{slide}");
+    }
+
+    #[test]
+    fn a_hand_against_the_thigh_is_not_hand_like() {
+        let template = hand();
+        let (wrist, axis) = (Point3::origin(), Vector3::z());
+        // The thigh: a wall of skin 3 cm beside the hand, as long as the region.
+        let step = 0.004;
+        let mut scan = template.clone();
+        for i in 0..60 {
+            for j in 0..60 {
+                let p = Point3::new(0.07, -0.12 + i as f64 * step, j as f64 * step);
+                scan.push((p, step * step));
+            }
+        }
+        assert!(!hand_like(wrist, axis, REACH_M, &template, &scan));
+        // Nothing scanned beyond the wrist (a hole): not hand-like either.
+        assert!(!hand_like(wrist, axis, REACH_M, &template, &[]));
+    }
+}
