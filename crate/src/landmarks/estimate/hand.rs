@@ -14,10 +14,12 @@
 //!    the wrist.
 //!
 //! A hand that is not free (on the hip, against the thigh) or not seen (a hole) shows there as
-//! much more or much less surface than a hand: it is left as the fit put it.
+//! much more or much less surface than a hand: it is left as the fit put it, as is the hand of an
+//! arm bent more than the limbs' profiles take (`segments::MAX_BEND`, hands on hips).
 
 use nalgebra::{Matrix3, Point3, Rotation3, Vector3};
 
+use super::segments::MAX_BEND;
 use crate::mesh::Mesh;
 use crate::template::{Segment, Template};
 
@@ -55,6 +57,7 @@ pub struct Hand {
     pub side: &'static str,
     styloids: [u32; 2],
     epicondyles: [u32; 2],
+    acromion: u32,
     share: Vec<(u32, f64)>,
     /// Fraction of the slide: 0 at the elbow, 1 at the wrist and beyond.
     slide: Vec<(u32, f64)>,
@@ -93,9 +96,10 @@ pub fn hands(template: &Template) -> Vec<Hand> {
                 vertex(format!("{side} {b}"))?,
             ])
         };
-        let (Some(styloids), Some(epicondyles)) = (
+        let (Some(styloids), Some(epicondyles), Some(acromion)) = (
             pair("Radial Styloid", "Ulnar Styloid"),
             pair("Humeral Lateral Epicn", "Humeral Medial Epicn"),
+            vertex(format!("{side} Acromion")),
         ) else {
             continue;
         };
@@ -136,6 +140,7 @@ pub fn hands(template: &Template) -> Vec<Hand> {
             side,
             styloids,
             epicondyles,
+            acromion,
             share,
             slide,
             triangles,
@@ -193,6 +198,12 @@ fn pose_hand(
             * REACH
     };
     let (wrist, axis) = wrist_and_axis(positions, hand.styloids, hand.epicondyles);
+    // An arm bent like the hands on the hips: the hand rests on the body, as the limbs' profiles
+    // assume of the arms they leave alone.
+    let elbow = mid(positions, hand.epicondyles);
+    if (elbow - positions[hand.acromion as usize]).angle(&axis) > MAX_BEND.to_radians() {
+        return None;
+    }
     let r = reach(positions, wrist);
     // Only the scan's surface the slide can bring into the region.
     let near: Vec<(Point3<f64>, f64)> = scan_surface

@@ -275,8 +275,8 @@ const PROFILE_ITERATIONS: usize = 5;
 const SURFACE_SPACING: f64 = 0.004;
 
 /// A limb bent more than this (degrees) at the elbow or knee is not placed by its profile: the
-/// profile is taken across the straight root → end line.
-const MAX_BEND: f64 = 60.0;
+/// profile is taken across the straight root → end line; nor is its hand posed (`hand.rs`).
+pub(crate) const MAX_BEND: f64 = 60.0;
 
 /// Scan points farther than this (m) from a leg's line are not the leg (a thigh's radius is up to
 /// ≈ 10 cm).
