@@ -349,14 +349,7 @@ mod tests {
                 let u = (i as f64 + 0.5) / 400.0;
                 for j in 0..48 {
                     let a = j as f64 / 48.0 * std::f64::consts::TAU;
-                    let r = back(k)(u, a).abs().max(0.05 * a.sin().abs());
-                    let x = if a.cos() > 0.0 {
-                        back(k)(u, a)
-                    } else {
-                        0.05 * a.cos()
-                    };
-                    let _ = r;
-                    out.push(Point3::new(x, 0.05 * a.sin(), 1.0 - u));
+                    out.push(Point3::new(back(k)(u, a), 0.05 * a.sin(), 1.0 - u));
                 }
             }
             out
