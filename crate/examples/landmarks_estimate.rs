@@ -3,8 +3,8 @@
 //!
 //! `cargo run --release --example landmarks_estimate -- [--n N] [--seed S] [--partial K]
 //!  [--fine-iterations N] [--segment-iterations N] [--step MM] [--pose K] [--frame K]
-//!  [--first K] [--profile tuning|held-out] [--align] [--rounds 2] [--perturb MM] [--quiet]
-//!  [--params JSON]`
+//!  [--first K] [--profile tuning|held-out] [--align] [--rounds 2] [--perturb MM] [--knees]
+//!  [--quiet] [--params JSON]`
 //!
 //! `--params JSON` sets any of the estimate's parameters (`EstimateParams` fields, the rest
 //! default), e.g. `--params '{"fine": {"scan_term_weight": 0}}'`.
@@ -54,6 +54,7 @@ mod native {
         let mut partial = 0usize;
         let mut align = false;
         let mut quiet = false;
+        let mut knees = false;
         let mut params = EstimateParams::default();
         let mut scanner: Option<ScannerParams> = None;
         let mut profile = PopulationProfile::Tuning;
@@ -122,6 +123,7 @@ mod native {
                     align = true;
                 }
                 "--quiet" => quiet = true,
+                "--knees" => knees = true,
                 other => panic!("unknown option {other}"),
             }
         }
@@ -234,6 +236,11 @@ mod native {
                     q.trunk_turn,
                 );
             }
+            if knees {
+                print_knees(&c.landmarks, &estimate.positions, to_mm, "fit");
+                let predicted: Vec<_> = estimate.predicted.iter().map(|p| Some(*p)).collect();
+                print_knees(&c.landmarks, &predicted, to_mm, "segments");
+            }
             if align {
                 let estimated = if perturb > 0.0 {
                     displaced(&template, &c, perturb / to_mm, i)
@@ -299,6 +306,63 @@ mod native {
             if *count > 0 {
                 println!("| {} | {:.1} | {:.1} |", l.name, sum / *count as f64, max);
             }
+        }
+    }
+
+    /// Per knee, each knee landmark's error split along the leg (+ towards the ankle), across it
+    /// (+ lateral) and front to back (+ forward), in mm, and the turn (degrees) of the estimated
+    /// epicondyles about the leg's axis; the leg's frame from the true landmarks (Trochanterion
+    /// → the malleoli's midpoint, the lateral epicondyle's side, the knee crease behind).
+    fn print_knees(truth: &LandmarkSet, estimated: &[Option<Point3<f64>>], to_mm: f64, what: &str) {
+        let at = |name: &str| {
+            truth
+                .landmarks
+                .iter()
+                .position(|l| l.name == name)
+                .map(|k| (truth.landmarks[k].position, estimated[k]))
+        };
+        for side in ["Rt.", "Lt."] {
+            let t = |n: &str| at(&format!("{side} {n}")).map(|(p, _)| p);
+            let (Some(hip), Some(lm), Some(mm), Some(lat), Some(med), Some(crease)) = (
+                t("Trochanterion"),
+                t("Lateral Malleolus"),
+                t("Medial Malleolus"),
+                t("Femoral Lateral Epicn"),
+                t("Femoral Medial Epicn"),
+                t("Knee Crease"),
+            ) else {
+                continue;
+            };
+            let ankle = nalgebra::center(&lm, &mm);
+            let axis = (ankle - hip).normalize();
+            let across = |v: nalgebra::Vector3<f64>| v - axis * v.dot(&axis);
+            let lateral = across(lat - med).normalize();
+            let forward = across(nalgebra::center(&lat, &med) - crease).normalize();
+            let mut line =
+                format!("           {side} knee, {what} (along / lateral / forward mm):");
+            for n in [
+                "Knee Crease",
+                "Femoral Lateral Epicn",
+                "Femoral Medial Epicn",
+            ] {
+                if let Some((p, Some(q))) = at(&format!("{side} {n}")) {
+                    let e = (q - p) * to_mm;
+                    line += &format!(
+                        " {n} {:+5.1} {:+5.1} {:+5.1};",
+                        e.dot(&axis),
+                        e.dot(&lateral),
+                        e.dot(&forward)
+                    );
+                }
+            }
+            let lat_e = at(&format!("{side} Femoral Lateral Epicn")).and_then(|x| x.1);
+            let med_e = at(&format!("{side} Femoral Medial Epicn")).and_then(|x| x.1);
+            if let (Some(a), Some(b)) = (lat_e, med_e) {
+                let v = across(a - b);
+                let turn = v.dot(&forward).atan2(v.dot(&lateral)).to_degrees();
+                line += &format!(" turn {turn:+.0}°");
+            }
+            println!("{line}");
         }
     }
 

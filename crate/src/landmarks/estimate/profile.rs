@@ -3,7 +3,9 @@
 //! thigh to the knee and bulge at the calf below it, forearms bulge below the elbow; nearest-point
 //! matching does not see that (a limb is close to a cylinder), a profile does. The template's own
 //! profile is registered to the scan's with a stretch above and below the joint; the joint lands
-//! where the template's maps.
+//! where the template's maps. A leg's knee is then set by a sharper feature of the same kind:
+//! the top of the calf's bulge at the back of the leg (the steepest rise of how far back the leg
+//! reaches, just below the knee crease), taken where the template's sits below its knee.
 
 use nalgebra::{Point3, Vector3};
 
@@ -19,6 +21,10 @@ const WINDOW: (f64, f64) = (0.3, 0.92);
 
 /// How far (fraction of the limb) the knee may move from where the fit put it.
 const SEARCH: f64 = 0.08;
+
+/// How far (fraction of the limb) from the knee the width's profile puts the top of the calf is
+/// looked for (the template's: from its knee).
+const CALF_SEARCH: f64 = 0.1;
 
 /// A limb as a line: root (hip) to end (ankle).
 #[derive(Debug, Clone, Copy)]
@@ -37,15 +43,15 @@ impl LimbLine {
     }
 }
 
-/// The width of limb `k` of `limbs` at each of [`BINS`] heights: per bin, of the `points` that
-/// are nearer to limb `k`'s line than to every other line of `limbs` and within `radius` (m) of it,
-/// the median distance across the axis from the points' mean. `None` for a bin with too few.
-pub fn profile(
+/// The points of limb `k` of `limbs` at each of [`BINS`] heights, as vectors across its axis
+/// from its line: the `points` nearer to limb `k`'s line than to every other line of `limbs` and
+/// within `radius` (m) of it.
+fn bins(
     points: &[Point3<f64>],
     limbs: &[LimbLine],
     k: usize,
     radius: f64,
-) -> Vec<Option<f64>> {
+) -> Vec<Vec<Vector3<f64>>> {
     let line = limbs[k];
     let axis: Vector3<f64> = (line.end - line.root).normalize();
     let mut bins: Vec<Vec<Vector3<f64>>> = vec![Vec::new(); BINS];
@@ -64,7 +70,20 @@ pub fn profile(
         let across = (p - line.root) - axis * (p - line.root).dot(&axis);
         bins[((u * BINS as f64) as usize).min(BINS - 1)].push(across);
     }
-    bins.iter()
+    bins
+}
+
+/// The width of limb `k` of `limbs` at each of [`BINS`] heights: per bin (its points as
+/// [`bins`] takes them), the median distance across the axis from the points' mean. `None` for
+/// a bin with too few.
+pub fn profile(
+    points: &[Point3<f64>],
+    limbs: &[LimbLine],
+    k: usize,
+    radius: f64,
+) -> Vec<Option<f64>> {
+    bins(points, limbs, k, radius)
+        .iter()
         .map(|b| {
             if b.len() < MIN_POINTS {
                 return None;
@@ -75,6 +94,79 @@ pub fn profile(
             Some(r[r.len() / 2])
         })
         .collect()
+}
+
+/// How far limb `k` of `limbs` reaches towards `direction` (across its axis; the back of the
+/// leg) at each of [`BINS`] heights: per bin, the 90th percentile of its points' distance from
+/// the line along `direction`. `None` for a bin with too few.
+pub fn reach(
+    points: &[Point3<f64>],
+    limbs: &[LimbLine],
+    k: usize,
+    radius: f64,
+    direction: &Vector3<f64>,
+) -> Vec<Option<f64>> {
+    let axis = (limbs[k].end - limbs[k].root).normalize();
+    let d = (direction - axis * direction.dot(&axis)).normalize();
+    bins(points, limbs, k, radius)
+        .iter()
+        .map(|b| {
+            if b.len() < MIN_POINTS {
+                return None;
+            }
+            let mut along: Vec<f64> = b.iter().map(|v| v.dot(&d)).collect();
+            along.sort_by(f64::total_cmp);
+            Some(along[along.len() * 9 / 10])
+        })
+        .collect()
+}
+
+/// The fraction where `profile` rises fastest towards the limb's end within `half` of `around`:
+/// the difference across two bins' spacing, its peak refined by a parabola through its
+/// neighbours. `None` when no bin there has both neighbours.
+fn steepest_rise(profile: &[Option<f64>], around: f64, half: f64) -> Option<f64> {
+    let n = profile.len();
+    let slope = |i: usize| -> Option<f64> {
+        if i == 0 || i + 1 >= n {
+            return None;
+        }
+        Some(profile[i + 1]? - profile[i - 1]?)
+    };
+    let u = |i: f64| (i + 0.5) / n as f64;
+    let (i, _) = (1..n.saturating_sub(1))
+        .filter(|&i| (u(i as f64) - around).abs() <= half)
+        .filter_map(|i| Some((i, slope(i)?)))
+        .max_by(|a, b| a.1.total_cmp(&b.1))?;
+    let shift = match (slope(i - 1), slope(i + 1)) {
+        (Some(a), Some(c)) => {
+            let b = slope(i).unwrap_or(0.0);
+            let curvature = a - 2.0 * b + c;
+            if curvature < 0.0 {
+                (0.5 * (a - c) / curvature).clamp(-0.5, 0.5)
+            } else {
+                0.0
+            }
+        }
+        _ => 0.0,
+    };
+    Some(u(i as f64 + shift))
+}
+
+/// The fraction along the scan's leg where the template's knee (fraction `joint` along the
+/// template's leg) lands, from the top of the calf: where the back's reach (`template`, `scan`:
+/// [`reach`] towards the back of the knee) rises fastest, on the template within [`CALF_SEARCH`]
+/// of its knee, on the scan within it of `around` (where the width's profile put the knee); the
+/// knee sits as far above it as the template's. The back of the leg hollows behind the knee and
+/// the calf's bulge rises sharply below the crease; the width's profile smooths that over (the
+/// patella balances the hollow). `None` when no rise is found.
+pub fn knee_from_calf(
+    template: &[Option<f64>],
+    scan: &[Option<f64>],
+    joint: f64,
+    around: f64,
+) -> Option<f64> {
+    let calf = steepest_rise(template, joint, CALF_SEARCH)?;
+    Some(steepest_rise(scan, around, CALF_SEARCH)? + joint - calf)
 }
 
 /// The profile's value at fraction `u` (linear between bin centres), `None` off its ends or
@@ -227,5 +319,57 @@ mod tests {
         let half = profile(&limb(leg(0.5, 1.0)), &[line[0], other], 0, 0.14);
         assert!(half.iter().flatten().count() > 0);
         assert_ne!(half, template);
+    }
+
+    /// A leg seen from behind: how far back it reaches, the hamstrings narrowing to a hollow at
+    /// the knee (`k`), the calf's bulge rising sharply from `k + 0.05`.
+    fn back(k: f64) -> impl Fn(f64, f64) -> f64 {
+        move |u: f64, a: f64| {
+            let r = if u < k + 0.05 {
+                0.07 - 0.03 * u / (k + 0.05)
+            } else {
+                let t = ((u - k - 0.05) / 0.08).min(1.0);
+                0.04 + 0.02 * t * t * (3.0 - 2.0 * t) - 0.02 * (u - k - 0.05)
+            };
+            // x of the point at angle `a` about the axis: the back (+x) reaches `r`, the front
+            // stays round.
+            if a.cos() > 0.0 {
+                r * a.cos().powf(0.5)
+            } else {
+                0.05 * a.cos()
+            }
+        }
+    }
+
+    #[test]
+    fn the_knee_is_found_above_the_calf() {
+        let rings = |k: f64| {
+            let mut out = Vec::new();
+            for i in 0..400 {
+                let u = (i as f64 + 0.5) / 400.0;
+                for j in 0..48 {
+                    let a = j as f64 / 48.0 * std::f64::consts::TAU;
+                    out.push(Point3::new(back(k)(u, a), 0.05 * a.sin(), 1.0 - u));
+                }
+            }
+            out
+        };
+        let line = [LimbLine {
+            root: Point3::new(0.0, 0.0, 1.0),
+            end: Point3::origin(),
+        }];
+        let behind = Vector3::x();
+        let template = reach(&rings(0.45), &line, 0, 0.14, &behind);
+        let scan = reach(&rings(0.4), &line, 0, 0.14, &behind);
+        // The width's profile put the scan's knee at 0.43; the calf says 0.4.
+        let f = knee_from_calf(&template, &scan, 0.45, 0.43).unwrap();
+        assert!((f - 0.4).abs() < 0.01, "{f}");
+        // Turned away from the back, the leg shows no calf: the front is the same at every height.
+        let front = reach(&rings(0.4), &line, 0, 0.14, &-behind);
+        let spread = front
+            .iter()
+            .flatten()
+            .fold(0.0f64, |m, w| m.max((w - front[30].unwrap()).abs()));
+        assert!(spread < 1e-3, "{spread}");
     }
 }
