@@ -295,6 +295,11 @@ const SURFACE_SPACING: f64 = 0.004;
 /// profile is taken across the straight root → end line; nor is its hand posed (`hand.rs`).
 pub(crate) const MAX_BEND: f64 = 60.0;
 
+/// No elbow or knee bends further than this (degrees from the template's limb; an elbow's full
+/// flexion is ≈ 145°, hands on hips ≈ 80–105°): a fit folded past it is straightened
+/// ([`unfold`]).
+const MAX_FOLD: f64 = 145.0;
+
 /// Scan points farther than this (m) from a leg's line are not the leg (a thigh's radius is up to
 /// ≈ 10 cm).
 const LEG_RADIUS: f64 = 0.14;
@@ -448,8 +453,36 @@ impl Fit<'_> {
                     };
                 }
             }
+            unfold(self.parts, poses);
         }
         Some(())
+    }
+}
+
+/// Straightens each limb folded past [`MAX_FOLD`] at the elbow or knee: its lower part takes
+/// its parent's rotation, its joint kept where the parent puts it, and the ICP goes on from the
+/// straight limb. Nearest points can fold a forearm held in front of the body back up along the
+/// upper arm (the hand at the shoulder), which no elbow does. The fold is the angle between the
+/// lower part's joint → end direction as posed and as its parent's rotation would carry it (a
+/// turn about the limb's own axis is no fold).
+fn unfold(parts: &[Part], poses: &mut [PartPose]) {
+    for (k, part) in parts.iter().enumerate() {
+        let (Some(parent), Some(end)) = (part.parent, part.end) else {
+            continue;
+        };
+        let along = end - part.joint;
+        let rotation = poses[parent].transform.rotation;
+        if (rotation * along).angle(&(poses[k].transform.rotation * along)) <= MAX_FOLD.to_radians()
+        {
+            continue;
+        }
+        let bend = parts[parent].apply(&poses[parent], &part.joint);
+        let scale = poses[parent].transform.scale;
+        poses[k].transform = Similarity {
+            scale,
+            rotation,
+            translation: bend.coords - rotation * part.joint.coords * scale,
+        };
     }
 }
 
@@ -578,5 +611,65 @@ mod tests {
             .collect();
         let s = fit_stretch(&part, &part.axis.unwrap(), &transform, &wanted).unwrap();
         assert_eq!(s, STRETCH_RANGE.1);
+    }
+
+    #[test]
+    fn a_limb_folded_back_is_straightened_and_a_bent_one_kept() {
+        use crate::template::{Resolution, Template};
+        let template = Template::embedded()
+            .unwrap()
+            .at_resolution(Resolution::Base);
+        let parts = parts(&template);
+        let identity = PartPose {
+            transform: Similarity::identity(),
+            stretch: 1.0,
+        };
+        let (k, lower) = parts
+            .iter()
+            .enumerate()
+            .find(|(_, p)| !p.stretches && p.end.is_some())
+            .unwrap();
+        let upper = &parts[lower.parent.unwrap()];
+        let bend_at = |poses: &[PartPose]| {
+            let root = upper.apply(&poses[lower.parent.unwrap()], &upper.joint);
+            let tip = lower.apply(&poses[k], &lower.end.unwrap());
+            (
+                (lower.joint - root)
+                    .angle(&(tip - lower.joint))
+                    .to_degrees(),
+                tip,
+            )
+        };
+        // The forearm turned about the elbow, across the arm, by `deg`.
+        let folded = |deg: f64| {
+            let across = (lower.end.unwrap() - lower.joint)
+                .cross(&Vector3::y())
+                .normalize();
+            let r = nalgebra::Rotation3::from_axis_angle(
+                &nalgebra::Unit::new_normalize(across),
+                deg.to_radians(),
+            );
+            let mut poses = vec![identity; parts.len()];
+            poses[k].transform = Similarity {
+                scale: 1.0,
+                rotation: *r.matrix(),
+                translation: lower.joint.coords - r * lower.joint.coords,
+            };
+            poses
+        };
+        let (rest, rest_tip) = bend_at(&vec![identity; parts.len()]);
+        // Bent by 120°: an elbow can, it stays.
+        let mut poses = folded(120.0);
+        let before = bend_at(&poses);
+        unfold(&parts, &mut poses);
+        assert_eq!(bend_at(&poses), before);
+        assert!((before.1 - rest_tip).norm() > 0.2);
+        // Folded back up along the upper arm: straightened to the rest, the elbow in place.
+        let mut poses = folded(170.0);
+        unfold(&parts, &mut poses);
+        let (now, tip) = bend_at(&poses);
+        assert!((now - rest).abs() < 1e-9, "{now} {rest}");
+        assert!((tip - rest_tip).norm() < 1e-9);
+        assert!((lower.apply(&poses[k], &lower.joint) - lower.joint).norm() < 1e-12);
     }
 }
