@@ -311,8 +311,9 @@ mod native {
 
     /// Per knee, each knee landmark's error split along the leg (+ towards the ankle), across it
     /// (+ lateral) and front to back (+ forward), in mm, and the turn (degrees) of the estimated
-    /// epicondyles about the leg's axis; the leg's frame from the true landmarks (Trochanterion
-    /// → the malleoli's midpoint, the lateral epicondyle's side, the knee crease behind).
+    /// epicondyles about the leg's axis (the true ones' is 0); the leg's frame from the true
+    /// landmarks (Trochanterion → the malleoli's midpoint, the lateral epicondyle's side, the
+    /// knee crease behind).
     fn print_knees(truth: &LandmarkSet, estimated: &[Option<Point3<f64>>], to_mm: f64, what: &str) {
         let at = |name: &str| {
             truth
@@ -337,7 +338,10 @@ mod native {
             let axis = (ankle - hip).normalize();
             let across = |v: nalgebra::Vector3<f64>| v - axis * v.dot(&axis);
             let lateral = across(lat - med).normalize();
-            let forward = across(nalgebra::center(&lat, &med) - crease).normalize();
+            // Forward made square to lateral: the crease need not sit straight behind the
+            // epicondyles' midpoint, and an oblique frame turned the true epicondyles by up to 20°.
+            let back_to_front = across(nalgebra::center(&lat, &med) - crease);
+            let forward = (back_to_front - lateral * back_to_front.dot(&lateral)).normalize();
             let mut line =
                 format!("           {side} knee, {what} (along / lateral / forward mm):");
             for n in [

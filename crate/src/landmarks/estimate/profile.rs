@@ -4,8 +4,9 @@
 //! matching does not see that (a limb is close to a cylinder), a profile does. The template's own
 //! profile is registered to the scan's with a stretch above and below the joint; the joint lands
 //! where the template's maps. A leg's knee is then set by a sharper feature of the same kind:
-//! the top of the calf's bulge at the back of the leg (the steepest rise of how far back the leg
-//! reaches, just below the knee crease), taken where the template's sits below its knee.
+//! the front of the knee stepping back to the shin below the patella and the tibial tuberosity
+//! (the steepest fall of how far forward the leg reaches), taken where the template's sits below
+//! its knee.
 
 use nalgebra::{Point3, Vector3};
 
@@ -22,9 +23,10 @@ const WINDOW: (f64, f64) = (0.3, 0.92);
 /// How far (fraction of the limb) the knee may move from where the fit put it.
 const SEARCH: f64 = 0.08;
 
-/// How far (fraction of the limb) from the knee the width's profile puts the top of the calf is
-/// looked for (the template's: from its knee).
-const CALF_SEARCH: f64 = 0.1;
+/// How far (fraction of the limb) from the knee the fall of the leg's front below the patella
+/// is looked for (the template's: from its knee; the scan's: from where the width's profile put
+/// it).
+const FRONT_SEARCH: f64 = 0.08;
 
 /// A limb as a line: root (hip) to end (ankle).
 #[derive(Debug, Clone, Copy)]
@@ -153,20 +155,25 @@ fn steepest_rise(profile: &[Option<f64>], around: f64, half: f64) -> Option<f64>
 }
 
 /// The fraction along the scan's leg where the template's knee (fraction `joint` along the
-/// template's leg) lands, from the top of the calf: where the back's reach (`template`, `scan`:
-/// [`reach`] towards the back of the knee) rises fastest, on the template within [`CALF_SEARCH`]
-/// of its knee, on the scan within it of `around` (where the width's profile put the knee); the
-/// knee sits as far above it as the template's. The back of the leg hollows behind the knee and
-/// the calf's bulge rises sharply below the crease; the width's profile smooths that over (the
-/// patella balances the hollow). `None` when no rise is found.
-pub fn knee_from_calf(
+/// template's leg) lands, from the front of the knee: where the front's reach (`template`,
+/// `scan`: [`reach`] away from the back of the knee) falls fastest towards the ankle — below
+/// the patella and the tibial tuberosity the front of the leg steps back to the shin — on the
+/// template within [`FRONT_SEARCH`] of its knee, on the scan within it of `around` (where the
+/// width's profile put the knee); the knee sits as far above it as the template's. Bone under
+/// thin skin shapes the front of the knee; the width's profile smooths it over (the hollow
+/// behind balances the patella). It replaced the top of the calf (the steepest rise of the
+/// back's reach), which left the knees lower (docs/landmarks-estimate.md). `None` when no fall
+/// is found.
+pub fn knee_from_front(
     template: &[Option<f64>],
     scan: &[Option<f64>],
     joint: f64,
     around: f64,
 ) -> Option<f64> {
-    let calf = steepest_rise(template, joint, CALF_SEARCH)?;
-    Some(steepest_rise(scan, around, CALF_SEARCH)? + joint - calf)
+    let negated =
+        |p: &[Option<f64>]| -> Vec<Option<f64>> { p.iter().map(|w| w.map(|w| -w)).collect() };
+    let front = steepest_rise(&negated(template), joint, FRONT_SEARCH)?;
+    Some(steepest_rise(&negated(scan), around, FRONT_SEARCH)? + joint - front)
 }
 
 /// The profile's value at fraction `u` (linear between bin centres), `None` off its ends or
@@ -321,20 +328,22 @@ mod tests {
         assert_ne!(half, template);
     }
 
-    /// A leg seen from behind: how far back it reaches, the hamstrings narrowing to a hollow at
-    /// the knee (`k`), the calf's bulge rising sharply from `k + 0.05`.
-    fn back(k: f64) -> impl Fn(f64, f64) -> f64 {
+    /// A leg seen from the side: how far forward it reaches, the thigh's front narrowing to the
+    /// patella's bulge at the knee (`k`), the front falling back to the shin from `k + 0.02`.
+    fn front(k: f64) -> impl Fn(f64, f64) -> f64 {
         move |u: f64, a: f64| {
-            let r = if u < k + 0.05 {
-                0.07 - 0.03 * u / (k + 0.05)
+            let r = if u < k - 0.04 {
+                0.07 - 0.02 * u / (k - 0.04)
+            } else if u < k + 0.02 {
+                0.05 + 0.005 * ((u - k + 0.04) / 0.06 * std::f64::consts::PI).sin()
             } else {
-                let t = ((u - k - 0.05) / 0.08).min(1.0);
-                0.04 + 0.02 * t * t * (3.0 - 2.0 * t) - 0.02 * (u - k - 0.05)
+                let t = ((u - k - 0.02) / 0.04).min(1.0);
+                0.05 - 0.015 * t * t * (3.0 - 2.0 * t)
             };
-            // x of the point at angle `a` about the axis: the back (+x) reaches `r`, the front
+            // x of the point at angle `a` about the axis: the front (−x) reaches `r`, the back
             // stays round.
-            if a.cos() > 0.0 {
-                r * a.cos().powf(0.5)
+            if a.cos() < 0.0 {
+                r * a.cos()
             } else {
                 0.05 * a.cos()
             }
@@ -342,14 +351,14 @@ mod tests {
     }
 
     #[test]
-    fn the_knee_is_found_above_the_calf() {
+    fn the_knee_is_found_above_the_fall_of_the_front() {
         let rings = |k: f64| {
             let mut out = Vec::new();
             for i in 0..400 {
                 let u = (i as f64 + 0.5) / 400.0;
                 for j in 0..48 {
                     let a = j as f64 / 48.0 * std::f64::consts::TAU;
-                    out.push(Point3::new(back(k)(u, a), 0.05 * a.sin(), 1.0 - u));
+                    out.push(Point3::new(front(k)(u, a), 0.05 * a.sin(), 1.0 - u));
                 }
             }
             out
@@ -358,18 +367,16 @@ mod tests {
             root: Point3::new(0.0, 0.0, 1.0),
             end: Point3::origin(),
         }];
-        let behind = Vector3::x();
-        let template = reach(&rings(0.45), &line, 0, 0.14, &behind);
-        let scan = reach(&rings(0.4), &line, 0, 0.14, &behind);
-        // The width's profile put the scan's knee at 0.43; the calf says 0.4.
-        let f = knee_from_calf(&template, &scan, 0.45, 0.43).unwrap();
-        assert!((f - 0.4).abs() < 0.01, "{f}");
-        // Turned away from the back, the leg shows no calf: the front is the same at every height.
-        let front = reach(&rings(0.4), &line, 0, 0.14, &-behind);
-        let spread = front
-            .iter()
-            .flatten()
-            .fold(0.0f64, |m, w| m.max((w - front[30].unwrap()).abs()));
-        assert!(spread < 1e-3, "{spread}");
+        let ahead = -Vector3::x();
+        let template = reach(&rings(0.45), &line, 0, 0.14, &ahead);
+        let scan = reach(&rings(0.5), &line, 0, 0.14, &ahead);
+        // The width's profile put the scan's knee at 0.48; the front says 0.5.
+        let f = knee_from_front(&template, &scan, 0.45, 0.48).unwrap();
+        assert!((f - 0.5).abs() < 0.01, "{f}");
+        // No front, no fall.
+        assert_eq!(
+            knee_from_front(&template, &vec![None; BINS], 0.45, 0.48),
+            None
+        );
     }
 }

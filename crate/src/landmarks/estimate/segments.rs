@@ -10,8 +10,8 @@
 //! proportions. Nearest points do not see where along a near-cylindrical limb the knee or the
 //! elbow is, so before the last iterations each limb's cross-section profile places its knee or
 //! elbow (`profile.rs`): the thigh's and the upper arm's stretches are set from it and held, the
-//! lower leg's refitted, the forearm kept rigid; a knee is then set by the top of the calf's
-//! bulge at the back of the leg. (Fitting the arm parts' stretch by ICP, a hand
+//! lower leg's refitted, the forearm kept rigid; a knee is then set by where the front of the
+//! leg steps back to the shin below the patella. (Fitting the arm parts' stretch by ICP, a hand
 //! part of its own and pulling a thigh towards where the lower leg puts the knee were measured
 //! and made the estimate worse: docs/landmarks-estimate.md.)
 
@@ -22,7 +22,7 @@ use nalgebra::{Point3, Vector3};
 use super::arm_swing::{swing_arms, SWING_AFTER, SWING_ITERATIONS};
 use super::matching::Matching;
 use super::profile::{
-    fraction, knee_from_calf, profile, reach, register, surface_samples, LimbLine,
+    fraction, knee_from_front, profile, reach, register, surface_samples, LimbLine,
 };
 use super::tick::Ticker;
 use crate::mesh::normals::vertex_normals;
@@ -54,7 +54,7 @@ pub struct Part {
     /// Whether the ICP fits the stretch (the legs); an arm's is set only by its profile.
     pub stretches: bool,
     /// For a lower leg, the direction (unit, template frame, across its axis) from the knee to
-    /// the knee crease: the back of the knee, where the calf's top places the knee.
+    /// the knee crease: the back of the knee (its opposite, the front, places the knee).
     pub back: Option<Vector3<f64>>,
 }
 
@@ -490,8 +490,8 @@ fn unfold(parts: &[Part], poses: &mut [PartPose]) {
 /// puts it (the template's profile from `surface`, points on its surface at rest, registered to
 /// the one from `scan`, points on the scan's surface, `profile.rs`): the upper part's stretch scaled so that the joint's fraction of the
 /// root → end line (hip → ankle, shoulder → wrist) is the profile's; a leg's knee is then moved to
-/// where the top of its calf puts it (`knee_from_calf`, the back's reach towards the part's
-/// `back`: knees 25.6 → 15.1 mm on the development subjects). A leg's lower part is
+/// where the front of the knee puts it (`knee_from_front`, the reach away from the part's
+/// `back`: knees 25.6 → 9.7 mm on the development subjects). A leg's lower part is
 /// stretched to keep the ankle where it was, as a start for its own stretch fit; the forearm
 /// stays rigid and moves with the elbow (stretching it to keep the wrist made the hands worse,
 /// 39 → 48 mm on the development subjects). Returns the upper parts, whose stretch is then held
@@ -552,9 +552,9 @@ fn place_joints(
         };
         if let Some(back) = parts[lower].back {
             let posed_back = poses[lower].transform.rotation * back;
-            let template_back = reach(surface, &at_rest, i, radius, &back);
-            let scan_back = reach(scan, &posed, i, radius, &posed_back);
-            f = knee_from_calf(&template_back, &scan_back, joint, f).unwrap_or(f);
+            let template_front = reach(surface, &at_rest, i, radius, &-back);
+            let scan_front = reach(scan, &posed, i, radius, &-posed_back);
+            f = knee_from_front(&template_front, &scan_front, joint, f).unwrap_or(f);
         }
         let clamp = |s: f64| s.clamp(STRETCH_RANGE.0, STRETCH_RANGE.1);
         poses[upper].stretch = clamp(poses[upper].stretch * f / now);
