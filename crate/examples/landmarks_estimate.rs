@@ -3,7 +3,8 @@
 //!
 //! `cargo run --release --example landmarks_estimate -- [--n N] [--seed S] [--partial K]
 //!  [--fine-iterations N] [--segment-iterations N] [--step MM] [--pose K] [--frame K]
-//!  [--first K] [--profile tuning|held-out] [--align] [--rounds 2] [--perturb MM] [--knees]
+//!  [--first K] [--profile tuning|held-out] [--align] [--rounds 2] [--perturb MM] [--knees] [--arms]
+//!  [--true-for NAMES]
 //!  [--quiet] [--params JSON]`
 //!
 //! `--params JSON` sets any of the estimate's parameters (`EstimateParams` fields, the rest
@@ -24,7 +25,11 @@
 //! correspondence error and the scan→template RMS; `--rounds 2` aligns a second time from the
 //! landmark vertices of the first alignment from the estimate. `--perturb MM` aligns from the true
 //! landmarks each moved MM along the surface in a random direction instead of from the estimate:
-//! what landmarks that far off cost the alignment. Also printed: the mean and worst
+//! what landmarks that far off cost the alignment; `--true-for NAMES` (comma-separated parts of
+//! names, e.g. `Metacarpal,Dactylion`) aligns from the estimate with those landmarks replaced by
+//! the true ones: what their error costs it. `--arms` splits each elbow, wrist and hand
+//! landmark's error along the upper arm, along the forearm and out of their plane (`--knees`
+//! the knees'). Also printed: the mean and worst
 //! error per landmark group and Spearman's ρ between the confidence and the error (the
 //! confidence should fall as the error grows: ρ < 0).
 
@@ -55,6 +60,8 @@ mod native {
         let mut align = false;
         let mut quiet = false;
         let mut knees = false;
+        let mut arms = false;
+        let mut true_for: Vec<String> = Vec::new();
         let mut params = EstimateParams::default();
         let mut scanner: Option<ScannerParams> = None;
         let mut profile = PopulationProfile::Tuning;
@@ -124,6 +131,15 @@ mod native {
                 }
                 "--quiet" => quiet = true,
                 "--knees" => knees = true,
+                "--arms" => arms = true,
+                "--true-for" => {
+                    true_for = args
+                        .next()
+                        .expect("--true-for NAMES")
+                        .split(',')
+                        .map(str::to_string)
+                        .collect()
+                }
                 other => panic!("unknown option {other}"),
             }
         }
@@ -241,11 +257,28 @@ mod native {
                 let predicted: Vec<_> = estimate.predicted.iter().map(|p| Some(*p)).collect();
                 print_knees(&c.landmarks, &predicted, to_mm, "segments");
             }
+            if arms {
+                print_arms(&c.landmarks, &estimate.positions, to_mm, "fit");
+                let predicted: Vec<_> = estimate.predicted.iter().map(|p| Some(*p)).collect();
+                print_arms(&c.landmarks, &predicted, to_mm, "segments");
+            }
             if align {
                 let estimated = if perturb > 0.0 {
                     displaced(&template, &c, perturb / to_mm, i)
                 } else {
-                    estimate.to_set()
+                    let mut set = estimate.to_set();
+                    if !true_for.is_empty() {
+                        for l in &mut set.landmarks {
+                            if true_for.iter().any(|n| l.name.contains(n.as_str())) {
+                                if let Some(t) =
+                                    c.landmarks.landmarks.iter().find(|t| t.name == l.name)
+                                {
+                                    l.position = t.position;
+                                }
+                            }
+                        }
+                    }
+                    set
                 };
                 let (e, t) = compare_fits(
                     &template,
@@ -361,6 +394,61 @@ mod native {
                 let v = across(a - b);
                 let turn = v.dot(&forward).atan2(v.dot(&lateral)).to_degrees();
                 line += &format!(" turn {turn:+.0}°");
+            }
+            println!("{line}");
+        }
+    }
+
+    /// Per arm, each elbow, wrist and hand landmark's error in the arm's frame from the true
+    /// landmarks, in mm: along the upper arm (+ towards the elbow), along the forearm across the
+    /// upper arm (+ towards the hand) and out of the plane of the two (upper arm × forearm).
+    fn print_arms(truth: &LandmarkSet, estimated: &[Option<Point3<f64>>], to_mm: f64, what: &str) {
+        let at = |name: &str| {
+            truth
+                .landmarks
+                .iter()
+                .position(|l| l.name == name)
+                .map(|k| (truth.landmarks[k].position, estimated[k]))
+        };
+        for side in ["Rt.", "Lt."] {
+            let t = |n: &str| at(&format!("{side} {n}")).map(|(p, _)| p);
+            let (Some(acromion), Some(lat), Some(med), Some(rs), Some(us)) = (
+                t("Acromion"),
+                t("Humeral Lateral Epicn"),
+                t("Humeral Medial Epicn"),
+                t("Radial Styloid"),
+                t("Ulnar Styloid"),
+            ) else {
+                continue;
+            };
+            let elbow = nalgebra::center(&lat, &med);
+            let upper = (elbow - acromion).normalize();
+            let fore = nalgebra::center(&rs, &us) - elbow;
+            let bend = upper.angle(&fore).to_degrees();
+            let across = (fore - upper * fore.dot(&upper)).normalize();
+            let out = upper.cross(&across);
+            let mut line = format!(
+                "           {side} arm bent {bend:.0}°, {what} (along upper / along forearm / out mm):"
+            );
+            for n in [
+                "Humeral Lateral Epicn",
+                "Humeral Medial Epicn",
+                "Olecranon",
+                "Radiale",
+                "Radial Styloid",
+                "Ulnar Styloid",
+                "Metacarpal Phal. II",
+                "Dactylion",
+            ] {
+                if let Some((p, Some(q))) = at(&format!("{side} {n}")) {
+                    let e = (q - p) * to_mm;
+                    line += &format!(
+                        "\n             {n:24} {:+6.1} {:+6.1} {:+6.1}",
+                        e.dot(&upper),
+                        e.dot(&across),
+                        e.dot(&out)
+                    );
+                }
             }
             println!("{line}");
         }
