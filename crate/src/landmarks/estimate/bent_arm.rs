@@ -4,18 +4,16 @@
 //! then pulled the forearm and the hand towards the elbow and into the hip. A bent arm shows
 //! its elbow in its shape: the corner where the upper arm's axis meets the forearm's. So here
 //! the forearm (with the hand) is fitted on its own, rigid and not held at the elbow, from its
-//! surface beyond the elbow's blend, its matches on the surface the rest of the body already
-//! explains (the hip under the hand, `arm_swing::Claimed`) left out; the upper arm is
-//! stretched along its axis to the point nearest the forearm's axis, and the forearm, turned as
-//! its own fit turned it, is held at that elbow. The segment-wise fit then goes on from there.
+//! surface beyond the elbow's blend; the upper arm is stretched along its axis to the point
+//! nearest the forearm's axis, and the forearm, turned as its own fit turned it, is held at that
+//! elbow. The segment-wise fit then goes on from there.
 
 use nalgebra::{Point3, Vector3};
 
-use super::arm_swing::{arms, Claimed};
+use super::arm_swing::arms;
 use super::matching::Matching;
 use super::profile::{fraction, LimbLine};
-use super::segments::{blend, Part, PartPose, MAX_BEND, STRETCH_RANGE};
-use crate::mesh::normals::vertex_normals;
+use super::segments::{Part, PartPose, MAX_BEND, STRETCH_RANGE};
 use crate::mesh::similarity::{similarity, Similarity};
 use crate::template::Template;
 
@@ -75,9 +73,8 @@ pub fn elbow_stretch(
 /// For each arm bent more than [`MAX_BEND`] in `poses` (of `parts`, of `template` at the
 /// resolution fitted): its forearm fitted on its own for [`FOREARM_ITERATIONS`] (those of
 /// `vertices` whose `dominant` part is the forearm, from [`FOREARM_START`] of the way to the
-/// wrist on, matched by `matching`; matches on the surface that the other parts' `vertices`
-/// match left out), the upper arm's stretch set by [`elbow_stretch`] and the forearm held there
-/// in its own turn. Returns the upper parts placed.
+/// wrist on, matched by `matching`), the upper arm's stretch set by [`elbow_stretch`] and the
+/// forearm held there in its own turn. Returns the upper parts placed.
 pub fn place_bent_elbows(
     template: &Template,
     parts: &[Part],
@@ -87,23 +84,9 @@ pub fn place_bent_elbows(
     matching: &Matching<'_>,
 ) -> Vec<usize> {
     let rest = &template.mesh().positions;
-    let triangles = &template.mesh().triangles;
     let rest_normals = template.mesh().vertex_normals();
     let mut placed = Vec::new();
-    let arms = arms(parts);
-    let blended = blend(parts, poses, rest);
-    let blended_normals = vertex_normals(&blended, triangles);
-    let body: Vec<u32> = vertices
-        .iter()
-        .copied()
-        .filter(|&v| {
-            !arms
-                .iter()
-                .any(|a| matches!(dominant[v as usize], Some(k) if k == a.upper || k == a.lower))
-        })
-        .collect();
-    let claimed = Claimed::of(&matching.pairs(&body, &blended, &blended_normals));
-    for arm in arms {
+    for arm in arms(parts) {
         let (upper, lower) = (&parts[arm.upper], &parts[arm.lower]);
         let Some(end) = lower.end else { continue };
         if !is_bent(parts, poses, arm.upper, arm.lower, &end) {
@@ -128,8 +111,7 @@ pub fn place_bent_elbows(
                 positions[v as usize] = lower.apply(&forearm, &rest[v as usize]);
                 normals[v as usize] = forearm.transform.rotation * rest_normals[v as usize];
             }
-            let mut pairs = matching.pairs(&own, &positions, &normals);
-            pairs.retain(|p| !claimed.contains(&p.target));
+            let pairs = matching.pairs(&own, &positions, &normals);
             if pairs.len() < 10 {
                 break;
             }
@@ -165,7 +147,7 @@ pub fn place_bent_elbows(
 mod tests {
     use super::*;
     use crate::align::SurfaceIndex;
-    use crate::landmarks::estimate::segments::{dominant_parts, parts};
+    use crate::landmarks::estimate::segments::{blend, dominant_parts, parts};
     use crate::mesh::Mesh;
     use crate::template::Resolution;
     use nalgebra::{Rotation3, Unit};
