@@ -342,18 +342,41 @@ mod native {
         }
     }
 
+    /// The true and the estimated position of the landmark `name`.
+    fn true_and_estimated(
+        truth: &LandmarkSet,
+        estimated: &[Option<Point3<f64>>],
+        name: &str,
+    ) -> Option<(Point3<f64>, Option<Point3<f64>>)> {
+        let k = truth.landmarks.iter().position(|l| l.name == name)?;
+        Some((truth.landmarks[k].position, estimated[k]))
+    }
+
+    /// The error (mm) of each of `names` on `side` that has an estimate, along `axes`.
+    fn split<'n>(
+        truth: &LandmarkSet,
+        estimated: &[Option<Point3<f64>>],
+        side: &str,
+        names: &[&'n str],
+        axes: [Vector3<f64>; 3],
+        to_mm: f64,
+    ) -> Vec<(&'n str, [f64; 3])> {
+        names
+            .iter()
+            .filter_map(|n| {
+                let (p, q) = true_and_estimated(truth, estimated, &format!("{side} {n}"))?;
+                let e = (q? - p) * to_mm;
+                Some((*n, axes.map(|a| e.dot(&a))))
+            })
+            .collect()
+    }
+
     /// Per knee, each knee landmark's error split along the leg (+ towards the ankle), across it
     /// (+ lateral) and front to back (+ forward), in mm, and the turn (degrees) of the estimated
     /// epicondyles about the leg's axis; the leg's frame from the true landmarks (Trochanterion
     /// → the malleoli's midpoint, the lateral epicondyle's side, the knee crease behind).
     fn print_knees(truth: &LandmarkSet, estimated: &[Option<Point3<f64>>], to_mm: f64, what: &str) {
-        let at = |name: &str| {
-            truth
-                .landmarks
-                .iter()
-                .position(|l| l.name == name)
-                .map(|k| (truth.landmarks[k].position, estimated[k]))
-        };
+        let at = |name: &str| true_and_estimated(truth, estimated, name);
         for side in ["Rt.", "Lt."] {
             let t = |n: &str| at(&format!("{side} {n}")).map(|(p, _)| p);
             let (Some(hip), Some(lm), Some(mm), Some(lat), Some(med), Some(crease)) = (
@@ -373,20 +396,20 @@ mod native {
             let forward = across(nalgebra::center(&lat, &med) - crease).normalize();
             let mut line =
                 format!("           {side} knee, {what} (along / lateral / forward mm):");
-            for n in [
+            let names = [
                 "Knee Crease",
                 "Femoral Lateral Epicn",
                 "Femoral Medial Epicn",
-            ] {
-                if let Some((p, Some(q))) = at(&format!("{side} {n}")) {
-                    let e = (q - p) * to_mm;
-                    line += &format!(
-                        " {n} {:+5.1} {:+5.1} {:+5.1};",
-                        e.dot(&axis),
-                        e.dot(&lateral),
-                        e.dot(&forward)
-                    );
-                }
+            ];
+            for (n, [a, b, c]) in split(
+                truth,
+                estimated,
+                side,
+                &names,
+                [axis, lateral, forward],
+                to_mm,
+            ) {
+                line += &format!(" {n} {a:+5.1} {b:+5.1} {c:+5.1};");
             }
             let lat_e = at(&format!("{side} Femoral Lateral Epicn")).and_then(|x| x.1);
             let med_e = at(&format!("{side} Femoral Medial Epicn")).and_then(|x| x.1);
@@ -403,13 +426,7 @@ mod native {
     /// landmarks, in mm: along the upper arm (+ towards the elbow), along the forearm across the
     /// upper arm (+ towards the hand) and out of the plane of the two (upper arm × forearm).
     fn print_arms(truth: &LandmarkSet, estimated: &[Option<Point3<f64>>], to_mm: f64, what: &str) {
-        let at = |name: &str| {
-            truth
-                .landmarks
-                .iter()
-                .position(|l| l.name == name)
-                .map(|k| (truth.landmarks[k].position, estimated[k]))
-        };
+        let at = |name: &str| true_and_estimated(truth, estimated, name);
         for side in ["Rt.", "Lt."] {
             let t = |n: &str| at(&format!("{side} {n}")).map(|(p, _)| p);
             let (Some(acromion), Some(lat), Some(med), Some(rs), Some(us)) = (
@@ -430,7 +447,7 @@ mod native {
             let mut line = format!(
                 "           {side} arm bent {bend:.0}°, {what} (along upper / along forearm / out mm):"
             );
-            for n in [
+            let names = [
                 "Humeral Lateral Epicn",
                 "Humeral Medial Epicn",
                 "Olecranon",
@@ -439,16 +456,10 @@ mod native {
                 "Ulnar Styloid",
                 "Metacarpal Phal. II",
                 "Dactylion",
-            ] {
-                if let Some((p, Some(q))) = at(&format!("{side} {n}")) {
-                    let e = (q - p) * to_mm;
-                    line += &format!(
-                        "\n             {n:24} {:+6.1} {:+6.1} {:+6.1}",
-                        e.dot(&upper),
-                        e.dot(&across),
-                        e.dot(&out)
-                    );
-                }
+            ];
+            for (n, [a, b, c]) in split(truth, estimated, side, &names, [upper, across, out], to_mm)
+            {
+                line += &format!("\n             {n:24} {a:+6.1} {b:+6.1} {c:+6.1}");
             }
             println!("{line}");
         }
