@@ -22,10 +22,10 @@ use crate::template::Template;
 const FOREARM_START: f64 = 0.25;
 
 /// Iterations of the forearm's own fit.
-pub const FOREARM_ITERATIONS: usize = 5;
+const FOREARM_ITERATIONS: usize = 5;
 
 /// Whether the arm of `upper` and `lower` is bent more than [`MAX_BEND`] in `poses`.
-pub(crate) fn is_bent(
+fn is_bent(
     parts: &[Part],
     poses: &[PartPose],
     upper: usize,
@@ -50,7 +50,7 @@ fn nearest_on(a: &Point3<f64>, u: &Vector3<f64>, b: &Point3<f64>, v: &Vector3<f6
 /// The upper part's stretch that puts the elbow (the lower part's joint) where the upper arm's
 /// axis passes nearest the forearm's axis in `forearm` (the forearm's own placement), within
 /// the stretch range; `None` when the axes are near parallel.
-pub fn elbow_stretch(
+fn elbow_stretch(
     upper: &Part,
     upper_pose: &PartPose,
     lower: &Part,
