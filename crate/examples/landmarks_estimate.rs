@@ -3,7 +3,8 @@
 //!
 //! `cargo run --release --example landmarks_estimate -- [--n N] [--seed S] [--partial K]
 //!  [--fine-iterations N] [--segment-iterations N] [--step MM] [--pose K] [--frame K]
-//!  [--first K] [--profile tuning|held-out] [--align] [--rounds 2] [--perturb MM] [--knees]
+//!  [--first K] [--profile tuning|held-out] [--align] [--rounds 2] [--perturb MM] [--knees] [--arms]
+//!  [--true-for NAMES]
 //!  [--quiet] [--params JSON]`
 //!
 //! `--params JSON` sets any of the estimate's parameters (`EstimateParams` fields, the rest
@@ -24,7 +25,11 @@
 //! correspondence error and the scan→template RMS; `--rounds 2` aligns a second time from the
 //! landmark vertices of the first alignment from the estimate. `--perturb MM` aligns from the true
 //! landmarks each moved MM along the surface in a random direction instead of from the estimate:
-//! what landmarks that far off cost the alignment. Also printed: the mean and worst
+//! what landmarks that far off cost the alignment; `--true-for NAMES` (comma-separated parts of
+//! names, e.g. `Metacarpal,Dactylion`) aligns from the estimate with those landmarks replaced by
+//! the true ones: what their error costs it. `--arms` splits each elbow, wrist and hand
+//! landmark's error along the upper arm, along the forearm and out of their plane (`--knees`
+//! the knees'). Also printed: the mean and worst
 //! error per landmark group and Spearman's ρ between the confidence and the error (the
 //! confidence should fall as the error grows: ρ < 0).
 
@@ -55,6 +60,8 @@ mod native {
         let mut align = false;
         let mut quiet = false;
         let mut knees = false;
+        let mut arms = false;
+        let mut true_for: Vec<String> = Vec::new();
         let mut params = EstimateParams::default();
         let mut scanner: Option<ScannerParams> = None;
         let mut profile = PopulationProfile::Tuning;
@@ -124,6 +131,15 @@ mod native {
                 }
                 "--quiet" => quiet = true,
                 "--knees" => knees = true,
+                "--arms" => arms = true,
+                "--true-for" => {
+                    true_for = args
+                        .next()
+                        .expect("--true-for NAMES")
+                        .split(',')
+                        .map(str::to_string)
+                        .collect()
+                }
                 other => panic!("unknown option {other}"),
             }
         }
@@ -241,11 +257,28 @@ mod native {
                 let predicted: Vec<_> = estimate.predicted.iter().map(|p| Some(*p)).collect();
                 print_knees(&c.landmarks, &predicted, to_mm, "segments");
             }
+            if arms {
+                print_arms(&c.landmarks, &estimate.positions, to_mm, "fit");
+                let predicted: Vec<_> = estimate.predicted.iter().map(|p| Some(*p)).collect();
+                print_arms(&c.landmarks, &predicted, to_mm, "segments");
+            }
             if align {
                 let estimated = if perturb > 0.0 {
                     displaced(&template, &c, perturb / to_mm, i)
                 } else {
-                    estimate.to_set()
+                    let mut set = estimate.to_set();
+                    if !true_for.is_empty() {
+                        for l in &mut set.landmarks {
+                            if true_for.iter().any(|n| l.name.contains(n.as_str())) {
+                                if let Some(t) =
+                                    c.landmarks.landmarks.iter().find(|t| t.name == l.name)
+                                {
+                                    l.position = t.position;
+                                }
+                            }
+                        }
+                    }
+                    set
                 };
                 let (e, t) = compare_fits(
                     &template,
@@ -309,19 +342,42 @@ mod native {
         }
     }
 
+    /// The true and the estimated position of the landmark `name`.
+    fn true_and_estimated(
+        truth: &LandmarkSet,
+        estimated: &[Option<Point3<f64>>],
+        name: &str,
+    ) -> Option<(Point3<f64>, Option<Point3<f64>>)> {
+        let k = truth.landmarks.iter().position(|l| l.name == name)?;
+        Some((truth.landmarks[k].position, estimated[k]))
+    }
+
+    /// The error (mm) of each of `names` on `side` that has an estimate, along `axes`.
+    fn split<'n>(
+        truth: &LandmarkSet,
+        estimated: &[Option<Point3<f64>>],
+        side: &str,
+        names: &[&'n str],
+        axes: [Vector3<f64>; 3],
+        to_mm: f64,
+    ) -> Vec<(&'n str, [f64; 3])> {
+        names
+            .iter()
+            .filter_map(|n| {
+                let (p, q) = true_and_estimated(truth, estimated, &format!("{side} {n}"))?;
+                let e = (q? - p) * to_mm;
+                Some((*n, axes.map(|a| e.dot(&a))))
+            })
+            .collect()
+    }
+
     /// Per knee, each knee landmark's error split along the leg (+ towards the ankle), across it
     /// (+ lateral) and front to back (+ forward), in mm, and the turn (degrees) of the estimated
     /// epicondyles about the leg's axis (the true ones' is 0); the leg's frame from the true
     /// landmarks (Trochanterion → the malleoli's midpoint, the lateral epicondyle's side, the
     /// knee crease behind).
     fn print_knees(truth: &LandmarkSet, estimated: &[Option<Point3<f64>>], to_mm: f64, what: &str) {
-        let at = |name: &str| {
-            truth
-                .landmarks
-                .iter()
-                .position(|l| l.name == name)
-                .map(|k| (truth.landmarks[k].position, estimated[k]))
-        };
+        let at = |name: &str| true_and_estimated(truth, estimated, name);
         for side in ["Rt.", "Lt."] {
             let t = |n: &str| at(&format!("{side} {n}")).map(|(p, _)| p);
             let (Some(hip), Some(lm), Some(mm), Some(lat), Some(med), Some(crease)) = (
@@ -344,20 +400,20 @@ mod native {
             let forward = (back_to_front - lateral * back_to_front.dot(&lateral)).normalize();
             let mut line =
                 format!("           {side} knee, {what} (along / lateral / forward mm):");
-            for n in [
+            let names = [
                 "Knee Crease",
                 "Femoral Lateral Epicn",
                 "Femoral Medial Epicn",
-            ] {
-                if let Some((p, Some(q))) = at(&format!("{side} {n}")) {
-                    let e = (q - p) * to_mm;
-                    line += &format!(
-                        " {n} {:+5.1} {:+5.1} {:+5.1};",
-                        e.dot(&axis),
-                        e.dot(&lateral),
-                        e.dot(&forward)
-                    );
-                }
+            ];
+            for (n, [a, b, c]) in split(
+                truth,
+                estimated,
+                side,
+                &names,
+                [axis, lateral, forward],
+                to_mm,
+            ) {
+                line += &format!(" {n} {a:+5.1} {b:+5.1} {c:+5.1};");
             }
             let lat_e = at(&format!("{side} Femoral Lateral Epicn")).and_then(|x| x.1);
             let med_e = at(&format!("{side} Femoral Medial Epicn")).and_then(|x| x.1);
@@ -365,6 +421,49 @@ mod native {
                 let v = across(a - b);
                 let turn = v.dot(&forward).atan2(v.dot(&lateral)).to_degrees();
                 line += &format!(" turn {turn:+.0}°");
+            }
+            println!("{line}");
+        }
+    }
+
+    /// Per arm, each elbow, wrist and hand landmark's error in the arm's frame from the true
+    /// landmarks, in mm: along the upper arm (+ towards the elbow), along the forearm across the
+    /// upper arm (+ towards the hand) and out of the plane of the two (upper arm × forearm).
+    fn print_arms(truth: &LandmarkSet, estimated: &[Option<Point3<f64>>], to_mm: f64, what: &str) {
+        let at = |name: &str| true_and_estimated(truth, estimated, name);
+        for side in ["Rt.", "Lt."] {
+            let t = |n: &str| at(&format!("{side} {n}")).map(|(p, _)| p);
+            let (Some(acromion), Some(lat), Some(med), Some(rs), Some(us)) = (
+                t("Acromion"),
+                t("Humeral Lateral Epicn"),
+                t("Humeral Medial Epicn"),
+                t("Radial Styloid"),
+                t("Ulnar Styloid"),
+            ) else {
+                continue;
+            };
+            let elbow = nalgebra::center(&lat, &med);
+            let upper = (elbow - acromion).normalize();
+            let fore = nalgebra::center(&rs, &us) - elbow;
+            let bend = upper.angle(&fore).to_degrees();
+            let across = (fore - upper * fore.dot(&upper)).normalize();
+            let out = upper.cross(&across);
+            let mut line = format!(
+                "           {side} arm bent {bend:.0}°, {what} (along upper / along forearm / out mm):"
+            );
+            let names = [
+                "Humeral Lateral Epicn",
+                "Humeral Medial Epicn",
+                "Olecranon",
+                "Radiale",
+                "Radial Styloid",
+                "Ulnar Styloid",
+                "Metacarpal Phal. II",
+                "Dactylion",
+            ];
+            for (n, [a, b, c]) in split(truth, estimated, side, &names, [upper, across, out], to_mm)
+            {
+                line += &format!("\n             {n:24} {a:+6.1} {b:+6.1} {c:+6.1}");
             }
             println!("{line}");
         }

@@ -6,7 +6,8 @@
 //! * [`frame`] — principal axes and the four frame candidates; [`FrameReport`].
 //! * [`candidates`] — the similarity ICP of each candidate.
 //! * [`segments`] — the segment-wise rigid fit of the template's parts (the pose).
-//!   [`arm_swing`] — each arm's swing about the shoulder tried from several starts.
+//!   [`arm_swing`] — each arm's swing about the shoulder tried from several starts;
+//!   [`bent_arm`] — the elbow of an arm bent at it (hands on hips).
 //! * [`hand`] — the hand's pose about the wrist, from the scan's surface beyond it.
 //! * [`matching`] — closest compatible scan points, the ICP energy.
 //! * [`suspicious`] — [`flag_suspicious`]: given landmarks far from where they are expected;
@@ -17,6 +18,7 @@
 //!   (`error.rs`).
 
 pub mod arm_swing;
+pub mod bent_arm;
 pub mod candidates;
 pub mod confidence;
 pub mod error;

@@ -20,6 +20,7 @@ use std::ops::ControlFlow;
 use nalgebra::{Point3, Vector3};
 
 use super::arm_swing::{swing_arms, SWING_AFTER, SWING_ITERATIONS};
+use super::bent_arm::place_bent_elbows;
 use super::matching::Matching;
 use super::profile::{
     fraction, knee_from_front, profile, reach, register, surface_samples, LimbLine,
@@ -36,7 +37,7 @@ const LIMB_BLEND: f64 = 0.05;
 
 /// The range of a limb part's stretch along its axis (a quarter shorter to a third longer than
 /// the template's at the body's scale).
-const STRETCH_RANGE: (f64, f64) = (0.75, 1.33);
+pub(crate) const STRETCH_RANGE: (f64, f64) = (0.75, 1.33);
 
 /// One part: its weight at every vertex, its parent, the joint (template frame) it shares with
 /// the parent, and for a limb part the axis (unit, template frame, through the joint) along which
@@ -68,7 +69,7 @@ pub struct PartPose {
 
 impl Part {
     /// `p` (template frame) stretched along the part's axis about its joint.
-    fn stretched(&self, p: &Point3<f64>, stretch: f64) -> Point3<f64> {
+    pub(crate) fn stretched(&self, p: &Point3<f64>, stretch: f64) -> Point3<f64> {
         match self.axis {
             Some(a) => p + a * ((stretch - 1.0) * (p - self.joint).dot(&a)),
             None => *p,
@@ -319,7 +320,8 @@ const HAND_REACH: f64 = 0.7;
 /// at several turns about its shoulder (`arm_swing.rs`): nearest points alone leave an arm
 /// held down along the body out at the template's A-pose. Before the last [`PROFILE_ITERATIONS`] the knees and
 /// elbows are moved along the limbs to where the limbs' cross-section profiles put them
-/// (`profile.rs`, [`place_joints`]), both profiles taken from points spread over the surfaces
+/// (`profile.rs`, [`place_joints`]), the elbow of an arm bent more than [`MAX_BEND`] where its
+/// upper arm's and forearm's axes meet (`bent_arm.rs`), both profiles taken from points spread over the surfaces
 /// (`scan`, metres, is the mesh `matching` indexes): a coarse mesh's vertices alone lie in rings
 /// too far apart. Returns the blended positions, or `None` when the caller cancelled.
 #[allow(clippy::too_many_arguments)]
@@ -368,6 +370,15 @@ pub fn fit_segments(
         iterations - after_profile - before_swing,
         ticker,
     )?;
+    // An arm's stretch is never fitted by the ICP: nothing to hold.
+    place_bent_elbows(
+        template,
+        parts,
+        &mut poses,
+        vertices,
+        &fit.dominant,
+        matching,
+    );
     let surface = surface_samples(rest, &template.mesh().triangles, SURFACE_SPACING);
     let scan_surface = surface_samples(&scan.positions, &scan.triangles, SURFACE_SPACING);
     for k in place_joints(parts, &mut poses, &surface, &scan_surface) {

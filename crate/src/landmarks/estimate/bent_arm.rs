@@ -1,0 +1,243 @@
+//! The elbow of an arm bent at it (hands on hips). The limbs' profiles (`profile.rs`) place an
+//! elbow only along a near-straight arm (`segments::MAX_BEND`): a bent arm kept the template's
+//! upper-arm length (× the body's scale), its forearm held at that elbow, and nearest points
+//! then pulled the forearm and the hand towards the elbow and into the hip. A bent arm shows
+//! its elbow in its shape: the corner where the upper arm's axis meets the forearm's. So here
+//! the forearm (with the hand) is fitted on its own, rigid and not held at the elbow, from its
+//! surface beyond the elbow's blend; the upper arm is stretched along its axis to the point
+//! nearest the forearm's axis, and the forearm, turned as its own fit turned it, is held at that
+//! elbow. The segment-wise fit then goes on from there.
+
+use nalgebra::{Point3, Vector3};
+
+use super::arm_swing::arms;
+use super::matching::Matching;
+use super::profile::{fraction, LimbLine};
+use super::segments::{Part, PartPose, MAX_BEND, STRETCH_RANGE};
+use crate::mesh::similarity::{similarity, Similarity};
+use crate::template::Template;
+
+/// The forearm's own fit takes its vertices (and the hand's) from this fraction of the way from
+/// the elbow to the wrist on: the elbow's blend with the upper arm is left out.
+const FOREARM_START: f64 = 0.25;
+
+/// Iterations of the forearm's own fit.
+const FOREARM_ITERATIONS: usize = 5;
+
+/// Whether the arm of `upper` and `lower` is bent more than [`MAX_BEND`] in `poses`.
+fn is_bent(
+    parts: &[Part],
+    poses: &[PartPose],
+    upper: usize,
+    lower: usize,
+    end: &Point3<f64>,
+) -> bool {
+    let root = parts[upper].apply(&poses[upper], &parts[upper].joint);
+    let bend = parts[lower].apply(&poses[lower], &parts[lower].joint);
+    let end = parts[lower].apply(&poses[lower], end);
+    (bend - root).angle(&(end - bend)) > MAX_BEND.to_radians()
+}
+
+/// The parameter along the line `a + s·u` of its point nearest the line `b + t·v` (unit
+/// directions), `None` when the lines are near parallel.
+fn nearest_on(a: &Point3<f64>, u: &Vector3<f64>, b: &Point3<f64>, v: &Vector3<f64>) -> Option<f64> {
+    let w = a - b;
+    let c = u.dot(v);
+    let den = 1.0 - c * c;
+    (den > 1e-6).then(|| (c * v.dot(&w) - u.dot(&w)) / den)
+}
+
+/// The upper part's stretch that puts the elbow (the lower part's joint) where the upper arm's
+/// axis passes nearest the forearm's axis in `forearm` (the forearm's own placement), within
+/// the stretch range; `None` when the axes are near parallel.
+fn elbow_stretch(
+    upper: &Part,
+    upper_pose: &PartPose,
+    lower: &Part,
+    forearm: &Similarity,
+) -> Option<f64> {
+    let (axis, lower_axis) = (upper.axis?, lower.axis?);
+    let t = upper_pose.transform;
+    let root = t.apply(&upper.joint);
+    let u = t.rotation * axis;
+    let along = nearest_on(
+        &root,
+        &u,
+        &forearm.apply(&lower.joint),
+        &(forearm.rotation * lower_axis),
+    )?;
+    let length = (lower.joint - upper.joint).dot(&axis) * t.scale;
+    (length > 0.0).then(|| (along / length).clamp(STRETCH_RANGE.0, STRETCH_RANGE.1))
+}
+
+/// For each arm bent more than [`MAX_BEND`] in `poses` (of `parts`, of `template` at the
+/// resolution fitted): its forearm fitted on its own for [`FOREARM_ITERATIONS`] (those of
+/// `vertices` whose `dominant` part is the forearm, from [`FOREARM_START`] of the way to the
+/// wrist on, matched by `matching`), the upper arm's stretch set by [`elbow_stretch`] and the
+/// forearm held there in its own turn. Returns the upper parts placed.
+pub fn place_bent_elbows(
+    template: &Template,
+    parts: &[Part],
+    poses: &mut [PartPose],
+    vertices: &[u32],
+    dominant: &[Option<usize>],
+    matching: &Matching<'_>,
+) -> Vec<usize> {
+    let rest = &template.mesh().positions;
+    let rest_normals = template.mesh().vertex_normals();
+    let mut placed = Vec::new();
+    for arm in arms(parts) {
+        let (upper, lower) = (&parts[arm.upper], &parts[arm.lower]);
+        let Some(end) = lower.end else { continue };
+        if !is_bent(parts, poses, arm.upper, arm.lower, &end) {
+            continue;
+        }
+        let line = LimbLine {
+            root: lower.joint,
+            end,
+        };
+        let own: Vec<u32> = vertices
+            .iter()
+            .copied()
+            .filter(|&v| dominant[v as usize] == Some(arm.lower))
+            .filter(|&v| fraction(&line, &rest[v as usize]) >= FOREARM_START)
+            .collect();
+        let mut forearm = poses[arm.lower];
+        let scale = forearm.transform.scale;
+        let mut positions = rest.to_vec();
+        let mut normals = rest_normals.to_vec();
+        for _ in 0..FOREARM_ITERATIONS {
+            for &v in &own {
+                positions[v as usize] = lower.apply(&forearm, &rest[v as usize]);
+                normals[v as usize] = forearm.transform.rotation * rest_normals[v as usize];
+            }
+            let pairs = matching.pairs(&own, &positions, &normals);
+            if pairs.len() < 10 {
+                break;
+            }
+            let from: Vec<_> = pairs
+                .iter()
+                .map(|p| lower.stretched(&rest[p.vertex as usize], forearm.stretch) * scale)
+                .collect();
+            let to: Vec<_> = pairs.iter().map(|p| p.target).collect();
+            let Some(rigid) = similarity(&from, &to, false) else {
+                break;
+            };
+            forearm.transform = Similarity {
+                scale,
+                rotation: rigid.rotation,
+                translation: rigid.translation,
+            };
+        }
+        let Some(stretch) = elbow_stretch(upper, &poses[arm.upper], lower, &forearm.transform)
+        else {
+            continue;
+        };
+        poses[arm.upper].stretch = stretch;
+        // The forearm held at the new elbow.
+        let elbow = upper.apply(&poses[arm.upper], &lower.joint);
+        forearm.transform.translation += elbow - lower.apply(&forearm, &lower.joint);
+        poses[arm.lower] = forearm;
+        placed.push(arm.upper);
+    }
+    placed
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::align::SurfaceIndex;
+    use crate::landmarks::estimate::segments::{blend, dominant_parts, parts};
+    use crate::mesh::Mesh;
+    use crate::template::Resolution;
+    use nalgebra::{Rotation3, Unit};
+
+    #[test]
+    fn a_bent_arms_elbow_is_placed_where_its_axes_meet() {
+        let template = Template::embedded()
+            .unwrap()
+            .at_resolution(Resolution::Base);
+        let rest = &template.mesh().positions;
+        let triangles = &template.mesh().triangles;
+        let parts = parts(&template);
+        let identity = PartPose {
+            transform: Similarity::identity(),
+            stretch: 1.0,
+        };
+        // The "scan": the template with each upper arm 15% longer and its forearm bent 90° at
+        // the elbow; the start: the same bend at the template's elbow.
+        let arms = arms(&parts);
+        assert_eq!(arms.len(), 2);
+        let mut scan_poses = vec![identity; parts.len()];
+        let mut start = scan_poses.clone();
+        for arm in &arms {
+            let (upper, lower) = (&parts[arm.upper], &parts[arm.lower]);
+            let across = upper.axis.unwrap().cross(&Vector3::y());
+            let r = Rotation3::from_axis_angle(&Unit::new_normalize(across), 90f64.to_radians());
+            let bent_at = |elbow: Point3<f64>| Similarity {
+                scale: 1.0,
+                rotation: *r.matrix(),
+                translation: elbow.coords - r * lower.joint.coords,
+            };
+            scan_poses[arm.upper].stretch = 1.15;
+            let elbow = upper.apply(&scan_poses[arm.upper], &lower.joint);
+            scan_poses[arm.lower].transform = bent_at(elbow);
+            start[arm.lower].transform = bent_at(lower.joint);
+        }
+        let scan = Mesh::new(blend(&parts, &scan_poses, rest), triangles.clone());
+        let index = SurfaceIndex::new(&scan).unwrap();
+        let matching = Matching {
+            scan: &index,
+            min_cos: 0.5,
+            outlier_distance: 0.1,
+        };
+        let vertices: Vec<u32> = (0..rest.len() as u32).step_by(2).collect();
+        let dominant = dominant_parts(&parts, rest.len());
+        let mut poses = start.clone();
+        let placed = place_bent_elbows(
+            &template, &parts, &mut poses, &vertices, &dominant, &matching,
+        );
+        assert_eq!(placed, arms.iter().map(|a| a.upper).collect::<Vec<_>>());
+        for arm in &arms {
+            let stretch = poses[arm.upper].stretch;
+            assert!((stretch - 1.15).abs() < 0.02, "{stretch}");
+            // The wrist lands on the scan's.
+            let end = parts[arm.lower].end.unwrap();
+            let wrist = parts[arm.lower].apply(&poses[arm.lower], &end);
+            let want = parts[arm.lower].apply(&scan_poses[arm.lower], &end);
+            assert!((wrist - want).norm() < 0.005, "{}", (wrist - want).norm());
+        }
+        // A straight arm is left alone.
+        let mut straight = vec![identity; parts.len()];
+        let placed = place_bent_elbows(
+            &template,
+            &parts,
+            &mut straight,
+            &vertices,
+            &dominant,
+            &matching,
+        );
+        assert!(placed.is_empty());
+        assert!(straight.iter().all(|p| p.stretch == 1.0));
+    }
+
+    #[test]
+    fn the_nearest_point_of_two_lines() {
+        // The x axis and a line along y through (2, 5, 1): nearest at x = 2.
+        let s = nearest_on(
+            &Point3::origin(),
+            &Vector3::x(),
+            &Point3::new(2.0, 5.0, 1.0),
+            &Vector3::y(),
+        );
+        assert!((s.unwrap() - 2.0).abs() < 1e-12);
+        // Parallel lines have none.
+        let p = nearest_on(
+            &Point3::origin(),
+            &Vector3::x(),
+            &Point3::new(0.0, 1.0, 0.0),
+            &Vector3::x(),
+        );
+        assert!(p.is_none());
+    }
+}
