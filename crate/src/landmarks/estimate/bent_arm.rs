@@ -13,7 +13,7 @@ use nalgebra::{Point3, Vector3};
 use super::arm_swing::arms;
 use super::matching::Matching;
 use super::profile::{fraction, LimbLine};
-use super::segments::{Part, PartPose, MAX_BEND, STRETCH_RANGE};
+use super::segments::{is_bent, Part, PartPose, STRETCH_RANGE};
 use crate::mesh::similarity::{similarity, Similarity};
 use crate::template::Template;
 
@@ -23,20 +23,6 @@ const FOREARM_START: f64 = 0.25;
 
 /// Iterations of the forearm's own fit.
 const FOREARM_ITERATIONS: usize = 5;
-
-/// Whether the arm of `upper` and `lower` is bent more than [`MAX_BEND`] in `poses`.
-fn is_bent(
-    parts: &[Part],
-    poses: &[PartPose],
-    upper: usize,
-    lower: usize,
-    end: &Point3<f64>,
-) -> bool {
-    let root = parts[upper].apply(&poses[upper], &parts[upper].joint);
-    let bend = parts[lower].apply(&poses[lower], &parts[lower].joint);
-    let end = parts[lower].apply(&poses[lower], end);
-    (bend - root).angle(&(end - bend)) > MAX_BEND.to_radians()
-}
 
 /// The parameter along the line `a + s·u` of its point nearest the line `b + t·v` (unit
 /// directions), `None` when the lines are near parallel.
@@ -70,7 +56,7 @@ fn elbow_stretch(
     (length > 0.0).then(|| (along / length).clamp(STRETCH_RANGE.0, STRETCH_RANGE.1))
 }
 
-/// For each arm bent more than [`MAX_BEND`] in `poses` (of `parts`, of `template` at the
+/// For each arm bent more than `segments::MAX_BEND` in `poses` (of `parts`, of `template` at the
 /// resolution fitted): its forearm fitted on its own for [`FOREARM_ITERATIONS`] (those of
 /// `vertices` whose `dominant` part is the forearm, from [`FOREARM_START`] of the way to the
 /// wrist on, matched by `matching`), the upper arm's stretch set by [`elbow_stretch`] and the

@@ -497,6 +497,22 @@ fn unfold(parts: &[Part], poses: &mut [PartPose]) {
     }
 }
 
+/// Whether the limb of `upper` and `lower` (whose end is `end`, template frame) is bent more
+/// than [`MAX_BEND`] in `poses`: the angle between the root → joint and joint → end lines (≈ 39°
+/// on the template's straight A-pose arm, whose shoulder joint sits inside the shoulder).
+pub(crate) fn is_bent(
+    parts: &[Part],
+    poses: &[PartPose],
+    upper: usize,
+    lower: usize,
+    end: &Point3<f64>,
+) -> bool {
+    let root = parts[upper].apply(&poses[upper], &parts[upper].joint);
+    let bend = parts[lower].apply(&poses[lower], &parts[lower].joint);
+    let end = parts[lower].apply(&poses[lower], end);
+    (bend - root).angle(&(end - bend)) > MAX_BEND.to_radians()
+}
+
 /// Moves each knee and elbow along its limb to where the limb's cross-section profile on `scan`
 /// puts it (the template's profile from `surface`, points on its surface at rest, registered to
 /// the one from `scan`, points on the scan's surface, `profile.rs`): the upper part's stretch scaled so that the joint's fraction of the
@@ -548,11 +564,10 @@ fn place_joints(
             continue;
         }
         let arm = !parts[lower].stretches;
-        let bend = parts[lower].apply(&poses[lower], &parts[lower].joint);
-        let end = parts[lower].apply(&poses[lower], &end);
-        if (bend - posed[i].root).angle(&(end - bend)) > MAX_BEND.to_radians() {
+        if is_bent(parts, poses, upper, lower, &end) {
             continue;
         }
+        let bend = parts[lower].apply(&poses[lower], &parts[lower].joint);
         let joint = fraction(&at_rest[i], &parts[lower].joint);
         let now = fraction(&posed[i], &bend);
         let radius = if arm { ARM_RADIUS } else { LEG_RADIUS };
