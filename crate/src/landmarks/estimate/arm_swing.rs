@@ -15,8 +15,9 @@ use crate::mesh::normals::vertex_normals;
 use crate::mesh::similarity::Similarity;
 
 /// The turns tried about each shoulder (degrees, positive towards the body) from where the fit
-/// has the arm: arms from down along the body to raised, as people are scanned.
-pub const SWING_DEG: [f64; 3] = [0.0, 15.0, 30.0];
+/// has the arm: arms from down along the body to raised (the A-poses reach 60° from
+/// the body, 20° above the template's), as people are scanned.
+pub const SWING_DEG: [f64; 4] = [-15.0, 0.0, 15.0, 30.0];
 
 /// Iterations of the segment-wise fit run from each turn before the turns are compared.
 pub const SWING_ITERATIONS: usize = 3;
@@ -208,7 +209,14 @@ mod tests {
     use crate::template::{Resolution, Template};
 
     #[test]
-    fn arms_held_down_along_the_body_are_found() {
+    fn arms_held_down_along_the_body_or_raised_are_found() {
+        arms_turned_by(30.0);
+        arms_turned_by(-15.0);
+    }
+
+    /// The template with both arms turned `deg` towards the body as the "scan": the swing finds
+    /// the turn and lays the arms on the scan's.
+    fn arms_turned_by(deg: f64) {
         let template = Template::embedded()
             .unwrap()
             .at_resolution(Resolution::Base);
@@ -219,7 +227,7 @@ mod tests {
             transform: Similarity::identity(),
             stretch: 1.0,
         };
-        // The "scan": the template with both arms turned 30° towards the body, the pivots and
+        // The "scan": the template with both arms turned `deg` towards the body, the pivots and
         // directions as `swing_arms` finds them at rest.
         let arms = arms(&parts);
         assert_eq!(arms.len(), 2);
@@ -231,7 +239,7 @@ mod tests {
             let elbow = parts[arm.lower].joint;
             let down = front.cross(&(elbow - shoulder)).dot(&(head - shoulder)) <= 0.0;
             let sign = if down { 1.0 } else { -1.0 };
-            let r = Rotation3::from_axis_angle(&front, sign * 30f64.to_radians());
+            let r = Rotation3::from_axis_angle(&front, sign * deg.to_radians());
             for k in [arm.upper, arm.lower] {
                 scan_poses[k].transform = turned(&identity.transform, &r, &shoulder);
             }
@@ -254,7 +262,7 @@ mod tests {
             kept.map(|k| (k, poses))
         };
         let (kept, poses) = swing(|_| Some(())).unwrap();
-        assert_eq!(kept, vec![30.0, 30.0]);
+        assert_eq!(kept, vec![deg, deg]);
         // The turned arms now lie on the scan's.
         let fitted = blend(&parts, &poses, rest);
         let worst = fitted
