@@ -2,7 +2,7 @@
 //! landmark on the development subjects, the prior of the confidence (`confidence.rs`). Measured
 //! 2026-11-24 with `cargo run --release --example landmarks_estimate -- --n 10` (10 synthetic
 //! subjects of the `tuning` profile, 9 poses, 2 frames, no landmarks given), the segment-wise
-//! fit with stretching legs, the arms' swing, no limb folded past 145°, the knees and elbows
+//! fit with stretching legs, the arms' swing (raised too), no limb folded past 145°, the knees and elbows
 //! placed by the limbs' profiles (the knees by the front of the knee), the elbow of a bent arm
 //! and the hands' pose about the wrist. Regenerate it with the same command when the method or
 //! the template's landmark vertices change; the held-out figures in docs/landmarks-estimate.md
@@ -13,7 +13,7 @@ use crate::landmarks::CAESAR_LANDMARK_COUNT;
 /// Typical error (mm) per CAESAR landmark, CAESAR order.
 pub const TYPICAL_ERROR_MM: [f64; CAESAR_LANDMARK_COUNT] = [
     13.6, // Sellion
-    18.6, // Rt. Infraorbitale
+    18.5, // Rt. Infraorbitale
     18.5, // Lt. Infraorbitale
     15.1, // Supramenton
     11.9, // Rt. Tragion
@@ -26,44 +26,44 @@ pub const TYPICAL_ERROR_MM: [f64; CAESAR_LANDMARK_COUNT] = [
     14.1, // Lt. Clavicale
     23.3, // Rt. Thelion/Bustpoint
     22.8, // Lt. Thelion/Bustpoint
-    16.3, // Substernale
+    16.2, // Substernale
     15.5, // Rt. 10th Rib
     15.1, // Rt. ASIS
     15.7, // Lt. 10th Rib
     16.4, // Lt. ASIS
     12.7, // Rt. Iliocristale
     19.4, // Rt. Trochanterion
-    13.0, // Lt. Iliocristale
+    13.1, // Lt. Iliocristale
     20.6, // Lt. Trochanterion
-    12.3, // Cervicale
+    12.2, // Cervicale
     9.2,  // 10th Rib Midspine
     10.8, // Rt. PSIS
     11.4, // Lt. PSIS
     11.3, // Waist, Preferred, Post.
-    20.9, // Rt. Acromion
-    14.8, // Rt. Axilla, Ant.
+    20.8, // Rt. Acromion
+    14.7, // Rt. Axilla, Ant.
     5.4,  // Rt. Radial Styloid
     13.9, // Rt. Axilla, Post.
-    9.4,  // Rt. Olecranon
-    11.9, // Rt. Humeral Lateral Epicn
-    9.6,  // Rt. Humeral Medial Epicn
+    9.6,  // Rt. Olecranon
+    12.0, // Rt. Humeral Lateral Epicn
+    9.8,  // Rt. Humeral Medial Epicn
     12.3, // Rt. Radiale
     11.4, // Rt. Metacarpal Phal. II
     9.1,  // Rt. Dactylion
     7.1,  // Rt. Ulnar Styloid
     10.4, // Rt. Metacarpal Phal. V
-    20.4, // Lt. Acromion
+    20.3, // Lt. Acromion
     14.8, // Lt. Axilla, Ant.
     5.4,  // Lt. Radial Styloid
-    13.7, // Lt. Axilla, Post.
+    13.8, // Lt. Axilla, Post.
     10.7, // Lt. Olecranon
-    11.5, // Lt. Humeral Lateral Epicn
-    9.8,  // Lt. Humeral Medial Epicn
-    11.8, // Lt. Radiale
+    12.1, // Lt. Humeral Lateral Epicn
+    10.4, // Lt. Humeral Medial Epicn
+    12.2, // Lt. Radiale
     11.4, // Lt. Metacarpal Phal. II
-    9.1,  // Lt. Dactylion
+    9.3,  // Lt. Dactylion
     6.9,  // Lt. Ulnar Styloid
-    10.5, // Lt. Metacarpal Phal. V
+    10.4, // Lt. Metacarpal Phal. V
     13.3, // Rt. Knee Crease
     7.0,  // Rt. Femoral Lateral Epicn
     8.7,  // Rt. Femoral Medial Epicn
