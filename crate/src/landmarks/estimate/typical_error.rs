@@ -2,11 +2,12 @@
 //! landmark on the development subjects, the prior of the confidence (`confidence.rs`). Measured
 //! 2026-11-24 with `cargo run --release --example landmarks_estimate -- --n 10` (10 synthetic
 //! subjects of the `tuning` profile, 9 poses, 2 frames, no landmarks given), the segment-wise
-//! fit with stretching legs, the arms' swing (raised too), no limb folded past 145°, the knees and elbows
-//! placed by the limbs' profiles (the knees by the front of the knee), the elbow of a bent arm
-//! and the hands' pose about the wrist. Regenerate it with the same command when the method or
-//! the template's landmark vertices change; the held-out figures in docs/landmarks-estimate.md
-//! say how well it ranks the errors of subjects it was not measured on.
+//! fit with stretching legs, the arms' swing (raised too), no limb folded past 145°, the knees
+//! and elbows placed by the limbs' profiles (the knees by the front of the knee), the elbow of a
+//! bent arm and the hands' pose about the wrist. Regenerate it with the same command when the
+//! method or the template's landmark vertices change; the held-out figures in
+//! docs/landmarks-estimate.md say how well it ranks the errors of subjects it was not measured
+//! on.
 
 use crate::landmarks::CAESAR_LANDMARK_COUNT;
 
