@@ -204,9 +204,8 @@ pub fn swing_arms(
 mod tests {
     use super::*;
     use crate::align::SurfaceIndex;
-    use crate::landmarks::estimate::segments::{dominant_parts, parts};
+    use crate::landmarks::estimate::segments::{base_parts, dominant_parts};
     use crate::mesh::Mesh;
-    use crate::template::{Resolution, Template};
 
     #[test]
     fn arms_held_down_along_the_body_or_raised_are_found() {
@@ -217,16 +216,10 @@ mod tests {
     /// The template with both arms turned `deg` towards the body as the "scan": the swing finds
     /// the turn and lays the arms on the scan's.
     fn arms_turned_by(deg: f64) {
-        let template = Template::embedded()
-            .unwrap()
-            .at_resolution(Resolution::Base);
+        let (template, parts) = base_parts();
         let rest = &template.mesh().positions;
         let triangles = &template.mesh().triangles;
-        let parts = parts(&template);
-        let identity = PartPose {
-            transform: Similarity::identity(),
-            stretch: 1.0,
-        };
+        let identity = PartPose::identity();
         // The "scan": the template with both arms turned `deg` towards the body, the pivots and
         // directions as `swing_arms` finds them at rest.
         let arms = arms(&parts);

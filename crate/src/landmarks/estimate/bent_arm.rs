@@ -133,23 +133,16 @@ pub fn place_bent_elbows(
 mod tests {
     use super::*;
     use crate::align::SurfaceIndex;
-    use crate::landmarks::estimate::segments::{blend, dominant_parts, parts};
+    use crate::landmarks::estimate::segments::{base_parts, blend, dominant_parts};
     use crate::mesh::Mesh;
-    use crate::template::Resolution;
     use nalgebra::{Rotation3, Unit};
 
     #[test]
     fn a_bent_arms_elbow_is_placed_where_its_axes_meet() {
-        let template = Template::embedded()
-            .unwrap()
-            .at_resolution(Resolution::Base);
+        let (template, parts) = base_parts();
         let rest = &template.mesh().positions;
         let triangles = &template.mesh().triangles;
-        let parts = parts(&template);
-        let identity = PartPose {
-            transform: Similarity::identity(),
-            stretch: 1.0,
-        };
+        let identity = PartPose::identity();
         // The "scan": the template with each upper arm 15% longer and its forearm bent 90° at
         // the elbow; the start: the same bend at the template's elbow.
         let arms = arms(&parts);

@@ -67,6 +67,27 @@ pub struct PartPose {
     pub stretch: f64,
 }
 
+#[cfg(test)]
+impl PartPose {
+    /// The template's own placement: no motion, no stretch.
+    pub(crate) fn identity() -> Self {
+        Self {
+            transform: Similarity::identity(),
+            stretch: 1.0,
+        }
+    }
+}
+
+/// The base template and its parts, for the estimate's tests.
+#[cfg(test)]
+pub(crate) fn base_parts() -> (Template, Vec<Part>) {
+    let template = Template::embedded()
+        .unwrap()
+        .at_resolution(crate::template::Resolution::Base);
+    let parts = parts(&template);
+    (template, parts)
+}
+
 impl Part {
     /// `p` (template frame) stretched along the part's axis about its joint.
     pub(crate) fn stretched(&self, p: &Point3<f64>, stretch: f64) -> Point3<f64> {
@@ -641,15 +662,8 @@ mod tests {
 
     #[test]
     fn a_limb_folded_back_is_straightened_and_a_bent_one_kept() {
-        use crate::template::{Resolution, Template};
-        let template = Template::embedded()
-            .unwrap()
-            .at_resolution(Resolution::Base);
-        let parts = parts(&template);
-        let identity = PartPose {
-            transform: Similarity::identity(),
-            stretch: 1.0,
-        };
+        let (_, parts) = base_parts();
+        let identity = PartPose::identity();
         let (k, lower) = parts
             .iter()
             .enumerate()
