@@ -13,13 +13,18 @@
 //!    across the hand (the flat side) onto the scan's. The rotation is blended to nothing at
 //!    the wrist.
 //!
-//! A hand that is not free (on the hip, against the thigh) or not seen (a hole) shows there as
-//! much more or much less surface than a hand: it is left as the fit put it, as is the hand of an
-//! arm bent more than the limbs' profiles take (`segments::MAX_BEND`, hands on hips).
+//! A hand that is not free (against the thigh) or not seen (a hole) shows there as much more or
+//! much less surface than a hand: it is left as the fit put it. The hand of an arm bent more than
+//! the limbs' profiles take (`segments::MAX_BEND`, hands on hips) rests on the body, its surface
+//! merged with the hip's: it is matched by its own vertices instead (`resting_hand`), turned
+//! about the wrist and slid along the forearm as one rigid piece.
 
-use nalgebra::{Matrix3, Point3, Rotation3, Vector3};
+use nalgebra::{Matrix3, Point3, Rotation3, UnitQuaternion, Vector3};
 
+use super::matching::Matching;
 use super::segments::MAX_BEND;
+use crate::mesh::normals::vertex_normals;
+use crate::mesh::similarity::similarity;
 use crate::mesh::Mesh;
 use crate::template::{Segment, Template};
 
@@ -49,6 +54,21 @@ const MAX_SLIDE: f64 = 0.06;
 /// A larger turn (degrees) is not believed: a hand's flexion or deviation at the wrist is within
 /// it, a match to the thigh or the hip often is not.
 const MAX_TURN: f64 = 60.0;
+
+/// Rounds of a resting hand's matching (an arm bent more than [`MAX_BEND`], `resting_hand`);
+/// on the development hands-on-hips subjects 15–30 rounds converge.
+const RESTING_ITERATIONS: usize = 40;
+
+/// A resting hand's matching is done when a round moves it less than this (m).
+const RESTING_CONVERGED: f64 = 2e-4;
+
+/// Nearest points pull a surface along itself slowly: each round's slide is taken this many
+/// times (a wrist 2–3 cm off along the forearm took 100 rounds at 1, 30 at 2, the same place).
+const RESTING_SLIDE_GAIN: f64 = 2.0;
+
+/// A resting hand's turn believed (degrees): a hand laid flat on the hip is extended ≈ 45–65° at
+/// the wrist (development subjects), a wrist extends to ≈ 70° and deviates ≈ 30°.
+const RESTING_MAX_TURN: f64 = 90.0;
 
 /// One hand of the template: the vertices that make the wrist and the elbow, the hand's vertices
 /// with their share of the rotation, the forearm's and the hand's with their share of the slide.
@@ -177,11 +197,12 @@ pub fn pose_hands(
     hands: &[Hand],
     positions: &mut [Point3<f64>],
     scan: &Mesh,
+    matching: &Matching<'_>,
 ) -> Vec<Option<HandPose>> {
     let scan_surface = surface(&scan.positions, &scan.triangles);
     hands
         .iter()
-        .map(|hand| pose_hand(hand, positions, &scan_surface))
+        .map(|hand| pose_hand(hand, positions, &scan_surface, matching))
         .collect()
 }
 
@@ -189,6 +210,7 @@ fn pose_hand(
     hand: &Hand,
     positions: &mut [Point3<f64>],
     scan_surface: &Surface,
+    matching: &Matching<'_>,
 ) -> Option<HandPose> {
     let reach = |positions: &[Point3<f64>], wrist: Point3<f64>| {
         hand.share
@@ -198,11 +220,10 @@ fn pose_hand(
             * REACH
     };
     let (wrist, axis) = wrist_and_axis(positions, hand.styloids, hand.epicondyles);
-    // An arm bent like the hands on the hips: the hand rests on the body, as the limbs' profiles
-    // assume of the arms they leave alone.
+    // An arm bent like the hands on the hips: the hand rests on the body.
     let elbow = mid(positions, hand.epicondyles);
     if (elbow - positions[hand.acromion as usize]).angle(&axis) > MAX_BEND.to_radians() {
-        return None;
+        return resting_hand(hand, positions, matching);
     }
     let r = reach(positions, wrist);
     // Only the scan's surface the slide can bring into the region.
@@ -231,14 +252,98 @@ fn pose_hand(
     let (wrist, axis) = wrist_and_axis(positions, hand.styloids, hand.epicondyles);
     let template = surface(positions, &hand.triangles);
     let rotation = hand_rotation(wrist, axis, reach(positions, wrist), &template, &near);
-    if let Some(rotation) = rotation {
-        for (v, s) in &hand.share {
-            let p = &mut positions[*v as usize];
-            let turn = Rotation3::from_scaled_axis(rotation.scaled_axis() * *s);
-            *p = wrist + turn * (*p - wrist);
-        }
+    if let Some(rotation) = &rotation {
+        turn_hand(hand, positions, wrist, &UnitQuaternion::from(*rotation));
     }
     Some(HandPose { slide, rotation })
+}
+
+/// The hand of an arm bent more than [`MAX_BEND`] (resting on the hip). The scan's surface
+/// beyond the wrist is the hand merged with the body under it, so its moments say nothing of the
+/// hand; instead the hand's own vertices (those wholly the hand's) are matched (`matching`:
+/// nearest compatible scan points, so the palm pressed on the hip finds nothing) and moved
+/// rigidly towards their matches, the move split into a turn about the wrist and the wrist's
+/// slide along the forearm ([`RESTING_SLIDE_GAIN`] times its share of the move). Up to
+/// [`RESTING_ITERATIONS`] rounds, until a round moves the wrist less than
+/// [`RESTING_CONVERGED`] and turns the hand less than as much at the wrist's reach. `None`
+/// (the hand left as it was) with matches for under a tenth of the vertices, or a turn beyond
+/// [`RESTING_MAX_TURN`].
+fn resting_hand(
+    hand: &Hand,
+    positions: &mut [Point3<f64>],
+    matching: &Matching<'_>,
+) -> Option<HandPose> {
+    let own: Vec<u32> = hand
+        .share
+        .iter()
+        .filter(|(_, s)| *s >= 1.0)
+        .map(|(v, _)| *v)
+        .collect();
+    let before: Vec<(u32, Point3<f64>)> = hand
+        .slide
+        .iter()
+        .map(|(v, _)| (*v, positions[*v as usize]))
+        .collect();
+    let mut slide = 0.0;
+    let mut total = UnitQuaternion::identity();
+    for _ in 0..RESTING_ITERATIONS {
+        let normals = vertex_normals(positions, &hand.triangles);
+        let pairs = matching.pairs(&own, positions, &normals);
+        if pairs.len() < own.len() / 10 {
+            break;
+        }
+        let (wrist, axis) = wrist_and_axis(positions, hand.styloids, hand.epicondyles);
+        let from: Vec<_> = pairs.iter().map(|p| positions[p.vertex as usize]).collect();
+        let to: Vec<_> = pairs.iter().map(|p| p.target).collect();
+        let Some(rigid) = similarity(&from, &to, false) else {
+            break;
+        };
+        // x ↦ R·x + t is the turn R about the wrist w and the wrist's move R·w + t − w, of which
+        // the part along the forearm is the slide: the wrist stays on the forearm.
+        let step = RESTING_SLIDE_GAIN * (rigid.apply(&wrist) - wrist).dot(&axis);
+        let step = (slide + step).clamp(-MAX_SLIDE, MAX_SLIDE) - slide;
+        slide += step;
+        for (v, u) in &hand.slide {
+            positions[*v as usize] += axis * (step * u);
+        }
+        let (wrist, _) = wrist_and_axis(positions, hand.styloids, hand.epicondyles);
+        let turn = UnitQuaternion::from_matrix(&rigid.rotation);
+        turn_hand(hand, positions, wrist, &turn);
+        total = turn * total;
+        let reach = hand
+            .share
+            .iter()
+            .map(|(v, _)| (positions[*v as usize] - wrist).norm())
+            .fold(0.0, f64::max);
+        if step.abs() < RESTING_CONVERGED && turn.angle() * reach < RESTING_CONVERGED {
+            break;
+        }
+    }
+    if total.angle() > RESTING_MAX_TURN.to_radians() {
+        for (v, p) in before {
+            positions[v as usize] = p;
+        }
+        return None;
+    }
+    Some(HandPose {
+        slide,
+        rotation: Some(total.to_rotation_matrix()),
+    })
+}
+
+/// Turns the hand by `rotation` about `wrist`, each vertex by its share of it.
+fn turn_hand(
+    hand: &Hand,
+    positions: &mut [Point3<f64>],
+    wrist: Point3<f64>,
+    rotation: &UnitQuaternion<f64>,
+) {
+    let scaled_axis = rotation.scaled_axis();
+    for (v, s) in &hand.share {
+        let p = &mut positions[*v as usize];
+        let turn = Rotation3::from_scaled_axis(scaled_axis * *s);
+        *p = wrist + turn * (*p - wrist);
+    }
 }
 
 /// The triangles of `triangles` as area-weighted centroids.
@@ -407,6 +512,50 @@ mod tests {
         let far = Rotation3::from_axis_angle(&Vector3::x_axis(), 75f64.to_radians());
         let scan = moved(&template, |p| far * p);
         assert!(hand_rotation(wrist, axis, REACH_M, &template, &scan).is_none());
+    }
+
+    #[test]
+    fn a_resting_hand_is_turned_and_slid_onto_the_scans() {
+        use crate::align::SurfaceIndex;
+        use crate::landmarks::estimate::segments::base_parts;
+        let (template, _) = base_parts();
+        let rest = &template.mesh().positions;
+        let hands = hands(&template);
+        let hand = &hands[0];
+        // The "scan": the template with this hand slid 15 mm along the forearm and extended 40°
+        // at the wrist (about the axis across the hand), the way a hand is laid on the hip.
+        let mut scan = rest.to_vec();
+        let (_, axis) = wrist_and_axis(&scan, hand.styloids, hand.epicondyles);
+        for (v, u) in &hand.slide {
+            scan[*v as usize] += axis * (0.015 * u);
+        }
+        let (wrist, axis) = wrist_and_axis(&scan, hand.styloids, hand.epicondyles);
+        let across = (scan[hand.styloids[0] as usize] - scan[hand.styloids[1] as usize])
+            .cross(&axis)
+            .cross(&axis)
+            .normalize();
+        let turn = UnitQuaternion::from_scaled_axis(across * 40f64.to_radians());
+        turn_hand(hand, &mut scan, wrist, &turn);
+        let mesh = Mesh::new(scan.clone(), template.mesh().triangles.clone());
+        let index = SurfaceIndex::new(&mesh).unwrap();
+        let matching = Matching {
+            scan: &index,
+            min_cos: 0.5,
+            outlier_distance: 0.1,
+        };
+        let mut positions = rest.to_vec();
+        let pose = resting_hand(hand, &mut positions, &matching).unwrap();
+        assert!((pose.slide - 0.015).abs() < 0.005, "{}", pose.slide);
+        let farthest = hand
+            .share
+            .iter()
+            .map(|(v, _)| (positions[*v as usize] - scan[*v as usize]).norm())
+            .fold(0.0, f64::max);
+        assert!(farthest < 0.01, "{farthest}");
+        // The template's own hand: no move.
+        let mut positions = scan.clone();
+        let pose = resting_hand(hand, &mut positions, &matching).unwrap();
+        assert!(pose.slide.abs() < 1e-3 && pose.rotation.unwrap().angle() < 0.01);
     }
 
     #[test]
