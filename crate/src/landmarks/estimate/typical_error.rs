@@ -1,13 +1,13 @@
 //! Each landmark's typical estimate error: the mean distance (mm) of the estimate from the true
 //! landmark on the development subjects, the prior of the confidence (`confidence.rs`). Measured
-//! 2026-11-24 with `cargo run --release --example landmarks_estimate -- --n 10` (10 synthetic
+//! 2026-11-25 with `cargo run --release --example landmarks_estimate -- --n 10` (10 synthetic
 //! subjects of the `tuning` profile, 9 poses, 2 frames, no landmarks given), the segment-wise
 //! fit with stretching legs, the arms' swing (raised too), no limb folded past 145°, the knees
 //! and elbows placed by the limbs' profiles (the knees by the front of the knee), the elbow of a
-//! bent arm and the hands' pose about the wrist. Regenerate it with the same command when the
-//! method or the template's landmark vertices change; the held-out figures in
-//! docs/landmarks-estimate.md say how well it ranks the errors of subjects it was not measured
-//! on.
+//! bent arm, the hands' pose about the wrist and the resting hand of a bent arm. Regenerate it
+//! with the same command when the method or the template's landmark vertices change; the
+//! held-out figures in docs/landmarks-estimate.md say how well it ranks the errors of subjects
+//! it was not measured on.
 
 use crate::landmarks::CAESAR_LANDMARK_COUNT;
 
@@ -18,9 +18,9 @@ pub const TYPICAL_ERROR_MM: [f64; CAESAR_LANDMARK_COUNT] = [
     18.5, // Lt. Infraorbitale
     15.1, // Supramenton
     11.9, // Rt. Tragion
-    11.6, // Rt. Gonion
-    12.4, // Lt. Tragion
-    12.5, // Lt. Gonion
+    11.7, // Rt. Gonion
+    12.5, // Lt. Tragion
+    12.6, // Lt. Gonion
     18.1, // Nuchale
     14.2, // Rt. Clavicale
     14.9, // Suprasternale
@@ -42,29 +42,29 @@ pub const TYPICAL_ERROR_MM: [f64; CAESAR_LANDMARK_COUNT] = [
     11.4, // Lt. PSIS
     11.3, // Waist, Preferred, Post.
     20.8, // Rt. Acromion
-    14.7, // Rt. Axilla, Ant.
-    5.4,  // Rt. Radial Styloid
+    14.8, // Rt. Axilla, Ant.
+    4.6,  // Rt. Radial Styloid
     13.9, // Rt. Axilla, Post.
     9.6,  // Rt. Olecranon
     12.0, // Rt. Humeral Lateral Epicn
     9.8,  // Rt. Humeral Medial Epicn
-    12.3, // Rt. Radiale
-    11.4, // Rt. Metacarpal Phal. II
-    9.1,  // Rt. Dactylion
-    7.1,  // Rt. Ulnar Styloid
-    10.4, // Rt. Metacarpal Phal. V
+    12.2, // Rt. Radiale
+    9.5,  // Rt. Metacarpal Phal. II
+    8.0,  // Rt. Dactylion
+    6.8,  // Rt. Ulnar Styloid
+    8.5,  // Rt. Metacarpal Phal. V
     20.3, // Lt. Acromion
     14.8, // Lt. Axilla, Ant.
-    5.4,  // Lt. Radial Styloid
+    4.6,  // Lt. Radial Styloid
     13.8, // Lt. Axilla, Post.
     10.7, // Lt. Olecranon
     12.1, // Lt. Humeral Lateral Epicn
     10.4, // Lt. Humeral Medial Epicn
     12.2, // Lt. Radiale
-    11.4, // Lt. Metacarpal Phal. II
-    9.3,  // Lt. Dactylion
-    6.9,  // Lt. Ulnar Styloid
-    10.4, // Lt. Metacarpal Phal. V
+    9.8,  // Lt. Metacarpal Phal. II
+    8.4,  // Lt. Dactylion
+    6.4,  // Lt. Ulnar Styloid
+    8.5,  // Lt. Metacarpal Phal. V
     13.3, // Rt. Knee Crease
     7.0,  // Rt. Femoral Lateral Epicn
     8.7,  // Rt. Femoral Medial Epicn
