@@ -560,10 +560,10 @@ mod tests {
             .map(|(v, _)| (positions[*v as usize] - scan[*v as usize]).norm())
             .fold(0.0, f64::max);
         assert!(farthest < 0.01, "{farthest}");
-        // The template's own hand: no move.
+        // A hand already on the scan's matches no better anywhere else: left where it is.
         let mut positions = scan.clone();
-        let pose = resting_hand(hand, &mut positions, &matching).unwrap();
-        assert!(pose.slide.abs() < 1e-3 && pose.rotation.unwrap().angle() < 0.01);
+        assert!(resting_hand(hand, &mut positions, &matching).is_none());
+        assert_eq!(positions, scan);
     }
 
     #[test]
