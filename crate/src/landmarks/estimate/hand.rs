@@ -66,8 +66,8 @@ const RESTING_CONVERGED: f64 = 2e-4;
 /// times (a wrist 2–3 cm off along the forearm took 100 rounds at 1, 30 at 2, the same place).
 const RESTING_SLIDE_GAIN: f64 = 2.0;
 
-/// A resting hand's turn believed (degrees): a hand laid flat on the hip is extended ≈ 45–65° at
-/// the wrist (development subjects); a wrist extends to ≈ 70°. Hands matched to the hip turned
+/// A resting hand's turn believed (degrees): a hand laid flat on the hip turned ≈ 40–65° at the
+/// wrist (development and held-out subjects); a wrist extends to ≈ 70°. Hands matched to the hip turned
 /// 79–84° (held-out seed 5151).
 const RESTING_MAX_TURN: f64 = 75.0;
 
@@ -192,8 +192,10 @@ fn wrist_and_axis(
 }
 
 /// Moves each hand of `hands` in `positions` (the segment-wise fit's, metres) to the scan's hand
-/// (`scan`, metres): the slide along the forearm, then the turn about the wrist. Per hand, what
-/// was done (`None`: the scan's surface beyond the wrist is not hand-like; left as it was).
+/// (`scan`, metres, indexed by `matching`): the slide along the forearm, then the turn about the
+/// wrist; a hand resting on the body by [`resting_hand`]. Per hand, what was done (`None`: the
+/// scan's surface beyond the wrist is not hand-like, or the resting hand's matching was not
+/// kept; left as it was).
 pub fn pose_hands(
     hands: &[Hand],
     positions: &mut [Point3<f64>],
@@ -285,8 +287,8 @@ fn resting_hand(
         .iter()
         .map(|(v, _)| (*v, positions[*v as usize]))
         .collect();
-    // The matches' energy (an unmatched vertex as far as the farthest match kept): a hand that
-    // slid onto the hip matches less of itself, and worse.
+    // The matches' energy (`Matching::energy`: an unmatched vertex counts as the outlier
+    // distance): a hand that slid onto the hip matches less of itself, and worse.
     let energy = |positions: &[Point3<f64>]| {
         let normals = vertex_normals(positions, &hand.triangles);
         matching.energy(&matching.pairs(&own, positions, &normals), own.len())
