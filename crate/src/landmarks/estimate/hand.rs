@@ -23,7 +23,7 @@ use nalgebra::{Matrix3, Point3, Rotation3, UnitQuaternion, Vector3};
 
 use super::matching::Matching;
 use super::segments::MAX_BEND;
-use crate::mesh::normals::vertex_normals;
+use crate::mesh::normals::vertex_normals_into;
 use crate::mesh::similarity::similarity;
 use crate::mesh::Mesh;
 use crate::template::{Segment, Template};
@@ -287,18 +287,19 @@ fn resting_hand(
         .iter()
         .map(|(v, _)| (*v, positions[*v as usize]))
         .collect();
-    // The matches' energy (`Matching::energy`: an unmatched vertex counts as the outlier
-    // distance): a hand that slid onto the hip matches less of itself, and worse.
-    let energy = |positions: &[Point3<f64>]| {
-        let normals = vertex_normals(positions, &hand.triangles);
-        matching.energy(&matching.pairs(&own, positions, &normals), own.len())
+    // The hand's matches at `positions` (its normals from its own triangles, into one buffer).
+    let mut normals = vec![Vector3::zeros(); positions.len()];
+    let mut pairs_at = |positions: &[Point3<f64>]| {
+        vertex_normals_into(positions, &hand.triangles, &mut normals);
+        matching.pairs(&own, positions, &normals)
     };
-    let start = energy(positions);
+    // Their energy (`Matching::energy`: an unmatched vertex counts as the outlier distance): a
+    // hand that slid onto the hip matches less of itself, and worse.
+    let start = matching.energy(&pairs_at(positions), own.len());
     let mut slide = 0.0;
     let mut total = UnitQuaternion::identity();
     for _ in 0..RESTING_ITERATIONS {
-        let normals = vertex_normals(positions, &hand.triangles);
-        let pairs = matching.pairs(&own, positions, &normals);
+        let pairs = pairs_at(positions);
         if pairs.len() < own.len() / 10 {
             break;
         }
@@ -329,7 +330,9 @@ fn resting_hand(
             break;
         }
     }
-    if total.angle() > RESTING_MAX_TURN.to_radians() || energy(positions) >= start {
+    if total.angle() > RESTING_MAX_TURN.to_radians()
+        || matching.energy(&pairs_at(positions), own.len()) >= start
+    {
         for (v, p) in before {
             positions[v as usize] = p;
         }

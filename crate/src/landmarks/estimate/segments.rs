@@ -314,7 +314,8 @@ const PROFILE_ITERATIONS: usize = 5;
 const SURFACE_SPACING: f64 = 0.004;
 
 /// A limb bent more than this (degrees) at the elbow or knee is not placed by its profile: the
-/// profile is taken across the straight root → end line; nor is its hand posed (`hand.rs`).
+/// profile is taken across the straight root → end line; its hand rests on the body and is
+/// matched by its own vertices instead of posed by its surface's moments (`hand.rs`).
 pub(crate) const MAX_BEND: f64 = 60.0;
 
 /// No elbow or knee bends further than this (degrees from the template's limb; an elbow's full
