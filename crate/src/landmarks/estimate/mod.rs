@@ -19,6 +19,7 @@
 
 pub mod arm_swing;
 pub mod bent_arm;
+pub mod buttocks;
 pub mod candidates;
 pub mod confidence;
 pub mod error;

@@ -1,0 +1,185 @@
+//! The torso's length from the buttocks. The body's one common scale (the similarity fit's)
+//! leaves the torso as long as the template's for the subject's height; real torsos are longer
+//! or shorter than that, and nearest points do not see it (the trunk is close to a cylinder), so
+//! the hips, the pelvic landmarks and the crotch land centimetres high or low. The crotch itself
+//! is rarely scanned (the scanner does not see between the legs); the buttocks are: the height
+//! at which the back of the body reaches furthest back below the waist (the gluteal prominence,
+//! anthropometry's buttock height). That height on the scan against the template's own, in the
+//! fit's frame, sets the torso's stretch along its axis about the neck; the legs follow it.
+
+use nalgebra::{Point3, Vector3};
+
+use super::segments::{Part, PartPose};
+
+/// Half-width (m, at the template's size) of the band about the midline the back is taken from.
+const ACROSS: f64 = 0.04;
+
+/// The heights (m, at the template's size, from the midpoint of the PSIS) searched.
+const WINDOW: (f64, f64) = (-0.25, 0.10);
+
+/// Height of a bin of the back's profile (m, at the template's size).
+const BIN: f64 = 0.005;
+
+/// The peak must stand out of the profile at the window's ends by at least this (m, at the
+/// template's size): a flat back gives no height.
+const MIN_PROMINENCE: f64 = 0.01;
+
+/// A bin with fewer points than this has no extent.
+const MIN_POINTS: usize = 3;
+
+/// The torso's stretch stays within this range (its length from the neck down).
+pub(crate) const TORSO_STRETCH_RANGE: (f64, f64) = (0.85, 1.15);
+
+/// The height along `up` (unit) above `at` at which `points` (spread over a surface) within
+/// [`ACROSS`] of the midline through `at` reach furthest against `front` (unit, the body's
+/// facing), within [`WINDOW`]; `size`: the body's scale (metres per template metre). The back's
+/// extent per bin smoothed over three bins; `None` when it has no peak standing
+/// [`MIN_PROMINENCE`] out of both ends of the window, or the peak is at an end.
+pub fn buttock_height(
+    points: &[Point3<f64>],
+    at: &Point3<f64>,
+    up: &Vector3<f64>,
+    front: &Vector3<f64>,
+    size: f64,
+) -> Option<f64> {
+    let across = up.cross(front);
+    let (low, bin) = (WINDOW.0 * size, BIN * size);
+    let bins = ((WINDOW.1 - WINDOW.0) / BIN).round() as usize;
+    let mut back: Vec<(f64, usize)> = vec![(f64::NEG_INFINITY, 0); bins];
+    for p in points {
+        let d = p - at;
+        if d.dot(&across).abs() > ACROSS * size {
+            continue;
+        }
+        let b = ((d.dot(up) - low) / bin).floor();
+        if b < 0.0 || b >= bins as f64 {
+            continue;
+        }
+        let cell = &mut back[b as usize];
+        cell.0 = cell.0.max(-d.dot(front));
+        cell.1 += 1;
+    }
+    let extent: Vec<Option<f64>> = back
+        .iter()
+        .map(|&(e, n)| (n >= MIN_POINTS).then_some(e))
+        .collect();
+    let smooth: Vec<Option<f64>> = (0..bins)
+        .map(|i| {
+            let near: Vec<f64> = (i.saturating_sub(1)..(i + 2).min(bins))
+                .filter_map(|j| extent[j])
+                .collect();
+            (near.len() >= 2).then(|| near.iter().sum::<f64>() / near.len() as f64)
+        })
+        .collect();
+    let (peak, top) = smooth
+        .iter()
+        .enumerate()
+        .filter_map(|(i, e)| Some((i, (*e)?)))
+        .max_by(|a, b| a.1.total_cmp(&b.1))?;
+    let first = smooth.iter().find_map(|e| *e)?;
+    let last = smooth.iter().rev().find_map(|e| *e)?;
+    let inside = peak > 0 && peak + 1 < bins;
+    (inside && top - first.max(last) >= MIN_PROMINENCE * size)
+        .then_some(low + (peak as f64 + 0.5) * bin)
+}
+
+/// Stretches the torso (part 0 of `parts`, its axis down from the neck) so that the template's
+/// buttocks (`surface`, points on its surface at rest, about `psis`, the midpoint of its PSIS
+/// landmarks at rest) land at the scan's (`scan`, points on its surface, metres), both found by
+/// [`buttock_height`] in the frame of the torso's pose. Left as it is when either is not found
+/// or the stretch would leave [`TORSO_STRETCH_RANGE`].
+pub fn place_buttocks(
+    parts: &[Part],
+    poses: &mut [PartPose],
+    surface: &[Point3<f64>],
+    scan: &[Point3<f64>],
+    psis: &Point3<f64>,
+) {
+    let torso = &parts[0];
+    let Some(axis) = torso.axis else { return };
+    let pose = poses[0];
+    let size = pose.transform.scale;
+    let (up, front) = (Vector3::y(), Vector3::z());
+    let Some(template) = buttock_height(surface, psis, &up, &front, 1.0) else {
+        return;
+    };
+    let at = torso.apply(&pose, psis);
+    let rotation = pose.transform.rotation;
+    let Some(found) = buttock_height(scan, &at, &(rotation * up), &(rotation * front), size) else {
+        return;
+    };
+    // How far (template metres) the buttocks move up, and their distance down the axis.
+    let lift = (found - template * size) / size;
+    let depth = (psis + up * template - torso.joint).dot(&axis);
+    if depth <= 0.0 {
+        return;
+    }
+    let stretch = pose.stretch - lift / depth;
+    if (TORSO_STRETCH_RANGE.0..=TORSO_STRETCH_RANGE.1).contains(&stretch) {
+        poses[0].stretch = stretch;
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::landmarks::estimate::profile::surface_samples;
+    use crate::landmarks::estimate::segments::base_parts;
+
+    /// Points on the back of a body (facing +z, y up) whose back reaches furthest at `peak`
+    /// (m above the origin): a bump of `depth` over a flat back.
+    fn back(peak: f64, depth: f64) -> Vec<Point3<f64>> {
+        let mut out = Vec::new();
+        for i in 0..400 {
+            let y = -0.3 + i as f64 * 0.001;
+            let z = -0.1 - depth * (-((y - peak) / 0.05).powi(2)).exp();
+            for x in [-0.03, -0.01, 0.01, 0.03, 0.08] {
+                out.push(Point3::new(x, y, z));
+            }
+        }
+        out
+    }
+
+    #[test]
+    fn the_buttocks_are_where_the_back_reaches_furthest() {
+        let (up, front) = (Vector3::y(), Vector3::z());
+        let h = buttock_height(&back(-0.08, 0.03), &Point3::origin(), &up, &front, 1.0).unwrap();
+        assert!((h + 0.08).abs() <= BIN, "{h}");
+        // At twice the size, twice the height.
+        let big: Vec<_> = back(-0.08, 0.03).iter().map(|p| p * 2.0).collect();
+        let h = buttock_height(&big, &Point3::origin(), &up, &front, 2.0).unwrap();
+        assert!((h + 0.16).abs() <= 2.0 * BIN, "{h}");
+        // A flat back, or a peak outside the window, gives none.
+        assert!(buttock_height(&back(-0.08, 0.0), &Point3::origin(), &up, &front, 1.0).is_none());
+        assert!(buttock_height(&back(0.2, 0.03), &Point3::origin(), &up, &front, 1.0).is_none());
+    }
+
+    #[test]
+    fn a_shorter_torso_is_found_from_its_buttocks() {
+        let (template, parts) = base_parts();
+        let rest = &template.mesh().positions;
+        let surface = surface_samples(rest, &template.mesh().triangles, 0.004);
+        let at = |name: &str| {
+            let (_, v) = template
+                .landmark_vertices()
+                .iter()
+                .find(|(n, _)| n == name)
+                .unwrap();
+            rest[*v as usize]
+        };
+        let psis = Point3::from((at("Rt. PSIS").coords + at("Lt. PSIS").coords) / 2.0);
+        // The template itself: the torso keeps its length.
+        let mut poses = vec![PartPose::identity(); parts.len()];
+        place_buttocks(&parts, &mut poses, &surface, &surface, &psis);
+        assert_eq!(poses[0].stretch, 1.0);
+        // A scan whose body below the neck is 6 % shorter.
+        let torso = &parts[0];
+        let scan: Vec<_> = surface.iter().map(|p| torso.stretched(p, 0.94)).collect();
+        place_buttocks(&parts, &mut poses, &surface, &scan, &psis);
+        assert!(
+            (poses[0].stretch - 0.94).abs() < 0.015,
+            "{}",
+            poses[0].stretch
+        );
+    }
+}
