@@ -5,11 +5,14 @@
 //! is rarely scanned (the scanner does not see between the legs); the buttocks are: the height
 //! at which the back of the body reaches furthest back below the waist (the gluteal prominence,
 //! anthropometry's buttock height). That height on the scan against the template's own, in the
-//! fit's frame, sets the torso's stretch along its axis about the neck; the legs follow it.
+//! fit's frame, sets the torso's stretch along its axis about the neck. The stretch moves the
+//! torso's own landmarks; the limbs stay attached where the unstretched torso puts their joints
+//! (`segments.rs`).
 
 use nalgebra::{Point3, Vector3};
 
 use super::segments::{Part, PartPose};
+use crate::template::Template;
 
 /// Half-width (m, at the template's size) of the band about the midline the back is taken from.
 const ACROSS: f64 = 0.04;
@@ -28,7 +31,7 @@ const MIN_PROMINENCE: f64 = 0.01;
 const MIN_POINTS: usize = 3;
 
 /// The torso's stretch stays within this range (its length from the neck down).
-pub(crate) const TORSO_STRETCH_RANGE: (f64, f64) = (0.85, 1.15);
+const TORSO_STRETCH_RANGE: (f64, f64) = (0.85, 1.15);
 
 /// The height along `up` (unit) above `at` at which `points` (spread over a surface) within
 /// [`ACROSS`] of the midline through `at` reach furthest against `front` (unit, the body's
@@ -81,6 +84,21 @@ pub fn buttock_height(
     let inside = peak > 0 && peak + 1 < bins;
     (inside && top - first.max(last) >= MIN_PROMINENCE * size)
         .then_some(low + (peak as f64 + 0.5) * bin)
+}
+
+/// The midpoint of `template`'s PSIS landmark vertices at rest: where the back's profile is
+/// taken from.
+pub(crate) fn psis_midpoint(template: &Template) -> Option<Point3<f64>> {
+    let at = |name: &str| {
+        template
+            .landmark_vertices()
+            .iter()
+            .find(|(n, _)| n == name)
+            .map(|(_, v)| template.mesh().positions[*v as usize])
+    };
+    Some(Point3::from(
+        (at("Rt. PSIS")?.coords + at("Lt. PSIS")?.coords) / 2.0,
+    ))
 }
 
 /// Stretches the torso (part 0 of `parts`, its axis down from the neck) so that the template's
@@ -159,15 +177,7 @@ mod tests {
         let (template, parts) = base_parts();
         let rest = &template.mesh().positions;
         let surface = surface_samples(rest, &template.mesh().triangles, 0.004);
-        let at = |name: &str| {
-            let (_, v) = template
-                .landmark_vertices()
-                .iter()
-                .find(|(n, _)| n == name)
-                .unwrap();
-            rest[*v as usize]
-        };
-        let psis = Point3::from((at("Rt. PSIS").coords + at("Lt. PSIS").coords) / 2.0);
+        let psis = psis_midpoint(&template).unwrap();
         // The template itself: the torso keeps its length.
         let mut poses = vec![PartPose::identity(); parts.len()];
         place_buttocks(&parts, &mut poses, &surface, &surface, &psis);

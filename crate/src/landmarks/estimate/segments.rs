@@ -23,7 +23,7 @@ use nalgebra::{Point3, Vector3};
 
 use super::arm_swing::{swing_arms, SWING_AFTER, SWING_ITERATIONS};
 use super::bent_arm::place_bent_elbows;
-use super::buttocks::place_buttocks;
+use super::buttocks::{place_buttocks, psis_midpoint};
 use super::matching::Matching;
 use super::profile::{
     fraction, knee_from_front, profile, reach, register, surface_samples, LimbLine,
@@ -408,7 +408,7 @@ pub fn fit_segments(
     );
     let surface = surface_samples(rest, &template.mesh().triangles, SURFACE_SPACING);
     let scan_surface = surface_samples(&scan.positions, &scan.triangles, SURFACE_SPACING);
-    if let Some(psis) = psis_rest(template) {
+    if let Some(psis) = psis_midpoint(template) {
         place_buttocks(parts, &mut poses, &surface, &scan_surface, &psis);
         held[0] = true;
     }
@@ -417,20 +417,6 @@ pub fn fit_segments(
     }
     fit.iterate(&mut poses, &held, after_profile, ticker)?;
     Some(blend(parts, &poses, rest))
-}
-
-/// The midpoint of the template's PSIS landmark vertices at rest.
-fn psis_rest(template: &Template) -> Option<Point3<f64>> {
-    let at = |name: &str| {
-        template
-            .landmark_vertices()
-            .iter()
-            .find(|(n, _)| n == name)
-            .map(|(_, v)| template.mesh().positions[*v as usize])
-    };
-    Some(Point3::from(
-        (at("Rt. PSIS")?.coords + at("Lt. PSIS")?.coords) / 2.0,
-    ))
 }
 
 /// Per vertex, the part whose weight there is largest and at least ½.
