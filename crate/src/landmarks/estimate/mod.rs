@@ -7,7 +7,8 @@
 //! * [`candidates`] — the similarity ICP of each candidate.
 //! * [`segments`] — the segment-wise rigid fit of the template's parts (the pose).
 //!   [`arm_swing`] — each arm's swing about the shoulder tried from several starts;
-//!   [`bent_arm`] — the elbow of an arm bent at it (hands on hips).
+//!   [`bent_arm`] — the elbow of an arm bent at it (hands on hips); [`buttocks`] — the torso's
+//!   length from the height of the buttocks.
 //! * [`hand`] — the hand's pose about the wrist, from the scan's surface beyond it.
 //! * [`matching`] — closest compatible scan points, the ICP energy.
 //! * [`suspicious`] — [`flag_suspicious`]: given landmarks far from where they are expected;
