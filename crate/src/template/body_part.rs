@@ -55,10 +55,8 @@ impl BodyPart {
 pub fn body_parts(template: &Template) -> Vec<BodyPart> {
     let landmark_y = |name: &str| {
         template
-            .landmark_vertices()
-            .iter()
-            .find(|(n, _)| n == name)
-            .map(|(_, v)| template.mesh().positions[*v as usize].y)
+            .landmark_vertex(name)
+            .map(|v| template.mesh().positions[v as usize].y)
     };
     let ankle = |side: &str| {
         ["Lateral Malleolus", "Medial Malleolus"]
@@ -109,14 +107,7 @@ mod tests {
             count[p.index()] += 1;
         }
         assert!(count.iter().all(|&c| c > 100), "{count:?}");
-        let part_of = |name: &str| {
-            let (_, v) = t
-                .landmark_vertices()
-                .iter()
-                .find(|(n, _)| n == name)
-                .unwrap();
-            parts[*v as usize]
-        };
+        let part_of = |name: &str| parts[t.landmark_vertex(name).unwrap() as usize];
         assert_eq!(part_of("Sellion"), BodyPart::Head);
         assert_eq!(part_of("Lt. Olecranon"), BodyPart::Arms);
         assert_eq!(part_of("Rt. Knee Crease"), BodyPart::Legs);

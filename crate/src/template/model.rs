@@ -162,6 +162,14 @@ impl Template {
         &self.landmarks
     }
 
+    /// The vertex of the landmark called `name` (canonical CAESAR name), if the template has it.
+    pub fn landmark_vertex(&self, name: &str) -> Option<u32> {
+        self.landmarks
+            .iter()
+            .find(|(n, _)| n == name)
+            .map(|(_, v)| *v)
+    }
+
     /// The landmarks at their vertices' positions.
     pub fn landmark_positions(&self) -> LandmarkSet {
         self.landmarks_at(&self.mesh.positions)

@@ -91,10 +91,8 @@ pub fn buttock_height(
 pub(crate) fn psis_midpoint(template: &Template) -> Option<Point3<f64>> {
     let at = |name: &str| {
         template
-            .landmark_vertices()
-            .iter()
-            .find(|(n, _)| n == name)
-            .map(|(_, v)| template.mesh().positions[*v as usize])
+            .landmark_vertex(name)
+            .map(|v| template.mesh().positions[v as usize])
     };
     Some(Point3::from(
         (at("Rt. PSIS")?.coords + at("Lt. PSIS")?.coords) / 2.0,

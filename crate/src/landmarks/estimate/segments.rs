@@ -125,13 +125,7 @@ pub fn parts(template: &Template) -> Vec<Part> {
         }
         Point3::from(sum / f64::max(count, 1.0))
     };
-    let landmark = |name: &str| {
-        template
-            .landmark_vertices()
-            .iter()
-            .find(|(n, _)| n == name)
-            .map(|(_, v)| rest[*v as usize])
-    };
+    let landmark = |name: &str| template.landmark_vertex(name).map(|v| rest[v as usize]);
     let midpoint = |a: &str, b: &str| match (landmark(a), landmark(b)) {
         (Some(p), Some(q)) => Some(Point3::from((p.coords + q.coords) / 2.0)),
         _ => None,
