@@ -27,11 +27,12 @@
 //! landmarks each moved MM along the surface in a random direction instead of from the estimate:
 //! what landmarks that far off cost the alignment; `--true-for NAMES` (comma-separated parts of
 //! names, e.g. `Metacarpal,Dactylion`) aligns from the estimate with those landmarks replaced by
-//! the true ones: what their error costs it. `--arms` splits each elbow, wrist and hand
-//! landmark's error along the upper arm, along the forearm and out of their plane (`--knees`
-//! the knees'). Also printed: the mean and worst
-//! error per landmark group and Spearman's ρ between the confidence and the error (the
-//! confidence should fall as the error grows: ρ < 0).
+//! the true ones: what their error costs it. `--arms` gives each arm's bend and the forearm's
+//! turn about its own axis (the styloids' direction across it, estimate against truth) and
+//! splits each elbow, wrist and hand landmark's error along the upper arm, along the forearm and
+//! out of their plane (`--knees` the knees'). Also printed: the mean and worst error per landmark
+//! group and Spearman's ρ between the confidence and the error (the confidence should fall as the
+//! error grows: ρ < 0).
 
 #[cfg(not(target_arch = "wasm32"))]
 #[path = "../tests/estimate_support/mod.rs"]
@@ -448,8 +449,24 @@ mod native {
             let bend = upper.angle(&fore).to_degrees();
             let across = (fore - upper * fore.dot(&upper)).normalize();
             let out = upper.cross(&across);
+            // The forearm's turn about its own axis: the styloids' direction across it.
+            let roll = match (
+                at(&format!("{side} Radial Styloid")),
+                at(&format!("{side} Ulnar Styloid")),
+            ) {
+                (Some((_, Some(e_rs))), Some((_, Some(e_us)))) => {
+                    let axis = fore.normalize();
+                    let flat = |v: Vector3<f64>| v - axis * v.dot(&axis);
+                    let (t, e) = (flat(rs - us), flat(e_rs - e_us));
+                    format!(
+                        "{:+.0}°",
+                        t.cross(&e).dot(&axis).atan2(t.dot(&e)).to_degrees()
+                    )
+                }
+                _ => "-".into(),
+            };
             let mut line = format!(
-                "           {side} arm bent {bend:.0}°, {what} (along upper / along forearm / out mm):"
+                "           {side} arm bent {bend:.0}°, forearm turned {roll}, {what} (along upper / along forearm / out mm):"
             );
             let names = [
                 "Humeral Lateral Epicn",
