@@ -4,8 +4,8 @@
 //! subjects of the `tuning` profile, 9 poses, 2 frames, no landmarks given), the segment-wise
 //! fit with stretching legs, the arms' swing (raised too), no limb folded past 145°, the knees
 //! and elbows placed by the limbs' profiles (the knees by the front of the knee), the elbow of a
-//! bent arm, the hands' pose about the wrist, the resting hand of a bent arm and the torso's
-//! length from the buttocks. Regenerate it with the same command when the method or the
+//! bent arm, the hands' pose about the wrist, the resting hand of a bent arm (its turn about the
+//! forearm carried down the forearm) and the torso's length from the buttocks. Regenerate it with the same command when the method or the
 //! template's landmark vertices change; the held-out figures in docs/landmarks-estimate.md say
 //! how well it ranks the errors of subjects it was not measured on.
 
@@ -46,9 +46,9 @@ pub const TYPICAL_ERROR_MM: [f64; CAESAR_LANDMARK_COUNT] = [
     4.6,  // Rt. Radial Styloid
     14.7, // Rt. Axilla, Post.
     9.7,  // Rt. Olecranon
-    12.1, // Rt. Humeral Lateral Epicn
+    12.0, // Rt. Humeral Lateral Epicn
     10.0, // Rt. Humeral Medial Epicn
-    12.3, // Rt. Radiale
+    12.2, // Rt. Radiale
     8.8,  // Rt. Metacarpal Phal. II
     8.0,  // Rt. Dactylion
     6.6,  // Rt. Ulnar Styloid
@@ -58,9 +58,9 @@ pub const TYPICAL_ERROR_MM: [f64; CAESAR_LANDMARK_COUNT] = [
     4.6,  // Lt. Radial Styloid
     14.8, // Lt. Axilla, Post.
     10.8, // Lt. Olecranon
-    12.2, // Lt. Humeral Lateral Epicn
+    12.1, // Lt. Humeral Lateral Epicn
     10.5, // Lt. Humeral Medial Epicn
-    12.4, // Lt. Radiale
+    12.2, // Lt. Radiale
     10.3, // Lt. Metacarpal Phal. II
     8.1,  // Lt. Dactylion
     6.4,  // Lt. Ulnar Styloid
