@@ -73,7 +73,7 @@ const RESTING_SLIDE_GAIN: f64 = 2.0;
 /// A resting hand whose match from the fit's turn is not kept is matched again from the hand
 /// turned this much (degrees) either way about the forearm, the better match kept. From the
 /// fit's turn alone, hands about 60° out turned the wrong way round and were matched to the hip
-/// (held-out seeds 5151 and 6161, 6 hands of 24 on the hips); from the nearer start they settle
+/// (held-out seeds 5151 and 6161, 6 hands of 22 on the hips); from the nearer start they settle
 /// where they belong, with clearly less energy. (Trying all three starts every time and keeping
 /// the least energy picked, within the same turn, a wrist slid 10–30 mm less than from the fit's
 /// turn, and the hands were worse: held-out seed 8128, two subjects.)
