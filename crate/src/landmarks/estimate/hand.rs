@@ -95,6 +95,9 @@ pub struct Hand {
     share: Vec<(u32, f64)>,
     /// Fraction of the slide: 0 at the elbow, 1 at the wrist and beyond.
     slide: Vec<(u32, f64)>,
+    /// Share of a turn about the forearm that the hand's turn does not already give: the
+    /// fraction of the way from the elbow to the wrist, less the share of the hand's turn.
+    twist: Vec<(u32, f64)>,
     /// The template's triangles with every corner in the hand.
     triangles: Vec<[u32; 3]>,
 }
@@ -141,19 +144,25 @@ pub fn hands(template: &Template) -> Vec<Hand> {
             .enumerate()
             .filter(|(v, _)| template.segment_weights(*v as u32)[segment.index()] >= 0.5)
             .collect();
-        let slide = arm
+        // Each arm vertex's fraction of the slide and share of the hand's turn.
+        let fraction = |p: &Point3<f64>| {
+            ((p - elbow).dot(&(wrist - elbow)) / (wrist - elbow).norm_squared()).min(1.0)
+        };
+        let turned =
+            |p: &Point3<f64>| smoothstep(((p - wrist).dot(&axis) - BLEND.0) / (BLEND.1 - BLEND.0));
+        let slide: Vec<(u32, f64)> = arm
             .iter()
-            .filter_map(|(v, p)| {
-                let u = (*p - elbow).dot(&(wrist - elbow)) / (wrist - elbow).norm_squared();
-                (u > 0.0).then_some((*v as u32, u.min(1.0)))
-            })
+            .filter_map(|(v, p)| (fraction(p) > 0.0).then_some((*v as u32, fraction(p))))
             .collect();
         let share: Vec<(u32, f64)> = arm
             .iter()
+            .filter_map(|(v, p)| (turned(p) > 0.0).then_some((*v as u32, turned(p))))
+            .collect();
+        let twist = arm
+            .iter()
             .filter_map(|(v, p)| {
-                let t = ((*p - wrist).dot(&axis) - BLEND.0) / (BLEND.1 - BLEND.0);
-                let s = smoothstep(t);
-                (s > 0.0).then_some((*v as u32, s))
+                let rest = fraction(p) - turned(p);
+                (rest > 0.0).then_some((*v as u32, rest))
             })
             .collect();
         let mut member = vec![false; rest.len()];
@@ -174,6 +183,7 @@ pub fn hands(template: &Template) -> Vec<Hand> {
             acromion,
             share,
             slide,
+            twist,
             triangles,
         });
     }
@@ -425,7 +435,8 @@ fn twist_about(rotation: &UnitQuaternion<f64>, axis: &Vector3<f64>) -> f64 {
 /// Carries a hand's turn `twist` (radians) about the forearm's `axis` down the forearm: the
 /// forearm turns with the hand about its own axis (pronation and supination turn the radius
 /// about the ulna: the wrist turns with the hand, the elbow not at all), each vertex by its
-/// fraction of the way from the elbow to the wrist, less what it already turned with the hand.
+/// fraction of the way from the elbow to the wrist, less what it already turned with the hand
+/// (`Hand::twist`).
 fn twist_forearm(
     hand: &Hand,
     positions: &mut [Point3<f64>],
@@ -433,15 +444,10 @@ fn twist_forearm(
     axis: Vector3<f64>,
     twist: f64,
 ) {
-    let share: std::collections::HashMap<u32, f64> = hand.share.iter().copied().collect();
-    for (v, u) in &hand.slide {
-        let turned = share.get(v).copied().unwrap_or(0.0);
-        let rest = (u - turned).max(0.0);
-        if rest > 0.0 {
-            let p = &mut positions[*v as usize];
-            let turn = Rotation3::from_scaled_axis(axis * (twist * rest));
-            *p = wrist + turn * (*p - wrist);
-        }
+    for (v, share) in &hand.twist {
+        let p = &mut positions[*v as usize];
+        let turn = Rotation3::from_scaled_axis(axis * (twist * share));
+        *p = wrist + turn * (*p - wrist);
     }
 }
 
