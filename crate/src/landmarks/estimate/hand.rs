@@ -11,7 +11,10 @@
 //! 2. the hand turns about the wrist: the shortest rotation of the template hand's axis (wrist →
 //!    centroid) onto the scan's, then about that axis the turn that brings the widest direction
 //!    across the hand (the flat side) onto the scan's. The rotation is blended to nothing at
-//!    the wrist.
+//!    the wrist. It is kept only when the hand's own vertices then match the scan better
+//!    (nearest compatible points, as the resting hand's below): the moments also see whatever
+//!    else lies in the region, so a hand hanging beside the thigh was turned 55–58° away from
+//!    where it hung (held-out seed 2468).
 //!
 //! A hand that is not free (against the thigh) or not seen (a hole) shows there as much more or
 //! much less surface than a hand: it is left as the fit put it. The hand of an arm bent more than
@@ -84,6 +87,10 @@ const RESTING_FALLBACK_TWIST: f64 = 45.0;
 /// wrist extends to ≈ 70°. Hands matched to the hip turned 79–115° (held-out seeds 5151, 6161).
 const RESTING_MAX_TURN: f64 = 75.0;
 
+/// A restarted resting hand's turn about the forearm believed (degrees): the forearm's
+/// pronation and supination reach ≈ 80–90° either way from the mid position.
+const RESTING_MAX_TWIST: f64 = 90.0;
+
 /// One hand of the template: the vertices that make the wrist and the elbow, the hand's vertices
 /// with their share of the rotation, the forearm's and the hand's with their share of the slide.
 #[derive(Debug, Clone)]
@@ -93,6 +100,8 @@ pub struct Hand {
     epicondyles: [u32; 2],
     acromion: u32,
     share: Vec<(u32, f64)>,
+    /// The vertices wholly the hand's (share 1): those matched to the scan.
+    own: Vec<u32>,
     /// Fraction of the slide: 0 at the elbow, 1 at the wrist and beyond.
     slide: Vec<(u32, f64)>,
     /// Share of a turn about the forearm that the hand's turn does not already give: the
@@ -165,6 +174,11 @@ pub fn hands(template: &Template) -> Vec<Hand> {
                 (rest > 0.0).then_some((*v as u32, rest))
             })
             .collect();
+        let own = share
+            .iter()
+            .filter(|(_, s)| *s >= 1.0)
+            .map(|(v, _)| *v)
+            .collect();
         let mut member = vec![false; rest.len()];
         for (v, _) in &share {
             member[*v as usize] = true;
@@ -182,6 +196,7 @@ pub fn hands(template: &Template) -> Vec<Hand> {
             epicondyles,
             acromion,
             share,
+            own,
             slide,
             twist,
             triangles,
@@ -213,9 +228,9 @@ fn wrist_and_axis(
 
 /// Moves each hand of `hands` in `positions` (the segment-wise fit's, metres) to the scan's hand
 /// (`scan`, metres, indexed by `matching`): the slide along the forearm, then the turn about the
-/// wrist; a hand resting on the body by [`resting_hand`]. Per hand, what was done (`None`: the
-/// scan's surface beyond the wrist is not hand-like, or the resting hand's matching was not
-/// kept; left as it was).
+/// wrist (kept when it matches better); a hand resting on the body by [`resting_hand`]. Per
+/// hand, what was done (`None`: the scan's surface beyond the wrist is not hand-like, or the
+/// resting hand's matching was not kept; left as it was).
 pub fn pose_hands(
     hands: &[Hand],
     positions: &mut [Point3<f64>],
@@ -274,11 +289,39 @@ fn pose_hand(
     }
     let (wrist, axis) = wrist_and_axis(positions, hand.styloids, hand.epicondyles);
     let template = surface(positions, &hand.triangles);
-    let rotation = hand_rotation(wrist, axis, reach(positions, wrist), &template, &near);
-    if let Some(rotation) = &rotation {
-        turn_hand(hand, positions, wrist, &UnitQuaternion::from(*rotation));
+    let mut rotation = hand_rotation(wrist, axis, reach(positions, wrist), &template, &near);
+    if let Some(turn) = rotation {
+        // Kept when the hand's own vertices match the scan better for it.
+        let mut normals = vec![Vector3::zeros(); positions.len()];
+        let mut energy = |positions: &[Point3<f64>]| {
+            let pairs = hand_pairs(hand, &hand.own, positions, &mut normals, matching);
+            matching.energy(&pairs, hand.own.len())
+        };
+        let unturned = placed(hand, positions);
+        let before = energy(positions);
+        turn_hand(hand, positions, wrist, &UnitQuaternion::from(turn));
+        let after = energy(positions);
+        if after >= before {
+            restore(positions, &unturned);
+            rotation = None;
+        }
     }
     Some(HandPose { slide, rotation })
+}
+
+/// Where the vertices `hand` moves (the forearm's and the hand's) are in `positions`.
+fn placed(hand: &Hand, positions: &[Point3<f64>]) -> Placed {
+    hand.slide
+        .iter()
+        .map(|(v, _)| (*v, positions[*v as usize]))
+        .collect()
+}
+
+/// Puts the vertices of `at` back where they were.
+fn restore(positions: &mut [Point3<f64>], at: &Placed) {
+    for (v, p) in at {
+        positions[*v as usize] = *p;
+    }
 }
 
 /// The hand of an arm bent more than [`MAX_BEND`] (resting on the hip). The scan's surface
@@ -300,20 +343,11 @@ fn resting_hand(
     positions: &mut [Point3<f64>],
     matching: &Matching<'_>,
 ) -> Option<HandPose> {
-    let own: Vec<u32> = hand
-        .share
-        .iter()
-        .filter(|(_, s)| *s >= 1.0)
-        .map(|(v, _)| *v)
-        .collect();
-    let before: Placed = hand
-        .slide
-        .iter()
-        .map(|(v, _)| (*v, positions[*v as usize]))
-        .collect();
+    let own = &hand.own;
+    let before = placed(hand, positions);
     let mut normals = vec![Vector3::zeros(); positions.len()];
     let start = matching.energy(
-        &hand_pairs(hand, &own, positions, &mut normals, matching),
+        &hand_pairs(hand, own, positions, &mut normals, matching),
         own.len(),
     );
     // The best start's pose and the positions it left, and its energy.
@@ -325,36 +359,28 @@ fn resting_hand(
         if start_twist != 0.0 && best.is_some() {
             break;
         }
-        for (v, p) in &before {
-            positions[*v as usize] = *p;
-        }
+        restore(positions, &before);
         let (wrist, axis) = wrist_and_axis(positions, hand.styloids, hand.epicondyles);
         let first = UnitQuaternion::from_scaled_axis(axis * start_twist.to_radians());
         turn_hand(hand, positions, wrist, &first);
-        let (slide, total) = settle_hand(hand, &own, positions, &mut normals, matching, first);
+        let (slide, total) = settle_hand(hand, own, positions, &mut normals, matching, first);
         let energy = matching.energy(
-            &hand_pairs(hand, &own, positions, &mut normals, matching),
+            &hand_pairs(hand, own, positions, &mut normals, matching),
             own.len(),
         );
-        if total.angle() <= RESTING_MAX_TURN.to_radians() && energy < least {
+        let (_, axis) = wrist_and_axis(positions, hand.styloids, hand.epicondyles);
+        if believed(&total, &axis, start_twist != 0.0) && energy < least {
             least = energy;
-            let at = before
-                .iter()
-                .map(|(v, _)| (*v, positions[*v as usize]))
-                .collect();
+            let at = placed(hand, positions);
             let rotation = Some(total.to_rotation_matrix());
             best = Some((HandPose { slide, rotation }, at));
         }
     }
     let Some((pose, at)) = best else {
-        for (v, p) in before {
-            positions[v as usize] = p;
-        }
+        restore(positions, &before);
         return None;
     };
-    for (v, p) in at {
-        positions[v as usize] = p;
-    }
+    restore(positions, &at);
     if let Some(rotation) = pose.rotation {
         let (wrist, axis) = wrist_and_axis(positions, hand.styloids, hand.epicondyles);
         let twist = twist_about(&UnitQuaternion::from(rotation), &axis);
@@ -421,6 +447,20 @@ fn settle_hand(
         }
     }
     (slide, total)
+}
+
+/// Whether a resting hand's whole turn `total` is believed ([`RESTING_MAX_TURN`]): from the
+/// hand as fitted, the whole turn; from a start `restarted` about the forearm's unit `axis`, the
+/// turn at the wrist alone (the swing; its turn about the forearm, up to [`RESTING_MAX_TWIST`],
+/// is what the restart looks for).
+fn believed(total: &UnitQuaternion<f64>, axis: &Vector3<f64>, restarted: bool) -> bool {
+    let limit = RESTING_MAX_TURN.to_radians();
+    if !restarted {
+        return total.angle() <= limit;
+    }
+    let twist = twist_about(total, axis);
+    let swing = total * UnitQuaternion::from_scaled_axis(axis * -twist);
+    swing.angle() <= limit && twist.abs() <= RESTING_MAX_TWIST.to_radians()
 }
 
 /// The angle (radians, right-handed about `axis`) of the part of `rotation` about the unit
@@ -688,6 +728,60 @@ mod tests {
     }
 
     #[test]
+    fn a_turn_that_matches_the_hand_worse_is_not_kept() {
+        use crate::landmarks::estimate::segments::base_parts;
+        let (template, _) = base_parts();
+        let rest = &template.mesh().positions;
+        let hands = hands(&template);
+        let hand = &hands[0];
+        // The scan is the template, its surface beside a strip a third of the hand's area a
+        // palm's breadth off the hand's flat side (a thigh's edge, a fold of clothing): the
+        // moments turn the hand towards it, the hand's own vertices match best where they are.
+        let mesh = template.mesh();
+        let own: Vec<Point3<f64>> = hand.own.iter().map(|v| rest[*v as usize]).collect();
+        let centre =
+            Point3::from(own.iter().map(|p| p.coords).sum::<Vector3<f64>>() / own.len() as f64);
+        let spread = own
+            .iter()
+            .map(|p| (p - centre) * (p - centre).transpose())
+            .sum::<Matrix3<f64>>();
+        let flat_side = spread.symmetric_eigen();
+        let normal = flat_side
+            .eigenvectors
+            .column(flat_side.eigenvalues.imin())
+            .into_owned();
+        let (wrist, axis) = wrist_and_axis(rest, hand.styloids, hand.epicondyles);
+        let across = axis.cross(&normal).normalize();
+        let area: f64 = surface(rest, &hand.triangles).iter().map(|(_, a)| a).sum();
+        let step = 0.002;
+        let mut scan_surface = surface(rest, &mesh.triangles);
+        let (long, wide) = (0.08, area / 3.0 / 0.08);
+        for i in 0..(long / step) as usize {
+            for j in 0..(wide / step) as usize {
+                let p = centre
+                    + normal * 0.08
+                    + axis * (i as f64 * step - long / 2.0)
+                    + across * (j as f64 * step - wide / 2.0);
+                scan_surface.push((p, step * step));
+            }
+        }
+        let r = REACH * own.iter().map(|p| (p - wrist).norm()).fold(0.0, f64::max);
+        let template_hand = surface(rest, &hand.triangles);
+        let turn = hand_rotation(wrist, axis, r, &template_hand, &scan_surface).unwrap();
+        assert!(turn.angle().to_degrees() > 5.0, "{turn:?}");
+        let index = scan_index(rest, &template);
+        let matching = matching_on(&index);
+        let mut positions = rest.to_vec();
+        let pose = pose_hand(hand, &mut positions, &scan_surface, &matching).unwrap();
+        assert!(pose.rotation.is_none(), "{pose:?}");
+        // Only slid along the forearm.
+        for v in &hand.own {
+            let moved = positions[*v as usize] - rest[*v as usize];
+            assert!((moved - axis * pose.slide).norm() < 1e-9, "{moved}");
+        }
+    }
+
+    #[test]
     fn a_forearm_turned_about_itself_is_found_from_its_hand() {
         use crate::landmarks::estimate::segments::base_parts;
         let (template, _) = base_parts();
@@ -697,28 +791,50 @@ mod tests {
         // The "scan": the template's forearm pronated 60°, the turn growing from nothing at the
         // elbow to the whole of it at the wrist, the hand turned with the wrist. From the
         // untwisted start alone no match is kept; without the twist carried down the forearm
-        // the styloids stay behind.
-        let mut scan = rest.to_vec();
-        let (wrist, axis) = wrist_and_axis(&scan, hand.styloids, hand.epicondyles);
-        for (v, u) in &hand.slide {
-            let turn = Rotation3::from_scaled_axis(axis * (60f64.to_radians() * u));
-            scan[*v as usize] = wrist + turn * (scan[*v as usize] - wrist);
+        // the styloids stay behind. Pronated 80°, past the whole turn believed from the hand as
+        // fitted: the restart's match is believed by its turn at the wrist (it stops ≈ 5° past
+        // the twist, the wrist slid ≈ 1 cm: the styloids within 15 mm).
+        for (pronation, styloids_within) in [(60.0, 0.005), (80.0, 0.015)] {
+            let mut scan = rest.to_vec();
+            let (wrist, axis) = wrist_and_axis(&scan, hand.styloids, hand.epicondyles);
+            for (v, u) in &hand.slide {
+                let turn = Rotation3::from_scaled_axis(axis * (f64::to_radians(pronation) * u));
+                scan[*v as usize] = wrist + turn * (scan[*v as usize] - wrist);
+            }
+            let index = scan_index(&scan, &template);
+            let matching = matching_on(&index);
+            let mut positions = rest.to_vec();
+            let pose = resting_hand(hand, &mut positions, &matching).unwrap();
+            let twist = twist_about(&UnitQuaternion::from(pose.rotation.unwrap()), &axis);
+            assert!(
+                (twist.to_degrees() - pronation).abs() < 8.0,
+                "{pronation}: {}",
+                twist.to_degrees()
+            );
+            // The styloids turned with the hand.
+            for v in hand.styloids {
+                let off = (positions[v as usize] - scan[v as usize]).norm();
+                assert!(off < styloids_within, "{pronation}: {off}");
+            }
         }
-        let index = scan_index(&scan, &template);
-        let matching = matching_on(&index);
-        let mut positions = rest.to_vec();
-        let pose = resting_hand(hand, &mut positions, &matching).unwrap();
-        let twist = twist_about(&UnitQuaternion::from(pose.rotation.unwrap()), &axis);
-        assert!(
-            (twist.to_degrees() - 60.0).abs() < 8.0,
-            "{}",
-            twist.to_degrees()
-        );
-        // The styloids turned with the hand.
-        for v in hand.styloids {
-            let off = (positions[v as usize] - scan[v as usize]).norm();
-            assert!(off < 0.005, "{off}");
-        }
+    }
+
+    #[test]
+    fn a_restarted_hand_is_believed_by_its_turn_at_the_wrist() {
+        let axis = Vector3::new(0.3, -1.0, 0.2).normalize();
+        let across = axis.cross(&Vector3::x()).normalize();
+        let turn = |twist: f64, swing: f64| {
+            UnitQuaternion::from_scaled_axis(across * swing.to_radians())
+                * UnitQuaternion::from_scaled_axis(axis * twist.to_radians())
+        };
+        // 80° about the forearm and 30° at the wrist: 85° in all.
+        let forearm_turned = turn(80.0, 30.0);
+        assert!(!believed(&forearm_turned, &axis, false));
+        assert!(believed(&forearm_turned, &axis, true));
+        // Bent too far at the wrist, or turned past the forearm's reach.
+        assert!(!believed(&turn(10.0, 80.0), &axis, true));
+        assert!(!believed(&turn(-100.0, 0.0), &axis, true));
+        assert!(believed(&turn(-85.0, 0.0), &axis, true));
     }
 
     #[test]
