@@ -4,8 +4,9 @@
 //! subjects of the `tuning` profile, 9 poses, 2 frames, no landmarks given), the segment-wise
 //! fit with stretching legs, the arms' swing (raised too), no limb folded past 145°, the knees
 //! and elbows placed by the limbs' profiles (the knees by the front of the knee), the elbow of a
-//! bent arm, the hands' pose about the wrist, the resting hand of a bent arm (its turn about the
-//! forearm carried down the forearm) and the torso's length from the buttocks. Regenerate it with the same command when the method or the
+//! bent arm, the hands' pose about the wrist (its turn kept when the hand then matches better),
+//! the resting hand of a bent arm (its turn about the forearm carried down the forearm) and the
+//! torso's length from the buttocks. Regenerate it with the same command when the method or the
 //! template's landmark vertices change; the held-out figures in docs/landmarks-estimate.md say
 //! how well it ranks the errors of subjects it was not measured on.
 
@@ -43,28 +44,28 @@ pub const TYPICAL_ERROR_MM: [f64; CAESAR_LANDMARK_COUNT] = [
     8.2,  // Waist, Preferred, Post.
     20.8, // Rt. Acromion
     17.1, // Rt. Axilla, Ant.
-    4.6,  // Rt. Radial Styloid
+    4.3,  // Rt. Radial Styloid
     14.7, // Rt. Axilla, Post.
     9.7,  // Rt. Olecranon
     12.0, // Rt. Humeral Lateral Epicn
     10.0, // Rt. Humeral Medial Epicn
     12.2, // Rt. Radiale
-    8.8,  // Rt. Metacarpal Phal. II
-    8.0,  // Rt. Dactylion
-    6.6,  // Rt. Ulnar Styloid
-    8.4,  // Rt. Metacarpal Phal. V
+    9.0,  // Rt. Metacarpal Phal. II
+    7.7,  // Rt. Dactylion
+    5.4,  // Rt. Ulnar Styloid
+    8.8,  // Rt. Metacarpal Phal. V
     20.3, // Lt. Acromion
     16.9, // Lt. Axilla, Ant.
-    4.6,  // Lt. Radial Styloid
+    4.5,  // Lt. Radial Styloid
     14.8, // Lt. Axilla, Post.
     10.8, // Lt. Olecranon
     12.1, // Lt. Humeral Lateral Epicn
     10.5, // Lt. Humeral Medial Epicn
     12.2, // Lt. Radiale
-    10.3, // Lt. Metacarpal Phal. II
-    8.1,  // Lt. Dactylion
-    6.4,  // Lt. Ulnar Styloid
-    8.5,  // Lt. Metacarpal Phal. V
+    10.6, // Lt. Metacarpal Phal. II
+    7.7,  // Lt. Dactylion
+    5.4,  // Lt. Ulnar Styloid
+    9.1,  // Lt. Metacarpal Phal. V
     12.9, // Rt. Knee Crease
     7.4,  // Rt. Femoral Lateral Epicn
     8.4,  // Rt. Femoral Medial Epicn
