@@ -27,10 +27,11 @@
 //! landmarks each moved MM along the surface in a random direction instead of from the estimate:
 //! what landmarks that far off cost the alignment; `--true-for NAMES` (comma-separated parts of
 //! names, e.g. `Metacarpal,Dactylion`) aligns from the estimate with those landmarks replaced by
-//! the true ones: what their error costs it. `--arms` gives each arm's bend and the forearm's
-//! turn about its own axis (the styloids' direction across it, estimate against truth) and
-//! splits each elbow, wrist and hand landmark's error along the upper arm, along the forearm and
-//! out of their plane (`--knees` the knees'). Also printed: the mean and worst error per landmark
+//! the true ones: what their error costs it. `--arms` gives each arm's bend, the upper arm's and
+//! the forearm's length (true and estimated: acromion → epicondyles' midpoint → styloids'), the
+//! forearm's turn about its own axis (the styloids' direction across it, estimate against
+//! truth) and splits each elbow, wrist and hand landmark's error along the upper arm, along the
+//! forearm and out of their plane (`--knees` the knees'). Also printed: the mean and worst error per landmark
 //! group and Spearman's ρ between the confidence and the error (the confidence should fall as the
 //! error grows: ρ < 0).
 
@@ -465,8 +466,31 @@ mod native {
                 }
                 _ => "-".into(),
             };
+            // The estimate's own bend and lengths (acromion → elbow → wrist).
+            let e = |n: &str| at(&format!("{side} {n}")).and_then(|(_, e)| e);
+            let shape = match (
+                e("Acromion"),
+                e("Humeral Lateral Epicn"),
+                e("Humeral Medial Epicn"),
+                e("Radial Styloid"),
+                e("Ulnar Styloid"),
+            ) {
+                (Some(ea), Some(el), Some(em), Some(ers), Some(eus)) => {
+                    let e_elbow = nalgebra::center(&el, &em);
+                    let e_fore = nalgebra::center(&ers, &eus) - e_elbow;
+                    format!(
+                        " (estimate {:.0}°), upper arm {:.0} mm (estimate {:.0}), forearm {:.0} mm (estimate {:.0})",
+                        (e_elbow - ea).angle(&e_fore).to_degrees(),
+                        (elbow - acromion).norm() * to_mm,
+                        (e_elbow - ea).norm() * to_mm,
+                        fore.norm() * to_mm,
+                        e_fore.norm() * to_mm
+                    )
+                }
+                _ => String::new(),
+            };
             let mut line = format!(
-                "           {side} arm bent {bend:.0}°, forearm turned {roll}, {what} (along upper / along forearm / out mm):"
+                "           {side} arm bent {bend:.0}°{shape}, forearm turned {roll}, {what} (along upper / along forearm / out mm):"
             );
             let names = [
                 "Humeral Lateral Epicn",
