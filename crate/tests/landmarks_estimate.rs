@@ -21,8 +21,8 @@ use bodyspace::mesh::units::Units;
 use estimate_support::{case, frames, load, poses, Case, Frame, PARTIAL};
 use nalgebra::Vector3;
 
-/// The wrists' and hands' mean error (mm) a free hand stays under: measured 4.2–10.3 mm with the
-/// hand's pose (`hand.rs`); development subjects had 35–43 mm without it.
+/// The wrists' and hands' mean error (mm) a hand stays under: measured 4.2–10.3 mm free, with
+/// the hand's pose (`hand.rs`; development subjects had 35–43 mm without it), 11.3 mm on the hips.
 const HANDS_MM: f64 = 15.0;
 
 fn estimate(c: &Case, given: &LandmarkSet) -> LandmarkEstimate {
@@ -137,23 +137,23 @@ fn every_frame_and_pose_is_found_and_the_landmarks_land_near_the_truth() {
             frame.name,
             pose.name
         );
-        // A free hand is posed about its wrist (`hand.rs`); a hand on the hip is matched by its
-        // own vertices (`hand.rs`, the resting hand, its turn about the forearm carried down the
-        // forearm) and the elbow of an arm bent onto the hip placed where the upper arm's and
-        // the forearm's axes meet (`bent_arm.rs`): measured elbows 33.8 mm, wrists and hands
-        // 14.1 mm, worst 51.6 mm (17.4 and 54.3 mm with the forearm left unturned, 51.0 and
-        // 65.8 mm without the resting hand, 58.8 and 86.3 mm without either).
-        if pose.name != "hands-on-hips" {
-            assert!(
-                hands < HANDS_MM,
-                "{} / {}: wrists and hands {hands} mm",
-                frame.name,
-                pose.name
-            );
-        } else {
+        // A free hand is posed about its wrist (`hand.rs`); a hand on the hip is placed along
+        // the forearm by the forearm's width profile and matched by its own vertices
+        // (`hand.rs`, the resting hand, its turn about the forearm carried down the forearm),
+        // and the elbow of an arm bent onto the hip placed where the upper arm's and the
+        // forearm's axes meet (`bent_arm.rs`): measured elbows 33.8 mm, wrists and hands 11.3
+        // mm, worst 51.7 mm (14.1 and 51.6 mm with the wrist slid by the matching, 17.4 and
+        // 54.3 mm with the forearm left unturned too, 51.0 and 65.8 mm without the resting
+        // hand).
+        assert!(
+            hands < HANDS_MM,
+            "{} / {}: wrists and hands {hands} mm",
+            frame.name,
+            pose.name
+        );
+        if pose.name == "hands-on-hips" {
             assert!(elbows < 42.0, "{}: elbows {elbows} mm", pose.name);
-            assert!(hands < 16.0, "{}: wrists and hands {hands} mm", pose.name);
-            assert!(worst < 58.0, "{}: worst {worst} mm", pose.name);
+            assert!(worst < 56.0, "{}: worst {worst} mm", pose.name);
         }
         assert!(e.confidence.iter().all(|c| (0.0..=1.0).contains(c)));
         // The confidence follows the typical error: a toe above the knee crease.

@@ -19,16 +19,23 @@
 //! A hand that is not free (against the thigh) or not seen (a hole) shows there as much more or
 //! much less surface than a hand: it is left as the fit put it. The hand of an arm bent more than
 //! the limbs' profiles take (`segments::MAX_BEND`, hands on hips) rests on the body, its surface
-//! merged with the hip's: it is matched by its own vertices instead (`resting_hand`), turned
-//! about the wrist and slid along the forearm as one rigid piece; when that match is not kept,
+//! merged with the hip's. Its wrist is placed along the forearm by the forearm's width profile
+//! (`wrist_from_profile`: the forearm narrowing to the wrist and widening into the hand, on the
+//! scan against the posed template), and the hand is matched by its own vertices (`resting_hand`), turned about the
+//! wrist as one rigid piece (slid along the forearm by the matching too when the profile finds
+//! no widening: a hand on the hip matched best with the wrist 20–60 mm short of the subject's,
+//! from every start; held-out seeds 2468, 8642, 1111); when that match is not kept,
 //! again from the hand turned either way about the forearm (its turn about the forearm is what
 //! the segment-wise fit gets wrong: a rigid forearm and hand, nearest points on a hand merged
 //! with the hip). The part of its turn about the forearm is then carried down the forearm, as
 //! pronation and supination turn the wrist with the hand.
 
+use std::cell::OnceCell;
+
 use nalgebra::{Matrix3, Point3, Rotation3, UnitQuaternion, Vector3};
 
 use super::matching::Matching;
+use super::profile::{profile, register_shift, surface_samples, LimbLine};
 use super::segments::MAX_BEND;
 use crate::mesh::normals::vertex_normals_into;
 use crate::mesh::similarity::similarity;
@@ -90,6 +97,20 @@ const RESTING_MAX_TURN: f64 = 75.0;
 /// A restarted resting hand's turn about the forearm believed (degrees): the forearm's
 /// pronation and supination reach ≈ 80–90° either way from the mid position.
 const RESTING_MAX_TWIST: f64 = 90.0;
+
+/// A bent forearm's profile runs from the elbow this many times the way to the wrist, over
+/// the hand.
+const PROFILE_LINE: f64 = 1.6;
+
+/// Points farther (m) from the forearm's line are not the forearm or the hand.
+const PROFILE_RADIUS: f64 = 0.06;
+
+/// Points spread this far apart (m) over the surfaces profiled.
+const PROFILE_SPACING: f64 = 0.004;
+
+/// The part of the template's profile (m from its wrist) registered to the scan's: the
+/// forearm's narrowing to the wrist and the hand widening out of it.
+const PROFILE_WINDOW: (f64, f64) = (-0.06, 0.05);
 
 /// One hand of the template: the vertices that make the wrist and the elbow, the hand's vertices
 /// with their share of the rotation, the forearm's and the hand's with their share of the slide.
@@ -234,20 +255,43 @@ fn wrist_and_axis(
 pub fn pose_hands(
     hands: &[Hand],
     positions: &mut [Point3<f64>],
+    triangles: &[[u32; 3]],
     scan: &Mesh,
     matching: &Matching<'_>,
 ) -> Vec<Option<HandPose>> {
     let scan_surface = surface(&scan.positions, &scan.triangles);
+    let profiles = Profiles {
+        triangles,
+        scan,
+        scan_points: OnceCell::new(),
+    };
     hands
         .iter()
-        .map(|hand| pose_hand(hand, positions, &scan_surface, matching))
+        .map(|hand| pose_hand(hand, positions, &scan_surface, &profiles, matching))
         .collect()
+}
+
+/// What a bent forearm's profile is taken from: the template's triangles (at the positions
+/// fitted) and points spread over the scan (taken once, when an arm is bent).
+struct Profiles<'a> {
+    triangles: &'a [[u32; 3]],
+    scan: &'a Mesh,
+    scan_points: OnceCell<Vec<Point3<f64>>>,
+}
+
+impl Profiles<'_> {
+    fn scan_points(&self) -> &[Point3<f64>] {
+        self.scan_points.get_or_init(|| {
+            surface_samples(&self.scan.positions, &self.scan.triangles, PROFILE_SPACING)
+        })
+    }
 }
 
 fn pose_hand(
     hand: &Hand,
     positions: &mut [Point3<f64>],
     scan_surface: &Surface,
+    profiles: &Profiles<'_>,
     matching: &Matching<'_>,
 ) -> Option<HandPose> {
     let reach = |positions: &[Point3<f64>], wrist: Point3<f64>| {
@@ -261,7 +305,8 @@ fn pose_hand(
     // An arm bent like the hands on the hips: the hand rests on the body.
     let elbow = mid(positions, hand.epicondyles);
     if (elbow - positions[hand.acromion as usize]).angle(&axis) > MAX_BEND.to_radians() {
-        return resting_hand(hand, positions, matching);
+        let along = wrist_from_profile(hand, positions, profiles);
+        return resting_hand(hand, positions, along, matching);
     }
     let r = reach(positions, wrist);
     // Only the scan's surface the slide can bring into the region.
@@ -326,24 +371,35 @@ fn restore(positions: &mut [Point3<f64>], at: &Placed) {
 
 /// The hand of an arm bent more than [`MAX_BEND`] (resting on the hip). The scan's surface
 /// beyond the wrist is the hand merged with the body under it, so its moments say nothing of the
-/// hand; instead the hand's own vertices (those wholly the hand's) are matched (`matching`:
+/// hand. The wrist is first slid `along` the forearm (m, from [`wrist_from_profile`]) and held
+/// there; the hand's own vertices (those wholly the hand's) are then matched (`matching`:
 /// nearest compatible scan points, so the palm pressed on the hip finds nothing) and moved
 /// rigidly towards their matches, the move split into a turn about the wrist and the wrist's
-/// slide along the forearm ([`RESTING_SLIDE_GAIN`] times its share of the move). Up to
+/// slide along the forearm (only with no `along`: [`RESTING_SLIDE_GAIN`] times its share of
+/// the move). Up to
 /// [`RESTING_ITERATIONS`] rounds, until a round moves the wrist less than
 /// [`RESTING_CONVERGED`] and turns the hand less than as much at the wrist's reach. A match is
 /// kept when its whole turn is at most [`RESTING_MAX_TURN`] and it matches better than before
 /// (`Matching::energy`: an unmatched vertex counts as the outlier distance, so a hand slid onto
 /// the hip, matching less of itself, loses). When the match from the hand as fitted is not, the
 /// hand is matched again from [`RESTING_FALLBACK_TWIST`] either way about the forearm and the
-/// better kept match taken; `None` (the hand left as it was) when none is. The kept turn's part
-/// about the forearm is carried down the forearm ([`twist_forearm`]).
+/// better kept match taken; when none is, the hand is left as it was, slid `along` (`None`
+/// with no `along`). The kept turn's part about the forearm is carried down the forearm
+/// ([`twist_forearm`]).
 fn resting_hand(
     hand: &Hand,
     positions: &mut [Point3<f64>],
+    along: Option<f64>,
     matching: &Matching<'_>,
 ) -> Option<HandPose> {
     let own = &hand.own;
+    // The wrist's place from the forearm's profile, held; else the matching slides it.
+    let held = along.map_or(0.0, |d| d.clamp(-MAX_SLIDE, MAX_SLIDE));
+    let (_, axis) = wrist_and_axis(positions, hand.styloids, hand.epicondyles);
+    for (v, u) in &hand.slide {
+        positions[*v as usize] += axis * (held * u);
+    }
+    let max_slide = if along.is_some() { 0.0 } else { MAX_SLIDE };
     let before = placed(hand, positions);
     let mut normals = vec![Vector3::zeros(); positions.len()];
     let start = matching.energy(
@@ -363,7 +419,15 @@ fn resting_hand(
         let (wrist, axis) = wrist_and_axis(positions, hand.styloids, hand.epicondyles);
         let first = UnitQuaternion::from_scaled_axis(axis * start_twist.to_radians());
         turn_hand(hand, positions, wrist, &first);
-        let (slide, total) = settle_hand(hand, own, positions, &mut normals, matching, first);
+        let (slid, total) = settle_hand(
+            hand,
+            own,
+            positions,
+            &mut normals,
+            matching,
+            first,
+            max_slide,
+        );
         let energy = matching.energy(
             &hand_pairs(hand, own, positions, &mut normals, matching),
             own.len(),
@@ -373,12 +437,16 @@ fn resting_hand(
             least = energy;
             let at = placed(hand, positions);
             let rotation = Some(total.to_rotation_matrix());
+            let slide = held + slid;
             best = Some((HandPose { slide, rotation }, at));
         }
     }
     let Some((pose, at)) = best else {
         restore(positions, &before);
-        return None;
+        return along.map(|_| HandPose {
+            slide: held,
+            rotation: None,
+        });
     };
     restore(positions, &at);
     if let Some(rotation) = pose.rotation {
@@ -387,6 +455,38 @@ fn resting_hand(
         twist_forearm(hand, positions, wrist, axis, twist);
     }
     Some(pose)
+}
+
+/// How far (m) the wrist of a bent arm lies along the forearm from where the fit put it, from
+/// the forearm's width profile ([`profile`] along the line from the elbow [`PROFILE_LINE`] times
+/// the way to the wrist): the shift (up to [`MAX_SLIDE`] towards the hand, half of it back)
+/// that brings the posed template's profile over [`PROFILE_WINDOW`] of its wrist — the forearm
+/// narrowing to the wrist, the hand widening out of it — nearest the scan's
+/// ([`register_shift`]). A hand is wider than the wrist whatever it rests on; a single feature
+/// (where the width rises fastest) was also taken from the hip beyond a hollow under the hand
+/// (held-out seed 1111). `None` when the profiles overlap too little.
+fn wrist_from_profile(
+    hand: &Hand,
+    positions: &[Point3<f64>],
+    profiles: &Profiles<'_>,
+) -> Option<f64> {
+    let (wrist, _) = wrist_and_axis(positions, hand.styloids, hand.epicondyles);
+    let elbow = mid(positions, hand.epicondyles);
+    let line = LimbLine {
+        root: elbow,
+        end: elbow + (wrist - elbow) * PROFILE_LINE,
+    };
+    let length = (line.end - line.root).norm();
+    let at_wrist = 1.0 / PROFILE_LINE;
+    let template_points = surface_samples(positions, profiles.triangles, PROFILE_SPACING);
+    let template = profile(&template_points, &[line], 0, PROFILE_RADIUS);
+    let scan = profile(profiles.scan_points(), &[line], 0, PROFILE_RADIUS);
+    let window = (
+        at_wrist + PROFILE_WINDOW.0 / length,
+        at_wrist + PROFILE_WINDOW.1 / length,
+    );
+    let shifts = (-MAX_SLIDE / 2.0 / length, MAX_SLIDE / length);
+    Some(register_shift(&template, &scan, window, shifts)? * length)
 }
 
 /// The matches of the hand's own vertices `own` at `positions` (the hand's normals from its own
@@ -411,6 +511,7 @@ fn settle_hand(
     normals: &mut [Vector3<f64>],
     matching: &Matching<'_>,
     first: UnitQuaternion<f64>,
+    max_slide: f64,
 ) -> (f64, UnitQuaternion<f64>) {
     let mut slide = 0.0;
     let mut total = first;
@@ -428,7 +529,7 @@ fn settle_hand(
         // x ↦ R·x + t is the turn R about the wrist w and the wrist's move R·w + t − w, of which
         // the part along the forearm is the slide: the wrist stays on the forearm.
         let step = RESTING_SLIDE_GAIN * (rigid.apply(&wrist) - wrist).dot(&axis);
-        let step = (slide + step).clamp(-MAX_SLIDE, MAX_SLIDE) - slide;
+        let step = (slide + step).clamp(-max_slide, max_slide) - slide;
         slide += step;
         for (v, u) in &hand.slide {
             positions[*v as usize] += axis * (step * u);
@@ -713,7 +814,7 @@ mod tests {
         let index = scan_index(&scan, &template);
         let matching = matching_on(&index);
         let mut positions = rest.to_vec();
-        let pose = resting_hand(hand, &mut positions, &matching).unwrap();
+        let pose = resting_hand(hand, &mut positions, None, &matching).unwrap();
         assert!((pose.slide - 0.015).abs() < 0.005, "{}", pose.slide);
         let farthest = hand
             .share
@@ -723,7 +824,7 @@ mod tests {
         assert!(farthest < 0.01, "{farthest}");
         // A hand already on the scan's matches no better anywhere else: left where it is.
         let mut positions = scan.clone();
-        assert!(resting_hand(hand, &mut positions, &matching).is_none());
+        assert!(resting_hand(hand, &mut positions, None, &matching).is_none());
         assert_eq!(positions, scan);
     }
 
@@ -772,7 +873,12 @@ mod tests {
         let index = scan_index(rest, &template);
         let matching = matching_on(&index);
         let mut positions = rest.to_vec();
-        let pose = pose_hand(hand, &mut positions, &scan_surface, &matching).unwrap();
+        let profiles = Profiles {
+            triangles: &mesh.triangles,
+            scan: mesh,
+            scan_points: OnceCell::new(),
+        };
+        let pose = pose_hand(hand, &mut positions, &scan_surface, &profiles, &matching).unwrap();
         assert!(pose.rotation.is_none(), "{pose:?}");
         // Only slid along the forearm.
         for v in &hand.own {
@@ -804,7 +910,7 @@ mod tests {
             let index = scan_index(&scan, &template);
             let matching = matching_on(&index);
             let mut positions = rest.to_vec();
-            let pose = resting_hand(hand, &mut positions, &matching).unwrap();
+            let pose = resting_hand(hand, &mut positions, None, &matching).unwrap();
             let twist = twist_about(&UnitQuaternion::from(pose.rotation.unwrap()), &axis);
             assert!(
                 (twist.to_degrees() - pronation).abs() < 8.0,
@@ -815,6 +921,37 @@ mod tests {
             for v in hand.styloids {
                 let off = (positions[v as usize] - scan[v as usize]).norm();
                 assert!(off < styloids_within, "{pronation}: {off}");
+            }
+        }
+    }
+
+    #[test]
+    fn a_longer_forearm_is_found_from_where_it_widens_into_the_hand() {
+        use crate::landmarks::estimate::segments::base_parts;
+        let (template, _) = base_parts();
+        let rest = &template.mesh().positions;
+        let triangles = &template.mesh().triangles;
+        for hand in &hands(&template) {
+            for longer in [0.0, 0.03, -0.02] {
+                // The "scan": the template with the forearm 3 cm longer (2 cm shorter), the
+                // hand carried along.
+                let mut scan = rest.to_vec();
+                let (_, axis) = wrist_and_axis(&scan, hand.styloids, hand.epicondyles);
+                for (v, u) in &hand.slide {
+                    scan[*v as usize] += axis * (longer * u);
+                }
+                let mesh = Mesh::new(scan, triangles.clone());
+                let profiles = Profiles {
+                    triangles,
+                    scan: &mesh,
+                    scan_points: OnceCell::new(),
+                };
+                let found = wrist_from_profile(hand, rest, &profiles).unwrap();
+                assert!(
+                    (found - longer).abs() < 0.006,
+                    "{} {longer}: {found}",
+                    hand.side
+                );
             }
         }
     }

@@ -6,7 +6,8 @@
 //! where the template's maps. A leg's knee is then set by a sharper feature of the same kind:
 //! the front of the knee stepping back to the shin below the patella and the tibial tuberosity
 //! (the steepest fall of how far forward the leg reaches), taken where the template's sits below
-//! its knee.
+//! its knee. The wrist of a bent forearm (`hand.rs`) is placed by the same kind of profile, the
+//! template's shifted along the scan's over the forearm's narrowing and the hand's widening.
 
 use nalgebra::{Point3, Vector3};
 
@@ -246,6 +247,51 @@ pub fn register(
     best.map(|(_, f)| f)
 }
 
+/// The shift (fraction of the line) that brings the template's profile, times a fitted gain,
+/// nearest the scan's over `window` (fractions along the template's line): of the shifts from
+/// `shifts.0` to `shifts.1` in [`SHIFT_STEPS`] steps, the one with the least mean squared
+/// difference. `None` when too little of the profiles overlaps at every shift.
+pub fn register_shift(
+    template: &[Option<f64>],
+    scan: &[Option<f64>],
+    window: (f64, f64),
+    shifts: (f64, f64),
+) -> Option<f64> {
+    let bins = |u: f64| (u * template.len() as f64) as usize;
+    let (first, last) = (bins(window.0), bins(window.1).min(template.len() - 1));
+    let mut best: Option<(f64, f64)> = None;
+    for s in 0..=SHIFT_STEPS {
+        let shift = shifts.0 + (shifts.1 - shifts.0) * s as f64 / SHIFT_STEPS as f64;
+        let pairs: Vec<(f64, f64)> = (first..=last)
+            .filter_map(|i| {
+                let u = (i as f64 + 0.5) / template.len() as f64;
+                Some((at(scan, u + shift)?, template[i]?))
+            })
+            .collect();
+        if pairs.len() * 3 < (last + 1 - first) * 2 {
+            continue;
+        }
+        let st: f64 = pairs.iter().map(|(s, t)| s * t).sum();
+        let tt: f64 = pairs.iter().map(|(_, t)| t * t).sum();
+        if tt <= 0.0 {
+            continue;
+        }
+        let gain = st / tt;
+        let cost = pairs
+            .iter()
+            .map(|(s, t)| (s - gain * t).powi(2))
+            .sum::<f64>()
+            / pairs.len() as f64;
+        if best.is_none_or(|(c, _)| cost < c) {
+            best = Some((cost, shift));
+        }
+    }
+    best.map(|(_, shift)| shift)
+}
+
+/// Shifts tried by [`register_shift`].
+const SHIFT_STEPS: usize = 90;
+
 /// Points spread over the triangles of a mesh (`positions`, `triangles`) about `spacing` (m)
 /// apart: on each triangle a barycentric grid with as many steps per edge as its longest edge
 /// holds `spacing`. A coarse template's vertices lie in rings too far apart for a profile's bins
@@ -326,6 +372,37 @@ mod tests {
         let half = profile(&limb(leg(0.5, 1.0)), &[line[0], other], 0, 0.14);
         assert!(half.iter().flatten().count() > 0);
         assert_ne!(half, template);
+    }
+
+    /// A forearm narrowing to the wrist at `w` and the hand widening out of it, then a hollow and
+    /// the hip beyond (a hand on the hip).
+    fn forearm(w: f64, girth: f64) -> impl Fn(f64) -> f64 {
+        move |u: f64| {
+            let r = if u < w {
+                0.03 - 0.01 * u / w
+            } else if u < w + 0.1 {
+                0.02 + 0.01 * (u - w) / 0.1
+            } else if u < w + 0.2 {
+                0.03 - 0.02 * (u - w - 0.1) / 0.1
+            } else {
+                0.01 + 0.04 * (u - w - 0.2)
+            };
+            r * girth
+        }
+    }
+
+    #[test]
+    fn the_wrist_is_found_by_the_forearm_and_the_hand_around_it() {
+        let line = [LimbLine {
+            root: Point3::new(0.0, 0.0, 1.0),
+            end: Point3::origin(),
+        }];
+        let template = profile(&limb(forearm(0.6, 1.0)), &line, 0, 0.14);
+        for (w, girth) in [(0.68, 1.1), (0.6, 0.9), (0.55, 1.0)] {
+            let scan = profile(&limb(forearm(w, girth)), &line, 0, 0.14);
+            let shift = register_shift(&template, &scan, (0.45, 0.72), (-0.1, 0.2)).unwrap();
+            assert!((shift - (w - 0.6)).abs() < 0.01, "{w}: {shift}");
+        }
     }
 
     /// A leg seen from the side: how far forward it reaches, the thigh's front narrowing to the

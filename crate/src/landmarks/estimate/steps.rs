@@ -196,7 +196,7 @@ pub fn estimate_landmarks(
         &mut ticker,
     )
     .ok_or(EstimateError::Cancelled)?;
-    pose_hands(&hands(&template), &mut posed, &scan, &matching);
+    pose_hands(&hands(&template), &mut posed, triangles, &scan, &matching);
     let posed_normals = crate::mesh::normals::vertex_normals(&posed, triangles);
     let segment_rms = Matching::rms(&matching.pairs(&all, &posed, &posed_normals));
     let fit_predicted: Vec<Point3<f64>> = landmark_vertices
