@@ -107,6 +107,19 @@ pub fn frame_candidates(
     Some(candidates)
 }
 
+/// Whether two template → scan similarities agree on the frame: the template's up (+y) and its
+/// facing (+z) each go within [`SAME_FRAME_DEG`] of the same direction (the candidates differ
+/// by half turns; a body's pose by far less).
+pub fn same_frame(a: &Similarity, b: &Similarity) -> bool {
+    let close = |axis: Vector3<f64>| {
+        (a.rotation * axis).angle(&(b.rotation * axis)) <= SAME_FRAME_DEG.to_radians()
+    };
+    close(Vector3::y()) && close(Vector3::z())
+}
+
+/// See [`same_frame`].
+const SAME_FRAME_DEG: f64 = 60.0;
+
 fn extent_along(points: &[Point3<f64>], axis: &Vector3<f64>) -> f64 {
     let (lo, hi) = points
         .iter()
@@ -137,6 +150,32 @@ fn mid_of_extents(points: &[Point3<f64>], axes: &Matrix3<f64>) -> Vector3<f64> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_frame_turned_half_round_is_another_frame() {
+        let turn = |axis: Vector3<f64>, deg: f64| Similarity {
+            scale: 1.0,
+            rotation: *nalgebra::Rotation3::from_scaled_axis(axis * deg.to_radians()).matrix(),
+            translation: Vector3::zeros(),
+        };
+        let a = turn(Vector3::x(), 90.0);
+        // The same frame, the body turned 30° and leaning 20°.
+        let b = Similarity {
+            rotation: *nalgebra::Rotation3::from_scaled_axis(Vector3::y() * 0.5).matrix()
+                * *nalgebra::Rotation3::from_scaled_axis(Vector3::z() * 0.35).matrix()
+                * a.rotation,
+            ..a
+        };
+        assert!(same_frame(&a, &b));
+        // Facing the other way, or upside down.
+        for axis in [Vector3::y(), Vector3::z()] {
+            let c = Similarity {
+                rotation: a.rotation * turn(axis, 180.0).rotation,
+                ..a
+            };
+            assert!(!same_frame(&a, &c));
+        }
+    }
     use nalgebra::Rotation3;
 
     /// A box-shaped "body": 1.8 tall (y), 0.5 wide (x), 0.25 deep (z), sampled on a grid.

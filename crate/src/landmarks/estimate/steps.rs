@@ -24,7 +24,7 @@ use super::candidates::{even_sample, fit_similarity, FittedCandidate};
 use super::confidence::{confidence, neighbourhoods, residual};
 use super::error::EstimateError;
 use super::expected::expected_positions;
-use super::frame::{frame_candidates, FrameReport};
+use super::frame::{frame_candidates, same_frame, FrameReport};
 use super::hand::{hands, pose_hands};
 use super::matching::Matching;
 use super::params::EstimateParams;
@@ -136,6 +136,7 @@ pub fn estimate_landmarks(
         .into_iter()
         .map(|c| ("axes", c.start))
         .collect();
+    let mut given_frame = None;
     if given_m.len() >= 4 {
         let from: Vec<_> = given_m
             .iter()
@@ -146,6 +147,7 @@ pub fn estimate_landmarks(
             similarity(&from, &to, true).filter(|t| t.scale > 0.0 && t.scale.is_finite())
         {
             starts.push(("given landmarks", t));
+            given_frame = Some(t);
         }
     }
     let max_iterations = starts.len() * (params.candidate_iterations + 1)
@@ -168,6 +170,14 @@ pub fn estimate_landmarks(
         )
         .ok_or(EstimateError::Cancelled)?;
         fitted.push((source, fit));
+    }
+    // Given landmarks say which way is up and which way the body faces: a candidate turned
+    // away from them is not taken, however well it fits (a body with its hands on its hips fitted
+    // back to front best, held-out seed 6420).
+    if let Some(frame) = &given_frame {
+        if fitted.iter().any(|(_, f)| same_frame(frame, &f.transform)) {
+            fitted.retain(|(_, f)| same_frame(frame, &f.transform));
+        }
     }
     fitted.sort_by(|a, b| a.1.energy.total_cmp(&b.1.energy));
     if fitted.first().is_none_or(|(_, f)| f.matched == 0.0) {
