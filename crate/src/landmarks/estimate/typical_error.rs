@@ -5,8 +5,8 @@
 //! fit with stretching legs, the arms' swing (raised too), no limb folded past 145°, the knees
 //! and elbows placed by the limbs' profiles (the knees by the front of the knee), the elbow of a
 //! bent arm, the hands' pose about the wrist (its turn kept when the hand then matches better),
-//! the resting hand of a bent arm (its turn about the forearm carried down the forearm) and the
-//! torso's length from the buttocks. Regenerate it with the same command when the method or the
+//! the resting hand of a bent arm (its wrist placed by the forearm's profile, its turn about
+//! the forearm carried down the forearm) and the torso's length from the buttocks. Regenerate it with the same command when the method or the
 //! template's landmark vertices change; the held-out figures in docs/landmarks-estimate.md say
 //! how well it ranks the errors of subjects it was not measured on.
 
@@ -52,7 +52,7 @@ pub const TYPICAL_ERROR_MM: [f64; CAESAR_LANDMARK_COUNT] = [
     12.2, // Rt. Radiale
     9.0,  // Rt. Metacarpal Phal. II
     7.7,  // Rt. Dactylion
-    5.4,  // Rt. Ulnar Styloid
+    5.5,  // Rt. Ulnar Styloid
     8.8,  // Rt. Metacarpal Phal. V
     20.3, // Lt. Acromion
     16.9, // Lt. Axilla, Ant.
@@ -62,7 +62,7 @@ pub const TYPICAL_ERROR_MM: [f64; CAESAR_LANDMARK_COUNT] = [
     12.1, // Lt. Humeral Lateral Epicn
     10.5, // Lt. Humeral Medial Epicn
     12.2, // Lt. Radiale
-    10.6, // Lt. Metacarpal Phal. II
+    10.2, // Lt. Metacarpal Phal. II
     7.7,  // Lt. Dactylion
     5.4,  // Lt. Ulnar Styloid
     9.1,  // Lt. Metacarpal Phal. V
