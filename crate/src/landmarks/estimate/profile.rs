@@ -229,17 +229,9 @@ pub fn register(
         if pairs.len() < scan.len() / 3 {
             continue;
         }
-        let st: f64 = pairs.iter().map(|(s, t)| s * t).sum();
-        let tt: f64 = pairs.iter().map(|(_, t)| t * t).sum();
-        if tt <= 0.0 {
+        let Some(cost) = gained_cost(&pairs) else {
             continue;
-        }
-        let gain = st / tt;
-        let cost = pairs
-            .iter()
-            .map(|(s, t)| (s - gain * t).powi(2))
-            .sum::<f64>()
-            / pairs.len() as f64;
+        };
         if best.is_none_or(|(c, _)| cost < c) {
             best = Some((cost, f));
         }
@@ -271,22 +263,27 @@ pub fn register_shift(
         if pairs.len() * 3 < (last + 1 - first) * 2 {
             continue;
         }
-        let st: f64 = pairs.iter().map(|(s, t)| s * t).sum();
-        let tt: f64 = pairs.iter().map(|(_, t)| t * t).sum();
-        if tt <= 0.0 {
+        let Some(cost) = gained_cost(&pairs) else {
             continue;
-        }
-        let gain = st / tt;
-        let cost = pairs
-            .iter()
-            .map(|(s, t)| (s - gain * t).powi(2))
-            .sum::<f64>()
-            / pairs.len() as f64;
+        };
         if best.is_none_or(|(c, _)| cost < c) {
             best = Some((cost, shift));
         }
     }
     best.map(|(_, shift)| shift)
+}
+
+/// The mean squared difference of (scan, template) widths `pairs` with the template's times the
+/// least-squares gain (the subject's girth); `None` for no template width.
+fn gained_cost(pairs: &[(f64, f64)]) -> Option<f64> {
+    let st: f64 = pairs.iter().map(|(s, t)| s * t).sum();
+    let tt: f64 = pairs.iter().map(|(_, t)| t * t).sum();
+    if tt <= 0.0 {
+        return None;
+    }
+    let gain = st / tt;
+    let sum: f64 = pairs.iter().map(|(s, t)| (s - gain * t).powi(2)).sum();
+    Some(sum / pairs.len() as f64)
 }
 
 /// Shifts tried by [`register_shift`].
