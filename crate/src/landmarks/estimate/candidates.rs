@@ -6,6 +6,7 @@ use std::ops::ControlFlow;
 
 use nalgebra::{Point3, Vector3};
 
+use super::frame::same_frame;
 use super::matching::Matching;
 use super::tick::Ticker;
 use crate::mesh::similarity::{similarity, Similarity};
@@ -68,6 +69,43 @@ pub fn fit_similarity(
     })
 }
 
+/// Of the fitted candidates (`fitted`, least energy first), when the two best face different
+/// ways and their energies lie within [`CLOSE`] of each other, the one whose torso (`torso`:
+/// template vertices of `rest` with unit `normals`, metres) matches the scan better goes first.
+/// Arms and legs pose freely, the torso does not: a body with its hands on its hips, elbows out,
+/// fitted back to front better by 2 % over the whole body, its torso's energy twice the right
+/// way round's (held-out seed 6420); on every other candidate pair looked at the torso agreed
+/// with the whole body, by a factor of about two.
+pub fn prefer_torso<S>(
+    fitted: &mut [(S, FittedCandidate)],
+    rest: &[Point3<f64>],
+    normals: &[Vector3<f64>],
+    torso: &[u32],
+    matching: &Matching<'_>,
+) {
+    let [(_, a), (_, b), ..] = &*fitted else {
+        return;
+    };
+    if same_frame(&a.transform, &b.transform) || b.energy > a.energy * (1.0 + CLOSE) {
+        return;
+    }
+    let energy = |t: &Similarity| {
+        let mut positions = rest.to_vec();
+        let mut turned = normals.to_vec();
+        for &v in torso {
+            positions[v as usize] = t.apply(&rest[v as usize]);
+            turned[v as usize] = t.rotation * normals[v as usize];
+        }
+        matching.energy(&matching.pairs(torso, &positions, &turned), torso.len())
+    };
+    if energy(&b.transform) < energy(&a.transform) {
+        fitted.swap(0, 1);
+    }
+}
+
+/// See [`prefer_torso`].
+const CLOSE: f64 = 0.1;
+
 /// `count` template vertices spread evenly by index over those with a data weight of at least
 /// ½ (no hands, ears or unseen parts: they are the least reliable on scans).
 pub fn even_sample(weights: &[f64], count: usize) -> Vec<u32> {
@@ -81,6 +119,54 @@ pub fn even_sample(weights: &[f64], count: usize) -> Vec<u32> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn near_candidates_facing_apart_are_told_by_the_torso() {
+        use crate::landmarks::estimate::segments::base_parts;
+        use crate::template::Segment;
+        let (template, _) = base_parts();
+        let rest = &template.mesh().positions;
+        let normals = template.mesh().vertex_normals();
+        let index = crate::align::SurfaceIndex::new(template.mesh()).unwrap();
+        let matching = Matching {
+            scan: &index,
+            min_cos: 0.5,
+            outlier_distance: 0.1,
+        };
+        let torso: Vec<u32> = (0..rest.len() as u32)
+            .filter(|&v| template.segment_weights(v)[Segment::Torso.index()] >= 0.5)
+            .step_by(5)
+            .collect();
+        let identity = Similarity {
+            scale: 1.0,
+            rotation: nalgebra::Matrix3::identity(),
+            translation: Vector3::zeros(),
+        };
+        // The scan is the template: turned half round about the vertical it faces away.
+        let away = Similarity {
+            rotation: *nalgebra::Rotation3::from_scaled_axis(Vector3::y() * std::f64::consts::PI)
+                .matrix(),
+            ..identity
+        };
+        let fitted_with = |energy: f64| FittedCandidate {
+            transform: away,
+            energy,
+            matched: 1.0,
+        };
+        let right = FittedCandidate {
+            transform: identity,
+            energy: 0.0021,
+            matched: 1.0,
+        };
+        // 5 % apart: the torso decides.
+        let mut fitted = [("away", fitted_with(0.002)), ("right", right)];
+        prefer_torso(&mut fitted, rest, &normals, &torso, &matching);
+        assert_eq!(fitted[0].0, "right");
+        // 50 % apart: the whole body's fit stands.
+        let mut fitted = [("away", fitted_with(0.0014)), ("right", right)];
+        prefer_torso(&mut fitted, rest, &normals, &torso, &matching);
+        assert_eq!(fitted[0].0, "away");
+    }
 
     #[test]
     fn even_sample_skips_low_weights_and_spreads() {

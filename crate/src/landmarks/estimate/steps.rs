@@ -20,7 +20,7 @@ use std::borrow::Cow;
 use nalgebra::Point3;
 
 use super::arm_swing::{SWING_DEG, SWING_ITERATIONS};
-use super::candidates::{even_sample, fit_similarity, FittedCandidate};
+use super::candidates::{even_sample, fit_similarity, prefer_torso, FittedCandidate};
 use super::confidence::{confidence, neighbourhoods, residual};
 use super::error::EstimateError;
 use super::expected::expected_positions;
@@ -41,7 +41,7 @@ use crate::mesh::bounding_extent;
 use crate::mesh::similarity::similarity;
 use crate::mesh::units::{detect_units, Units};
 use crate::mesh::Mesh;
-use crate::template::{Resolution, Template};
+use crate::template::{Resolution, Segment, Template};
 use crate::utils::now_ms;
 
 /// What one estimate works on.
@@ -180,6 +180,12 @@ pub fn estimate_landmarks(
         }
     }
     fitted.sort_by(|a, b| a.1.energy.total_cmp(&b.1.energy));
+    let torso: Vec<u32> = sample
+        .iter()
+        .copied()
+        .filter(|&v| template.segment_weights(v)[Segment::Torso.index()] >= 0.5)
+        .collect();
+    prefer_torso(&mut fitted, rest, &rest_normals, &torso, &matching);
     if fitted.first().is_none_or(|(_, f)| f.matched == 0.0) {
         return Err(EstimateError::NoMatch);
     }
