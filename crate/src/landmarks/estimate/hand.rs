@@ -410,9 +410,9 @@ fn resting_hand(
     let mut best: Option<(HandPose, Placed)> = None;
     let mut least = start;
     // The hand as fitted; only when that is not kept, the hand turned either way about the
-    // forearm.
+    // forearm: both, the better kept.
     for start_twist in [0.0, RESTING_FALLBACK_TWIST, -RESTING_FALLBACK_TWIST] {
-        if start_twist != 0.0 && best.is_some() {
+        if start_twist == RESTING_FALLBACK_TWIST && best.is_some() {
             break;
         }
         restore(positions, &before);
@@ -921,6 +921,59 @@ mod tests {
             for v in hand.styloids {
                 let off = (positions[v as usize] - scan[v as usize]).norm();
                 assert!(off < styloids_within, "{pronation}: {off}");
+            }
+        }
+    }
+
+    #[test]
+    fn both_restarts_are_tried_and_the_better_kept() {
+        use crate::landmarks::estimate::segments::base_parts;
+        let (template, _) = base_parts();
+        let rest = &template.mesh().positions;
+        let triangles = &template.mesh().triangles;
+        for hand in &hands(&template) {
+            for pronation in [-60.0, -70.0] {
+                // The "scan": the template's forearm turned the other way from the first
+                // restart (as in the test above), and where the first restart puts the hand
+                // something matches a little of it: fingertips (the hand's triangles wholly
+                // among its 5 % of own vertices farthest from the wrist) turned that way, as a
+                // fold of clothing or the other hand's fingers would. That restart's match is
+                // kept; the other's matches better.
+                let mut scan = rest.to_vec();
+                let (wrist, axis) = wrist_and_axis(&scan, hand.styloids, hand.epicondyles);
+                for (v, u) in &hand.slide {
+                    let turn = Rotation3::from_scaled_axis(axis * (f64::to_radians(pronation) * u));
+                    scan[*v as usize] = wrist + turn * (scan[*v as usize] - wrist);
+                }
+                let mut by_reach = hand.own.clone();
+                by_reach.sort_by(|a, b| {
+                    let d = |v: &u32| (rest[*v as usize] - wrist).norm();
+                    d(b).total_cmp(&d(a))
+                });
+                let tips = &by_reach[..hand.own.len() / 20];
+                let mut first = rest.to_vec();
+                let turn =
+                    UnitQuaternion::from_scaled_axis(axis * RESTING_FALLBACK_TWIST.to_radians());
+                turn_hand(hand, &mut first, wrist, &turn);
+                let mut points = scan.clone();
+                let mut all = triangles.clone();
+                for t in hand
+                    .triangles
+                    .iter()
+                    .filter(|t| t.iter().all(|v| tips.contains(v)))
+                {
+                    let at = points.len() as u32;
+                    points.extend(t.iter().map(|v| first[*v as usize]));
+                    all.push([at, at + 1, at + 2]);
+                }
+                let index = crate::align::SurfaceIndex::new(&Mesh::new(points, all)).unwrap();
+                let matching = matching_on(&index);
+                let mut positions = rest.to_vec();
+                resting_hand(hand, &mut positions, None, &matching).unwrap();
+                for v in hand.styloids {
+                    let off = (positions[v as usize] - scan[v as usize]).norm();
+                    assert!(off < 0.008, "{} {pronation}: {off}", hand.side);
+                }
             }
         }
     }
