@@ -489,8 +489,29 @@ mod native {
                 }
                 _ => String::new(),
             };
+            // The elbow's hinge (lateral − medial epicondyle) against its arm's plane: the
+            // angle between them, true and estimated, each in its own arm's frame.
+            let hinge_tilt = |a: Point3<f64>, l: Point3<f64>, m: Point3<f64>, w: Point3<f64>| {
+                let e = nalgebra::center(&l, &m);
+                let normal = (e - a).cross(&(w - e)).normalize();
+                (l - m).normalize().dot(&normal).abs().acos().to_degrees()
+            };
+            let hinge = match (
+                e("Acromion"),
+                e("Humeral Lateral Epicn"),
+                e("Humeral Medial Epicn"),
+                e("Radial Styloid"),
+                e("Ulnar Styloid"),
+            ) {
+                (Some(ea), Some(el), Some(em), Some(ers), Some(eus)) => format!(
+                    ", hinge out of the arm's normal {:.0}° (estimate {:.0}°)",
+                    hinge_tilt(acromion, lat, med, nalgebra::center(&rs, &us)),
+                    hinge_tilt(ea, el, em, nalgebra::center(&ers, &eus))
+                ),
+                _ => String::new(),
+            };
             let mut line = format!(
-                "           {side} arm bent {bend:.0}°{shape}, forearm turned {roll}, {what} (along upper / along forearm / out mm):"
+                "           {side} arm bent {bend:.0}°{shape}, forearm turned {roll}{hinge}, {what} (along upper / along forearm / out mm):"
             );
             let names = [
                 "Humeral Lateral Epicn",
