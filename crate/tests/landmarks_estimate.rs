@@ -21,9 +21,13 @@ use bodyspace::mesh::units::Units;
 use estimate_support::{case, frames, load, poses, Case, Frame, PARTIAL};
 use nalgebra::Vector3;
 
-/// The wrists' and hands' mean error (mm) a hand stays under: measured 4.2–10.3 mm free, with
-/// the hand's pose (`hand.rs`; development subjects had 35–43 mm without it), 11.3 mm on the hips.
+/// The wrists' and hands' mean error (mm) a hand on the hip stays under: measured 11.3 mm, with
+/// the hand's pose (`hand.rs`; development subjects had 35–43 mm without it).
 const HANDS_MM: f64 = 15.0;
+
+/// The same for a free hand: measured 1.7–7.6 mm with the wrist placed by the forearm's width
+/// profile (`hand.rs`), 3.9–10.2 mm with it slid by the hand's centroid.
+const FREE_HANDS_MM: f64 = 8.5;
 
 fn estimate(c: &Case, given: &LandmarkSet) -> LandmarkEstimate {
     let template = bodyspace::template::Template::embedded().unwrap();
@@ -145,8 +149,13 @@ fn every_frame_and_pose_is_found_and_the_landmarks_land_near_the_truth() {
         // mm, worst 51.7 mm (14.1 and 51.6 mm with the wrist slid by the matching, 17.4 and
         // 54.3 mm with the forearm left unturned too, 51.0 and 65.8 mm without the resting
         // hand).
+        let hands_within = if pose.name == "hands-on-hips" {
+            HANDS_MM
+        } else {
+            FREE_HANDS_MM
+        };
         assert!(
-            hands < HANDS_MM,
+            hands < hands_within,
             "{} / {}: wrists and hands {hands} mm",
             frame.name,
             pose.name

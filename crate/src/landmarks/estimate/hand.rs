@@ -1,41 +1,41 @@
 //! The hand's pose about the wrist. After the segment-wise fit the hand has moved rigidly with
 //! the forearm (which keeps the template's length and moves with the elbow): a wrist that sits
 //! higher or lower along the arm than the template's, or a hand turned at the wrist, is not
-//! followed — nearest-point matching of a whole forearm part barely sees the hand. Here the
-//! scan's surface beyond the wrist (within the hand's reach, on the far side of the plane across
-//! the forearm at the wrist) is compared with the posed template's hand surface there:
+//! followed — nearest-point matching of a whole forearm part barely sees the hand. Here:
 //!
-//! 1. the wrist slides along the forearm (the forearm stretched, the hand carried along) until
-//!    the two hands' centroids lie equally far along it, the region taken again at each new
-//!    wrist;
-//! 2. the hand turns about the wrist: the shortest rotation of the template hand's axis (wrist →
-//!    centroid) onto the scan's, then about that axis the turn that brings the widest direction
-//!    across the hand (the flat side) onto the scan's. The rotation is blended to nothing at
-//!    the wrist. It is kept only when the hand's own vertices then match the scan better
-//!    (nearest compatible points, as the resting hand's below): the moments also see whatever
-//!    else lies in the region, so a hand hanging beside the thigh was turned 55–58° away from
-//!    where it hung (held-out seed 2468).
+//! 1. the wrist slides along the forearm (the forearm stretched, the hand carried along) to
+//!    where the forearm's width profile puts it (`wrist_from_profile`: the forearm narrowing to
+//!    the wrist and widening into the hand, on the scan against the posed template). A hand is
+//!    wider than the wrist whatever it hangs beside or rests on. (The hand's centroid, taken
+//!    before, slid the wrist the wrong way where the scan's hand was short of fingertips or
+//!    merged with the thigh: free hands 8.4–12.9 mm on held-out seeds, 6.6–11.8 mm by the
+//!    profile.)
+//! 2. a free hand turns about the wrist, from the scan's surface beyond the wrist (within the
+//!    hand's reach, on the far side of the plane across the forearm at the wrist) against the
+//!    posed template's hand surface there: the shortest rotation of the template hand's axis
+//!    (wrist → centroid) onto the scan's, then about that axis the turn that brings the widest
+//!    direction across the hand (the flat side) onto the scan's. The rotation is blended to
+//!    nothing at the wrist. It is kept only when the hand's own vertices then match the scan
+//!    better (nearest compatible points, as the resting hand's below): the moments also see
+//!    whatever else lies in the region, so a hand hanging beside the thigh was turned 55–58°
+//!    away from where it hung (held-out seed 2468).
 //!
 //! A hand that is not free (against the thigh) or not seen (a hole) shows there as much more or
-//! much less surface than a hand: it is left as the fit put it. The hand of an arm bent more than
-//! the limbs' profiles take (`segments::MAX_BEND`, hands on hips) rests on the body, its surface
-//! merged with the hip's. Its wrist is placed along the forearm by the forearm's width profile
-//! (`wrist_from_profile`: the forearm narrowing to the wrist and widening into the hand, on the
-//! scan against the posed template), and the hand is matched by its own vertices (`resting_hand`), turned about the
-//! wrist as one rigid piece (slid along the forearm by the matching too when the profile finds
-//! no widening: a hand on the hip matched best with the wrist 20–60 mm short of the subject's,
-//! from every start; held-out seeds 2468, 8642, 1111); when that match is not kept,
-//! again from the hand turned either way about the forearm (its turn about the forearm is what
-//! the segment-wise fit gets wrong: a rigid forearm and hand, nearest points on a hand merged
-//! with the hip). The part of its turn about the forearm is then carried down the forearm, as
-//! pronation and supination turn the wrist with the hand.
-
-use std::cell::OnceCell;
+//! much less surface than a hand: it is not turned. The hand of an arm bent more than the limbs'
+//! profiles take (`segments::MAX_BEND`, hands on hips) rests on the body, its surface merged with
+//! the hip's. Its wrist, placed by the profile, is held, and the hand is matched by its own
+//! vertices (`resting_hand`), turned about the wrist as one rigid piece (slid along the forearm
+//! by the matching too when the profile finds no widening: a hand on the hip matched best with
+//! the wrist 20–60 mm short of the subject's, from every start; held-out seeds 2468, 8642,
+//! 1111); when that match is not kept, again from the hand turned either way about the forearm
+//! (its turn about the forearm is what the segment-wise fit gets wrong: a rigid forearm and
+//! hand, nearest points on a hand merged with the hip). The part of its turn about the forearm
+//! is then carried down the forearm, as pronation and supination turn the wrist with the hand.
 
 use nalgebra::{Matrix3, Point3, Rotation3, UnitQuaternion, Vector3};
 
 use super::matching::Matching;
-use super::profile::{profile, register_shift, surface_samples, LimbLine};
+use super::profile::{profile, register_shift, surface_samples, triangles_near, LimbLine};
 use super::segments::MAX_BEND;
 use crate::mesh::normals::vertex_normals_into;
 use crate::mesh::similarity::similarity;
@@ -57,10 +57,6 @@ const REACH: f64 = 1.2;
 /// A hand-like cluster has this range of area, relative to the template's hand surface in the
 /// same region (on the development subjects free hands have 0.73–1.07, a hand on the hip 1.8).
 const AREA_RANGE: (f64, f64) = (0.6, 1.5);
-
-/// Rounds of the wrist's slide along the forearm (each region taken at the last wrist: a wrist
-/// placed too high brings forearm into the region, so one round corrects about 60%).
-const SLIDE_ITERATIONS: usize = 5;
 
 /// The wrist slides at most this far (m) along the forearm.
 const MAX_SLIDE: f64 = 0.06;
@@ -98,8 +94,8 @@ const RESTING_MAX_TURN: f64 = 75.0;
 /// pronation and supination reach ≈ 80–90° either way from the mid position.
 const RESTING_MAX_TWIST: f64 = 90.0;
 
-/// A bent forearm's profile runs from the elbow this many times the way to the wrist, over
-/// the hand.
+/// A forearm's profile runs from the elbow this many times the way to the wrist, over the
+/// hand.
 const PROFILE_LINE: f64 = 1.6;
 
 /// Points farther (m) from the forearm's line are not the forearm or the hand.
@@ -260,31 +256,18 @@ pub fn pose_hands(
     matching: &Matching<'_>,
 ) -> Vec<Option<HandPose>> {
     let scan_surface = surface(&scan.positions, &scan.triangles);
-    let profiles = Profiles {
-        triangles,
-        scan,
-        scan_points: OnceCell::new(),
-    };
+    let profiles = Profiles { triangles, scan };
     hands
         .iter()
         .map(|hand| pose_hand(hand, positions, &scan_surface, &profiles, matching))
         .collect()
 }
 
-/// What a bent forearm's profile is taken from: the template's triangles (at the positions
-/// fitted) and points spread over the scan (taken once, when an arm is bent).
+/// What a forearm's profile is taken from: the template's triangles (at the positions fitted)
+/// and the scan.
 struct Profiles<'a> {
     triangles: &'a [[u32; 3]],
     scan: &'a Mesh,
-    scan_points: OnceCell<Vec<Point3<f64>>>,
-}
-
-impl Profiles<'_> {
-    fn scan_points(&self) -> &[Point3<f64>] {
-        self.scan_points.get_or_init(|| {
-            surface_samples(&self.scan.positions, &self.scan.triangles, PROFILE_SPACING)
-        })
-    }
 }
 
 fn pose_hand(
@@ -302,10 +285,11 @@ fn pose_hand(
             * REACH
     };
     let (wrist, axis) = wrist_and_axis(positions, hand.styloids, hand.epicondyles);
+    // Where the forearm narrows to the wrist and widens into the hand.
+    let along = wrist_from_profile(hand, positions, profiles);
     // An arm bent like the hands on the hips: the hand rests on the body.
     let elbow = mid(positions, hand.epicondyles);
     if (elbow - positions[hand.acromion as usize]).angle(&axis) > MAX_BEND.to_radians() {
-        let along = wrist_from_profile(hand, positions, profiles);
         return resting_hand(hand, positions, along, matching);
     }
     let r = reach(positions, wrist);
@@ -316,21 +300,16 @@ fn pose_hand(
         .copied()
         .collect();
     let template = surface(positions, &hand.triangles);
-    if !hand_like(wrist, axis, r, &template, &near) {
-        return None;
+    let free = hand_like(wrist, axis, r, &template, &near);
+    let slide = along.map_or(0.0, |d| d.clamp(-MAX_SLIDE, MAX_SLIDE));
+    for (v, u) in &hand.slide {
+        positions[*v as usize] += axis * (slide * u);
     }
-    let mut slide = 0.0;
-    for _ in 0..SLIDE_ITERATIONS {
-        let (wrist, axis) = wrist_and_axis(positions, hand.styloids, hand.epicondyles);
-        let template = surface(positions, &hand.triangles);
-        let Some(step) = hand_slide(wrist, axis, reach(positions, wrist), &template, &near) else {
-            break;
-        };
-        let step = (slide + step).clamp(-MAX_SLIDE, MAX_SLIDE) - slide;
-        slide += step;
-        for (v, u) in &hand.slide {
-            positions[*v as usize] += axis * (step * u);
-        }
+    if !free {
+        return Some(HandPose {
+            slide,
+            rotation: None,
+        });
     }
     let (wrist, axis) = wrist_and_axis(positions, hand.styloids, hand.epicondyles);
     let template = surface(positions, &hand.triangles);
@@ -457,9 +436,10 @@ fn resting_hand(
     Some(pose)
 }
 
-/// How far (m) the wrist of a bent arm lies along the forearm from where the fit put it, from
-/// the forearm's width profile ([`profile`] along the line from the elbow [`PROFILE_LINE`] times
-/// the way to the wrist): the shift (up to [`MAX_SLIDE`] towards the hand, half of it back)
+/// How far (m) the wrist lies along the forearm from where the fit put it, from the forearm's
+/// width profile ([`profile`] of the surfaces' samples near the line from the elbow
+/// [`PROFILE_LINE`] times the way to the wrist): the shift (up to [`MAX_SLIDE`] towards the
+/// hand, half of it back)
 /// that brings the posed template's profile over [`PROFILE_WINDOW`] of its wrist — the forearm
 /// narrowing to the wrist, the hand widening out of it — nearest the scan's
 /// ([`register_shift`]). A hand is wider than the wrist whatever it rests on; a single feature
@@ -478,9 +458,22 @@ fn wrist_from_profile(
     };
     let length = (line.end - line.root).norm();
     let at_wrist = 1.0 / PROFILE_LINE;
-    let template_points = surface_samples(positions, profiles.triangles, PROFILE_SPACING);
-    let template = profile(&template_points, &[line], 0, PROFILE_RADIUS);
-    let scan = profile(profiles.scan_points(), &[line], 0, PROFILE_RADIUS);
+    let points = |positions: &[Point3<f64>], triangles: &[[u32; 3]]| {
+        let near = triangles_near(positions, triangles, &line, PROFILE_RADIUS);
+        surface_samples(positions, &near, PROFILE_SPACING)
+    };
+    let template = profile(
+        &points(positions, profiles.triangles),
+        &[line],
+        0,
+        PROFILE_RADIUS,
+    );
+    let scan = profile(
+        &points(&profiles.scan.positions, &profiles.scan.triangles),
+        &[line],
+        0,
+        PROFILE_RADIUS,
+    );
     let window = (
         at_wrist + PROFILE_WINDOW.0 / length,
         at_wrist + PROFILE_WINDOW.1 / length,
@@ -664,21 +657,6 @@ pub fn hand_like(
         (Some((t, _, _)), Some((s, _, _))) => (AREA_RANGE.0..=AREA_RANGE.1).contains(&(s / t)),
         _ => false,
     }
-}
-
-/// How far (m) the wrist is to slide along `axis` for the template hand's centroid to lie as far
-/// along the forearm as the scan's (the surfaces taken as in [`hand_like`]). `None` when either
-/// has no surface there.
-pub fn hand_slide(
-    wrist: Point3<f64>,
-    axis: Vector3<f64>,
-    reach: f64,
-    template: &Surface,
-    scan: &Surface,
-) -> Option<f64> {
-    let (_, t, _) = moments(template, wrist, axis, reach)?;
-    let (_, s, _) = moments(scan, wrist, axis, reach)?;
-    Some((s - t).dot(&axis))
 }
 
 /// The rotation about `wrist` that takes the template's hand onto the scan's (the surfaces taken
@@ -876,7 +854,6 @@ mod tests {
         let profiles = Profiles {
             triangles: &mesh.triangles,
             scan: mesh,
-            scan_points: OnceCell::new(),
         };
         let pose = pose_hand(hand, &mut positions, &scan_surface, &profiles, &matching).unwrap();
         assert!(pose.rotation.is_none(), "{pose:?}");
@@ -979,6 +956,63 @@ mod tests {
     }
 
     #[test]
+    fn a_hand_against_the_thigh_is_slid_along_the_forearm_but_not_turned() {
+        use crate::landmarks::estimate::segments::base_parts;
+        let (template, _) = base_parts();
+        let rest = &template.mesh().positions;
+        let triangles = &template.mesh().triangles;
+        let hands = hands(&template);
+        let hand = &hands[0];
+        // The "scan": the template with the forearm 3 cm longer, and beside the hand a strip of
+        // twice the hand's area (the thigh it hangs against): not hand-like, so not turned, but
+        // its wrist is where the forearm's profile puts it.
+        let mut scan = rest.to_vec();
+        let (_, axis) = wrist_and_axis(&scan, hand.styloids, hand.epicondyles);
+        for (v, u) in &hand.slide {
+            scan[*v as usize] += axis * (0.03 * u);
+        }
+        let (wrist, axis) = wrist_and_axis(&scan, hand.styloids, hand.epicondyles);
+        let across = axis.cross(&Vector3::z()).normalize();
+        let area: f64 = surface(&scan, &hand.triangles).iter().map(|(_, a)| a).sum();
+        let mut scan_surface = surface(&scan, triangles);
+        let (step, long) = (0.002, 0.16);
+        let wide = 2.0 * area / long;
+        for i in 0..(long / step) as usize {
+            for j in 0..(wide / step) as usize {
+                let p = wrist
+                    + axis * (i as f64 * step)
+                    + across * 0.04
+                    + axis.cross(&across) * (j as f64 * step - wide / 2.0);
+                scan_surface.push((p, step * step));
+            }
+        }
+        let (at, along) = wrist_and_axis(rest, hand.styloids, hand.epicondyles);
+        let r = REACH
+            * hand
+                .share
+                .iter()
+                .map(|(v, _)| (rest[*v as usize] - at).norm())
+                .fold(0.0, f64::max);
+        let template_hand = surface(rest, &hand.triangles);
+        assert!(!hand_like(at, along, r, &template_hand, &scan_surface));
+        let mesh = Mesh::new(scan, triangles.clone());
+        let index = scan_index(&mesh.positions, &template);
+        let matching = matching_on(&index);
+        let profiles = Profiles {
+            triangles,
+            scan: &mesh,
+        };
+        let mut positions = rest.to_vec();
+        let pose = pose_hand(hand, &mut positions, &scan_surface, &profiles, &matching).unwrap();
+        assert!(pose.rotation.is_none(), "{pose:?}");
+        assert!((pose.slide - 0.03).abs() < 0.006, "{}", pose.slide);
+        for v in hand.styloids {
+            let off = (positions[v as usize] - mesh.positions[v as usize]).norm();
+            assert!(off < 0.006, "{off}");
+        }
+    }
+
+    #[test]
     fn a_longer_forearm_is_found_from_where_it_widens_into_the_hand() {
         use crate::landmarks::estimate::segments::base_parts;
         let (template, _) = base_parts();
@@ -997,7 +1031,6 @@ mod tests {
                 let profiles = Profiles {
                     triangles,
                     scan: &mesh,
-                    scan_points: OnceCell::new(),
                 };
                 let found = wrist_from_profile(hand, rest, &profiles).unwrap();
                 assert!(
@@ -1037,15 +1070,6 @@ mod tests {
             let found = twist_about(&(swing * twist), &axis).to_degrees();
             assert!((found - deg).abs() < 1e-9, "{deg}: {found}");
         }
-    }
-
-    #[test]
-    fn a_wrist_lower_on_the_arm_gives_back_the_slide() {
-        let template = hand();
-        let scan = moved(&template, |p| p + Vector3::z() * 0.02);
-        let (wrist, axis) = (Point3::origin(), Vector3::z());
-        let slide = hand_slide(wrist, axis, REACH_M, &template, &scan).unwrap();
-        assert!((slide - 0.02).abs() < 1e-9, "{slide}");
     }
 
     #[test]

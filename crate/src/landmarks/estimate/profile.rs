@@ -315,6 +315,27 @@ pub fn surface_samples(
     out
 }
 
+/// The triangles of `triangles` (on `positions`) that may reach within `radius` (m) of `line`:
+/// those with a corner within `radius` and the triangle's longest edge of it (every point of a
+/// triangle lies within its longest edge of each corner).
+pub fn triangles_near(
+    positions: &[Point3<f64>],
+    triangles: &[[u32; 3]],
+    line: &LimbLine,
+    radius: f64,
+) -> Vec<[u32; 3]> {
+    let distance: Vec<f64> = positions.iter().map(|p| line.locate(p).1).collect();
+    triangles
+        .iter()
+        .filter(|t| {
+            let [a, b, c] = t.map(|v| positions[v as usize]);
+            let longest = (b - a).norm().max((c - b).norm()).max((a - c).norm());
+            t.iter().any(|&v| distance[v as usize] <= radius + longest)
+        })
+        .copied()
+        .collect()
+}
+
 /// Fraction along `line` of the projection of `p`.
 pub fn fraction(line: &LimbLine, p: &Point3<f64>) -> f64 {
     line.locate(p).0
