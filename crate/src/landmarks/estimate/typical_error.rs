@@ -6,7 +6,8 @@
 //! and elbows placed by the limbs' profiles (the knees by the front of the knee), the elbow of a
 //! bent arm, the hands' pose about the wrist (its turn kept when the hand then matches better),
 //! the resting hand of a bent arm (its wrist placed by the forearm's profile, its turn about
-//! the forearm carried down the forearm) and the torso's length from the buttocks. Regenerate it with the same command when the method or the
+//! the forearm carried down the forearm), every wrist placed by the forearm's profile and the
+//! torso's length from the buttocks. Regenerate it with the same command when the method or the
 //! template's landmark vertices change; the held-out figures in docs/landmarks-estimate.md say
 //! how well it ranks the errors of subjects it was not measured on.
 
@@ -22,7 +23,7 @@ pub const TYPICAL_ERROR_MM: [f64; CAESAR_LANDMARK_COUNT] = [
     12.4, // Rt. Gonion
     12.6, // Lt. Tragion
     13.7, // Lt. Gonion
-    18.7, // Nuchale
+    18.6, // Nuchale
     14.7, // Rt. Clavicale
     15.5, // Suprasternale
     14.8, // Lt. Clavicale
@@ -44,28 +45,28 @@ pub const TYPICAL_ERROR_MM: [f64; CAESAR_LANDMARK_COUNT] = [
     8.2,  // Waist, Preferred, Post.
     20.8, // Rt. Acromion
     17.1, // Rt. Axilla, Ant.
-    4.3,  // Rt. Radial Styloid
+    2.6,  // Rt. Radial Styloid
     14.7, // Rt. Axilla, Post.
     9.7,  // Rt. Olecranon
-    12.0, // Rt. Humeral Lateral Epicn
+    12.1, // Rt. Humeral Lateral Epicn
     10.0, // Rt. Humeral Medial Epicn
-    12.2, // Rt. Radiale
-    9.0,  // Rt. Metacarpal Phal. II
-    7.7,  // Rt. Dactylion
-    5.5,  // Rt. Ulnar Styloid
-    8.8,  // Rt. Metacarpal Phal. V
+    12.7, // Rt. Radiale
+    7.6,  // Rt. Metacarpal Phal. II
+    6.8,  // Rt. Dactylion
+    3.9,  // Rt. Ulnar Styloid
+    7.9,  // Rt. Metacarpal Phal. V
     20.3, // Lt. Acromion
     16.9, // Lt. Axilla, Ant.
-    4.5,  // Lt. Radial Styloid
+    2.9,  // Lt. Radial Styloid
     14.8, // Lt. Axilla, Post.
     10.8, // Lt. Olecranon
-    12.1, // Lt. Humeral Lateral Epicn
+    12.3, // Lt. Humeral Lateral Epicn
     10.5, // Lt. Humeral Medial Epicn
-    12.2, // Lt. Radiale
-    10.2, // Lt. Metacarpal Phal. II
-    7.7,  // Lt. Dactylion
-    5.4,  // Lt. Ulnar Styloid
-    9.1,  // Lt. Metacarpal Phal. V
+    12.6, // Lt. Radiale
+    8.8,  // Lt. Metacarpal Phal. II
+    6.5,  // Lt. Dactylion
+    4.3,  // Lt. Ulnar Styloid
+    7.6,  // Lt. Metacarpal Phal. V
     12.9, // Rt. Knee Crease
     7.4,  // Rt. Femoral Lateral Epicn
     8.4,  // Rt. Femoral Medial Epicn
@@ -79,7 +80,7 @@ pub const TYPICAL_ERROR_MM: [f64; CAESAR_LANDMARK_COUNT] = [
     12.4, // Lt. Knee Crease
     8.2,  // Lt. Femoral Lateral Epicn
     8.5,  // Lt. Femoral Medial Epicn
-    7.1,  // Lt. Metatarsal Phal. V
+    7.2,  // Lt. Metatarsal Phal. V
     8.4,  // Lt. Lateral Malleolus
     15.1, // Lt. Medial Malleolus
     19.6, // Lt. Sphyrion
