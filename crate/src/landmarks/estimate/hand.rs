@@ -302,9 +302,7 @@ fn pose_hand(
     let template = surface(positions, &hand.triangles);
     let free = hand_like(wrist, axis, r, &template, &near);
     let slide = along.map_or(0.0, |d| d.clamp(-MAX_SLIDE, MAX_SLIDE));
-    for (v, u) in &hand.slide {
-        positions[*v as usize] += axis * (slide * u);
-    }
+    slide_wrist(hand, positions, axis, slide);
     if !free {
         return Some(HandPose {
             slide,
@@ -331,6 +329,14 @@ fn pose_hand(
         }
     }
     Some(HandPose { slide, rotation })
+}
+
+/// Slides the wrist `by` (m) along the forearm's unit `axis`: the forearm stretched from the
+/// elbow, the hand carried along.
+fn slide_wrist(hand: &Hand, positions: &mut [Point3<f64>], axis: Vector3<f64>, by: f64) {
+    for (v, u) in &hand.slide {
+        positions[*v as usize] += axis * (by * u);
+    }
 }
 
 /// Where the vertices `hand` moves (the forearm's and the hand's) are in `positions`.
@@ -375,9 +381,7 @@ fn resting_hand(
     // The wrist's place from the forearm's profile, held; else the matching slides it.
     let held = along.map_or(0.0, |d| d.clamp(-MAX_SLIDE, MAX_SLIDE));
     let (_, axis) = wrist_and_axis(positions, hand.styloids, hand.epicondyles);
-    for (v, u) in &hand.slide {
-        positions[*v as usize] += axis * (held * u);
-    }
+    slide_wrist(hand, positions, axis, held);
     let max_slide = if along.is_some() { 0.0 } else { MAX_SLIDE };
     let before = placed(hand, positions);
     let mut normals = vec![Vector3::zeros(); positions.len()];
@@ -524,9 +528,7 @@ fn settle_hand(
         let step = RESTING_SLIDE_GAIN * (rigid.apply(&wrist) - wrist).dot(&axis);
         let step = (slide + step).clamp(-max_slide, max_slide) - slide;
         slide += step;
-        for (v, u) in &hand.slide {
-            positions[*v as usize] += axis * (step * u);
-        }
+        slide_wrist(hand, positions, axis, step);
         let (wrist, _) = wrist_and_axis(positions, hand.styloids, hand.epicondyles);
         let turn = UnitQuaternion::from_matrix(&rigid.rotation);
         turn_hand(hand, positions, wrist, &turn);
@@ -779,9 +781,7 @@ mod tests {
         // at the wrist (about the axis across the hand), the way a hand is laid on the hip.
         let mut scan = rest.to_vec();
         let (_, axis) = wrist_and_axis(&scan, hand.styloids, hand.epicondyles);
-        for (v, u) in &hand.slide {
-            scan[*v as usize] += axis * (0.015 * u);
-        }
+        slide_wrist(hand, &mut scan, axis, 0.015);
         let (wrist, axis) = wrist_and_axis(&scan, hand.styloids, hand.epicondyles);
         let across = (scan[hand.styloids[0] as usize] - scan[hand.styloids[1] as usize])
             .cross(&axis)
@@ -968,9 +968,7 @@ mod tests {
         // its wrist is where the forearm's profile puts it.
         let mut scan = rest.to_vec();
         let (_, axis) = wrist_and_axis(&scan, hand.styloids, hand.epicondyles);
-        for (v, u) in &hand.slide {
-            scan[*v as usize] += axis * (0.03 * u);
-        }
+        slide_wrist(hand, &mut scan, axis, 0.03);
         let (wrist, axis) = wrist_and_axis(&scan, hand.styloids, hand.epicondyles);
         let across = axis.cross(&Vector3::z()).normalize();
         let area: f64 = surface(&scan, &hand.triangles).iter().map(|(_, a)| a).sum();
@@ -1024,9 +1022,7 @@ mod tests {
                 // hand carried along.
                 let mut scan = rest.to_vec();
                 let (_, axis) = wrist_and_axis(&scan, hand.styloids, hand.epicondyles);
-                for (v, u) in &hand.slide {
-                    scan[*v as usize] += axis * (longer * u);
-                }
+                slide_wrist(hand, &mut scan, axis, longer);
                 let mesh = Mesh::new(scan, triangles.clone());
                 let profiles = Profiles {
                     triangles,
