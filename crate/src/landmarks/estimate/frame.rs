@@ -150,19 +150,20 @@ fn mid_of_extents(points: &[Point3<f64>], axes: &Matrix3<f64>) -> Vector3<f64> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use nalgebra::Rotation3;
 
     #[test]
     fn a_frame_turned_half_round_is_another_frame() {
         let turn = |axis: Vector3<f64>, deg: f64| Similarity {
             scale: 1.0,
-            rotation: *nalgebra::Rotation3::from_scaled_axis(axis * deg.to_radians()).matrix(),
+            rotation: *Rotation3::from_scaled_axis(axis * deg.to_radians()).matrix(),
             translation: Vector3::zeros(),
         };
         let a = turn(Vector3::x(), 90.0);
         // The same frame, the body turned 30° and leaning 20°.
         let b = Similarity {
-            rotation: *nalgebra::Rotation3::from_scaled_axis(Vector3::y() * 0.5).matrix()
-                * *nalgebra::Rotation3::from_scaled_axis(Vector3::z() * 0.35).matrix()
+            rotation: *Rotation3::from_scaled_axis(Vector3::y() * 0.5).matrix()
+                * *Rotation3::from_scaled_axis(Vector3::z() * 0.35).matrix()
                 * a.rotation,
             ..a
         };
@@ -176,7 +177,6 @@ mod tests {
             assert!(!same_frame(&a, &c));
         }
     }
-    use nalgebra::Rotation3;
 
     /// A box-shaped "body": 1.8 tall (y), 0.5 wide (x), 0.25 deep (z), sampled on a grid.
     fn body() -> Vec<Point3<f64>> {

@@ -245,9 +245,9 @@ fn wrist_and_axis(
 
 /// Moves each hand of `hands` in `positions` (the segment-wise fit's, metres) to the scan's hand
 /// (`scan`, metres, indexed by `matching`): the slide along the forearm, then the turn about the
-/// wrist (kept when it matches better); a hand resting on the body by [`resting_hand`]. Per
-/// hand, what was done (`None`: the scan's surface beyond the wrist is not hand-like, or the
-/// resting hand's matching was not kept; left as it was).
+/// wrist of a hand-like one (kept when it matches better); a hand resting on the body by
+/// [`resting_hand`]. Per hand, what was done (`None`: a resting hand with no profile whose
+/// matching was not kept; left as it was).
 pub fn pose_hands(
     hands: &[Hand],
     positions: &mut [Point3<f64>],
@@ -286,7 +286,8 @@ fn pose_hand(
     };
     let (wrist, axis) = wrist_and_axis(positions, hand.styloids, hand.epicondyles);
     // Where the forearm narrows to the wrist and widens into the hand.
-    let along = wrist_from_profile(hand, positions, profiles);
+    let along =
+        wrist_from_profile(hand, positions, profiles).map(|d| d.clamp(-MAX_SLIDE, MAX_SLIDE));
     // An arm bent like the hands on the hips: the hand rests on the body.
     let elbow = mid(positions, hand.epicondyles);
     if (elbow - positions[hand.acromion as usize]).angle(&axis) > MAX_BEND.to_radians() {
@@ -301,7 +302,7 @@ fn pose_hand(
         .collect();
     let template = surface(positions, &hand.triangles);
     let free = hand_like(wrist, axis, r, &template, &near);
-    let slide = along.map_or(0.0, |d| d.clamp(-MAX_SLIDE, MAX_SLIDE));
+    let slide = along.unwrap_or(0.0);
     slide_wrist(hand, positions, axis, slide);
     if !free {
         return Some(HandPose {
@@ -356,8 +357,8 @@ fn restore(positions: &mut [Point3<f64>], at: &Placed) {
 
 /// The hand of an arm bent more than [`MAX_BEND`] (resting on the hip). The scan's surface
 /// beyond the wrist is the hand merged with the body under it, so its moments say nothing of the
-/// hand. The wrist is first slid `along` the forearm (m, from [`wrist_from_profile`]) and held
-/// there; the hand's own vertices (those wholly the hand's) are then matched (`matching`:
+/// hand. The wrist is first slid `along` the forearm (m, from [`wrist_from_profile`], within
+/// [`MAX_SLIDE`]) and held there; the hand's own vertices (those wholly the hand's) are then matched (`matching`:
 /// nearest compatible scan points, so the palm pressed on the hip finds nothing) and moved
 /// rigidly towards their matches, the move split into a turn about the wrist and the wrist's
 /// slide along the forearm (only with no `along`: [`RESTING_SLIDE_GAIN`] times its share of
@@ -379,7 +380,7 @@ fn resting_hand(
 ) -> Option<HandPose> {
     let own = &hand.own;
     // The wrist's place from the forearm's profile, held; else the matching slides it.
-    let held = along.map_or(0.0, |d| d.clamp(-MAX_SLIDE, MAX_SLIDE));
+    let held = along.unwrap_or(0.0);
     let (_, axis) = wrist_and_axis(positions, hand.styloids, hand.epicondyles);
     slide_wrist(hand, positions, axis, held);
     let max_slide = if along.is_some() { 0.0 } else { MAX_SLIDE };
@@ -762,6 +763,13 @@ mod tests {
     }
 
     /// Matching onto `index` as the estimate's (compatible normals, 10 cm outliers).
+    /// The base template and its two hands.
+    fn base_hands() -> (Template, Vec<Hand>) {
+        let (template, _) = crate::landmarks::estimate::segments::base_parts();
+        let hands = hands(&template);
+        (template, hands)
+    }
+
     fn matching_on(index: &crate::align::SurfaceIndex) -> Matching<'_> {
         Matching {
             scan: index,
@@ -772,10 +780,8 @@ mod tests {
 
     #[test]
     fn a_resting_hand_is_turned_and_slid_onto_the_scans() {
-        use crate::landmarks::estimate::segments::base_parts;
-        let (template, _) = base_parts();
+        let (template, hands) = base_hands();
         let rest = &template.mesh().positions;
-        let hands = hands(&template);
         let hand = &hands[0];
         // The "scan": the template with this hand slid 15 mm along the forearm and extended 40°
         // at the wrist (about the axis across the hand), the way a hand is laid on the hip.
@@ -808,10 +814,8 @@ mod tests {
 
     #[test]
     fn a_turn_that_matches_the_hand_worse_is_not_kept() {
-        use crate::landmarks::estimate::segments::base_parts;
-        let (template, _) = base_parts();
+        let (template, hands) = base_hands();
         let rest = &template.mesh().positions;
-        let hands = hands(&template);
         let hand = &hands[0];
         // The scan is the template, its surface beside a strip a third of the hand's area a
         // palm's breadth off the hand's flat side (a thigh's edge, a fold of clothing): the
@@ -866,10 +870,8 @@ mod tests {
 
     #[test]
     fn a_forearm_turned_about_itself_is_found_from_its_hand() {
-        use crate::landmarks::estimate::segments::base_parts;
-        let (template, _) = base_parts();
+        let (template, hands) = base_hands();
         let rest = &template.mesh().positions;
-        let hands = hands(&template);
         let hand = &hands[0];
         // The "scan": the template's forearm pronated 60°, the turn growing from nothing at the
         // elbow to the whole of it at the wrist, the hand turned with the wrist. From the
@@ -904,11 +906,10 @@ mod tests {
 
     #[test]
     fn both_restarts_are_tried_and_the_better_kept() {
-        use crate::landmarks::estimate::segments::base_parts;
-        let (template, _) = base_parts();
+        let (template, hands) = base_hands();
         let rest = &template.mesh().positions;
         let triangles = &template.mesh().triangles;
-        for hand in &hands(&template) {
+        for hand in &hands {
             for pronation in [-60.0, -70.0] {
                 // The "scan": the template's forearm turned the other way from the first
                 // restart (as in the test above), and where the first restart puts the hand
@@ -957,11 +958,9 @@ mod tests {
 
     #[test]
     fn a_hand_against_the_thigh_is_slid_along_the_forearm_but_not_turned() {
-        use crate::landmarks::estimate::segments::base_parts;
-        let (template, _) = base_parts();
+        let (template, hands) = base_hands();
         let rest = &template.mesh().positions;
         let triangles = &template.mesh().triangles;
-        let hands = hands(&template);
         let hand = &hands[0];
         // The "scan": the template with the forearm 3 cm longer, and beside the hand a strip of
         // twice the hand's area (the thigh it hangs against): not hand-like, so not turned, but
@@ -1012,11 +1011,10 @@ mod tests {
 
     #[test]
     fn a_longer_forearm_is_found_from_where_it_widens_into_the_hand() {
-        use crate::landmarks::estimate::segments::base_parts;
-        let (template, _) = base_parts();
+        let (template, hands) = base_hands();
         let rest = &template.mesh().positions;
         let triangles = &template.mesh().triangles;
-        for hand in &hands(&template) {
+        for hand in &hands {
             for longer in [0.0, 0.03, -0.02] {
                 // The "scan": the template with the forearm 3 cm longer (2 cm shorter), the
                 // hand carried along.

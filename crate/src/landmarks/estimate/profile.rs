@@ -203,13 +203,11 @@ pub fn register(
     joint: f64,
     start: f64,
 ) -> Option<f64> {
-    let mut best: Option<(f64, f64)> = None;
     let steps = 64;
-    for s in 0..=steps {
-        let f = start - SEARCH + 2.0 * SEARCH * s as f64 / steps as f64;
-        if f <= 0.05 || f >= 0.95 {
-            continue;
-        }
+    let candidates = (0..=steps)
+        .map(|s| start - SEARCH + 2.0 * SEARCH * s as f64 / steps as f64)
+        .filter(|f| *f > 0.05 && *f < 0.95);
+    least_cost(candidates, |f| {
         let pairs: Vec<(f64, f64)> = scan
             .iter()
             .enumerate()
@@ -226,17 +224,8 @@ pub fn register(
                 Some(((*w)?, at(template, ut)?))
             })
             .collect();
-        if pairs.len() < scan.len() / 3 {
-            continue;
-        }
-        let Some(cost) = gained_cost(&pairs) else {
-            continue;
-        };
-        if best.is_none_or(|(c, _)| cost < c) {
-            best = Some((cost, f));
-        }
-    }
-    best.map(|(_, f)| f)
+        (pairs.len() >= scan.len() / 3).then_some(pairs)
+    })
 }
 
 /// The shift (fraction of the line) that brings the template's profile, times a fitted gain,
@@ -251,26 +240,35 @@ pub fn register_shift(
 ) -> Option<f64> {
     let bins = |u: f64| (u * template.len() as f64) as usize;
     let (first, last) = (bins(window.0), bins(window.1).min(template.len() - 1));
-    let mut best: Option<(f64, f64)> = None;
-    for s in 0..=SHIFT_STEPS {
-        let shift = shifts.0 + (shifts.1 - shifts.0) * s as f64 / SHIFT_STEPS as f64;
+    let candidates =
+        (0..=SHIFT_STEPS).map(|s| shifts.0 + (shifts.1 - shifts.0) * s as f64 / SHIFT_STEPS as f64);
+    least_cost(candidates, |shift| {
         let pairs: Vec<(f64, f64)> = (first..=last)
             .filter_map(|i| {
                 let u = (i as f64 + 0.5) / template.len() as f64;
                 Some((at(scan, u + shift)?, template[i]?))
             })
             .collect();
-        if pairs.len() * 3 < (last + 1 - first) * 2 {
-            continue;
-        }
-        let Some(cost) = gained_cost(&pairs) else {
+        (pairs.len() * 3 >= (last + 1 - first) * 2).then_some(pairs)
+    })
+}
+
+/// Of `candidates`, the first with the least [`gained_cost`] of its (scan, template) width
+/// pairs (`pairs`: `None` when too little of the profiles overlaps there).
+fn least_cost(
+    candidates: impl Iterator<Item = f64>,
+    pairs: impl Fn(f64) -> Option<Vec<(f64, f64)>>,
+) -> Option<f64> {
+    let mut best: Option<(f64, f64)> = None;
+    for c in candidates {
+        let Some(cost) = pairs(c).and_then(|p| gained_cost(&p)) else {
             continue;
         };
-        if best.is_none_or(|(c, _)| cost < c) {
-            best = Some((cost, shift));
+        if best.is_none_or(|(least, _)| cost < least) {
+            best = Some((cost, c));
         }
     }
-    best.map(|(_, shift)| shift)
+    best.map(|(_, c)| c)
 }
 
 /// The mean squared difference of (scan, template) widths `pairs` with the template's times the
