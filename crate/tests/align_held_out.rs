@@ -98,10 +98,13 @@ fn held_out_subjects_are_fitted_within_tolerance_by_both_presets() {
 
 #[test]
 fn anchored_poses_the_arms_of_a_hands_on_hips_subject_before_the_warp() {
-    // Held-out subject 003 stands with its hands on its hips (elbows bent 82° and 87°). The
-    // `paper` preset bends the template's straight arms by the RBF alone: hands 7.1 mm mean,
-    // 44 mm worst, whole body 7.05 mm (docs/benchmarks.md). `anchored` poses head and arms to
-    // their landmarks first: hands 2.75 / 7.9 mm, whole body 5.72 mm.
+    // Held-out subject 003 stands with its hands on its hips (elbows bent 82° and 87°, the
+    // hands laid on the hips, wrists bent back). The `paper` preset bends the template's
+    // straight arms by the RBF alone: whole body 7.53 mm (docs/benchmarks.md). `anchored` poses
+    // head and arms to their landmarks first and turns each hand at the wrist onto its own
+    // landmarks: 7.06 mm, hands 5.23 mm mean, 38.5 mm worst (6.78 / 31.4 mm, whole body 7.52 mm,
+    // without the hands' turn). On the generator's earlier pose (forearms bent in the frontal
+    // plane, hands in front of the belly) it was 5.62 mm, hands 2.71 mm.
     let id = SubjectId {
         profile: PopulationProfile::HeldOut,
         seed: 912,
@@ -114,9 +117,9 @@ fn anchored_poses_the_arms_of_a_hands_on_hips_subject_before_the_warp() {
         c.fitted.mean_mm, hands.mean_mm, hands.max_mm
     );
     assert!(rms <= 1.4, "RMS {rms} mm");
-    assert!(c.fitted.mean_mm <= 6.2, "mean {} mm", c.fitted.mean_mm);
-    assert!(hands.mean_mm <= 4.0, "hands: mean {} mm", hands.mean_mm);
-    assert!(hands.max_mm <= 12.0, "hands: max {} mm", hands.max_mm);
+    assert!(c.fitted.mean_mm <= 7.3, "mean {} mm", c.fitted.mean_mm);
+    assert!(hands.mean_mm <= 5.6, "hands: mean {} mm", hands.mean_mm);
+    assert!(hands.max_mm <= 42.0, "hands: max {} mm", hands.max_mm);
 }
 
 #[test]

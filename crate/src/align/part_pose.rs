@@ -10,10 +10,14 @@
 //! that best maps its landmarks (those whose vertex the part dominates) to the scan's, with its
 //! joint held where the already-moved parent puts it. A part with fewer than [`MIN_LANDMARKS`]
 //! landmarks, and every part not posed, follows its parent. Vertices move by the blend
-//! Σ_p w_p(v)·T_p(v) (linear blend skinning).
+//! Σ_p w_p(v)·T_p(v) (linear blend skinning). Each hand is then turned about its wrist onto its
+//! own landmarks (`hand::turn_hand_onto`: the knuckles and the fingertip seen from the
+//! styloids), blended to nothing at the wrist: the forearm part carries the hand rigidly, and a
+//! hand laid on the hip is bent back 20–50° at the wrist.
 
 use nalgebra::Point3;
 
+use crate::landmarks::estimate::hand::{hands, turn_hand_onto};
 use crate::landmarks::estimate::segments::{blend, dominant_part, parts, PartPose};
 use crate::landmarks::LandmarkSet;
 use crate::mesh::similarity::{similarity, Similarity};
@@ -97,7 +101,10 @@ pub fn pose_parts(
             stretch: 1.0,
         })
         .collect();
-    let posed = blend(&parts, &poses, rest);
+    let mut posed = blend(&parts, &poses, rest);
+    for hand in hands(template) {
+        turn_hand_onto(&hand, &mut posed, template, scan_landmarks);
+    }
     let landmarks = template.landmarks_at(&posed);
     Some((posed, landmarks))
 }

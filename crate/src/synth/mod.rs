@@ -7,6 +7,7 @@
 //! * [`population`] — the distributions subjects are drawn from (population profiles);
 //! * [`skeleton`] — joints on the morphed body and linear-blend skinning;
 //! * [`subject`] — morph, pose, floor and scan one subject;
+//! * [`hand_on_hip`] — hands on hips as a real arm lays them (the elbow's hinge, the hand on the hip);
 //! * [`population_run`] — subject `i` of seed `S`, deterministic;
 //! * [`output`] — the output frame and the files written per subject;
 //! * [`bvh`] — ray casting against a triangle mesh;
@@ -15,6 +16,7 @@
 pub mod bvh;
 pub mod data;
 pub mod error;
+pub mod hand_on_hip;
 pub mod macros;
 pub mod output;
 pub mod population;

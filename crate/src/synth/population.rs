@@ -38,7 +38,7 @@
 //! | proportions | U(0.1, 1.0) |
 //! | ethnic mix | Dirichlet(½, ½, ½) |
 //! | each local target pair | N(0, 0.25²) plus, for the girth targets ([`GIRTH_TARGETS`]), one shared N(0, 0.2²) per subject; clipped to [−0.7, 0.7] |
-//! | arms | per subject one of: down (⅕; each arm U(8°, 15°) from the body), hands on hips (⅕; U(35°, 50°) from the body, elbow bent U(80°, 105°) towards the hip), raised (⅗; U(20°, 60°) from the body, the two arms within ±8° of each other) |
+//! | arms | per subject one of: down (⅕; each arm U(8°, 15°) from the body), hands on hips (⅕; U(35°, 50°) from the body, elbow bent U(80°, 105°) — less where the wrist would enter the body — the hand laid on the hip), raised (⅗; U(20°, 60°) from the body, the two arms within ±8° of each other) |
 //! | hip abduction (stance) | U(−3°, 8°) for both legs, plus N(0, 0.7°²) per leg |
 //! | trunk flexion / lateral tilt / turn | N(0, 3°²) clipped ±6° / N(0, 2°²) clipped ±4° / N(0, 4°²) clipped ±8° |
 //! | head flexion / lateral tilt / turn | N(0, 6°²) clipped ±12° / N(0, 3°²) clipped ±6° / N(0, 6°²) clipped ±12° |
@@ -219,7 +219,7 @@ pub const LOCAL_TARGETS: [(&str, &str, &str); 18] = [
 pub struct PoseParams {
     pub left_shoulder_abduction: f64,
     pub right_shoulder_abduction: f64,
-    /// Elbow bend in the frontal plane, the hand towards the hip (hands on hips).
+    /// Elbow flexion, the hand laid on the hip (hands on hips; `super::hand_on_hip`).
     pub left_elbow_flexion: f64,
     pub right_elbow_flexion: f64,
     /// Hip abduction: the foot away from the body's midline (feet apart; < 0 together).

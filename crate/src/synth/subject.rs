@@ -9,6 +9,7 @@ use crate::mesh::{bounding_box, Mesh};
 
 use super::data::MakeHumanData;
 use super::error::SynthError;
+use super::hand_on_hip::{arm_bones, bend_elbow, lay_hand, wrist_clearance, ArmBones};
 use super::macros::macro_target_weights;
 use super::population::{PoseParams, SubjectParams};
 use super::scanner::{scan, Scan, ScannerParams};
@@ -33,10 +34,6 @@ pub type RestAndPosed = (Vec<Point3<f64>>, Vec<Point3<f64>>);
 /// Bones the pose moves (MakeHuman default rig names).
 const TRUNK_BONE: &str = "spine04";
 const HEAD_BONE: &str = "neck01";
-const LEFT_ARM_BONE: &str = "upperarm01.L";
-const RIGHT_ARM_BONE: &str = "upperarm01.R";
-const LEFT_FOREARM_BONE: &str = "lowerarm01.L";
-const RIGHT_FOREARM_BONE: &str = "lowerarm01.R";
 const LEFT_THIGH_BONE: &str = "upperleg01.L";
 const RIGHT_THIGH_BONE: &str = "upperleg01.R";
 
@@ -47,7 +44,7 @@ pub fn make_subject<R: Rng>(
     scanner: &ScannerParams,
     rng: &mut R,
 ) -> Result<Subject, SynthError> {
-    let params = &fit_height(data, params);
+    let params = &fit_elbows(data, &fit_height(data, params))?;
     let (rest, posed) = shape_and_pose(data, params)?;
     let stature = extent_y(&rest);
     let surface = Mesh::new(posed, data.skin.triangles.clone());
@@ -120,7 +117,8 @@ pub fn shape_and_pose(
     let full = morphed(data, params);
     let heads = joint_positions(&data.rig, &data.model.joint_pos_idxs, &full)?;
     let mut rest: Vec<Point3<f64>> = data.provenance.iter().map(|&v| full[v as usize]).collect();
-    let pose = pose_rotations(data, &params.pose)?;
+    let mut pose = pose_rotations(data, &heads, &params.pose)?;
+    lay_hands(data, &heads, &rest, &params.pose, &mut pose)?;
     let transforms = bone_transforms(&data.rig, &heads, &pose);
     let mut posed = skin(&rest, &data.influences, &transforms);
     on_floor(&mut rest);
@@ -130,6 +128,7 @@ pub fn shape_and_pose(
 
 fn pose_rotations(
     data: &MakeHumanData,
+    heads: &[Point3<f64>],
     pose: &PoseParams,
 ) -> Result<HashMap<usize, Rotation3<f64>>, SynthError> {
     let bone = |name: &str| {
@@ -158,17 +157,150 @@ fn pose_rotations(
         rot(pose.head_flexion, pose.head_lateral, pose.head_turn),
     );
     let limbs = [
-        (LEFT_ARM_BONE, pose.left_shoulder_abduction),
-        (RIGHT_ARM_BONE, -pose.right_shoulder_abduction),
-        (LEFT_FOREARM_BONE, -pose.left_elbow_flexion),
-        (RIGHT_FOREARM_BONE, pose.right_elbow_flexion),
         (LEFT_THIGH_BONE, pose.left_hip_abduction),
         (RIGHT_THIGH_BONE, -pose.right_hip_abduction),
     ];
     for (name, degrees) in limbs {
         out.insert(bone(name)?, frontal(degrees));
     }
+    let arms = [
+        (
+            ArmBones::find(&data.rig, "L")?,
+            pose.left_shoulder_abduction,
+            pose.left_elbow_flexion,
+        ),
+        (
+            ArmBones::find(&data.rig, "R")?,
+            -pose.right_shoulder_abduction,
+            pose.right_elbow_flexion,
+        ),
+    ];
+    for (arm, abduction, flexion) in arms {
+        out.insert(arm.upper, frontal(abduction));
+        if flexion == 0.0 {
+            continue;
+        }
+        for (b, r) in bend_elbow(heads, &arm, flexion) {
+            let q = out.get(&b).copied().unwrap_or_else(Rotation3::identity);
+            out.insert(b, q * r);
+        }
+    }
     Ok(out)
+}
+
+/// The body's vertices no arm bone moves (`rest`, `heads` of the morphed body), posed by
+/// `rotations`: what a hand on the hip rests on.
+fn posed_body(
+    data: &MakeHumanData,
+    heads: &[Point3<f64>],
+    rest: &[Point3<f64>],
+    rotations: &HashMap<usize, Rotation3<f64>>,
+) -> Result<Vec<Point3<f64>>, SynthError> {
+    let arms = [
+        ArmBones::find(&data.rig, "L")?,
+        ArmBones::find(&data.rig, "R")?,
+    ];
+    let moved = arm_bones(&data.rig, &arms);
+    let unmoved: Vec<usize> = (0..rest.len())
+        .filter(|&v| data.influences[v].iter().all(|(b, _)| !moved[*b]))
+        .collect();
+    let body: Vec<Point3<f64>> = unmoved.iter().map(|&v| rest[v]).collect();
+    let influences: Vec<Vec<(usize, f64)>> = unmoved
+        .iter()
+        .map(|&v| data.influences[v].clone())
+        .collect();
+    Ok(skin(
+        &body,
+        &influences,
+        &bone_transforms(&data.rig, heads, rotations),
+    ))
+}
+
+/// The arms' bones with the pose's elbow flexion of each.
+fn bent_arms(data: &MakeHumanData, pose: &PoseParams) -> Result<[(ArmBones, f64); 2], SynthError> {
+    Ok([
+        (ArmBones::find(&data.rig, "L")?, pose.left_elbow_flexion),
+        (ArmBones::find(&data.rig, "R")?, pose.right_elbow_flexion),
+    ])
+}
+
+/// `params` with each bent elbow's flexion (hands on hips) no more than lets the wrist's joint
+/// stay [`WRIST_RADIUS`] out of the body: a hand is laid on the hip, not into it. The drawn
+/// flexion is kept when it does; otherwise the flexion is bisected down to
+/// [`MIN_HANDS_ON_HIPS_FLEXION`] (the wrist moves out and down as the elbow opens).
+pub fn fit_elbows(
+    data: &MakeHumanData,
+    params: &SubjectParams,
+) -> Result<SubjectParams, SynthError> {
+    let mut p = params.clone();
+    if p.pose.left_elbow_flexion == 0.0 && p.pose.right_elbow_flexion == 0.0 {
+        return Ok(p);
+    }
+    let full = morphed(data, params);
+    let heads = joint_positions(&data.rig, &data.model.joint_pos_idxs, &full)?;
+    let rest: Vec<Point3<f64>> = data.provenance.iter().map(|&v| full[v as usize]).collect();
+    let body = posed_body(data, &heads, &rest, &pose_rotations(data, &heads, &p.pose)?)?;
+    for (left, (arm, drawn)) in [true, false]
+        .into_iter()
+        .zip(bent_arms(data, &params.pose)?)
+    {
+        if drawn == 0.0 {
+            continue;
+        }
+        let mut clear = |flexion: f64| -> Result<bool, SynthError> {
+            let pose = &mut p.pose;
+            *(if left {
+                &mut pose.left_elbow_flexion
+            } else {
+                &mut pose.right_elbow_flexion
+            }) = flexion;
+            let rotations = pose_rotations(data, &heads, &p.pose)?;
+            Ok(wrist_clearance(&data.rig, &heads, &rotations, &body, &arm) >= WRIST_RADIUS)
+        };
+        let (mut lo, mut hi) = (MIN_HANDS_ON_HIPS_FLEXION.min(drawn), drawn);
+        if !clear(hi)? {
+            for _ in 0..20 {
+                let mid = 0.5 * (lo + hi);
+                if clear(mid)? {
+                    lo = mid;
+                } else {
+                    hi = mid;
+                }
+            }
+            hi = lo;
+        }
+        clear(hi)?;
+    }
+    Ok(p)
+}
+
+/// How far the wrist's joint stays out of the body with a hand on the hip, metres: the wrist's
+/// half thickness.
+const WRIST_RADIUS: f64 = 0.02;
+
+/// The least elbow flexion [`fit_elbows`] gives hands on hips, degrees.
+const MIN_HANDS_ON_HIPS_FLEXION: f64 = 45.0;
+
+/// Each bent arm's hand laid on the body (`hand_on_hip::lay_hand`), the body posed by `rotations`.
+fn lay_hands(
+    data: &MakeHumanData,
+    heads: &[Point3<f64>],
+    rest: &[Point3<f64>],
+    pose: &PoseParams,
+    rotations: &mut HashMap<usize, Rotation3<f64>>,
+) -> Result<(), SynthError> {
+    if pose.left_elbow_flexion == 0.0 && pose.right_elbow_flexion == 0.0 {
+        return Ok(());
+    }
+    let body = posed_body(data, heads, rest, rotations)?;
+    for (arm, flexion) in bent_arms(data, pose)? {
+        if flexion != 0.0 {
+            for (b, r) in lay_hand(&data.rig, heads, rotations, &body, &arm) {
+                rotations.insert(b, r);
+            }
+        }
+    }
+    Ok(())
 }
 
 fn extent_y(points: &[Point3<f64>]) -> f64 {

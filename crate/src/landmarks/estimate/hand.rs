@@ -37,6 +37,7 @@ use nalgebra::{Matrix3, Point3, Rotation3, UnitQuaternion, Vector3};
 use super::matching::Matching;
 use super::profile::{profile, register_shift, surface_samples, triangles_near, LimbLine};
 use super::segments::MAX_BEND;
+use crate::landmarks::LandmarkSet;
 use crate::mesh::normals::vertex_normals_into;
 use crate::mesh::similarity::similarity;
 use crate::mesh::Mesh;
@@ -330,6 +331,48 @@ fn pose_hand(
         }
     }
     Some(HandPose { slide, rotation })
+}
+
+/// The hand's landmarks beyond the wrist, after the side's prefix.
+const HAND_LANDMARKS: [&str; 3] = ["Metacarpal Phal. II", "Metacarpal Phal. V", "Dactylion"];
+
+/// Turns `hand` in `positions` about its wrist (each vertex by its share) so that its landmark
+/// vertices (the knuckles and the fingertip, seen from the midpoint of the styloids) point where
+/// `landmarks` (same frame and units) have them, seen from theirs: a wrist bent back, as a hand
+/// laid on the hip is. Needs both styloids and the three hand landmarks; returns whether the hand
+/// was turned.
+pub fn turn_hand_onto(
+    hand: &Hand,
+    positions: &mut [Point3<f64>],
+    template: &Template,
+    landmarks: &LandmarkSet,
+) -> bool {
+    let side = |name: &str| format!("{} {name}", hand.side);
+    let given = |name: &str| landmarks.get(&side(name));
+    let (Some(radial), Some(ulnar)) = (given("Radial Styloid"), given("Ulnar Styloid")) else {
+        return false;
+    };
+    let wrist = mid(positions, hand.styloids);
+    let to_wrist = nalgebra::center(&radial, &ulnar);
+    let mut from = vec![Point3::origin()];
+    let mut to = vec![Point3::origin()];
+    for name in HAND_LANDMARKS {
+        let (Some(v), Some(q)) = (template.landmark_vertex(&side(name)), given(name)) else {
+            return false;
+        };
+        from.push(Point3::from(positions[v as usize] - wrist));
+        to.push(Point3::from(q - to_wrist));
+    }
+    let Some(fit) = similarity(&from, &to, false) else {
+        return false;
+    };
+    turn_hand(
+        hand,
+        positions,
+        wrist,
+        &UnitQuaternion::from_matrix(&fit.rotation),
+    );
+    true
 }
 
 /// Slides the wrist `by` (m) along the forearm's unit `axis`: the forearm stretched from the
@@ -775,6 +818,51 @@ mod tests {
             scan: index,
             min_cos: 0.5,
             outlier_distance: 0.1,
+        }
+    }
+
+    #[test]
+    fn a_hand_is_turned_at_the_wrist_onto_its_landmarks() {
+        let (template, hands) = base_hands();
+        let rest = &template.mesh().positions;
+        for hand in &hands {
+            // The "scan": the template with this hand bent back 40° at the wrist and turned 20°
+            // about the forearm, then the whole body moved 1 m (only directions from the wrist
+            // count).
+            let mut bent = rest.to_vec();
+            let (wrist, axis) = wrist_and_axis(&bent, hand.styloids, hand.epicondyles);
+            let across = (bent[hand.styloids[0] as usize] - bent[hand.styloids[1] as usize])
+                .cross(&axis)
+                .normalize();
+            let turn = UnitQuaternion::from_scaled_axis(across * 40f64.to_radians())
+                * UnitQuaternion::from_scaled_axis(axis * 20f64.to_radians());
+            turn_hand(hand, &mut bent, wrist, &turn);
+            let shift = Vector3::new(1.0, 0.0, 0.0);
+            let moved: Vec<Point3<f64>> = bent.iter().map(|p| p + shift).collect();
+            let landmarks = template.landmarks_at(&moved);
+            let mut positions = rest.to_vec();
+            assert!(turn_hand_onto(hand, &mut positions, &template, &landmarks));
+            for name in HAND_LANDMARKS {
+                let v = template
+                    .landmark_vertex(&format!("{} {name}", hand.side))
+                    .unwrap() as usize;
+                // (The styloids turn a little with the hand: the wrist moves ≈ 1 mm.)
+                let off = (positions[v] - bent[v]).norm();
+                assert!(off < 3e-3, "{} {name}: {off} m", hand.side);
+            }
+            // Without the hand's landmarks nothing is turned.
+            let partial = LandmarkSet {
+                landmarks: landmarks
+                    .landmarks
+                    .iter()
+                    .filter(|l| !l.name.contains("Dactylion"))
+                    .cloned()
+                    .collect(),
+                ..LandmarkSet::default()
+            };
+            let mut untouched = rest.to_vec();
+            assert!(!turn_hand_onto(hand, &mut untouched, &template, &partial));
+            assert_eq!(&untouched, rest);
         }
     }
 

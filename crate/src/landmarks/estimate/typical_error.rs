@@ -7,7 +7,8 @@
 //! bent arm, the hands' pose about the wrist (its turn kept when the hand then matches better),
 //! the resting hand of a bent arm (its wrist placed by the forearm's profile, its turn about
 //! the forearm carried down the forearm), every wrist placed by the forearm's profile and the
-//! torso's length from the buttocks. Regenerate it with the same command when the method or the
+//! torso's length from the buttocks; the hands-on-hips subject has its hands laid on the hips
+//! (the generator's pose since the afternoon of 2026-11-25). Regenerate it with the same command when the method or the
 //! template's landmark vertices change; the held-out figures in docs/landmarks-estimate.md say
 //! how well it ranks the errors of subjects it was not measured on.
 
@@ -15,54 +16,54 @@ use crate::landmarks::CAESAR_LANDMARK_COUNT;
 
 /// Typical error (mm) per CAESAR landmark, CAESAR order.
 pub const TYPICAL_ERROR_MM: [f64; CAESAR_LANDMARK_COUNT] = [
-    13.6, // Sellion
+    13.5, // Sellion
     18.6, // Rt. Infraorbitale
     18.7, // Lt. Infraorbitale
-    14.9, // Supramenton
-    12.0, // Rt. Tragion
-    12.4, // Rt. Gonion
-    12.6, // Lt. Tragion
-    13.7, // Lt. Gonion
-    18.6, // Nuchale
-    14.7, // Rt. Clavicale
-    15.5, // Suprasternale
-    14.8, // Lt. Clavicale
-    20.6, // Rt. Thelion/Bustpoint
-    20.8, // Lt. Thelion/Bustpoint
+    15.3, // Supramenton
+    11.9, // Rt. Tragion
+    12.3, // Rt. Gonion
+    12.4, // Lt. Tragion
+    13.2, // Lt. Gonion
+    18.4, // Nuchale
+    14.5, // Rt. Clavicale
+    15.3, // Suprasternale
+    14.6, // Lt. Clavicale
+    20.7, // Rt. Thelion/Bustpoint
+    20.5, // Lt. Thelion/Bustpoint
     10.7, // Substernale
     14.9, // Rt. 10th Rib
-    14.2, // Rt. ASIS
-    15.1, // Lt. 10th Rib
-    15.2, // Lt. ASIS
-    11.7, // Rt. Iliocristale
+    13.9, // Rt. ASIS
+    15.0, // Lt. 10th Rib
+    15.4, // Lt. ASIS
+    11.8, // Rt. Iliocristale
     17.3, // Rt. Trochanterion
-    12.2, // Lt. Iliocristale
-    18.2, // Lt. Trochanterion
-    12.3, // Cervicale
+    13.0, // Lt. Iliocristale
+    18.8, // Lt. Trochanterion
+    12.4, // Cervicale
     6.1,  // 10th Rib Midspine
-    10.5, // Rt. PSIS
+    10.4, // Rt. PSIS
     10.8, // Lt. PSIS
     8.2,  // Waist, Preferred, Post.
-    20.8, // Rt. Acromion
-    17.1, // Rt. Axilla, Ant.
+    21.5, // Rt. Acromion
+    17.6, // Rt. Axilla, Ant.
     2.6,  // Rt. Radial Styloid
-    14.7, // Rt. Axilla, Post.
+    15.8, // Rt. Axilla, Post.
     9.7,  // Rt. Olecranon
-    12.1, // Rt. Humeral Lateral Epicn
-    10.0, // Rt. Humeral Medial Epicn
-    12.7, // Rt. Radiale
+    11.7, // Rt. Humeral Lateral Epicn
+    12.8, // Rt. Humeral Medial Epicn
+    12.5, // Rt. Radiale
     7.6,  // Rt. Metacarpal Phal. II
     6.8,  // Rt. Dactylion
     3.9,  // Rt. Ulnar Styloid
     7.9,  // Rt. Metacarpal Phal. V
-    20.3, // Lt. Acromion
-    16.9, // Lt. Axilla, Ant.
+    21.1, // Lt. Acromion
+    17.5, // Lt. Axilla, Ant.
     2.9,  // Lt. Radial Styloid
-    14.8, // Lt. Axilla, Post.
-    10.8, // Lt. Olecranon
-    12.3, // Lt. Humeral Lateral Epicn
-    10.5, // Lt. Humeral Medial Epicn
-    12.6, // Lt. Radiale
+    15.9, // Lt. Axilla, Post.
+    12.8, // Lt. Olecranon
+    12.0, // Lt. Humeral Lateral Epicn
+    13.3, // Lt. Humeral Medial Epicn
+    13.0, // Lt. Radiale
     8.8,  // Lt. Metacarpal Phal. II
     6.5,  // Lt. Dactylion
     4.3,  // Lt. Ulnar Styloid
@@ -72,8 +73,8 @@ pub const TYPICAL_ERROR_MM: [f64; CAESAR_LANDMARK_COUNT] = [
     8.4,  // Rt. Femoral Medial Epicn
     7.5,  // Rt. Metatarsal Phal. V
     7.1,  // Rt. Lateral Malleolus
-    12.9, // Rt. Medial Malleolus
-    17.1, // Rt. Sphyrion
+    12.8, // Rt. Medial Malleolus
+    17.0, // Rt. Sphyrion
     6.0,  // Rt. Metatarsal Phal. I
     6.8,  // Rt. Calcaneous, Post.
     4.0,  // Rt. Digit II
@@ -83,9 +84,9 @@ pub const TYPICAL_ERROR_MM: [f64; CAESAR_LANDMARK_COUNT] = [
     7.2,  // Lt. Metatarsal Phal. V
     8.4,  // Lt. Lateral Malleolus
     15.1, // Lt. Medial Malleolus
-    19.6, // Lt. Sphyrion
+    19.5, // Lt. Sphyrion
     6.7,  // Lt. Metatarsal Phal. I
     8.2,  // Lt. Calcaneous, Post.
     5.1,  // Lt. Digit II
-    13.6, // Crotch
+    13.7, // Crotch
 ];
