@@ -5,8 +5,8 @@
 //! fit with stretching legs, the arms' swing (raised too), no limb folded past 145°, the knees
 //! and elbows placed by the limbs' profiles (the knees by the front of the knee), the elbow of a
 //! bent arm, the hands' pose about the wrist (its turn kept when the hand then matches better),
-//! the resting hand of a bent arm (its wrist placed by the forearm's profile, its turn about
-//! the forearm carried down the forearm), every wrist placed by the forearm's profile and the
+//! the hand of a bent arm laid on the body (its turn about the forearm carried down the
+//! forearm), every wrist placed by the forearm's profile and the
 //! torso's length from the buttocks; the hands-on-hips subject has its hands laid on the hips
 //! (the generator's pose since the afternoon of 2026-11-25). Regenerate it with the same command when the method or the
 //! template's landmark vertices change; the held-out figures in docs/landmarks-estimate.md say
@@ -19,7 +19,7 @@ pub const TYPICAL_ERROR_MM: [f64; CAESAR_LANDMARK_COUNT] = [
     13.5, // Sellion
     18.6, // Rt. Infraorbitale
     18.7, // Lt. Infraorbitale
-    15.3, // Supramenton
+    15.7, // Supramenton
     11.9, // Rt. Tragion
     12.3, // Rt. Gonion
     12.4, // Lt. Tragion
@@ -34,11 +34,11 @@ pub const TYPICAL_ERROR_MM: [f64; CAESAR_LANDMARK_COUNT] = [
     14.9, // Rt. 10th Rib
     13.9, // Rt. ASIS
     15.0, // Lt. 10th Rib
-    15.4, // Lt. ASIS
-    11.8, // Rt. Iliocristale
-    17.3, // Rt. Trochanterion
+    15.5, // Lt. ASIS
+    11.9, // Rt. Iliocristale
+    17.2, // Rt. Trochanterion
     13.0, // Lt. Iliocristale
-    18.8, // Lt. Trochanterion
+    18.3, // Lt. Trochanterion
     12.4, // Cervicale
     6.1,  // 10th Rib Midspine
     10.4, // Rt. PSIS
@@ -49,26 +49,26 @@ pub const TYPICAL_ERROR_MM: [f64; CAESAR_LANDMARK_COUNT] = [
     2.6,  // Rt. Radial Styloid
     15.8, // Rt. Axilla, Post.
     9.7,  // Rt. Olecranon
-    11.7, // Rt. Humeral Lateral Epicn
-    12.8, // Rt. Humeral Medial Epicn
-    12.5, // Rt. Radiale
+    12.0, // Rt. Humeral Lateral Epicn
+    12.9, // Rt. Humeral Medial Epicn
+    12.7, // Rt. Radiale
     7.6,  // Rt. Metacarpal Phal. II
     6.8,  // Rt. Dactylion
     3.9,  // Rt. Ulnar Styloid
     7.9,  // Rt. Metacarpal Phal. V
-    21.1, // Lt. Acromion
+    21.2, // Lt. Acromion
     17.5, // Lt. Axilla, Ant.
     2.9,  // Lt. Radial Styloid
     15.9, // Lt. Axilla, Post.
     12.8, // Lt. Olecranon
-    12.0, // Lt. Humeral Lateral Epicn
-    13.3, // Lt. Humeral Medial Epicn
-    13.0, // Lt. Radiale
+    12.2, // Lt. Humeral Lateral Epicn
+    13.4, // Lt. Humeral Medial Epicn
+    13.3, // Lt. Radiale
     8.8,  // Lt. Metacarpal Phal. II
     6.5,  // Lt. Dactylion
     4.3,  // Lt. Ulnar Styloid
     7.6,  // Lt. Metacarpal Phal. V
-    12.9, // Rt. Knee Crease
+    13.0, // Rt. Knee Crease
     7.4,  // Rt. Femoral Lateral Epicn
     8.4,  // Rt. Femoral Medial Epicn
     7.5,  // Rt. Metatarsal Phal. V
@@ -78,7 +78,7 @@ pub const TYPICAL_ERROR_MM: [f64; CAESAR_LANDMARK_COUNT] = [
     6.0,  // Rt. Metatarsal Phal. I
     6.8,  // Rt. Calcaneous, Post.
     4.0,  // Rt. Digit II
-    12.4, // Lt. Knee Crease
+    12.5, // Lt. Knee Crease
     8.2,  // Lt. Femoral Lateral Epicn
     8.5,  // Lt. Femoral Medial Epicn
     7.2,  // Lt. Metatarsal Phal. V
