@@ -12,6 +12,7 @@
 
 pub mod bounds;
 pub mod normals;
+pub mod principal_axes;
 pub mod ray;
 pub mod similarity;
 pub mod summary;

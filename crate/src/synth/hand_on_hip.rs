@@ -12,6 +12,8 @@ use nalgebra::{Matrix3, Point3, Rotation3, UnitQuaternion, Vector3};
 
 use super::error::SynthError;
 use super::skeleton::{bone_transforms, Rig};
+use crate::mesh::principal_axes::principal_axes;
+use crate::mesh::similarity::centroid;
 
 /// One arm's bones (MakeHuman default rig), by index.
 #[derive(Debug, Clone, Copy)]
@@ -158,17 +160,14 @@ fn surface_at(body: &[Point3<f64>], point: &Point3<f64>, side: f64) -> (Point3<f
         .iter()
         .map(|p| (p - point).norm())
         .fold(f64::INFINITY, f64::min);
-    let patch: Vec<Vector3<f64>> = body
+    let patch: Vec<Point3<f64>> = body
         .iter()
         .filter(|p| (*p - point).norm() <= near + 0.05)
-        .map(|p| p.coords)
+        .copied()
         .collect();
-    let centre = patch.iter().sum::<Vector3<f64>>() / patch.len().max(1) as f64;
-    let scatter = patch.iter().fold(Matrix3::zeros(), |acc, p| {
-        acc + (p - centre) * (p - centre).transpose()
-    });
-    let eigen = scatter.symmetric_eigen();
-    let normal: Vector3<f64> = eigen.eigenvectors.column(eigen.eigenvalues.imin()).into();
+    let centre = centroid(&patch);
+    let normal: Vector3<f64> =
+        principal_axes(&patch).map_or_else(Vector3::zeros, |axes| axes.column(2).into());
     (Point3::from(centre), normal * normal.x.signum() * side)
 }
 

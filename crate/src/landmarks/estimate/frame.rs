@@ -7,7 +7,8 @@
 use nalgebra::{Matrix3, Point3, Vector3};
 use serde::Serialize;
 
-use crate::mesh::similarity::{centroid, Similarity};
+use crate::mesh::principal_axes::principal_axes;
+use crate::mesh::similarity::Similarity;
 
 /// One guess of the scan's frame: the similarity that takes the template (metres, y up, facing
 /// +z) onto the scan (metres), from the axes and extents alone.
@@ -46,29 +47,6 @@ pub fn nearest_axis(v: &Vector3<f64>) -> String {
     let k = v.iamax();
     let sign = if v[k] < 0.0 { '-' } else { '+' };
     format!("{sign}{}", ['x', 'y', 'z'][k])
-}
-
-/// The principal axes of `points` (`#P`), largest variance first, as the columns of a proper
-/// rotation; `None` for fewer than 3 points or a non-finite covariance.
-pub fn principal_axes(points: &[Point3<f64>]) -> Option<Matrix3<f64>> {
-    if points.len() < 3 {
-        return None;
-    }
-    let mu = centroid(points);
-    let mut cov = Matrix3::zeros();
-    for p in points {
-        let d = p.coords - mu;
-        cov += d * d.transpose();
-    }
-    if !cov.iter().all(|c| c.is_finite()) {
-        return None;
-    }
-    let eigen = cov.symmetric_eigen();
-    let mut order = [0usize, 1, 2];
-    order.sort_by(|&a, &b| eigen.eigenvalues[b].total_cmp(&eigen.eigenvalues[a]));
-    let e1 = eigen.eigenvectors.column(order[0]).into_owned();
-    let e2 = eigen.eigenvectors.column(order[1]).into_owned();
-    Some(Matrix3::from_columns(&[e1, e2, e1.cross(&e2)]))
 }
 
 /// The four frame candidates: template up (+y) along ±(first axis), template side (+x) along

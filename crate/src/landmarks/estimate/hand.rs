@@ -35,6 +35,7 @@ use super::profile::{profile, register_shift, surface_samples, triangles_near, L
 use super::segments::MAX_BEND;
 use crate::landmarks::LandmarkSet;
 use crate::mesh::normals::vertex_normals_into;
+use crate::mesh::principal_axes::principal_axes;
 use crate::mesh::similarity::similarity;
 use crate::mesh::Mesh;
 use crate::template::{Segment, Template};
@@ -406,12 +407,8 @@ fn laid_hand(
     if near.len() < 30 {
         return slid;
     }
-    let centre = near.iter().sum::<Vector3<f64>>() / near.len() as f64;
-    let scatter = near.iter().fold(Matrix3::zeros(), |acc, v| {
-        acc + (v - centre) * (v - centre).transpose()
-    });
-    let eigen = scatter.symmetric_eigen();
-    let mut normal: Vector3<f64> = eigen.eigenvectors.column(eigen.eigenvalues.imin()).into();
+    let points: Vec<Point3<f64>> = near.iter().map(|v| Point3::from(*v)).collect();
+    let mut normal: Vector3<f64> = principal_axes(&points)?.column(2).into();
     if normal.dot(&(elbow - wrist)) < 0.0 {
         normal = -normal;
     }
