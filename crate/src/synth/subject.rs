@@ -163,19 +163,8 @@ fn pose_rotations(
     for (name, degrees) in limbs {
         out.insert(bone(name)?, frontal(degrees));
     }
-    let arms = [
-        (
-            ArmBones::find(&data.rig, "L")?,
-            pose.left_shoulder_abduction,
-            pose.left_elbow_flexion,
-        ),
-        (
-            ArmBones::find(&data.rig, "R")?,
-            -pose.right_shoulder_abduction,
-            pose.right_elbow_flexion,
-        ),
-    ];
-    for (arm, abduction, flexion) in arms {
+    let abductions = [pose.left_shoulder_abduction, -pose.right_shoulder_abduction];
+    for ((arm, flexion), abduction) in bent_arms(data, pose)?.into_iter().zip(abductions) {
         out.insert(arm.upper, frontal(abduction));
         if flexion == 0.0 {
             continue;
