@@ -152,8 +152,9 @@ fn fine_keeps_the_base_correspondence_on_its_base_vertices() {
     // never-scanned mouth cavity got data, and the fine stage slid the base fit along the
     // surface. Now fine vertices get no more data weight than their base sources and the fine
     // stage holds each vertex along the carried base fit (`FineStageParams::tangential_weight`).
-    // Held-out subject 001, anchored: base 5.68 / 15.4 / 47.8 mm, fine 5.69 / 15.4 / 47.6 mm
-    // (mean / p95 / max; RMS 1.193 → 1.006 mm).
+    // Held-out subject 001, anchored: base 5.64 / 15.3 / 47.8 mm, fine 5.65 / 15.4 / 47.6 mm
+    // (mean / p95 / max; RMS 1.191 → 1.004 mm; with the hands turned onto their landmarks since
+    // 2026-11-25, 5.68 / 15.4 / 47.8 and 5.69 / 15.4 / 47.6 mm before).
     let id = SubjectId {
         profile: PopulationProfile::HeldOut,
         seed: 912,
