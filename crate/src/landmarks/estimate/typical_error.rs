@@ -19,7 +19,7 @@ pub const TYPICAL_ERROR_MM: [f64; CAESAR_LANDMARK_COUNT] = [
     13.5, // Sellion
     18.6, // Rt. Infraorbitale
     18.7, // Lt. Infraorbitale
-    15.7, // Supramenton
+    15.2, // Supramenton
     11.9, // Rt. Tragion
     12.3, // Rt. Gonion
     12.4, // Lt. Tragion
@@ -28,47 +28,47 @@ pub const TYPICAL_ERROR_MM: [f64; CAESAR_LANDMARK_COUNT] = [
     14.5, // Rt. Clavicale
     15.3, // Suprasternale
     14.6, // Lt. Clavicale
-    20.7, // Rt. Thelion/Bustpoint
-    20.5, // Lt. Thelion/Bustpoint
+    21.1, // Rt. Thelion/Bustpoint
+    20.6, // Lt. Thelion/Bustpoint
     10.7, // Substernale
     14.9, // Rt. 10th Rib
     13.9, // Rt. ASIS
     15.0, // Lt. 10th Rib
-    15.5, // Lt. ASIS
-    11.9, // Rt. Iliocristale
-    17.2, // Rt. Trochanterion
-    13.0, // Lt. Iliocristale
-    18.3, // Lt. Trochanterion
+    15.3, // Lt. ASIS
+    12.0, // Rt. Iliocristale
+    17.5, // Rt. Trochanterion
+    12.3, // Lt. Iliocristale
+    18.5, // Lt. Trochanterion
     12.4, // Cervicale
     6.1,  // 10th Rib Midspine
     10.4, // Rt. PSIS
-    10.8, // Lt. PSIS
+    10.7, // Lt. PSIS
     8.2,  // Waist, Preferred, Post.
     21.5, // Rt. Acromion
-    17.6, // Rt. Axilla, Ant.
+    17.7, // Rt. Axilla, Ant.
     2.6,  // Rt. Radial Styloid
     15.8, // Rt. Axilla, Post.
     9.7,  // Rt. Olecranon
-    12.0, // Rt. Humeral Lateral Epicn
+    11.9, // Rt. Humeral Lateral Epicn
     12.9, // Rt. Humeral Medial Epicn
-    12.7, // Rt. Radiale
+    12.6, // Rt. Radiale
     7.6,  // Rt. Metacarpal Phal. II
     6.8,  // Rt. Dactylion
     3.9,  // Rt. Ulnar Styloid
     7.9,  // Rt. Metacarpal Phal. V
-    21.2, // Lt. Acromion
+    21.1, // Lt. Acromion
     17.5, // Lt. Axilla, Ant.
     2.9,  // Lt. Radial Styloid
     15.9, // Lt. Axilla, Post.
     12.8, // Lt. Olecranon
-    12.2, // Lt. Humeral Lateral Epicn
+    12.1, // Lt. Humeral Lateral Epicn
     13.4, // Lt. Humeral Medial Epicn
-    13.3, // Lt. Radiale
+    13.1, // Lt. Radiale
     8.8,  // Lt. Metacarpal Phal. II
     6.5,  // Lt. Dactylion
     4.3,  // Lt. Ulnar Styloid
     7.6,  // Lt. Metacarpal Phal. V
-    13.0, // Rt. Knee Crease
+    12.9, // Rt. Knee Crease
     7.4,  // Rt. Femoral Lateral Epicn
     8.4,  // Rt. Femoral Medial Epicn
     7.5,  // Rt. Metatarsal Phal. V
@@ -78,7 +78,7 @@ pub const TYPICAL_ERROR_MM: [f64; CAESAR_LANDMARK_COUNT] = [
     6.0,  // Rt. Metatarsal Phal. I
     6.8,  // Rt. Calcaneous, Post.
     4.0,  // Rt. Digit II
-    12.5, // Lt. Knee Crease
+    12.4, // Lt. Knee Crease
     8.2,  // Lt. Femoral Lateral Epicn
     8.5,  // Lt. Femoral Medial Epicn
     7.2,  // Lt. Metatarsal Phal. V
