@@ -572,7 +572,7 @@ fn off_forearm(p: &Point3<f64>, wrist: Point3<f64>, elbow: Point3<f64>) -> bool 
 /// within [`KNEE_RADIUS`] of the axis, every [`KNEE_STEP`]; the wrist is the knee of the two
 /// straight lines, joined, that fit those heights best (least squares), searched over the
 /// slide's range. (The hip beyond the wrist widens the forearm's profile there, which put laid
-/// wrists 17–28 mm short; from the knee they are −15…+8 mm along the forearm, 10 of 12 within
+/// wrists 17–28 mm short; from the knee they are −15…+4 mm along the forearm, 11 of 12 within
 /// 5 mm, held-out seeds 7531 and 8383.) `None` when the forearm does not fall at least [`KNEE_TURN`] more
 /// steeply than the hand, or too few heights are found either side.
 fn wrist_from_knee(
