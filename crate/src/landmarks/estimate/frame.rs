@@ -89,10 +89,18 @@ pub fn frame_candidates(
 /// facing (+z) each go within [`SAME_FRAME_DEG`] of the same direction (the candidates differ
 /// by half turns; a body's pose by far less).
 pub fn same_frame(a: &Similarity, b: &Similarity) -> bool {
-    let close = |axis: Vector3<f64>| {
-        (a.rotation * axis).angle(&(b.rotation * axis)) <= SAME_FRAME_DEG.to_radians()
-    };
-    close(Vector3::y()) && close(Vector3::z())
+    same_up(a, b) && close(a, b, Vector3::z())
+}
+
+/// Whether two template → scan similarities agree on which way is up: the template's up (+y)
+/// goes within [`SAME_FRAME_DEG`] of the same direction.
+pub fn same_up(a: &Similarity, b: &Similarity) -> bool {
+    close(a, b, Vector3::y())
+}
+
+/// Whether `a` and `b` take the template's `axis` within [`SAME_FRAME_DEG`] of each other.
+fn close(a: &Similarity, b: &Similarity, axis: Vector3<f64>) -> bool {
+    (a.rotation * axis).angle(&(b.rotation * axis)) <= SAME_FRAME_DEG.to_radians()
 }
 
 /// See [`same_frame`].
