@@ -166,7 +166,8 @@ fn every_frame_and_pose_is_found_and_the_landmarks_land_near_the_truth() {
             pose.name
         );
         assert!(e.confidence.iter().all(|c| (0.0..=1.0).contains(c)));
-        // The confidence follows the typical error: a toe above the knee crease.
+        // The confidence follows the typical error and the definition's spread: a toe (a
+        // point) above the knee crease (a level).
         let at = |name: &str| {
             CAESAR_LANDMARKS
                 .iter()
@@ -356,6 +357,19 @@ fn the_command_line_writes_every_format_and_aligns_without_landmarks() {
         assert_eq!(report["units"], "centimetres");
         assert_eq!(report["given"], 5);
         assert_eq!(report["landmarks"].as_array().unwrap().len(), 73);
+        // Each landmark names its definition's sharpness, which its confidence takes in.
+        let entry = |name: &str| {
+            report["landmarks"]
+                .as_array()
+                .unwrap()
+                .iter()
+                .find(|l| l["name"] == name)
+                .unwrap()
+                .clone()
+        };
+        assert_eq!(entry("Sellion")["sharpness"], "point");
+        assert_eq!(entry("Rt. ASIS")["sharpness"], "prominence");
+        assert_eq!(entry("Waist, Preferred, Post.")["sharpness"], "level");
         let set = read_landmarks(&std::fs::read(&out).unwrap(), &s(&out)).unwrap();
         assert_eq!(set.landmarks.len(), 73, "{ext}");
         // .lnd is in millimetres with 3 decimals; the scan is in centimetres.

@@ -2,9 +2,10 @@
 //! definition (what an anthropometrist palpates or looks for), not of any one scan. The reasons,
 //! landmark by landmark, are in `docs/template.md` ("Landmarks").
 //!
-//! The estimate reads it for its confidence: a landmark defined as a level on a smooth surface
-//! (Waist Preferred Post., 10th Rib Midspine) is uncertain along that surface however well the
-//! body is fitted, and independent placements of it spread by centimetres.
+//! The estimate reads its spread for the confidence (`landmarks/estimate/confidence.rs`): a
+//! landmark defined as a level on a smooth surface (Waist Preferred Post., 10th Rib Midspine) is
+//! uncertain along that surface however well the body is fitted, and independent placements of
+//! it spread by centimetres.
 
 /// How sharply a landmark's definition fixes it on the surface.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -22,15 +23,6 @@ pub enum DefinitionSharpness {
 }
 
 impl DefinitionSharpness {
-    /// A weight in (0, 1] for the estimate's confidence: 1, 0.6, 0.3.
-    pub fn weight(self) -> f64 {
-        match self {
-            Self::Point => 1.0,
-            Self::Prominence => 0.6,
-            Self::Level => 0.3,
-        }
-    }
-
     /// The typical spread (m) of independent placements along the surface: 5, 10, 25 mm.
     pub fn spread(self) -> f64 {
         match self {
@@ -137,7 +129,7 @@ mod tests {
         assert_eq!(definition_sharpness("Rt. ASIS"), Some(Prominence));
         assert_eq!(definition_sharpness("Lt. ASIS"), Some(Prominence));
         assert_eq!(definition_sharpness("Waist, Preferred, Post."), Some(Level));
-        assert!(Point.weight() > Prominence.weight() && Prominence.weight() > Level.weight());
+        assert!(Point.spread() < Prominence.spread() && Prominence.spread() < Level.spread());
         assert!(Point.spread() < Level.spread());
     }
 }

@@ -1,12 +1,15 @@
 //! Each estimated landmark's confidence in [0, 1]: how far the estimate typically lands from
-//! the landmark (its mean error on the development subjects, `typical_error.rs`) and how well
-//! the fit went around it.
+//! the template's landmark (its mean error on the development subjects, `typical_error.rs`),
+//! how far apart independent placements of the landmark's definition lie on a body (its
+//! definition's sharpness, `landmarks/sharpness.rs`), and how well the fit went around it.
 //!
-//! confidence = exp(−typical / `confidence_error` − (residual / `confidence_residual`)²), the
+//! expected = √(typical² + spread²): the estimate's error and the definition's spread are
+//! independent, so their squares add.
+//! confidence = exp(−expected / `confidence_error` − (residual / `confidence_residual`)²), the
 //! residual being the RMS distance to the scan of the fitted vertices within
 //! `confidence_radius` of the landmark vertex. Measured against alternatives (the surface's
-//! sharpness from the template's normals, the residual alone) in docs/landmarks-estimate.md;
-//! [`spearman`] is the measure.
+//! sharpness from the template's normals, the residual alone, no spread) in
+//! docs/landmarks-estimate.md; [`spearman`] is the measure.
 
 use nalgebra::Point3;
 
@@ -42,9 +45,14 @@ pub fn residual(distances: &[f64], neighbours: &[u32], missing: f64) -> f64 {
     (sum / neighbours.len().max(1) as f64).sqrt()
 }
 
-/// The confidence of a landmark with `typical` error (m) and local `residual` (m).
-pub fn confidence(typical: f64, residual: f64, params: &EstimateParams) -> f64 {
-    (-typical / params.confidence_error - (residual / params.confidence_residual).powi(2)).exp()
+/// The confidence of a landmark with `typical` error (m) of the estimate, `spread` (m) of
+/// independent placements of its definition ([`DefinitionSharpness::spread`]) and local
+/// `residual` (m).
+///
+/// [`DefinitionSharpness::spread`]: crate::landmarks::DefinitionSharpness::spread
+pub fn confidence(typical: f64, spread: f64, residual: f64, params: &EstimateParams) -> f64 {
+    let expected = typical.hypot(spread);
+    (-expected / params.confidence_error - (residual / params.confidence_residual).powi(2)).exp()
 }
 
 /// Spearman's rank correlation of `a` and `b` (equal lengths; ties get their mean rank): how
@@ -92,14 +100,20 @@ mod tests {
     use super::*;
 
     #[test]
-    fn confidence_falls_with_the_residual() {
+    fn confidence_falls_with_the_error_the_spread_and_the_residual() {
         let params = EstimateParams::default();
-        assert_eq!(confidence(0.0, 0.0, &params), 1.0);
-        let c = confidence(params.confidence_error, 0.0, &params);
+        assert_eq!(confidence(0.0, 0.0, 0.0, &params), 1.0);
+        let c = confidence(params.confidence_error, 0.0, 0.0, &params);
         assert!((c - (-1.0f64).exp()).abs() < 1e-12);
-        let c = confidence(0.0, params.confidence_residual, &params);
+        let c = confidence(0.0, params.confidence_error, 0.0, &params);
         assert!((c - (-1.0f64).exp()).abs() < 1e-12);
-        assert!(confidence(0.008, 0.004, &params) > confidence(0.03, 0.004, &params));
+        let c = confidence(0.0, 0.0, params.confidence_residual, &params);
+        assert!((c - (-1.0f64).exp()).abs() < 1e-12);
+        // 3-4-5: a 12 mm typical error on a landmark whose placements spread by 9 mm.
+        let c = confidence(0.012, 0.009, 0.0, &params);
+        assert!((c - (-0.015 / params.confidence_error).exp()).abs() < 1e-12);
+        assert!(confidence(0.008, 0.005, 0.004, &params) > confidence(0.03, 0.005, 0.004, &params));
+        assert!(confidence(0.01, 0.005, 0.0, &params) > confidence(0.01, 0.025, 0.0, &params));
         let r = residual(&[0.003, f64::NAN, 0.004], &[0, 2], 0.05);
         assert!((r - (0.0000125f64).sqrt()).abs() < 1e-12);
         assert_eq!(residual(&[f64::NAN], &[0], 0.05), 0.05);

@@ -24,6 +24,9 @@ pub struct LandmarkReport {
     pub name: &'static str,
     /// 0..1; 1 for a given landmark.
     pub confidence: f64,
+    /// How sharply the landmark's definition pins it on a body: `point`, `prominence` or
+    /// `level` (`landmarks/sharpness.rs`); part of the confidence.
+    pub sharpness: &'static str,
     /// Taken from the given file, never moved.
     pub given: bool,
     /// Listed in `flagged`.

@@ -13,7 +13,8 @@
 //! 5. the landmark-free fine alignment (paper §3.2, stiff to soft), the unflagged given landmarks
 //!    anchored;
 //! 6. the landmark vertices read off the fit, each with a confidence from its typical error on
-//!    the development subjects and the fit's local residual (`confidence.rs`); given
+//!    the development subjects, its definition's spread on a body and the fit's local residual
+//!    (`confidence.rs`); given
 //!    landmarks are returned exactly as given.
 
 use std::borrow::Cow;
@@ -37,7 +38,9 @@ use super::typical_error::TYPICAL_ERROR_MM;
 use crate::align::{
     data_weights, fine_align, AlignObserver, FineAlignInput, FineAlignParams, SurfaceIndex,
 };
-use crate::landmarks::{LandmarkSet, CAESAR_LANDMARKS, CAESAR_LANDMARK_COUNT};
+use crate::landmarks::{
+    definition_sharpness, LandmarkSet, CAESAR_LANDMARKS, CAESAR_LANDMARK_COUNT,
+};
 use crate::mesh::bounding_extent;
 use crate::mesh::similarity::similarity;
 use crate::mesh::units::{detect_units, Units};
@@ -294,6 +297,9 @@ pub fn estimate_landmarks(
     let mut is_given = Vec::with_capacity(CAESAR_LANDMARK_COUNT);
     let mut landmarks = Vec::with_capacity(CAESAR_LANDMARK_COUNT);
     for (k, &v) in landmark_vertices.iter().enumerate() {
+        let name = CAESAR_LANDMARKS[k].name;
+        let sharpness =
+            definition_sharpness(name).expect("every CAESAR landmark has a definition sharpness");
         let given_here = given.iter().find(|(i, _)| *i == k).map(|(_, p)| *p);
         let (position, c) = match given_here {
             Some(p) => (Some(p), 1.0),
@@ -305,14 +311,14 @@ pub fn estimate_landmarks(
                     &near[k],
                     params.outlier_distance,
                 );
-                let c = confidence(TYPICAL_ERROR_MM[k] / 1000.0, r, params);
+                let c = confidence(TYPICAL_ERROR_MM[k] / 1000.0, sharpness.spread(), r, params);
                 (finite.then(|| p / to_m), if finite { c } else { 0.0 })
             }
         };
-        let name = CAESAR_LANDMARKS[k].name;
         landmarks.push(LandmarkReport {
             name,
             confidence: c,
+            sharpness: sharpness.name(),
             given: given_here.is_some(),
             flagged: flagged.iter().any(|f| f.name == name),
         });
