@@ -83,6 +83,10 @@ test('a scan without landmarks gets an estimate; move one by clicking, align, ex
   const estimated = page.getByTestId('landmark-list').locator('li[data-state="estimated"]');
   await expect(estimated).toHaveCount(73);
   await expect(page.locator('#viewport')).toHaveAttribute('data-scan-markers', '73');
+  // Each row's tooltip says how sharply its landmark is defined, which its confidence takes in.
+  await expect(row(page, 'Waist, Preferred, Post.')).toHaveAttribute('data-sharpness', 'level');
+  await expect(row(page, 'Waist, Preferred, Post.')).toHaveAttribute('title', /confidence \d+ %; defined as a level/);
+  await expect(row(page, 'Sellion')).toHaveAttribute('data-sharpness', 'point');
 
   // The estimate against the sample's true landmarks (which the page never saw).
   const truePositions = truth();

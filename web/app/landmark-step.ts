@@ -9,7 +9,7 @@
 // file does.
 import { CancelledError, type CoreClient } from '../client/core-client';
 import { baseName } from '../shared/file-kind';
-import type { EstimateReport, LandmarkEntry, LandmarkPrediction, Point, SuspiciousLandmark } from '../shared/landmark-entry';
+import type { EstimateReport, LandmarkEntry, LandmarkPrediction, Point, Sharpness, SuspiciousLandmark } from '../shared/landmark-entry';
 import { METRES_PER_UNIT } from '../shared/results';
 import type { TemplateData } from '../shared/template-data';
 import { download } from '../ui/download';
@@ -33,6 +33,8 @@ export class LandmarkStep {
   private facts: LandmarkFacts | null = null;
   private estimate: EstimateView = { state: 'none' };
   private suspicious: SuspiciousLandmark[] | null = null;
+  /** Each landmark's definition sharpness, from the first estimate's report (a property of the name). */
+  private sharpness: ReadonlyMap<string, Sharpness> = new Map();
   /** The last estimate's prediction for this scan, with the scan scale it was made at. */
   private prediction: (LandmarkPrediction & { scale: number }) | null = null;
   /** What the list shows before anything is loaded: every landmark absent. */
@@ -136,6 +138,7 @@ export class LandmarkStep {
       if (!current()) return;
       edits.fillEstimate(result.names, result.positions, result.confidence, result.given);
       this.suspicious = result.report.flagged;
+      this.sharpness = new Map(result.report.landmarks.map((l) => [l.name, l.sharpness]));
       this.prediction = { ...result.prediction, scale: this.session.scanScale };
       this.estimate = { state: 'done', assumed: this.assumed(result.report), seconds: result.workerMs / 1000 };
       document.body.dataset.estimateWorkerMs = result.workerMs.toFixed(0);
@@ -255,6 +258,7 @@ export class LandmarkStep {
       entries,
       selected: this.selected,
       flagged: new Set(this.suspicious?.map((s) => s.name) ?? []),
+      sharpness: this.sharpness,
       tools: {
         estimate: this.estimate,
         absent: entries.filter((e) => !e.position).length,

@@ -26,8 +26,16 @@ export interface SuspiciousLandmark {
   expected: [number, number, number];
 }
 
+/**
+ * How sharply a landmark's definition pins it on a body (`DefinitionSharpness` in the core): part of
+ * the estimate's confidence.
+ */
+export type Sharpness = 'point' | 'prominence' | 'level';
+
 /** The core's report of a landmark estimate (`EstimateReport`; the fields the page uses). */
 export interface EstimateReport {
+  /** The 73 CAESAR landmarks in file order. */
+  landmarks: { name: string; sharpness: Sharpness }[];
   /** The frame assumed: the scan's axis nearest the body's up and facing directions. */
   frame: { up_axis: string; facing_axis: string };
   given: number;

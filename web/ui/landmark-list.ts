@@ -1,7 +1,7 @@
 // The 73 CAESAR landmarks of the current set, each given / estimated / edited / absent (with the
-// estimate's confidence, and a flag when the core finds it suspicious). A click picks one to place;
-// hovering one shows it on the template.
-import type { LandmarkEntry, LandmarkState } from '../shared/landmark-entry';
+// estimate's confidence and, in its tooltip, how sharply the landmark is defined; a flag when the
+// core finds it suspicious). A click picks one to place; hovering one shows it on the template.
+import type { LandmarkEntry, LandmarkState, Sharpness } from '../shared/landmark-entry';
 import { h } from './dom';
 
 export interface LandmarkListActions {
@@ -12,6 +12,13 @@ export interface LandmarkListActions {
 
 const MARKS: Record<LandmarkState, string> = { given: '✓', estimated: '≈', edited: '✎', absent: '✗' };
 
+/** Why a landmark's confidence is what it is, by its definition's sharpness (docs/template.md). */
+const DEFINED_AS: Record<Sharpness, string> = {
+  point: 'defined as a point (a tip, notch or bony point under thin skin): placed within millimetres',
+  prominence: 'defined as a prominence felt through soft tissue: placed within about a centimetre',
+  level: 'defined as a level on a smooth surface: people placing it differ by centimetres',
+};
+
 export class LandmarkList {
   readonly element = h('ul', { class: 'landmark-list editable', 'data-testid': 'landmark-list' });
 
@@ -20,10 +27,17 @@ export class LandmarkList {
   }
 
   /** `clickable`: whether picking a landmark means anything (a scan to place it on is loaded). */
-  render(entries: readonly LandmarkEntry[], selected: string | null, flagged: ReadonlySet<string>, clickable: boolean): void {
+  render(
+    entries: readonly LandmarkEntry[],
+    selected: string | null,
+    flagged: ReadonlySet<string>,
+    sharpness: ReadonlyMap<string, Sharpness>,
+    clickable: boolean,
+  ): void {
     this.element.replaceChildren(
       ...entries.map((e) => {
         const confidence = e.confidence === null ? '' : `${Math.round(e.confidence * 100)} %`;
+        const defined = sharpness.get(e.name);
         const row = h(
           'li',
           {
@@ -34,7 +48,8 @@ export class LandmarkList {
             'data-selected': String(e.name === selected),
             'data-flagged': String(flagged.has(e.name)),
             'data-position-mm': e.position?.map((v) => (v * 1000).toFixed(4)).join(','),
-            title: `${e.name}: ${e.state}${confidence ? `, confidence ${confidence}` : ''}`,
+            'data-sharpness': defined,
+            title: `${e.name}: ${e.state}${confidence ? `, confidence ${confidence}` : ''}${defined ? `; ${DEFINED_AS[defined]}` : ''}`,
           },
           h('span', { class: 'mark', 'aria-label': e.state }, MARKS[e.state]),
           h('span', { class: 'name' }, e.name),

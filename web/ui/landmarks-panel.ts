@@ -1,7 +1,7 @@
 // The Landmarks panel: the landmark file read (name, found / missing / unknown counts, units),
 // then the landmark editor (its controls, where the hovered landmark sits on the template, and the
 // 73 CAESAR landmarks of the current set), then the names that are not CAESAR landmarks.
-import type { LandmarkEntry } from '../shared/landmark-entry';
+import type { LandmarkEntry, Sharpness } from '../shared/landmark-entry';
 import type { LandmarkReport } from '../shared/results';
 import { byId, h } from './dom';
 import { LandmarkList, type LandmarkListActions } from './landmark-list';
@@ -20,6 +20,8 @@ export interface EditorView {
   entries: readonly LandmarkEntry[];
   selected: string | null;
   flagged: ReadonlySet<string>;
+  /** Each landmark's definition sharpness, from the last estimate's report (empty before one). */
+  sharpness: ReadonlyMap<string, Sharpness>;
   tools: ToolsView;
 }
 
@@ -38,7 +40,7 @@ export class LandmarksPanel {
     const title = h('h2', {}, `CAESAR landmarks (${editor?.entries.length ?? 0})`);
     if (editor) {
       this.tools.render(editor.tools);
-      this.list.render(editor.entries, editor.selected, editor.flagged, editor.tools.hasScan);
+      this.list.render(editor.entries, editor.selected, editor.flagged, editor.sharpness, editor.tools.hasScan);
     }
     const editing = editor ? [h('h2', {}, 'Edit'), this.tools.element, this.guide.element, title, this.list.element] : [];
     if (!facts) {
