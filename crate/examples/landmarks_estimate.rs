@@ -30,7 +30,8 @@
 //! the true ones: what their error costs it. `--arms` gives each arm's bend, the upper arm's and
 //! the forearm's length (true and estimated: acromion → epicondyles' midpoint → styloids'), the
 //! forearm's turn about its own axis (the styloids' direction across it, estimate against
-//! truth) and splits each elbow, wrist and hand landmark's error along the upper arm, along the
+//! truth), the hand's direction (styloids → Dactylion) against the truth, the knuckles' turn
+//! against the styloids about the forearm (true and estimated) and splits each elbow, wrist and hand landmark's error along the upper arm, along the
 //! forearm and out of their plane (`--knees` the knees'). Also printed: the mean and worst error per landmark
 //! group and Spearman's ρ between the confidence and the error (the confidence should fall as the
 //! error grows: ρ < 0).
@@ -510,8 +511,53 @@ mod native {
                 ),
                 _ => String::new(),
             };
+            // The hand's direction (mid-styloids → Dactylion), estimate against truth, and its
+            // bend from the forearm.
+            let hand = match (
+                t("Dactylion"),
+                e("Dactylion"),
+                e("Radial Styloid"),
+                e("Ulnar Styloid"),
+            ) {
+                (Some(td), Some(ed), Some(ers), Some(eus)) => {
+                    let (th, eh) = (
+                        td - nalgebra::center(&rs, &us),
+                        ed - nalgebra::center(&ers, &eus),
+                    );
+                    format!(
+                        ", hand {:.0}° off (bent {:.0}° from the forearm, estimate {:.0}°)",
+                        th.angle(&eh).to_degrees(),
+                        th.angle(&fore).to_degrees(),
+                        eh.angle(&fore).to_degrees()
+                    )
+                }
+                _ => String::new(),
+            };
+            // The hand's turn against the wrist about the forearm's axis: the knuckles' line
+            // (Metacarpal Phal. II − V) against the styloids', true and estimated.
+            let knuckles = |rs: Point3<f64>, us: Point3<f64>, m2: Point3<f64>, m5: Point3<f64>| {
+                let axis = fore.normalize();
+                let flat = |v: Vector3<f64>| v - axis * v.dot(&axis);
+                let (a, b) = (flat(rs - us), flat(m2 - m5));
+                a.cross(&b).dot(&axis).atan2(a.dot(&b)).to_degrees()
+            };
+            let knuckle = match (
+                t("Metacarpal Phal. II"),
+                t("Metacarpal Phal. V"),
+                e("Radial Styloid"),
+                e("Ulnar Styloid"),
+                e("Metacarpal Phal. II"),
+                e("Metacarpal Phal. V"),
+            ) {
+                (Some(m2), Some(m5), Some(ers), Some(eus), Some(em2), Some(em5)) => format!(
+                    ", knuckles turned {:+.0}° from the styloids (estimate {:+.0}°)",
+                    knuckles(rs, us, m2, m5),
+                    knuckles(ers, eus, em2, em5)
+                ),
+                _ => String::new(),
+            };
             let mut line = format!(
-                "           {side} arm bent {bend:.0}°{shape}, forearm turned {roll}{hinge}, {what} (along upper / along forearm / out mm):"
+                "           {side} arm bent {bend:.0}°{shape}, forearm turned {roll}{hinge}{hand}{knuckle}, {what} (along upper / along forearm / out mm):"
             );
             let names = [
                 "Humeral Lateral Epicn",

@@ -130,6 +130,8 @@ const PROFILE_WINDOW: (f64, f64) = (-0.06, 0.05);
 pub struct Hand {
     pub side: &'static str,
     styloids: [u32; 2],
+    /// Metacarpal Phal. II and V: the knuckles' line, across the palm.
+    knuckles: [u32; 2],
     epicondyles: [u32; 2],
     acromion: u32,
     share: Vec<(u32, f64)>,
@@ -172,8 +174,9 @@ pub fn hands(template: &Template) -> Vec<Hand> {
                 vertex(format!("{side} {b}"))?,
             ])
         };
-        let (Some(styloids), Some(epicondyles), Some(acromion)) = (
+        let (Some(styloids), Some(knuckles), Some(epicondyles), Some(acromion)) = (
             pair("Radial Styloid", "Ulnar Styloid"),
+            pair("Metacarpal Phal. II", "Metacarpal Phal. V"),
             pair("Humeral Lateral Epicn", "Humeral Medial Epicn"),
             vertex(format!("{side} Acromion")),
         ) else {
@@ -226,6 +229,7 @@ pub fn hands(template: &Template) -> Vec<Hand> {
         out.push(Hand {
             side,
             styloids,
+            knuckles,
             epicondyles,
             acromion,
             share,
@@ -409,8 +413,10 @@ pub fn turn_hand_onto(
 /// [`LAID_STRIP_HALF_WIDTH`]) stands farthest out of the plane on average, tilted out of the plane
 /// by the slope of the strip's top less that of the template's hand laid flat ([`laid_slope`]), its
 /// palm against the plane. The hand turns about the wrist onto that frame (its axis from the wrist
-/// to its own vertices' centroid, its palm from that and the styloids, a mirror image on each
-/// side), and the turn's part about the forearm is carried down the forearm ([`twist_forearm`]).
+/// to its own vertices' centroid, its palm from that and the knuckles' line, a mirror image on
+/// each side: a hand lies on its metacarpals, and the styloids' line is turned ≈ 25° from the
+/// knuckles' at rest), and the turn's part about the forearm is carried down the forearm
+/// ([`twist_forearm`]).
 /// `None` when the region or every strip has too few points and the wrist was not slid; the hand
 /// then stays as it was.
 fn laid_hand(
@@ -466,7 +472,7 @@ fn laid_hand(
         .sum::<Vector3<f64>>()
         / hand.own.len().max(1) as f64;
     let pointing = (Point3::from(centroid) - wrist).normalize();
-    let radial = positions[hand.styloids[0] as usize] - positions[hand.styloids[1] as usize];
+    let radial = positions[hand.knuckles[0] as usize] - positions[hand.knuckles[1] as usize];
     let mirror = if hand.side == "Lt." { 1.0 } else { -1.0 };
     let palm = pointing.cross(&radial) * mirror;
     // Tilted out of the plane as the hand lies (the body under it is convex): the slope of the
@@ -1002,7 +1008,8 @@ mod tests {
             let (_, axis) = wrist_and_axis(&bent, hand.styloids, hand.epicondyles);
             slide_wrist(hand, &mut bent, axis, longer);
             let (wrist, axis) = wrist_and_axis(&bent, hand.styloids, hand.epicondyles);
-            let radial = bent[hand.styloids[0] as usize] - bent[hand.styloids[1] as usize];
+            // The palm across the knuckles' line, as the hand lies on its metacarpals.
+            let radial = bent[hand.knuckles[0] as usize] - bent[hand.knuckles[1] as usize];
             let mirror = if hand.side == "Lt." { 1.0 } else { -1.0 };
             let palm = axis.cross(&radial).normalize() * mirror;
             let across = axis.cross(&palm).normalize();
@@ -1066,13 +1073,14 @@ mod tests {
                 hand.side,
                 pose.slide
             );
-            // Within the directions' spacing (15°) and the tilt of the hand's back off the plate
-            // (5.8–16.5° and 17–50 mm here).
+            // Within the directions' spacing (15°) and the tilt of the hand's back off the plate:
+            // 4.7–18.8° and 14–59 mm here (the palm across the knuckles; with the palm across
+            // the styloids, in the code and in this scene, 5.8–16.5° and 17–50 mm).
             let off = pointing(&positions).angle(&direction).to_degrees();
-            assert!(off < 18.0, "{}: pointing {off:.1}° off", hand.side);
+            assert!(off < 20.0, "{}: pointing {off:.1}° off", hand.side);
             let (before, after) = (farthest(rest), farthest(&positions));
             assert!(
-                after < 0.055 && after < before / 2.0,
+                after < 0.06 && after < before / 2.0,
                 "{}: {before} → {after} m",
                 hand.side
             );
