@@ -33,7 +33,7 @@ export class LandmarkStep {
   private facts: LandmarkFacts | null = null;
   private estimate: EstimateView = { state: 'none' };
   private suspicious: SuspiciousLandmark[] | null = null;
-  /** Each landmark's definition sharpness, from the first estimate's report (a property of the name). */
+  /** Each landmark's definition sharpness, from the last estimate's report (a property of the name). */
   private sharpness: ReadonlyMap<string, Sharpness> = new Map();
   /** The last estimate's prediction for this scan, with the scan scale it was made at. */
   private prediction: (LandmarkPrediction & { scale: number }) | null = null;

@@ -6,9 +6,10 @@
 //! and elbows placed by the limbs' profiles (the knees by the front of the knee), the elbow of a
 //! bent arm, the hands' pose about the wrist (its turn kept when the hand then matches better),
 //! the hand of a bent arm laid on the body (its palm across the knuckles' line, its turn about
-//! the forearm carried down the forearm), a bent elbow's hinge across the arm's plane, every wrist placed by the forearm's profile and the
-//! torso's length from the buttocks; the hands-on-hips subject has its hands laid on the hips
-//! (the generator's pose since the afternoon of 2026-11-25). Regenerate it with the same command when the method or the
+//! the forearm carried down the forearm), a bent elbow's hinge across the arm's plane, every
+//! wrist placed by the forearm's profile and the torso's length from the buttocks; the
+//! hands-on-hips subject has its hands laid on the hips (the generator's pose since the
+//! afternoon of 2026-11-25). Regenerate it with the same command when the method or the
 //! template's landmark vertices change; the held-out figures in docs/landmarks-estimate.md say
 //! how well it ranks the errors of subjects it was not measured on.
 
