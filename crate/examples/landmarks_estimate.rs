@@ -44,8 +44,8 @@ mod support;
 mod native {
     use super::support::{case_scanned, frames, load, poses, Case, PARTIAL};
     use bodyspace::align::{align_scan, AlignInput, AlignParams};
-    use bodyspace::landmarks::estimate::confidence::spearman;
-    use bodyspace::landmarks::estimate::{estimate_landmarks, EstimateInput, EstimateParams};
+    use bodyspace::estimate::confidence::spearman;
+    use bodyspace::estimate::{estimate_landmarks, EstimateInput, EstimateParams};
     use bodyspace::landmarks::{LandmarkSet, CAESAR_LANDMARKS};
     use bodyspace::mesh::normals::vertex_normals;
     use bodyspace::synth::population::A_POSE_ARM_DEG;

@@ -9,6 +9,7 @@
 //! `bindings` module (wasm32 only) is the one thin layer that exposes it to JavaScript.
 
 pub mod align;
+pub mod estimate;
 pub mod io;
 pub mod landmarks;
 pub mod measure;

@@ -11,11 +11,11 @@ mod estimate_support;
 
 use std::process::Command;
 
-use bodyspace::io::{read_landmarks, write_landmarks_csv, write_ply};
-use bodyspace::landmarks::estimate::{
+use bodyspace::estimate::{
     estimate_landmarks, flag_given, given_landmarks, landmark_rest, EstimateInput, EstimateParams,
     LandmarkEstimate, SuspicionKind,
 };
+use bodyspace::io::{read_landmarks, write_landmarks_csv, write_ply};
 use bodyspace::landmarks::{LandmarkSet, CAESAR_LANDMARKS};
 use bodyspace::mesh::units::Units;
 use bodyspace::synth::{PopulationProfile, SubjectId};
@@ -87,7 +87,7 @@ fn landmark_errors_mm(
 }
 
 fn axis_name(frame: &Frame, v: Vector3<f64>) -> String {
-    bodyspace::landmarks::estimate::frame::nearest_axis(&(frame.rotation * v))
+    bodyspace::estimate::frame::nearest_axis(&(frame.rotation * v))
 }
 
 #[test]

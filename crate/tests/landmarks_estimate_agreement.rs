@@ -4,7 +4,7 @@
 
 mod estimate_agreement;
 
-use bodyspace::landmarks::estimate::{estimate_landmarks, EstimateInput, EstimateParams};
+use bodyspace::estimate::{estimate_landmarks, EstimateInput, EstimateParams};
 use bodyspace::mesh::units::Units;
 use bodyspace::template::Template;
 

@@ -17,7 +17,7 @@ pub enum Stage {
     Base,
     /// The short fine alignment of the subdivided fit.
     Fine,
-    /// Estimating landmarks on a bare scan (`landmarks/estimate/`): frame candidates, the
+    /// Estimating landmarks on a bare scan (`estimate/`): frame candidates, the
     /// segment-wise fit and its landmark-free fine alignment.
     Estimate,
 }

@@ -3,7 +3,7 @@
 //! displacements — instead of bending a straight template limb into a posed one, which shears
 //! the surface along the limb.
 //!
-//! The parts are the landmark estimate's ten (`landmarks::estimate::segments::parts`: torso,
+//! The parts are the landmark estimate's ten (`estimate::segments::parts`: torso,
 //! head, upper and lower part of each limb, with the template's segment blend weights). A global
 //! similarity S (Procrustes on the torso's landmark pairs) fixes the common scale s; then,
 //! parents first, each posed part ([`POSED`]: head and arms) gets the rigid motion (at scale s)
@@ -17,8 +17,8 @@
 
 use nalgebra::Point3;
 
-use crate::landmarks::estimate::hand::{hands, turn_hand_onto};
-use crate::landmarks::estimate::segments::{blend, dominant_part, parts, PartPose};
+use crate::estimate::hand::{hands, turn_hand_onto};
+use crate::estimate::segments::{blend, dominant_part, parts, PartPose};
 use crate::landmarks::LandmarkSet;
 use crate::mesh::similarity::{similarity, Similarity};
 use crate::template::Template;

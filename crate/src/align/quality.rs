@@ -12,7 +12,7 @@
 //! 3. [`QualityFlag::FoldOvers`] — template triangles whose normal turned against the same
 //!    triangle of the RBF-warped template: fine alignment folded the surface over itself.
 //! 4. [`QualityFlag::SuspiciousLandmarks`] — given landmarks far from where the others of their
-//!    part (or the landmark estimate's fit) put them (`landmarks/estimate/suspicious.rs`): a
+//!    part (or the landmark estimate's fit) put them (`estimate/suspicious.rs`): a
 //!    swapped Lt./Rt. pair, a typo, a landmark on the wrong body part. The caller that checked the
 //!    landmarks adds it with [`QualityReport::add_suspicious_landmarks`]; the warp ran without
 //!    them.

@@ -1,7 +1,7 @@
 //! `estimateLandmarks` and `checkLandmarks`: the core's landmark estimate
-//! ([`crate::landmarks::estimate::estimate_landmarks`]) on a scan sent from the page, which may
+//! ([`crate::estimate::estimate_landmarks`]) on a scan sent from the page, which may
 //! carry a partial or empty landmark set, and the check of an edited set against the last
-//! estimate's prediction ([`crate::landmarks::estimate::flag_given`], no fit). Everything crosses
+//! estimate's prediction ([`crate::estimate::flag_given`], no fit). Everything crosses
 //! in metres (the page scales the scan before making the `ScanWithLandmarks`); positions come
 //! back in the same frame and units.
 
@@ -11,7 +11,7 @@ use wasm_bindgen::prelude::*;
 
 use super::align::{scan_landmarks, JsObserver, ScanWithLandmarks};
 use super::template::TemplateHandle;
-use crate::landmarks::estimate::{
+use crate::estimate::{
     estimate_landmarks, flag_given, given_landmarks, landmark_rest, EstimateInput, EstimateParams,
     LandmarkEstimate as Estimate,
 };

@@ -25,8 +25,8 @@ use crate::align::{
     align_scan, assess, AlignInput, AlignParams, AlignmentReport, FineAlignParams, Preset,
     QualityReport, QualityThresholds,
 };
+use crate::estimate::EstimateReport;
 use crate::io::{read_landmarks, read_scan, write_ply};
-use crate::landmarks::estimate::EstimateReport;
 use crate::landmarks::LandmarkSet;
 use crate::mesh::Mesh;
 use crate::template::{Resolution, Template};

@@ -1,16 +1,14 @@
 //! `bodyspace landmarks --scan SCAN --out FILE [--landmarks PARTIAL]`: the 73 CAESAR landmarks
 //! of a bare scan (or the rest of a partial file) by the core's estimate
 //! ([`estimate_landmarks`]); writes `.csv` / `.json` in the scan's frame and units or `.lnd` in
-//! millimetres, by the extension, and prints the [`crate::landmarks::estimate::EstimateReport`]
+//! millimetres, by the extension, and prints the [`crate::estimate::EstimateReport`]
 //! as JSON (frame and units assumed, per-landmark confidence, flagged landmarks, times).
 
 use std::path::{Path, PathBuf};
 
 use super::read_file;
+use crate::estimate::{estimate_landmarks, EstimateInput, EstimateParams, LandmarkEstimate};
 use crate::io::{read_landmarks, read_scan, write_landmarks};
-use crate::landmarks::estimate::{
-    estimate_landmarks, EstimateInput, EstimateParams, LandmarkEstimate,
-};
 use crate::landmarks::LandmarkSet;
 use crate::mesh::Mesh;
 use crate::template::Template;

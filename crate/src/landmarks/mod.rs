@@ -1,8 +1,7 @@
 //! Anatomical landmarks: the CAESAR list, how sharply each is defined, name normalisation,
-//! landmark sets, and the estimate of the landmarks on a bare scan ([`estimate`]).
+//! and landmark sets (the data; the estimate of the landmarks on a bare scan is `crate::estimate`).
 
 pub mod caesar;
-pub mod estimate;
 pub mod names;
 pub mod report;
 pub mod set;

@@ -2,7 +2,7 @@
 //! definition (what an anthropometrist palpates or looks for), not of any one scan. The reasons,
 //! landmark by landmark, are in `docs/template.md` ("Landmarks").
 //!
-//! The estimate reads its spread for the confidence (`landmarks/estimate/confidence.rs`): a
+//! The estimate reads its spread for the confidence (`estimate/confidence.rs`): a
 //! landmark defined as a level on a smooth surface (Waist Preferred Post., 10th Rib Midspine) is
 //! uncertain along that surface however well the body is fitted, and independent placements of
 //! it spread by centimetres.

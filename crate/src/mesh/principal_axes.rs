@@ -1,5 +1,5 @@
 //! The principal axes of a point set: the eigenvectors of its scatter about the centroid. The
-//! first is the direction of largest extent (a standing body's vertical, `landmarks::estimate::
+//! first is the direction of largest extent (a standing body's vertical, `estimate::
 //! frame`); the last is the normal of the plane that fits the points best (the body's surface
 //! under a hand on the hip, in the estimate and in the synthetic population).
 

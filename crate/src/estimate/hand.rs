@@ -937,7 +937,7 @@ mod tests {
     /// Matching onto `index` as the estimate's (compatible normals, 10 cm outliers).
     /// The base template and its two hands.
     fn base_hands() -> (Template, Vec<Hand>) {
-        let (template, _) = crate::landmarks::estimate::segments::base_parts();
+        let (template, _) = crate::estimate::segments::base_parts();
         let hands = hands(&template);
         (template, hands)
     }

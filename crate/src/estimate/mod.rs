@@ -1,4 +1,5 @@
-//! Landmarks from a bare scan (issue 11): the 73 CAESAR landmarks estimated by fitting the
+//! Landmarks from a bare scan (issue 11), a module of its own above `align` (which it uses:
+//! `SurfaceIndex`, `FineAlignParams`, …): the 73 CAESAR landmarks estimated by fitting the
 //! template, or the rest of a partial set filled in; suspicious given landmarks flagged.
 //! docs/landmarks-estimate.md describes the method and what it was measured against.
 //!

@@ -139,8 +139,8 @@ pub fn place_buttocks(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::landmarks::estimate::profile::surface_samples;
-    use crate::landmarks::estimate::segments::base_parts;
+    use crate::estimate::profile::surface_samples;
+    use crate::estimate::segments::base_parts;
 
     /// Points on the back of a body (facing +z, y up) whose back reaches furthest at `peak`
     /// (m above the origin): a bump of `depth` over a flat back.

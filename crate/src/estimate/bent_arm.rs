@@ -191,7 +191,7 @@ pub fn place_bent_elbows(
 mod tests {
     use super::*;
     use crate::align::SurfaceIndex;
-    use crate::landmarks::estimate::segments::{base_parts, blend, dominant_parts};
+    use crate::estimate::segments::{base_parts, blend, dominant_parts};
     use crate::mesh::Mesh;
     use nalgebra::{Rotation3, Unit};
 

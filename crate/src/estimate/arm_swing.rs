@@ -204,7 +204,7 @@ pub fn swing_arms(
 mod tests {
     use super::*;
     use crate::align::SurfaceIndex;
-    use crate::landmarks::estimate::segments::{base_parts, dominant_parts};
+    use crate::estimate::segments::{base_parts, dominant_parts};
     use crate::mesh::Mesh;
 
     #[test]

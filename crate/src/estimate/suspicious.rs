@@ -12,7 +12,7 @@
 use nalgebra::Point3;
 use serde::Serialize;
 
-use super::super::CAESAR_LANDMARKS;
+use crate::landmarks::CAESAR_LANDMARKS;
 
 /// Why a landmark looks wrong.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
