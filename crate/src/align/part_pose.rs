@@ -3,7 +3,7 @@
 //! displacements — instead of bending a straight template limb into a posed one, which shears
 //! the surface along the limb.
 //!
-//! The parts are the landmark estimate's ten (`estimate::segments::parts`: torso,
+//! The parts are the template's ten rigid parts (`template::parts::parts`: torso,
 //! head, upper and lower part of each limb, with the template's segment blend weights). A global
 //! similarity S (Procrustes on the torso's landmark pairs) fixes the common scale s; then,
 //! parents first, each posed part ([`POSED`]: head and arms) gets the rigid motion (at scale s)
@@ -11,16 +11,16 @@
 //! joint held where the already-moved parent puts it. A part with fewer than [`MIN_LANDMARKS`]
 //! landmarks, and every part not posed, follows its parent. Vertices move by the blend
 //! Σ_p w_p(v)·T_p(v) (linear blend skinning). Each hand is then turned about its wrist onto its
-//! own landmarks (`hand::turn_hand_onto`: the knuckles and the fingertip seen from the
+//! own landmarks (`template::hand::turn_hand_onto`: the knuckles and the fingertip seen from the
 //! styloids), blended to nothing at the wrist: the forearm part carries the hand rigidly, and a
 //! hand laid on the hip is bent back 20–50° at the wrist.
 
 use nalgebra::Point3;
 
-use crate::estimate::hand::{hands, turn_hand_onto};
-use crate::estimate::segments::{blend, dominant_part, parts, PartPose};
 use crate::landmarks::LandmarkSet;
 use crate::mesh::similarity::{similarity, Similarity};
+use crate::template::hand::{hands, turn_hand_onto};
+use crate::template::parts::{blend, dominant_part, parts, PartPose};
 use crate::template::Template;
 
 /// The parts that get their own motion; the torso and the legs keep the global similarity and

@@ -10,9 +10,9 @@
 use nalgebra::{Point3, Rotation3, Unit, Vector3};
 
 use super::matching::{Matching, Pair};
-use super::segments::{blend, Part, PartPose};
 use crate::mesh::normals::vertex_normals;
 use crate::mesh::similarity::Similarity;
+use crate::template::parts::{blend, Part, PartPose};
 
 /// The turns tried about each shoulder (degrees, positive towards the body) from where the fit
 /// has the arm: arms from down along the body to raised (the A-poses reach 60° from
@@ -204,8 +204,8 @@ pub fn swing_arms(
 mod tests {
     use super::*;
     use crate::align::SurfaceIndex;
-    use crate::estimate::segments::{base_parts, dominant_parts};
     use crate::mesh::Mesh;
+    use crate::template::parts::{base_parts, dominant_parts};
 
     #[test]
     fn arms_held_down_along_the_body_or_raised_are_found() {

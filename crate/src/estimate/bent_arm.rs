@@ -16,8 +16,9 @@ use nalgebra::{Point3, Rotation3, Vector3};
 use super::arm_swing::arms;
 use super::matching::Matching;
 use super::profile::{fraction, LimbLine};
-use super::segments::{is_bent, Part, PartPose, STRETCH_RANGE};
+use super::segments::{is_bent, STRETCH_RANGE};
 use crate::mesh::similarity::{similarity, Similarity};
+use crate::template::parts::{Part, PartPose};
 use crate::template::Template;
 
 /// The forearm's own fit takes its vertices (and the hand's) from this fraction of the way from
@@ -191,8 +192,8 @@ pub fn place_bent_elbows(
 mod tests {
     use super::*;
     use crate::align::SurfaceIndex;
-    use crate::estimate::segments::{base_parts, blend, dominant_parts};
     use crate::mesh::Mesh;
+    use crate::template::parts::{base_parts, blend, dominant_parts};
     use nalgebra::{Rotation3, Unit};
 
     #[test]

@@ -11,7 +11,7 @@
 
 use nalgebra::{Point3, Vector3};
 
-use super::segments::{Part, PartPose};
+use crate::template::parts::{Part, PartPose};
 use crate::template::Template;
 
 /// Half-width (m, at the template's size) of the band about the midline the back is taken from.
@@ -140,7 +140,7 @@ pub fn place_buttocks(
 mod tests {
     use super::*;
     use crate::estimate::profile::surface_samples;
-    use crate::estimate::segments::base_parts;
+    use crate::template::parts::base_parts;
 
     /// Points on the back of a body (facing +z, y up) whose back reaches furthest at `peak`
     /// (m above the origin): a bump of `depth` over a flat back.

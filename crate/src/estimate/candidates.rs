@@ -128,7 +128,7 @@ mod tests {
 
     #[test]
     fn near_candidates_facing_apart_are_told_by_the_torso() {
-        use crate::estimate::segments::base_parts;
+        use crate::template::parts::base_parts;
         use crate::template::Segment;
         let (template, _) = base_parts();
         let rest = &template.mesh().positions;

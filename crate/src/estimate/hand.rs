@@ -35,16 +35,10 @@ use nalgebra::{Matrix3, Point3, Rotation3, UnitQuaternion, Vector3};
 use super::matching::Matching;
 use super::profile::{profile, register_shift, surface_samples, triangles_near, LimbLine};
 use super::segments::MAX_BEND;
-use crate::landmarks::LandmarkSet;
 use crate::mesh::normals::vertex_normals_into;
 use crate::mesh::principal_axes::principal_axes;
-use crate::mesh::similarity::similarity;
 use crate::mesh::Mesh;
-use crate::template::{Segment, Template};
-
-/// The hand's share of the rotation rises from 0 at this distance (m) before the wrist's plane to
-/// 1 this far beyond it (the skin over the carpus follows the hand).
-const BLEND: (f64, f64) = (-0.01, 0.02);
+use crate::template::hand::{mid, turn_hand, wrist_and_axis, Hand};
 
 /// The surface compared starts this far (m) beyond the wrist's plane: the forearm's skin just
 /// below the wrist stays out whatever the hand's pose.
@@ -124,28 +118,6 @@ const PROFILE_SPACING: f64 = 0.004;
 /// forearm's narrowing to the wrist and the hand widening out of it.
 const PROFILE_WINDOW: (f64, f64) = (-0.06, 0.05);
 
-/// One hand of the template: the vertices that make the wrist and the elbow, the hand's vertices
-/// with their share of the rotation, the forearm's and the hand's with their share of the slide.
-#[derive(Debug, Clone)]
-pub struct Hand {
-    pub side: &'static str,
-    styloids: [u32; 2],
-    /// Metacarpal Phal. II and V: the knuckles' line, across the palm.
-    knuckles: [u32; 2],
-    epicondyles: [u32; 2],
-    acromion: u32,
-    share: Vec<(u32, f64)>,
-    /// The vertices wholly the hand's (share 1): those matched to the scan.
-    own: Vec<u32>,
-    /// Fraction of the slide: 0 at the elbow, 1 at the wrist and beyond.
-    slide: Vec<(u32, f64)>,
-    /// Share of a turn about the forearm that the hand's turn does not already give: the
-    /// fraction of the way from the elbow to the wrist, less the share of the hand's turn.
-    twist: Vec<(u32, f64)>,
-    /// The template's triangles with every corner in the hand.
-    triangles: Vec<[u32; 3]>,
-}
-
 /// Where a hand was moved: the wrist's slide along the forearm (m) and the turn about it.
 #[derive(Debug, Clone, Copy)]
 pub struct HandPose {
@@ -158,110 +130,6 @@ type Placed = Vec<(u32, Point3<f64>)>;
 
 /// A surface as area-weighted points (triangle centroid, area).
 pub type Surface = [(Point3<f64>, f64)];
-
-/// The template's two hands (`template` at the resolution fitted): the arm segment's vertices
-/// (weight ≥ ½) beyond the plane across the forearm at the wrist (the forearm from the midpoint
-/// of the humeral epicondyles to that of the styloids). A side whose landmark vertices are
-/// missing has no hand.
-pub fn hands(template: &Template) -> Vec<Hand> {
-    let rest = &template.mesh().positions;
-    let vertex = |name: String| template.landmark_vertex(&name);
-    let mut out = Vec::new();
-    for (side, segment) in [("Lt.", Segment::LeftArm), ("Rt.", Segment::RightArm)] {
-        let pair = |a: &str, b: &str| {
-            Some([
-                vertex(format!("{side} {a}"))?,
-                vertex(format!("{side} {b}"))?,
-            ])
-        };
-        let (Some(styloids), Some(knuckles), Some(epicondyles), Some(acromion)) = (
-            pair("Radial Styloid", "Ulnar Styloid"),
-            pair("Metacarpal Phal. II", "Metacarpal Phal. V"),
-            pair("Humeral Lateral Epicn", "Humeral Medial Epicn"),
-            vertex(format!("{side} Acromion")),
-        ) else {
-            continue;
-        };
-        let (wrist, axis) = wrist_and_axis(rest, styloids, epicondyles);
-        let elbow = mid(rest, epicondyles);
-        let arm: Vec<(usize, &Point3<f64>)> = rest
-            .iter()
-            .enumerate()
-            .filter(|(v, _)| template.segment_weights(*v as u32)[segment.index()] >= 0.5)
-            .collect();
-        // Each arm vertex's fraction of the slide and share of the hand's turn.
-        let fraction = |p: &Point3<f64>| {
-            ((p - elbow).dot(&(wrist - elbow)) / (wrist - elbow).norm_squared()).min(1.0)
-        };
-        let turned =
-            |p: &Point3<f64>| smoothstep(((p - wrist).dot(&axis) - BLEND.0) / (BLEND.1 - BLEND.0));
-        let slide: Vec<(u32, f64)> = arm
-            .iter()
-            .filter_map(|(v, p)| (fraction(p) > 0.0).then_some((*v as u32, fraction(p))))
-            .collect();
-        let share: Vec<(u32, f64)> = arm
-            .iter()
-            .filter_map(|(v, p)| (turned(p) > 0.0).then_some((*v as u32, turned(p))))
-            .collect();
-        let twist = arm
-            .iter()
-            .filter_map(|(v, p)| {
-                let rest = fraction(p) - turned(p);
-                (rest > 0.0).then_some((*v as u32, rest))
-            })
-            .collect();
-        let own = share
-            .iter()
-            .filter(|(_, s)| *s >= 1.0)
-            .map(|(v, _)| *v)
-            .collect();
-        let mut member = vec![false; rest.len()];
-        for (v, _) in &share {
-            member[*v as usize] = true;
-        }
-        let triangles = template
-            .mesh()
-            .triangles
-            .iter()
-            .filter(|t| t.iter().all(|&v| member[v as usize]))
-            .copied()
-            .collect();
-        out.push(Hand {
-            side,
-            styloids,
-            knuckles,
-            epicondyles,
-            acromion,
-            share,
-            own,
-            slide,
-            twist,
-            triangles,
-        });
-    }
-    out
-}
-
-fn smoothstep(t: f64) -> f64 {
-    let t = t.clamp(0.0, 1.0);
-    t * t * (3.0 - 2.0 * t)
-}
-
-/// The midpoint of two vertices.
-fn mid(positions: &[Point3<f64>], [a, b]: [u32; 2]) -> Point3<f64> {
-    Point3::from((positions[a as usize].coords + positions[b as usize].coords) / 2.0)
-}
-
-/// The wrist (midpoint of the styloids) and the forearm's unit direction (from the midpoint of
-/// the epicondyles to the wrist) at `positions`.
-fn wrist_and_axis(
-    positions: &[Point3<f64>],
-    styloids: [u32; 2],
-    epicondyles: [u32; 2],
-) -> (Point3<f64>, Vector3<f64>) {
-    let wrist = mid(positions, styloids);
-    (wrist, (wrist - mid(positions, epicondyles)).normalize())
-}
 
 /// Moves each hand of `hands` in `positions` (the segment-wise fit's, metres) to the scan's hand
 /// (`scan`, metres, indexed by `matching`): the slide along the forearm, then the turn about the
@@ -356,48 +224,6 @@ fn pose_hand(
         }
     }
     Some(HandPose { slide, rotation })
-}
-
-/// The hand's landmarks beyond the wrist, after the side's prefix.
-const HAND_LANDMARKS: [&str; 3] = ["Metacarpal Phal. II", "Metacarpal Phal. V", "Dactylion"];
-
-/// Turns `hand` in `positions` about its wrist (each vertex by its share) so that its landmark
-/// vertices (the knuckles and the fingertip, seen from the midpoint of the styloids) point where
-/// `landmarks` (same frame and units) have them, seen from theirs: a wrist bent back, as a hand
-/// laid on the hip is. Needs both styloids and the three hand landmarks; returns whether the hand
-/// was turned.
-pub fn turn_hand_onto(
-    hand: &Hand,
-    positions: &mut [Point3<f64>],
-    template: &Template,
-    landmarks: &LandmarkSet,
-) -> bool {
-    let side = |name: &str| format!("{} {name}", hand.side);
-    let given = |name: &str| landmarks.get(&side(name));
-    let (Some(radial), Some(ulnar)) = (given("Radial Styloid"), given("Ulnar Styloid")) else {
-        return false;
-    };
-    let wrist = mid(positions, hand.styloids);
-    let to_wrist = nalgebra::center(&radial, &ulnar);
-    let mut from = vec![Point3::origin()];
-    let mut to = vec![Point3::origin()];
-    for name in HAND_LANDMARKS {
-        let (Some(v), Some(q)) = (template.landmark_vertex(&side(name)), given(name)) else {
-            return false;
-        };
-        from.push(Point3::from(positions[v as usize] - wrist));
-        to.push(Point3::from(q - to_wrist));
-    }
-    let Some(fit) = similarity(&from, &to, false) else {
-        return false;
-    };
-    turn_hand(
-        hand,
-        positions,
-        wrist,
-        &UnitQuaternion::from_matrix(&fit.rotation),
-    );
-    true
 }
 
 /// The hand of an arm bent more than [`MAX_BEND`] (on the hip), or more than [`LAID_MIN_BEND`] with
@@ -760,21 +586,6 @@ fn twist_forearm(
     }
 }
 
-/// Turns the hand by `rotation` about `wrist`, each vertex by its share of it.
-fn turn_hand(
-    hand: &Hand,
-    positions: &mut [Point3<f64>],
-    wrist: Point3<f64>,
-    rotation: &UnitQuaternion<f64>,
-) {
-    let scaled_axis = rotation.scaled_axis();
-    for (v, s) in &hand.share {
-        let p = &mut positions[*v as usize];
-        let turn = Rotation3::from_scaled_axis(scaled_axis * *s);
-        *p = wrist + turn * (*p - wrist);
-    }
-}
-
 /// The triangles of `triangles` as area-weighted centroids.
 fn surface(positions: &[Point3<f64>], triangles: &[[u32; 3]]) -> Vec<(Point3<f64>, f64)> {
     triangles
@@ -877,6 +688,8 @@ pub fn hand_rotation(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::template::hand::base_hands;
+    use crate::template::Template;
 
     /// A flat hand as a box's surface, area-weighted points 2 mm apart: along +z from 3 cm to
     /// 20 cm beyond a wrist at the origin, 8 cm wide (x), 2 cm thick (y).
@@ -935,63 +748,11 @@ mod tests {
     }
 
     /// Matching onto `index` as the estimate's (compatible normals, 10 cm outliers).
-    /// The base template and its two hands.
-    fn base_hands() -> (Template, Vec<Hand>) {
-        let (template, _) = crate::estimate::segments::base_parts();
-        let hands = hands(&template);
-        (template, hands)
-    }
-
     fn matching_on(index: &crate::align::SurfaceIndex) -> Matching<'_> {
         Matching {
             scan: index,
             min_cos: 0.5,
             outlier_distance: 0.1,
-        }
-    }
-
-    #[test]
-    fn a_hand_is_turned_at_the_wrist_onto_its_landmarks() {
-        let (template, hands) = base_hands();
-        let rest = &template.mesh().positions;
-        for hand in &hands {
-            // The "scan": the template with this hand bent back 40° at the wrist and turned 20°
-            // about the forearm, then the whole body moved 1 m (only directions from the wrist
-            // count).
-            let mut bent = rest.to_vec();
-            let (wrist, axis) = wrist_and_axis(&bent, hand.styloids, hand.epicondyles);
-            let across = (bent[hand.styloids[0] as usize] - bent[hand.styloids[1] as usize])
-                .cross(&axis)
-                .normalize();
-            let turn = UnitQuaternion::from_scaled_axis(across * 40f64.to_radians())
-                * UnitQuaternion::from_scaled_axis(axis * 20f64.to_radians());
-            turn_hand(hand, &mut bent, wrist, &turn);
-            let shift = Vector3::new(1.0, 0.0, 0.0);
-            let moved: Vec<Point3<f64>> = bent.iter().map(|p| p + shift).collect();
-            let landmarks = template.landmarks_at(&moved);
-            let mut positions = rest.to_vec();
-            assert!(turn_hand_onto(hand, &mut positions, &template, &landmarks));
-            for name in HAND_LANDMARKS {
-                let v = template
-                    .landmark_vertex(&format!("{} {name}", hand.side))
-                    .unwrap() as usize;
-                // (The styloids turn a little with the hand: the wrist moves ≈ 1 mm.)
-                let off = (positions[v] - bent[v]).norm();
-                assert!(off < 3e-3, "{} {name}: {off} m", hand.side);
-            }
-            // Without the hand's landmarks nothing is turned.
-            let partial = LandmarkSet {
-                landmarks: landmarks
-                    .landmarks
-                    .iter()
-                    .filter(|l| !l.name.contains("Dactylion"))
-                    .cloned()
-                    .collect(),
-                ..LandmarkSet::default()
-            };
-            let mut untouched = rest.to_vec();
-            assert!(!turn_hand_onto(hand, &mut untouched, &template, &partial));
-            assert_eq!(&untouched, rest);
         }
     }
 

@@ -10,14 +10,18 @@
 //! * [`topology`]: signed volume, edge distance.
 //! * [`segment`]: the six segments; [`error`]: the error enum `TemplateError`.
 //! * [`body_part`]: head, torso, arms, hands, legs, feet per vertex, for reports.
+//! * [`parts`]: the rigid parts (segments split at elbow and knee), their poses and blend;
+//!   [`hand`]: each hand's vertices and its turn about the wrist.
 
 pub mod body_part;
 pub mod build;
 pub mod error;
 pub mod flags;
 pub mod frame;
+pub mod hand;
 pub mod makehuman;
 pub mod model;
+pub mod parts;
 pub mod resolution;
 pub mod segment;
 pub mod store;
