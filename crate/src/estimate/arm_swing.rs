@@ -4,31 +4,16 @@
 //! out at the side, its forearm and hand matched to the hip and thigh, and the fine fit then
 //! drags the template's hand across the body (docs/landmarks-estimate.md). So each arm, with its
 //! upper and lower part together, is turned about its shoulder in the body's frontal plane by
-//! each of [`SWING_DEG`] and kept at the turn whose matches fit best; the ICP then goes on from
+//! each of the turns of `ArmSwingParams::turns_deg` and kept at the turn whose matches fit best; the ICP then goes on from
 //! there.
 
 use nalgebra::{Point3, Rotation3, Unit, Vector3};
 
 use super::matching::{Matching, Pair};
+use super::params::ArmSwingParams;
 use crate::mesh::normals::vertex_normals;
 use crate::mesh::similarity::Similarity;
 use crate::template::parts::{blend, Part, PartPose};
-
-/// The turns tried about each shoulder (degrees, positive towards the body) from where the fit
-/// has the arm: arms from down along the body to raised (the A-poses reach 60° from
-/// the body, 20° above the template's), as people are scanned.
-pub const SWING_DEG: [f64; 4] = [-15.0, 0.0, 15.0, 30.0];
-
-/// Iterations of the segment-wise fit run from each turn before the turns are compared.
-pub const SWING_ITERATIONS: usize = 3;
-
-/// Iterations of the segment-wise fit before the arms are swung (the torso settled first).
-pub const SWING_AFTER: usize = 5;
-
-/// A match farther than this (m) counts as this far in a turn's energy, an unmatched vertex
-/// too: the arm's inner side, pressed against the trunk, has no surface of its own on the scan,
-/// and must not count against the right turn more than a wrong turn's far matches.
-const SWING_CAP: f64 = 0.03;
 
 /// An arm: its upper and lower part (indices into the parts).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -68,42 +53,49 @@ fn front_axis(parts: &[Part], arms: &[Arm], rest: &[Point3<f64>]) -> Option<Vect
     across.cross(&up).try_normalize(1e-9)
 }
 
-/// Side (m) of the cells of [`Claimed`].
-const CLAIM_CELL: f64 = 0.015;
-
-/// The scan's surface the rest of the body (trunk, head, legs) already explains: the cells of
-/// its matches' targets. An arm turned into the trunk matches the trunk's surface as closely as
+/// The scan's surface the rest of the body (trunk, head, legs) already explains: the cells (of
+/// side `cell`, m) of its matches' targets. An arm turned into the trunk matches the trunk's surface as closely as
 /// a right turn matches the arm's own; its matches there explain nothing new and count as
 /// unmatched.
-#[derive(Debug, Default)]
-pub struct Claimed(std::collections::HashSet<[i64; 3]>);
+#[derive(Debug)]
+pub struct Claimed {
+    cells: std::collections::HashSet<[i64; 3]>,
+    cell: f64,
+}
 
 impl Claimed {
-    fn cell(p: &Point3<f64>) -> [i64; 3] {
-        p.coords.map(|c| (c / CLAIM_CELL).floor() as i64).into()
+    fn cell_of(p: &Point3<f64>, cell: f64) -> [i64; 3] {
+        p.coords.map(|c| (c / cell).floor() as i64).into()
     }
 
-    /// The cells of `pairs`' targets.
-    pub fn of(pairs: &[Pair]) -> Self {
-        Self(pairs.iter().map(|p| Self::cell(&p.target)).collect())
+    /// The cells (of side `cell`, m) of `pairs`' targets.
+    pub fn of(pairs: &[Pair], cell: f64) -> Self {
+        Self {
+            cells: pairs
+                .iter()
+                .map(|p| Self::cell_of(&p.target, cell))
+                .collect(),
+            cell,
+        }
     }
 
     /// Whether `p` lies in a claimed cell.
     pub fn contains(&self, p: &Point3<f64>) -> bool {
-        self.0.contains(&Self::cell(p))
+        self.cells.contains(&Self::cell_of(p, self.cell))
     }
 }
 
-/// The capped energy of `pairs` out of `tried` vertices (see [`SWING_CAP`]), a match on
-/// `claimed` surface counting as unmatched.
-fn capped_energy(pairs: &[Pair], tried: usize, claimed: &Claimed) -> f64 {
+/// The capped energy of `pairs` out of `tried` vertices, each distance capped at `cap` (m, see
+/// `ArmSwingParams::cap`) and an unmatched vertex counting as `cap`, a match on `claimed`
+/// surface counting as unmatched.
+fn capped_energy(pairs: &[Pair], tried: usize, claimed: &Claimed, cap: f64) -> f64 {
     let own: Vec<f64> = pairs
         .iter()
         .filter(|p| !claimed.contains(&p.target))
-        .map(|p| p.distance.min(SWING_CAP).powi(2))
+        .map(|p| p.distance.min(cap).powi(2))
         .collect();
     let unmatched = tried.saturating_sub(own.len()) as f64;
-    (own.iter().sum::<f64>() + unmatched * SWING_CAP * SWING_CAP) / tried.max(1) as f64
+    (own.iter().sum::<f64>() + unmatched * cap * cap) / tried.max(1) as f64
 }
 
 /// `transform` followed by the rotation `r` about `centre`.
@@ -116,8 +108,8 @@ fn turned(transform: &Similarity, r: &Rotation3<f64>, centre: &Point3<f64>) -> S
 }
 
 /// Turns each arm of `poses` about its shoulder, in the body's frontal plane, by each turn of
-/// [`SWING_DEG`] (both arms at once), lets `refine` (the segment-wise fit's iterations, all
-/// parts) go on from there for [`SWING_ITERATIONS`], and keeps for each arm the run whose
+/// `params.turns_deg` (both arms at once), lets `refine` (the segment-wise fit's iterations, all
+/// parts; `params.iterations` of them) go on from there, and keeps for each arm the run whose
 /// matches of the arm's `vertices` (those `dominant` says are its parts') have the lowest
 /// capped energy; the other parts are left as they were. Returns the turn kept per arm (degrees
 /// towards the body), or `None` when `refine` was cancelled.
@@ -130,6 +122,7 @@ pub fn swing_arms(
     vertices: &[u32],
     dominant: &[Option<usize>],
     matching: &Matching<'_>,
+    params: &ArmSwingParams,
     mut refine: impl FnMut(&mut [PartPose]) -> Option<()>,
 ) -> Option<Vec<f64>> {
     let arms = arms(parts);
@@ -174,7 +167,7 @@ pub fn swing_arms(
         .iter()
         .map(|a| (f64::INFINITY, 0.0, start[a.upper], start[a.lower]))
         .collect();
-    for deg in SWING_DEG {
+    for &deg in &params.turns_deg {
         let mut run = start.clone();
         for (arm, (shoulder, sign)) in arms.iter().zip(&pivots) {
             let r = Rotation3::from_axis_angle(&axis, sign * deg.to_radians());
@@ -184,10 +177,13 @@ pub fn swing_arms(
         refine(&mut run)?;
         let positions = blend(parts, &run, rest);
         let normals = vertex_normals(&positions, triangles);
-        let claimed = Claimed::of(&matching.pairs(&rest_of_body, &positions, &normals));
+        let claimed = Claimed::of(
+            &matching.pairs(&rest_of_body, &positions, &normals),
+            params.claim_cell,
+        );
         for (a, arm) in arms.iter().enumerate() {
             let pairs = matching.pairs(&own[a], &positions, &normals);
-            let energy = capped_energy(&pairs, own[a].len(), &claimed);
+            let energy = capped_energy(&pairs, own[a].len(), &claimed, params.cap);
             if energy < best[a].0 {
                 best[a] = (energy, deg, run[arm.upper], run[arm.lower]);
             }
@@ -250,7 +246,15 @@ mod tests {
         let swing = |refine: fn(&mut [PartPose]) -> Option<()>| {
             let mut poses = vec![identity; parts.len()];
             let kept = swing_arms(
-                &parts, &mut poses, rest, triangles, &vertices, &dominant, &matching, refine,
+                &parts,
+                &mut poses,
+                rest,
+                triangles,
+                &vertices,
+                &dominant,
+                &matching,
+                &ArmSwingParams::default(),
+                refine,
             );
             kept.map(|k| (k, poses))
         };
@@ -292,12 +296,13 @@ mod tests {
             target: Point3::origin(),
             distance: d,
         };
-        let e = capped_energy(&[pair(0.01), pair(0.5)], 3, &Claimed::default());
-        let want = (0.01f64.powi(2) + 2.0 * SWING_CAP.powi(2)) / 3.0;
+        let (cap, cell) = (0.03, 0.015);
+        let e = capped_energy(&[pair(0.01), pair(0.5)], 3, &Claimed::of(&[], cell), cap);
+        let want = (0.01f64.powi(2) + 2.0 * cap * cap) / 3.0;
         assert!((e - want).abs() < 1e-15);
         // A match on surface the rest of the body explains counts as unmatched.
-        let claimed = Claimed::of(&[pair(0.0)]);
-        let e = capped_energy(&[pair(0.01)], 1, &claimed);
-        assert!((e - SWING_CAP.powi(2)).abs() < 1e-15);
+        let claimed = Claimed::of(&[pair(0.0)], cell);
+        let e = capped_energy(&[pair(0.01)], 1, &claimed, cap);
+        assert!((e - cap * cap).abs() < 1e-15);
     }
 }

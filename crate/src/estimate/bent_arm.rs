@@ -1,5 +1,5 @@
 //! The elbow of an arm bent at it (hands on hips). The limbs' profiles (`profile.rs`) place an
-//! elbow only along a near-straight arm (`segments::MAX_BEND`): a bent arm kept the template's
+//! elbow only along a near-straight arm (`SegmentParams::max_bend_deg`): a bent arm kept the template's
 //! upper-arm length (× the body's scale), its forearm held at that elbow, and nearest points
 //! then pulled the forearm and the hand towards the elbow and into the hip. A bent arm shows
 //! its elbow in its shape: the corner where the upper arm's axis meets the forearm's. So here
@@ -15,18 +15,11 @@ use nalgebra::{Point3, Rotation3, Vector3};
 
 use super::arm_swing::arms;
 use super::matching::Matching;
+use super::params::SegmentParams;
 use super::profile::{fraction, LimbLine};
-use super::segments::{is_bent, STRETCH_RANGE};
 use crate::mesh::similarity::{similarity, Similarity};
-use crate::template::parts::{Part, PartPose};
+use crate::template::parts::{limb_bend, Part, PartPose};
 use crate::template::Template;
-
-/// The forearm's own fit takes its vertices (and the hand's) from this fraction of the way from
-/// the elbow to the wrist on: the elbow's blend with the upper arm is left out.
-const FOREARM_START: f64 = 0.25;
-
-/// Iterations of the forearm's own fit.
-const FOREARM_ITERATIONS: usize = 5;
 
 /// The parameter along the line `a + s·u` of its point nearest the line `b + t·v` (unit
 /// directions), `None` when the lines are near parallel.
@@ -39,12 +32,13 @@ fn nearest_on(a: &Point3<f64>, u: &Vector3<f64>, b: &Point3<f64>, v: &Vector3<f6
 
 /// The upper part's stretch that puts the elbow (the lower part's joint) where the upper arm's
 /// axis passes nearest the forearm's axis in `forearm` (the forearm's own placement), within
-/// the stretch range; `None` when the axes are near parallel.
+/// the stretch `range`; `None` when the axes are near parallel.
 fn elbow_stretch(
     upper: &Part,
     upper_pose: &PartPose,
     lower: &Part,
     forearm: &Similarity,
+    range: (f64, f64),
 ) -> Option<f64> {
     let (axis, lower_axis) = (upper.axis?, lower.axis?);
     let t = upper_pose.transform;
@@ -57,7 +51,7 @@ fn elbow_stretch(
         &(forearm.rotation * lower_axis),
     )?;
     let length = (lower.joint - upper.joint).dot(&axis) * t.scale;
-    (length > 0.0).then(|| (along / length).clamp(STRETCH_RANGE.0, STRETCH_RANGE.1))
+    (length > 0.0).then(|| (along / length).clamp(range.0, range.1))
 }
 
 /// The template's elbow hinge of the arm whose upper part is `upper` (unit, template frame): from
@@ -106,10 +100,10 @@ fn roll_to_hinge(
     Some(())
 }
 
-/// For each arm bent more than `segments::MAX_BEND` in `poses` (of `parts`, of `template` at the
-/// resolution fitted): its forearm fitted on its own for [`FOREARM_ITERATIONS`] (those of
-/// `vertices` whose `dominant` part is the forearm, from [`FOREARM_START`] of the way to the
-/// wrist on, matched by `matching`), the upper arm's stretch set by [`elbow_stretch`] and the
+/// For each arm bent more than `params.max_bend_deg` in `poses` (of `parts`, of `template` at the
+/// resolution fitted): its forearm fitted on its own for `params.bent_arm.forearm_iterations`
+/// (those of `vertices` whose `dominant` part is the forearm, from
+/// `params.bent_arm.forearm_start` of the way to the wrist on, matched by `matching`), the upper arm's stretch set by [`elbow_stretch`] and the
 /// forearm held there in its own turn. Returns the upper parts placed.
 pub fn place_bent_elbows(
     template: &Template,
@@ -118,6 +112,7 @@ pub fn place_bent_elbows(
     vertices: &[u32],
     dominant: &[Option<usize>],
     matching: &Matching<'_>,
+    params: &SegmentParams,
 ) -> Vec<usize> {
     let rest = &template.mesh().positions;
     let rest_normals = template.mesh().vertex_normals();
@@ -125,7 +120,9 @@ pub fn place_bent_elbows(
     for arm in arms(parts) {
         let (upper, lower) = (&parts[arm.upper], &parts[arm.lower]);
         let Some(end) = lower.end else { continue };
-        if !is_bent(parts, poses, arm.upper, arm.lower, &end) {
+        let bent =
+            limb_bend(parts, poses, arm.upper, arm.lower, &end) > params.max_bend_deg.to_radians();
+        if !bent {
             continue;
         }
         let line = LimbLine {
@@ -136,13 +133,13 @@ pub fn place_bent_elbows(
             .iter()
             .copied()
             .filter(|&v| dominant[v as usize] == Some(arm.lower))
-            .filter(|&v| fraction(&line, &rest[v as usize]) >= FOREARM_START)
+            .filter(|&v| fraction(&line, &rest[v as usize]) >= params.bent_arm.forearm_start)
             .collect();
         let mut forearm = poses[arm.lower];
         let scale = forearm.transform.scale;
         let mut positions = rest.to_vec();
         let mut normals = rest_normals.to_vec();
-        for _ in 0..FOREARM_ITERATIONS {
+        for _ in 0..params.bent_arm.forearm_iterations {
             for &v in &own {
                 positions[v as usize] = lower.apply(&forearm, &rest[v as usize]);
                 normals[v as usize] = forearm.transform.rotation * rest_normals[v as usize];
@@ -165,8 +162,13 @@ pub fn place_bent_elbows(
                 translation: rigid.translation,
             };
         }
-        let Some(stretch) = elbow_stretch(upper, &poses[arm.upper], lower, &forearm.transform)
-        else {
+        let Some(stretch) = elbow_stretch(
+            upper,
+            &poses[arm.upper],
+            lower,
+            &forearm.transform,
+            params.stretch_range,
+        ) else {
             continue;
         };
         poses[arm.upper].stretch = stretch;
@@ -233,7 +235,13 @@ mod tests {
         let dominant = dominant_parts(&parts, rest.len());
         let mut poses = start.clone();
         let placed = place_bent_elbows(
-            &template, &parts, &mut poses, &vertices, &dominant, &matching,
+            &template,
+            &parts,
+            &mut poses,
+            &vertices,
+            &dominant,
+            &matching,
+            &SegmentParams::default(),
         );
         assert_eq!(placed, arms.iter().map(|a| a.upper).collect::<Vec<_>>());
         for arm in &arms {
@@ -264,6 +272,7 @@ mod tests {
             &vertices,
             &dominant,
             &matching,
+            &SegmentParams::default(),
         );
         assert!(placed.is_empty());
         assert!(straight.iter().all(|p| p.stretch == 1.0));

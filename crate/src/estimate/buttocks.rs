@@ -11,47 +11,30 @@
 
 use nalgebra::{Point3, Vector3};
 
+use super::params::ButtocksParams;
 use crate::template::parts::{Part, PartPose};
 use crate::template::Template;
 
-/// Half-width (m, at the template's size) of the band about the midline the back is taken from.
-const ACROSS: f64 = 0.04;
-
-/// The heights (m, at the template's size, from the midpoint of the PSIS) searched.
-const WINDOW: (f64, f64) = (-0.25, 0.10);
-
-/// Height of a bin of the back's profile (m, at the template's size).
-const BIN: f64 = 0.005;
-
-/// The peak must stand out of the profile at the window's ends by at least this (m, at the
-/// template's size): a flat back gives no height.
-const MIN_PROMINENCE: f64 = 0.01;
-
-/// A bin with fewer points than this has no extent.
-const MIN_POINTS: usize = 3;
-
-/// The torso's stretch stays within this range (its length from the neck down).
-const TORSO_STRETCH_RANGE: (f64, f64) = (0.85, 1.15);
-
 /// The height along `up` (unit) above `at` at which `points` (spread over a surface) within
-/// [`ACROSS`] of the midline through `at` reach furthest against `front` (unit, the body's
-/// facing), within [`WINDOW`]; `size`: the body's scale (metres per template metre). The back's
-/// extent per bin smoothed over three bins; `None` when it has no peak standing
-/// [`MIN_PROMINENCE`] out of both ends of the window, or the peak is at an end.
+/// `params.across` of the midline through `at` reach furthest against `front` (unit, the body's
+/// facing), within `params.window`; `size`: the body's scale (metres per template metre). The
+/// back's extent per bin (`params.bin`) smoothed over three bins; `None` when it has no peak
+/// standing `params.min_prominence` out of both ends of the window, or the peak is at an end.
 pub fn buttock_height(
     points: &[Point3<f64>],
     at: &Point3<f64>,
     up: &Vector3<f64>,
     front: &Vector3<f64>,
     size: f64,
+    params: &ButtocksParams,
 ) -> Option<f64> {
     let across = up.cross(front);
-    let (low, bin) = (WINDOW.0 * size, BIN * size);
-    let bins = ((WINDOW.1 - WINDOW.0) / BIN).round() as usize;
+    let (low, bin) = (params.window.0 * size, params.bin * size);
+    let bins = ((params.window.1 - params.window.0) / params.bin).round() as usize;
     let mut back: Vec<(f64, usize)> = vec![(f64::NEG_INFINITY, 0); bins];
     for p in points {
         let d = p - at;
-        if d.dot(&across).abs() > ACROSS * size {
+        if d.dot(&across).abs() > params.across * size {
             continue;
         }
         let b = ((d.dot(up) - low) / bin).floor();
@@ -64,7 +47,7 @@ pub fn buttock_height(
     }
     let extent: Vec<Option<f64>> = back
         .iter()
-        .map(|&(e, n)| (n >= MIN_POINTS).then_some(e))
+        .map(|&(e, n)| (n >= params.min_points).then_some(e))
         .collect();
     let smooth: Vec<Option<f64>> = (0..bins)
         .map(|i| {
@@ -82,7 +65,7 @@ pub fn buttock_height(
     let first = smooth.iter().find_map(|e| *e)?;
     let last = smooth.iter().rev().find_map(|e| *e)?;
     let inside = peak > 0 && peak + 1 < bins;
-    (inside && top - first.max(last) >= MIN_PROMINENCE * size)
+    (inside && top - first.max(last) >= params.min_prominence * size)
         .then_some(low + (peak as f64 + 0.5) * bin)
 }
 
@@ -103,25 +86,33 @@ pub(crate) fn psis_midpoint(template: &Template) -> Option<Point3<f64>> {
 /// buttocks (`surface`, points on its surface at rest, about `psis`, the midpoint of its PSIS
 /// landmarks at rest) land at the scan's (`scan`, points on its surface, metres), both found by
 /// [`buttock_height`] in the frame of the torso's pose. Left as it is when either is not found
-/// or the stretch would leave [`TORSO_STRETCH_RANGE`].
+/// or the stretch would leave `params.stretch_range`.
 pub fn place_buttocks(
     parts: &[Part],
     poses: &mut [PartPose],
     surface: &[Point3<f64>],
     scan: &[Point3<f64>],
     psis: &Point3<f64>,
+    params: &ButtocksParams,
 ) {
     let torso = &parts[0];
     let Some(axis) = torso.axis else { return };
     let pose = poses[0];
     let size = pose.transform.scale;
     let (up, front) = (Vector3::y(), Vector3::z());
-    let Some(template) = buttock_height(surface, psis, &up, &front, 1.0) else {
+    let Some(template) = buttock_height(surface, psis, &up, &front, 1.0, params) else {
         return;
     };
     let at = torso.apply(&pose, psis);
     let rotation = pose.transform.rotation;
-    let Some(found) = buttock_height(scan, &at, &(rotation * up), &(rotation * front), size) else {
+    let Some(found) = buttock_height(
+        scan,
+        &at,
+        &(rotation * up),
+        &(rotation * front),
+        size,
+        params,
+    ) else {
         return;
     };
     // How far (template metres) the buttocks move up, and their distance down the axis.
@@ -131,7 +122,7 @@ pub fn place_buttocks(
         return;
     }
     let stretch = pose.stretch - lift / depth;
-    if (TORSO_STRETCH_RANGE.0..=TORSO_STRETCH_RANGE.1).contains(&stretch) {
+    if (params.stretch_range.0..=params.stretch_range.1).contains(&stretch) {
         poses[0].stretch = stretch;
     }
 }
@@ -139,6 +130,7 @@ pub fn place_buttocks(
 #[cfg(test)]
 mod tests {
     use super::*;
+
     use crate::estimate::profile::surface_samples;
     use crate::template::parts::base_parts;
 
@@ -159,15 +151,50 @@ mod tests {
     #[test]
     fn the_buttocks_are_where_the_back_reaches_furthest() {
         let (up, front) = (Vector3::y(), Vector3::z());
-        let h = buttock_height(&back(-0.08, 0.03), &Point3::origin(), &up, &front, 1.0).unwrap();
-        assert!((h + 0.08).abs() <= BIN, "{h}");
+        let h = buttock_height(
+            &back(-0.08, 0.03),
+            &Point3::origin(),
+            &up,
+            &front,
+            1.0,
+            &ButtocksParams::default(),
+        )
+        .unwrap();
+        assert!((h + 0.08).abs() <= ButtocksParams::default().bin, "{h}");
         // At twice the size, twice the height.
         let big: Vec<_> = back(-0.08, 0.03).iter().map(|p| p * 2.0).collect();
-        let h = buttock_height(&big, &Point3::origin(), &up, &front, 2.0).unwrap();
-        assert!((h + 0.16).abs() <= 2.0 * BIN, "{h}");
+        let h = buttock_height(
+            &big,
+            &Point3::origin(),
+            &up,
+            &front,
+            2.0,
+            &ButtocksParams::default(),
+        )
+        .unwrap();
+        assert!(
+            (h + 0.16).abs() <= 2.0 * ButtocksParams::default().bin,
+            "{h}"
+        );
         // A flat back, or a peak outside the window, gives none.
-        assert!(buttock_height(&back(-0.08, 0.0), &Point3::origin(), &up, &front, 1.0).is_none());
-        assert!(buttock_height(&back(0.2, 0.03), &Point3::origin(), &up, &front, 1.0).is_none());
+        assert!(buttock_height(
+            &back(-0.08, 0.0),
+            &Point3::origin(),
+            &up,
+            &front,
+            1.0,
+            &ButtocksParams::default()
+        )
+        .is_none());
+        assert!(buttock_height(
+            &back(0.2, 0.03),
+            &Point3::origin(),
+            &up,
+            &front,
+            1.0,
+            &ButtocksParams::default()
+        )
+        .is_none());
     }
 
     #[test]
@@ -178,12 +205,26 @@ mod tests {
         let psis = psis_midpoint(&template).unwrap();
         // The template itself: the torso keeps its length.
         let mut poses = vec![PartPose::identity(); parts.len()];
-        place_buttocks(&parts, &mut poses, &surface, &surface, &psis);
+        place_buttocks(
+            &parts,
+            &mut poses,
+            &surface,
+            &surface,
+            &psis,
+            &ButtocksParams::default(),
+        );
         assert_eq!(poses[0].stretch, 1.0);
         // A scan whose body below the neck is 6 % shorter.
         let torso = &parts[0];
         let scan: Vec<_> = surface.iter().map(|p| torso.stretched(p, 0.94)).collect();
-        place_buttocks(&parts, &mut poses, &surface, &scan, &psis);
+        place_buttocks(
+            &parts,
+            &mut poses,
+            &surface,
+            &scan,
+            &psis,
+            &ButtocksParams::default(),
+        );
         assert!(
             (poses[0].stretch - 0.94).abs() < 0.015,
             "{}",

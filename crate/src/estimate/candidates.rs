@@ -70,7 +70,8 @@ pub fn fit_similarity(
 }
 
 /// Of the fitted candidates (`fitted`, least energy first), when the two best agree on which way
-/// is up but face different ways, and their energies lie within [`CLOSE`] of each other, the one
+/// is up but face different ways (`same_frame_deg`, [`same_frame`]), and their energies lie within
+/// `close` (a fraction, `EstimateParams::torso_close`) of each other, the one
 /// whose torso (`torso`:
 /// template vertices of `rest` with unit `normals`, metres) matches the scan better goes first.
 /// Arms and legs pose freely, the torso does not: a body with its hands on its hips, elbows out,
@@ -85,13 +86,15 @@ pub fn prefer_torso<S>(
     normals: &[Vector3<f64>],
     torso: &[u32],
     matching: &Matching<'_>,
+    same_frame_deg: f64,
+    close: f64,
 ) {
     let [(_, a), (_, b), ..] = &*fitted else {
         return;
     };
-    if !same_up(&a.transform, &b.transform)
-        || same_frame(&a.transform, &b.transform)
-        || b.energy > a.energy * (1.0 + CLOSE)
+    if !same_up(&a.transform, &b.transform, same_frame_deg)
+        || same_frame(&a.transform, &b.transform, same_frame_deg)
+        || b.energy > a.energy * (1.0 + close)
     {
         return;
     }
@@ -108,9 +111,6 @@ pub fn prefer_torso<S>(
         fitted.swap(0, 1);
     }
 }
-
-/// See [`prefer_torso`].
-const CLOSE: f64 = 0.1;
 
 /// `count` template vertices spread evenly by index over those with a data weight of at least
 /// ½ (no hands, ears or unseen parts: they are the least reliable on scans).
@@ -166,11 +166,11 @@ mod tests {
         };
         // 5 % apart: the torso decides.
         let mut fitted = [("away", fitted_with(0.002)), ("right", right)];
-        prefer_torso(&mut fitted, rest, &normals, &torso, &matching);
+        prefer_torso(&mut fitted, rest, &normals, &torso, &matching, 60.0, 0.1);
         assert_eq!(fitted[0].0, "right");
         // 50 % apart: the whole body's fit stands.
         let mut fitted = [("away", fitted_with(0.0014)), ("right", right)];
-        prefer_torso(&mut fitted, rest, &normals, &torso, &matching);
+        prefer_torso(&mut fitted, rest, &normals, &torso, &matching, 60.0, 0.1);
         assert_eq!(fitted[0].0, "away");
     }
 

@@ -86,25 +86,22 @@ pub fn frame_candidates(
 }
 
 /// Whether two template → scan similarities agree on the frame: the template's up (+y) and its
-/// facing (+z) each go within [`SAME_FRAME_DEG`] of the same direction (the candidates differ
-/// by half turns; a body's pose by far less).
-pub fn same_frame(a: &Similarity, b: &Similarity) -> bool {
-    same_up(a, b) && close(a, b, Vector3::z())
+/// facing (+z) each go within `max_deg` (degrees, `EstimateParams::same_frame_deg`) of the same
+/// direction (the candidates differ by half turns; a body's pose by far less).
+pub fn same_frame(a: &Similarity, b: &Similarity, max_deg: f64) -> bool {
+    same_up(a, b, max_deg) && close(a, b, Vector3::z(), max_deg)
 }
 
 /// Whether two template → scan similarities agree on which way is up: the template's up (+y)
-/// goes within [`SAME_FRAME_DEG`] of the same direction.
-pub fn same_up(a: &Similarity, b: &Similarity) -> bool {
-    close(a, b, Vector3::y())
+/// goes within `max_deg` (degrees) of the same direction.
+pub fn same_up(a: &Similarity, b: &Similarity, max_deg: f64) -> bool {
+    close(a, b, Vector3::y(), max_deg)
 }
 
-/// Whether `a` and `b` take the template's `axis` within [`SAME_FRAME_DEG`] of each other.
-fn close(a: &Similarity, b: &Similarity, axis: Vector3<f64>) -> bool {
-    (a.rotation * axis).angle(&(b.rotation * axis)) <= SAME_FRAME_DEG.to_radians()
+/// Whether `a` and `b` take the template's `axis` within `max_deg` (degrees) of each other.
+fn close(a: &Similarity, b: &Similarity, axis: Vector3<f64>, max_deg: f64) -> bool {
+    (a.rotation * axis).angle(&(b.rotation * axis)) <= max_deg.to_radians()
 }
-
-/// See [`same_frame`].
-const SAME_FRAME_DEG: f64 = 60.0;
 
 fn extent_along(points: &[Point3<f64>], axis: &Vector3<f64>) -> f64 {
     let (lo, hi) = points
@@ -153,14 +150,14 @@ mod tests {
                 * a.rotation,
             ..a
         };
-        assert!(same_frame(&a, &b));
+        assert!(same_frame(&a, &b, 60.0));
         // Facing the other way, or upside down.
         for axis in [Vector3::y(), Vector3::z()] {
             let c = Similarity {
                 rotation: a.rotation * turn(axis, 180.0).rotation,
                 ..a
             };
-            assert!(!same_frame(&a, &c));
+            assert!(!same_frame(&a, &c, 60.0));
         }
     }
 

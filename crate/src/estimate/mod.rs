@@ -6,17 +6,21 @@
 //! * [`steps`] — [`estimate_landmarks`], [`EstimateInput`], [`LandmarkEstimate`]: the steps.
 //! * [`frame`] — principal axes and the four frame candidates; [`FrameReport`].
 //! * [`candidates`] — the similarity ICP of each candidate.
-//! * [`segments`] — the segment-wise rigid fit of the template's parts (the pose).
+//! * [`segments`] — the segment-wise rigid fit of the template's parts (`template::parts`,
+//!   shared with `align::part_pose`) to the scan's pose.
 //!   [`arm_swing`] — each arm's swing about the shoulder tried from several starts;
 //!   [`bent_arm`] — the elbow of an arm bent at it (hands on hips); [`buttocks`] — the torso's
 //!   length from the height of the buttocks.
-//! * [`hand`] — the hand's pose about the wrist, from the scan's surface beyond it.
+//! * [`profile`] — the limbs' cross-section profiles (knees, elbows, the wrist).
+//! * [`hand`] — the hand's pose about the wrist, from the scan's surface beyond it (the
+//!   template's hands: `template::hand`).
 //! * [`matching`] — closest compatible scan points, the ICP energy.
 //! * [`suspicious`] — [`flag_suspicious`]: given landmarks far from where they are expected;
 //!   [`expected`] — where: from the other given landmarks of the part, or from the fit.
 //! * [`confidence`] — the typical error of each landmark (`typical_error`) and the fit's residual.
 //! * [`tick`] — progress and cancel through the caller's `AlignObserver`.
-//! * [`EstimateParams`] (`params.rs`), [`EstimateReport`] (`report.rs`), [`EstimateError`]
+//! * [`params`] — [`EstimateParams`] and the parameter structs it holds (every tuning number,
+//!   with its documented default); [`EstimateReport`] (`report.rs`), [`EstimateError`]
 //!   (`error.rs`).
 
 pub mod arm_swing;

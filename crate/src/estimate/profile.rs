@@ -6,28 +6,12 @@
 //! where the template's maps. A leg's knee is then set by a sharper feature of the same kind:
 //! the front of the knee stepping back to the shin below the patella and the tibial tuberosity
 //! (the steepest fall of how far forward the leg reaches), taken where the template's sits below
-//! its knee. The wrist of a bent forearm (`hand.rs`) is placed by the same kind of profile, the
+//! its knee. The wrist of a bent forearm (`hand/wrist_profile.rs`) is placed by the same kind of profile, the
 //! template's shifted along the scan's over the forearm's narrowing and the hand's widening.
 
 use nalgebra::{Point3, Vector3};
 
-/// Bins of a profile from the root of the limb (hip) to its end (ankle).
-const BINS: usize = 60;
-
-/// A bin with fewer points than this has no width.
-const MIN_POINTS: usize = 6;
-
-/// The fractions of the limb (root 0, end 1) over which the profiles are compared: below the
-/// crotch and the hands hanging beside the thigh, above the foot.
-const WINDOW: (f64, f64) = (0.3, 0.92);
-
-/// How far (fraction of the limb) the knee may move from where the fit put it.
-const SEARCH: f64 = 0.08;
-
-/// How far (fraction of the limb) from the knee the fall of the leg's front below the patella
-/// is looked for (the template's: from its knee; the scan's: from where the width's profile put
-/// it).
-const FRONT_SEARCH: f64 = 0.08;
+use super::params::ProfileParams;
 
 /// A limb as a line: root (hip) to end (ankle).
 #[derive(Debug, Clone, Copy)]
@@ -46,7 +30,7 @@ impl LimbLine {
     }
 }
 
-/// The points of limb `k` of `limbs` at each of [`BINS`] heights, as vectors across its axis
+/// The points of limb `k` of `limbs` at each of `params.bins` heights, as vectors across its axis
 /// from its line: the `points` nearer to limb `k`'s line than to every other line of `limbs` and
 /// within `radius` (m) of it.
 fn bins(
@@ -54,10 +38,11 @@ fn bins(
     limbs: &[LimbLine],
     k: usize,
     radius: f64,
+    params: &ProfileParams,
 ) -> Vec<Vec<Vector3<f64>>> {
     let line = limbs[k];
     let axis: Vector3<f64> = (line.end - line.root).normalize();
-    let mut bins: Vec<Vec<Vector3<f64>>> = vec![Vec::new(); BINS];
+    let mut bins: Vec<Vec<Vector3<f64>>> = vec![Vec::new(); params.bins];
     for p in points {
         let (u, r) = line.locate(p);
         if !(0.0..1.0).contains(&u) || r > radius {
@@ -71,12 +56,12 @@ fn bins(
             continue;
         }
         let across = (p - line.root) - axis * (p - line.root).dot(&axis);
-        bins[((u * BINS as f64) as usize).min(BINS - 1)].push(across);
+        bins[((u * params.bins as f64) as usize).min(params.bins - 1)].push(across);
     }
     bins
 }
 
-/// The width of limb `k` of `limbs` at each of [`BINS`] heights: per bin (its points as
+/// The width of limb `k` of `limbs` at each of `params.bins` heights: per bin (its points as
 /// [`bins`] takes them), the median distance across the axis from the points' mean. `None` for
 /// a bin with too few.
 pub fn profile(
@@ -84,11 +69,12 @@ pub fn profile(
     limbs: &[LimbLine],
     k: usize,
     radius: f64,
+    params: &ProfileParams,
 ) -> Vec<Option<f64>> {
-    bins(points, limbs, k, radius)
+    bins(points, limbs, k, radius, params)
         .iter()
         .map(|b| {
-            if b.len() < MIN_POINTS {
+            if b.len() < params.min_points {
                 return None;
             }
             let mean = b.iter().sum::<Vector3<f64>>() / b.len() as f64;
@@ -100,7 +86,7 @@ pub fn profile(
 }
 
 /// How far limb `k` of `limbs` reaches towards `direction` (across its axis; the back of the
-/// leg) at each of [`BINS`] heights: per bin, the 90th percentile of its points' distance from
+/// leg) at each of `params.bins` heights: per bin, the 90th percentile of its points' distance from
 /// the line along `direction`. `None` for a bin with too few.
 pub fn reach(
     points: &[Point3<f64>],
@@ -108,13 +94,14 @@ pub fn reach(
     k: usize,
     radius: f64,
     direction: &Vector3<f64>,
+    params: &ProfileParams,
 ) -> Vec<Option<f64>> {
     let axis = (limbs[k].end - limbs[k].root).normalize();
     let d = (direction - axis * direction.dot(&axis)).normalize();
-    bins(points, limbs, k, radius)
+    bins(points, limbs, k, radius, params)
         .iter()
         .map(|b| {
-            if b.len() < MIN_POINTS {
+            if b.len() < params.min_points {
                 return None;
             }
             let mut along: Vec<f64> = b.iter().map(|v| v.dot(&d)).collect();
@@ -159,7 +146,7 @@ fn steepest_rise(profile: &[Option<f64>], around: f64, half: f64) -> Option<f64>
 /// template's leg) lands, from the front of the knee: where the front's reach (`template`,
 /// `scan`: [`reach`] away from the back of the knee) falls fastest towards the ankle — below
 /// the patella and the tibial tuberosity the front of the leg steps back to the shin — on the
-/// template within [`FRONT_SEARCH`] of its knee, on the scan within it of `around` (where the
+/// template within `params.front_search` of its knee, on the scan within it of `around` (where the
 /// width's profile put the knee); the knee sits as far above it as the template's. Bone under
 /// thin skin shapes the front of the knee; the width's profile smooths it over (the hollow
 /// behind balances the patella). It replaced the top of the calf (the steepest rise of the
@@ -170,11 +157,12 @@ pub fn knee_from_front(
     scan: &[Option<f64>],
     joint: f64,
     around: f64,
+    params: &ProfileParams,
 ) -> Option<f64> {
     let negated =
         |p: &[Option<f64>]| -> Vec<Option<f64>> { p.iter().map(|w| w.map(|w| -w)).collect() };
-    let front = steepest_rise(&negated(template), joint, FRONT_SEARCH)?;
-    Some(steepest_rise(&negated(scan), around, FRONT_SEARCH)? + joint - front)
+    let front = steepest_rise(&negated(template), joint, params.front_search)?;
+    Some(steepest_rise(&negated(scan), around, params.front_search)? + joint - front)
 }
 
 /// The profile's value at fraction `u` (linear between bin centres), `None` off its ends or
@@ -194,18 +182,19 @@ fn at(profile: &[Option<f64>], u: f64) -> Option<f64> {
 
 /// The fraction along the scan's limb where the template's joint (fraction `joint` along the
 /// template's limb) lands: of the piecewise-linear maps taking `joint` to `f` (`f` within
-/// [`SEARCH`] of `start`), the one under which the template's profile, times a fitted gain (the
-/// subject's girth), is nearest the scan's over [`WINDOW`]. `None` when too little of the
+/// `params.search` of `start`), the one under which the template's profile, times a fitted gain (the
+/// subject's girth), is nearest the scan's over `params.window`. `None` when too little of the
 /// profiles overlaps.
 pub fn register(
     template: &[Option<f64>],
     scan: &[Option<f64>],
     joint: f64,
     start: f64,
+    params: &ProfileParams,
 ) -> Option<f64> {
     let steps = 64;
     let candidates = (0..=steps)
-        .map(|s| start - SEARCH + 2.0 * SEARCH * s as f64 / steps as f64)
+        .map(|s| start - params.search + 2.0 * params.search * s as f64 / steps as f64)
         .filter(|f| *f > 0.05 && *f < 0.95);
     least_cost(candidates, |f| {
         let pairs: Vec<(f64, f64)> = scan
@@ -213,7 +202,7 @@ pub fn register(
             .enumerate()
             .filter_map(|(i, w)| {
                 let u = (i as f64 + 0.5) / scan.len() as f64;
-                if !(WINDOW.0..=WINDOW.1).contains(&u) {
+                if !(params.window.0..=params.window.1).contains(&u) {
                     return None;
                 }
                 let ut = if u < f {
@@ -230,18 +219,19 @@ pub fn register(
 
 /// The shift (fraction of the line) that brings the template's profile, times a fitted gain,
 /// nearest the scan's over `window` (fractions along the template's line): of the shifts from
-/// `shifts.0` to `shifts.1` in [`SHIFT_STEPS`] steps, the one with the least mean squared
+/// `shifts.0` to `shifts.1` in `params.shift_steps` steps, the one with the least mean squared
 /// difference. `None` when too little of the profiles overlaps at every shift.
 pub fn register_shift(
     template: &[Option<f64>],
     scan: &[Option<f64>],
     window: (f64, f64),
     shifts: (f64, f64),
+    params: &ProfileParams,
 ) -> Option<f64> {
     let bins = |u: f64| (u * template.len() as f64) as usize;
     let (first, last) = (bins(window.0), bins(window.1).min(template.len() - 1));
-    let candidates =
-        (0..=SHIFT_STEPS).map(|s| shifts.0 + (shifts.1 - shifts.0) * s as f64 / SHIFT_STEPS as f64);
+    let candidates = (0..=params.shift_steps)
+        .map(|s| shifts.0 + (shifts.1 - shifts.0) * s as f64 / params.shift_steps as f64);
     least_cost(candidates, |shift| {
         let pairs: Vec<(f64, f64)> = (first..=last)
             .filter_map(|i| {
@@ -283,9 +273,6 @@ fn gained_cost(pairs: &[(f64, f64)]) -> Option<f64> {
     let sum: f64 = pairs.iter().map(|(s, t)| (s - gain * t).powi(2)).sum();
     Some(sum / pairs.len() as f64)
 }
-
-/// Shifts tried by [`register_shift`].
-const SHIFT_STEPS: usize = 90;
 
 /// Points spread over the triangles of a mesh (`positions`, `triangles`) about `spacing` (m)
 /// apart: on each triangle a barycentric grid with as many steps per edge as its longest edge
@@ -375,17 +362,35 @@ mod tests {
             root: Point3::new(0.0, 0.0, 1.0),
             end: Point3::origin(),
         }];
-        let template = profile(&limb(leg(0.5, 1.0)), &line, 0, 0.14);
+        let template = profile(
+            &limb(leg(0.5, 1.0)),
+            &line,
+            0,
+            0.14,
+            &ProfileParams::default(),
+        );
         // The scan's knee sits lower (0.55) and its leg is thicker; the fit put it at 0.5.
-        let scan = profile(&limb(leg(0.55, 1.2)), &line, 0, 0.14);
-        let f = register(&template, &scan, 0.5, 0.5).unwrap();
+        let scan = profile(
+            &limb(leg(0.55, 1.2)),
+            &line,
+            0,
+            0.14,
+            &ProfileParams::default(),
+        );
+        let f = register(&template, &scan, 0.5, 0.5, &ProfileParams::default()).unwrap();
         assert!((f - 0.55).abs() < 0.01, "{f}");
         // Points nearer another limb's line are not this limb's.
         let other = LimbLine {
             root: Point3::new(0.02, 0.0, 1.0),
             end: Point3::new(0.02, 0.0, 0.0),
         };
-        let half = profile(&limb(leg(0.5, 1.0)), &[line[0], other], 0, 0.14);
+        let half = profile(
+            &limb(leg(0.5, 1.0)),
+            &[line[0], other],
+            0,
+            0.14,
+            &ProfileParams::default(),
+        );
         assert!(half.iter().flatten().count() > 0);
         assert_ne!(half, template);
     }
@@ -413,10 +418,29 @@ mod tests {
             root: Point3::new(0.0, 0.0, 1.0),
             end: Point3::origin(),
         }];
-        let template = profile(&limb(forearm(0.6, 1.0)), &line, 0, 0.14);
+        let template = profile(
+            &limb(forearm(0.6, 1.0)),
+            &line,
+            0,
+            0.14,
+            &ProfileParams::default(),
+        );
         for (w, girth) in [(0.68, 1.1), (0.6, 0.9), (0.55, 1.0)] {
-            let scan = profile(&limb(forearm(w, girth)), &line, 0, 0.14);
-            let shift = register_shift(&template, &scan, (0.45, 0.72), (-0.1, 0.2)).unwrap();
+            let scan = profile(
+                &limb(forearm(w, girth)),
+                &line,
+                0,
+                0.14,
+                &ProfileParams::default(),
+            );
+            let shift = register_shift(
+                &template,
+                &scan,
+                (0.45, 0.72),
+                (-0.1, 0.2),
+                &ProfileParams::default(),
+            )
+            .unwrap();
             assert!((shift - (w - 0.6)).abs() < 0.01, "{w}: {shift}");
         }
     }
@@ -461,14 +485,34 @@ mod tests {
             end: Point3::origin(),
         }];
         let ahead = -Vector3::x();
-        let template = reach(&rings(0.45), &line, 0, 0.14, &ahead);
-        let scan = reach(&rings(0.5), &line, 0, 0.14, &ahead);
+        let template = reach(
+            &rings(0.45),
+            &line,
+            0,
+            0.14,
+            &ahead,
+            &ProfileParams::default(),
+        );
+        let scan = reach(
+            &rings(0.5),
+            &line,
+            0,
+            0.14,
+            &ahead,
+            &ProfileParams::default(),
+        );
         // The width's profile put the scan's knee at 0.48; the front says 0.5.
-        let f = knee_from_front(&template, &scan, 0.45, 0.48).unwrap();
+        let f = knee_from_front(&template, &scan, 0.45, 0.48, &ProfileParams::default()).unwrap();
         assert!((f - 0.5).abs() < 0.01, "{f}");
         // No front, no fall.
         assert_eq!(
-            knee_from_front(&template, &vec![None; BINS], 0.45, 0.48),
+            knee_from_front(
+                &template,
+                &vec![None; ProfileParams::default().bins],
+                0.45,
+                0.48,
+                &ProfileParams::default()
+            ),
             None
         );
     }

@@ -21,10 +21,11 @@ use std::ops::ControlFlow;
 
 use nalgebra::{Point3, Vector3};
 
-use super::arm_swing::{swing_arms, SWING_AFTER, SWING_ITERATIONS};
+use super::arm_swing::swing_arms;
 use super::bent_arm::place_bent_elbows;
 use super::buttocks::{place_buttocks, psis_midpoint};
 use super::matching::Matching;
+use super::params::{ProfileParams, SegmentParams};
 use super::profile::{
     fraction, knee_from_front, profile, reach, register, surface_samples, LimbLine,
 };
@@ -35,18 +36,15 @@ use crate::mesh::Mesh;
 use crate::template::parts::{blend, dominant_parts, limb_bend, Part, PartPose};
 use crate::template::Template;
 
-/// The range of a limb part's stretch along its axis (a quarter shorter to a third longer than
-/// the template's at the body's scale).
-pub(crate) const STRETCH_RANGE: (f64, f64) = (0.75, 1.33);
-
 /// The stretch along `part`'s axis that best explains `wanted` (template point, where it should
 /// go) in the placement `transform`: the least-squares ratio of the axial distances from the
-/// joint, target over template, within [`STRETCH_RANGE`].
+/// joint, target over template, within `range`.
 fn fit_stretch(
     part: &Part,
     axis: &Vector3<f64>,
     transform: &Similarity,
     wanted: &[(Point3<f64>, Point3<f64>)],
+    range: (f64, f64),
 ) -> Option<f64> {
     let (mut num, mut den) = (0.0, 0.0);
     for (p, q) in wanted {
@@ -54,48 +52,19 @@ fn fit_stretch(
         num += u * (transform.apply_inverse(q) - part.joint).dot(axis);
         den += u * u;
     }
-    (den > 0.0).then(|| (num / den).clamp(STRETCH_RANGE.0, STRETCH_RANGE.1))
+    (den > 0.0).then(|| (num / den).clamp(range.0, range.1))
 }
-
-/// Iterations of the segment-wise fit after the knees and elbows are placed by the limbs'
-/// profiles, the thighs' and upper arms' stretches then held (out of the fit's iterations).
-const PROFILE_ITERATIONS: usize = 5;
-
-/// Spacing (m) of the points on the template's and the scan's surface the profiles are taken
-/// from.
-const SURFACE_SPACING: f64 = 0.004;
-
-/// A limb bent more than this (degrees) at the elbow or knee is not placed by its profile: the
-/// profile is taken across the straight root → end line; its hand rests on the body and is
-/// matched by its own vertices instead of posed by its surface's moments (`hand.rs`).
-pub(crate) const MAX_BEND: f64 = 60.0;
-
-/// No elbow or knee bends further than this (degrees from the template's limb; an elbow's full
-/// flexion is ≈ 145°, hands on hips ≈ 80–105°): a fit folded past it is straightened
-/// ([`unfold`]).
-const MAX_FOLD: f64 = 145.0;
-
-/// Scan points farther than this (m) from a leg's line are not the leg (a thigh's radius is up to
-/// ≈ 10 cm).
-const LEG_RADIUS: f64 = 0.14;
-
-/// The same for an arm: narrower, so that an arm held against the trunk takes less of it.
-const ARM_RADIUS: f64 = 0.08;
-
-/// The arm's line runs on beyond the wrist by this fraction of the forearm, over the hand, so
-/// that a hand beside the thigh is not taken for the thigh.
-const HAND_REACH: f64 = 0.7;
 
 /// Fits every part (rigid at `start`'s scale, a leg part stretched along its axis) by ICP from
 /// `start`: each iteration blends the template, matches `vertices` to the scan, then fits each
 /// part, parents first, to the matches of the vertices it dominates plus its joint held where
 /// its (already moved) parent puts it — first the stretch in the part's last placement, then
-/// the rigid motion of the stretched part. After [`SWING_AFTER`] iterations each arm is tried
+/// the rigid motion of the stretched part. After `params.swing.after` iterations each arm is tried
 /// at several turns about its shoulder (`arm_swing.rs`): nearest points alone leave an arm
-/// held down along the body out at the template's A-pose. Before the last [`PROFILE_ITERATIONS`] the knees and
+/// held down along the body out at the template's A-pose. Before the last `params.profile_iterations` the knees and
 /// elbows are moved along the limbs to where the limbs' cross-section profiles put them
 /// (`profile.rs`, [`place_joints`]) and the torso's length is set by the buttocks
-/// (`buttocks.rs`), the torso then held; the elbow of an arm bent more than [`MAX_BEND`] where its
+/// (`buttocks.rs`), the torso then held; the elbow of an arm bent more than `params.max_bend_deg` where its
 /// upper arm's and forearm's axes meet (`bent_arm.rs`), both profiles taken from points spread over the surfaces
 /// (`scan`, metres, is the mesh `matching` indexes): a coarse mesh's vertices alone lie in rings
 /// too far apart. Returns the blended positions, or `None` when the caller cancelled.
@@ -108,6 +77,8 @@ pub fn fit_segments(
     vertices: &[u32],
     matching: &Matching<'_>,
     iterations: usize,
+    params: &SegmentParams,
+    profile: &ProfileParams,
     ticker: &mut Ticker<'_>,
 ) -> Option<Vec<Point3<f64>>> {
     let rest = &template.mesh().positions;
@@ -118,7 +89,7 @@ pub fn fit_segments(
         };
         parts.len()
     ];
-    let after_profile = PROFILE_ITERATIONS.min(iterations / 2);
+    let after_profile = params.profile_iterations.min(iterations / 2);
     let mut held = vec![false; parts.len()];
     let fit = Fit {
         template,
@@ -126,8 +97,9 @@ pub fn fit_segments(
         vertices,
         matching,
         dominant: dominant_parts(parts, rest.len()),
+        params,
     };
-    let before_swing = SWING_AFTER.min(iterations - after_profile);
+    let before_swing = params.swing.after.min(iterations - after_profile);
     fit.iterate(&mut poses, &held, before_swing, ticker)?;
     swing_arms(
         parts,
@@ -137,7 +109,8 @@ pub fn fit_segments(
         vertices,
         &fit.dominant,
         matching,
-        |run| fit.iterate(run, &held, SWING_ITERATIONS, ticker),
+        &params.swing,
+        |run| fit.iterate(run, &held, params.swing.iterations, ticker),
     )?;
     fit.iterate(
         &mut poses,
@@ -153,14 +126,22 @@ pub fn fit_segments(
         vertices,
         &fit.dominant,
         matching,
+        params,
     );
-    let surface = surface_samples(rest, &template.mesh().triangles, SURFACE_SPACING);
-    let scan_surface = surface_samples(&scan.positions, &scan.triangles, SURFACE_SPACING);
+    let surface = surface_samples(rest, &template.mesh().triangles, params.surface_spacing);
+    let scan_surface = surface_samples(&scan.positions, &scan.triangles, params.surface_spacing);
     if let Some(psis) = psis_midpoint(template) {
-        place_buttocks(parts, &mut poses, &surface, &scan_surface, &psis);
+        place_buttocks(
+            parts,
+            &mut poses,
+            &surface,
+            &scan_surface,
+            &psis,
+            &params.buttocks,
+        );
         held[0] = true;
     }
-    for k in place_joints(parts, &mut poses, &surface, &scan_surface) {
+    for k in place_joints(parts, &mut poses, &surface, &scan_surface, params, profile) {
         held[k] = true;
     }
     fit.iterate(&mut poses, &held, after_profile, ticker)?;
@@ -174,6 +155,7 @@ struct Fit<'a> {
     vertices: &'a [u32],
     matching: &'a Matching<'a>,
     dominant: Vec<Option<usize>>,
+    params: &'a SegmentParams,
 }
 
 impl Fit<'_> {
@@ -228,7 +210,15 @@ impl Fit<'_> {
                 let stretch = part
                     .axis
                     .filter(|_| part.stretches && !held[k])
-                    .and_then(|a| fit_stretch(part, &a, &poses[k].transform, &wanted))
+                    .and_then(|a| {
+                        fit_stretch(
+                            part,
+                            &a,
+                            &poses[k].transform,
+                            &wanted,
+                            self.params.stretch_range,
+                        )
+                    })
                     .unwrap_or(poses[k].stretch);
                 let from: Vec<_> = wanted
                     .iter()
@@ -246,26 +236,27 @@ impl Fit<'_> {
                     };
                 }
             }
-            unfold(self.parts, poses);
+            unfold(self.parts, poses, self.params.max_fold_deg);
         }
         Some(())
     }
 }
 
-/// Straightens each limb folded past [`MAX_FOLD`] at the elbow or knee: its lower part takes
+/// Straightens each limb folded past `max_fold_deg` (degrees) at the elbow or knee: its lower part takes
 /// its parent's rotation, its joint kept where the parent puts it, and the ICP goes on from the
 /// straight limb. Nearest points can fold a forearm held in front of the body back up along the
 /// upper arm (the hand at the shoulder), which no elbow does. The fold is the angle between the
 /// lower part's joint → end direction as posed and as its parent's rotation would carry it (a
 /// turn about the limb's own axis is no fold).
-fn unfold(parts: &[Part], poses: &mut [PartPose]) {
+fn unfold(parts: &[Part], poses: &mut [PartPose], max_fold_deg: f64) {
     for (k, part) in parts.iter().enumerate() {
         let (Some(parent), Some(end)) = (part.parent, part.end) else {
             continue;
         };
         let along = end - part.joint;
         let rotation = poses[parent].transform.rotation;
-        if (rotation * along).angle(&(poses[k].transform.rotation * along)) <= MAX_FOLD.to_radians()
+        if (rotation * along).angle(&(poses[k].transform.rotation * along))
+            <= max_fold_deg.to_radians()
         {
             continue;
         }
@@ -277,18 +268,6 @@ fn unfold(parts: &[Part], poses: &mut [PartPose]) {
             translation: bend.coords - rotation * part.joint.coords * scale,
         };
     }
-}
-
-/// Whether the limb of `upper` and `lower` (whose end is `end`, template frame) is bent more
-/// than [`MAX_BEND`] in `poses` ([`limb_bend`]).
-pub(crate) fn is_bent(
-    parts: &[Part],
-    poses: &[PartPose],
-    upper: usize,
-    lower: usize,
-    end: &Point3<f64>,
-) -> bool {
-    limb_bend(parts, poses, upper, lower, end) > MAX_BEND.to_radians()
 }
 
 /// Moves each knee and elbow along its limb to where the limb's cross-section profile on `scan`
@@ -306,6 +285,8 @@ fn place_joints(
     poses: &mut [PartPose],
     surface: &[Point3<f64>],
     scan: &[Point3<f64>],
+    params: &SegmentParams,
+    profile_params: &ProfileParams,
 ) -> Vec<usize> {
     // Each limb: (upper part, lower part, its end), its line at rest and where the fit put it.
     let limbs: Vec<(usize, usize, Point3<f64>)> = parts
@@ -327,7 +308,7 @@ fn place_joints(
         let reach = if parts[lower].stretches {
             0.0
         } else {
-            HAND_REACH
+            params.hand_reach
         };
         LimbLine {
             root,
@@ -342,25 +323,32 @@ fn place_joints(
             continue;
         }
         let arm = !parts[lower].stretches;
-        if is_bent(parts, poses, upper, lower, &end) {
+        if limb_bend(parts, poses, upper, lower, &end) > params.max_bend_deg.to_radians() {
             continue;
         }
         let bend = parts[lower].apply(&poses[lower], &parts[lower].joint);
         let joint = fraction(&at_rest[i], &parts[lower].joint);
         let now = fraction(&posed[i], &bend);
-        let radius = if arm { ARM_RADIUS } else { LEG_RADIUS };
-        let template_profile = profile(surface, &at_rest, i, radius);
-        let scan_profile = profile(scan, &posed, i, radius);
-        let Some(mut f) = register(&template_profile, &scan_profile, joint, now) else {
+        let radius = if arm {
+            params.arm_radius
+        } else {
+            params.leg_radius
+        };
+        let template_profile = profile(surface, &at_rest, i, radius, profile_params);
+        let scan_profile = profile(scan, &posed, i, radius, profile_params);
+        let Some(mut f) = register(&template_profile, &scan_profile, joint, now, profile_params)
+        else {
             continue;
         };
         if let Some(back) = parts[lower].back {
             let posed_back = poses[lower].transform.rotation * back;
-            let template_front = reach(surface, &at_rest, i, radius, &-back);
-            let scan_front = reach(scan, &posed, i, radius, &-posed_back);
-            f = knee_from_front(&template_front, &scan_front, joint, f).unwrap_or(f);
+            let template_front = reach(surface, &at_rest, i, radius, &-back, profile_params);
+            let scan_front = reach(scan, &posed, i, radius, &-posed_back, profile_params);
+            f = knee_from_front(&template_front, &scan_front, joint, f, profile_params)
+                .unwrap_or(f);
         }
-        let clamp = |s: f64| s.clamp(STRETCH_RANGE.0, STRETCH_RANGE.1);
+        let range = params.stretch_range;
+        let clamp = |s: f64| s.clamp(range.0, range.1);
         poses[upper].stretch = clamp(poses[upper].stretch * f / now);
         if !arm {
             poses[lower].stretch = clamp(poses[lower].stretch * (1.0 - f) / (1.0 - now));
@@ -374,6 +362,8 @@ fn place_joints(
 mod tests {
     use super::*;
     use crate::template::parts::base_parts;
+
+    const RANGE: (f64, f64) = (0.75, 1.33);
 
     #[test]
     fn a_stretched_part_is_fitted_back() {
@@ -403,7 +393,7 @@ mod tests {
                 (p, part.apply(&pose, &p))
             })
             .collect();
-        let s = fit_stretch(&part, &part.axis.unwrap(), &transform, &wanted).unwrap();
+        let s = fit_stretch(&part, &part.axis.unwrap(), &transform, &wanted, RANGE).unwrap();
         assert!((s - 1.2).abs() < 1e-12, "{s}");
         // Beyond the range it is clamped.
         let far = PartPose {
@@ -414,8 +404,8 @@ mod tests {
             .iter()
             .map(|(p, _)| (*p, part.apply(&far, p)))
             .collect();
-        let s = fit_stretch(&part, &part.axis.unwrap(), &transform, &wanted).unwrap();
-        assert_eq!(s, STRETCH_RANGE.1);
+        let s = fit_stretch(&part, &part.axis.unwrap(), &transform, &wanted, RANGE).unwrap();
+        assert_eq!(s, RANGE.1);
     }
 
     #[test]
@@ -459,12 +449,12 @@ mod tests {
         // Bent by 120°: an elbow can, it stays.
         let mut poses = folded(120.0);
         let before = bend_at(&poses);
-        unfold(&parts, &mut poses);
+        unfold(&parts, &mut poses, 145.0);
         assert_eq!(bend_at(&poses), before);
         assert!((before.1 - rest_tip).norm() > 0.2);
         // Folded back up along the upper arm: straightened to the rest, the elbow in place.
         let mut poses = folded(170.0);
-        unfold(&parts, &mut poses);
+        unfold(&parts, &mut poses, 145.0);
         let (now, tip) = bend_at(&poses);
         assert!((now - rest).abs() < 1e-9, "{now} {rest}");
         assert!((tip - rest_tip).norm() < 1e-9);

@@ -6,7 +6,7 @@
 //!    when there are at least four; each fitted by similarity ICP, the lowest energy kept
 //!    (`candidates.rs`);
 //! 3. the segment-wise rigid fit of the template's parts to the scan's pose (`segments.rs`),
-//!    then each hand's wrist and turn from the scan's surface beyond the wrist (`hand.rs`); with
+//!    then each hand's wrist and turn from the scan's surface beyond the wrist (`hand/`); with
 //!    four or more given landmarks from the two best candidates, the one nearer them kept;
 //! 4. given landmarks far from where the others of their part (or else the fit) put them are
 //!    flagged (`expected.rs`, `suspicious.rs`);
@@ -21,7 +21,6 @@ use std::borrow::Cow;
 
 use nalgebra::Point3;
 
-use super::arm_swing::{SWING_DEG, SWING_ITERATIONS};
 use super::candidates::{even_sample, fit_similarity, prefer_torso, FittedCandidate};
 use super::confidence::{confidence, neighbourhoods, residual};
 use super::error::EstimateError;
@@ -49,10 +48,6 @@ use crate::template::hand::hands;
 use crate::template::parts::{dominant_part, parts};
 use crate::template::{Resolution, Segment, Template};
 use crate::utils::now_ms;
-
-/// With four or more given landmarks, the segment-wise fit runs from this many of the best
-/// similarity fits, and the one whose landmarks lie nearest the given ones is kept.
-const SEGMENT_STARTS: usize = 2;
 
 /// What one estimate works on.
 #[derive(Debug, Clone, Copy)]
@@ -83,7 +78,7 @@ pub struct LandmarkEstimate {
     /// Where the segment-wise fit (which uses no given landmark) puts each landmark, CAESAR
     /// order, the scan's frame and units: the prediction [`flag_given`] checks an edit against.
     pub predicted: Vec<Point3<f64>>,
-    /// The part (index into `segments::parts`) each landmark vertex belongs to, CAESAR order.
+    /// The part (index into `template::parts::parts`) each landmark vertex belongs to, CAESAR order.
     pub part: Vec<usize>,
     pub report: EstimateReport,
 }
@@ -161,13 +156,13 @@ pub fn estimate_landmarks(
         }
     }
     let segment_starts = if given_m.len() >= 4 {
-        SEGMENT_STARTS
+        params.segment_starts
     } else {
         1
     };
     let max_iterations = starts.len() * (params.candidate_iterations + 1)
         + params.segment_iterations * segment_starts
-        + SWING_ITERATIONS * SWING_DEG.len()
+        + params.segments.swing.iterations * params.segments.swing.turns_deg.len()
         + params.fine.max_iterations;
     let mut ticker = Ticker::new(observer, max_iterations);
 
@@ -190,8 +185,11 @@ pub fn estimate_landmarks(
     // away from them is not taken, however well it fits (a body with its hands on its hips fitted
     // back to front best, held-out seed 6420).
     if let Some(frame) = &given_frame {
-        if fitted.iter().any(|(_, f)| same_frame(frame, &f.transform)) {
-            fitted.retain(|(_, f)| same_frame(frame, &f.transform));
+        if fitted
+            .iter()
+            .any(|(_, f)| same_frame(frame, &f.transform, params.same_frame_deg))
+        {
+            fitted.retain(|(_, f)| same_frame(frame, &f.transform, params.same_frame_deg));
         }
     }
     fitted.sort_by(|a, b| a.1.energy.total_cmp(&b.1.energy));
@@ -200,7 +198,15 @@ pub fn estimate_landmarks(
         .copied()
         .filter(|&v| template.segment_weights(v)[Segment::Torso.index()] >= 0.5)
         .collect();
-    prefer_torso(&mut fitted, rest, &rest_normals, &torso, &matching);
+    prefer_torso(
+        &mut fitted,
+        rest,
+        &rest_normals,
+        &torso,
+        &matching,
+        params.same_frame_deg,
+        params.torso_close,
+    );
     if fitted.first().is_none_or(|(_, f)| f.matched == 0.0) {
         return Err(EstimateError::NoMatch);
     }
@@ -215,7 +221,7 @@ pub fn estimate_landmarks(
         .filter(|&v| weights[v as usize] >= 0.5)
         .step_by(2)
         .collect();
-    // With given landmarks the best [`SEGMENT_STARTS`] are fitted, and the one whose landmarks
+    // With given landmarks the best `params.segment_starts` are fitted, and the one whose landmarks
     // lie nearest the given ones kept: a limb the fit folds against the body from one start it can find from the
     // other (held-out seed 4848 subject 21, arms down, 10 given: a wrist 45 cm off).
     let parts = parts(&template);
@@ -230,10 +236,12 @@ pub fn estimate_landmarks(
             &all,
             &matching,
             params.segment_iterations,
+            &params.segments,
+            &params.profile,
             &mut ticker,
         )
         .ok_or(EstimateError::Cancelled)?;
-        pose_hands(&hands, &mut fit, triangles, &scan, &matching);
+        pose_hands(&hands, &mut fit, triangles, &scan, &matching, params);
         let apart = given_m
             .iter()
             .map(|(i, p)| (fit[landmark_vertices[*i] as usize] - p).norm())

@@ -5,45 +5,22 @@ use nalgebra::{Matrix3, Point3, UnitQuaternion, Vector3};
 
 use super::twist::{twist_about, twist_forearm};
 use super::{slide_wrist, HandPose};
+use crate::estimate::params::LaidHandParams;
 use crate::mesh::principal_axes::principal_axes;
 use crate::template::hand::{mid, turn_hand, wrist_and_axis, Hand};
 
-/// A hand laid on the body (an arm bent more than [`MAX_BEND`], [`laid_hand`]): the scan's
-/// points within this distance (m) of the wrist, and farther than [`FOREARM_CLEARANCE`] from the
-/// forearm, are the body under the hand and the hand on it.
-const LAID_REGION: f64 = 0.15;
-
-/// Points nearer than this (m) to the forearm (the segment from the elbow to the wrist) are the
-/// forearm's own.
-const FOREARM_CLEARANCE: f64 = 0.05;
-
-/// The strip a laid hand covers, along its direction from the wrist (m; the palm and the
-/// fingers) and across it (half its width, m).
-const LAID_STRIP: (f64, f64) = (0.04, 0.14);
-
-const LAID_STRIP_HALF_WIDTH: f64 = 0.03;
-
-/// The strip's top is taken every this far (m) along it ([`laid_slope`]).
-const LAID_BIN: f64 = 0.01;
-
-/// Directions tried for a laid hand, evenly around the wrist in the body's tangent plane.
-const LAID_DIRECTIONS: usize = 24;
-
-/// A laid hand's direction is at most this far (degrees) from the forearm's: a wrist extends
-/// to ≈ 70°.
-const LAID_MAX_BEND: f64 = 75.0;
-
-/// The hand of an arm bent more than [`MAX_BEND`] (on the hip), or more than [`LAID_MIN_BEND`] with
+/// The hand of an arm bent more than `SegmentParams::max_bend_deg` (on the hip), or more than
+/// `params.min_bend_deg` with
 /// its forearm coming down onto the body and levelling out onto it, laid on the body. Its surface
 /// is merged with the hip's, so neither its moments nor nearest points say where it points (matched
 /// by its own vertices, hands laid on the hip ended 30–100 mm off, the fingers along the forearm or
 /// in the hip). What the scan does show: the body's surface under the hand, the hand lying on it as
 /// a raised strip, and the forearm coming down onto it. The body's plane about the wrist is fitted
 /// by [`body_plane`]. The wrist is slid `along` the forearm (m: to where the forearm levels out
-/// onto the hand, [`laid_wrist`], else where its profile puts it, [`wrist_from_profile`]; held
-/// where it is with none). Of [`LAID_DIRECTIONS`] directions in the plane at the slid wrist within
-/// [`LAID_MAX_BEND`] of the forearm's, the hand takes the one whose strip ([`LAID_STRIP`],
-/// [`LAID_STRIP_HALF_WIDTH`]) stands farthest out of the plane on average, tilted out of the plane
+/// onto the hand, `laid_wrist`, else where its profile puts it, `wrist_from_profile`; held
+/// where it is with none). Of `params.directions` directions in the plane at the slid wrist
+/// within `params.max_bend_deg` of the forearm's, the hand takes the one whose strip
+/// (`params.strip`, `params.strip_half_width`) stands farthest out of the plane on average, tilted out of the plane
 /// by the slope of the strip's top less that of the template's hand laid flat ([`laid_slope`]), its
 /// palm against the plane. The hand turns about the wrist onto that frame (its axis from the wrist
 /// to its own vertices' centroid, its palm from that and the knuckles' line, a mirror image on
@@ -57,6 +34,7 @@ pub(super) fn laid_hand(
     positions: &mut [Point3<f64>],
     along: Option<f64>,
     scan: &[Point3<f64>],
+    params: &LaidHandParams,
 ) -> Option<HandPose> {
     let held = along.unwrap_or(0.0);
     let (_, axis) = wrist_and_axis(positions, hand.styloids, hand.epicondyles);
@@ -67,7 +45,7 @@ pub(super) fn laid_hand(
     });
     let (wrist, axis) = wrist_and_axis(positions, hand.styloids, hand.epicondyles);
     let elbow = mid(positions, hand.epicondyles);
-    let Some((near, normal)) = body_plane(wrist, elbow, scan) else {
+    let Some((near, normal)) = body_plane(wrist, elbow, scan, params) else {
         return slid;
     };
     // The forearm's direction in the plane, and across it.
@@ -77,18 +55,18 @@ pub(super) fn laid_hand(
         let across = normal.cross(direction);
         let heights: Vec<f64> = near
             .iter()
-            .filter(|v| (LAID_STRIP.0..LAID_STRIP.1).contains(&v.dot(direction)))
-            .filter(|v| v.dot(&across).abs() < LAID_STRIP_HALF_WIDTH)
+            .filter(|v| (params.strip.0..params.strip.1).contains(&v.dot(direction)))
+            .filter(|v| v.dot(&across).abs() < params.strip_half_width)
             .map(|v| v.dot(&normal))
             .collect();
         (heights.len() >= 10).then(|| heights.iter().sum::<f64>() / heights.len() as f64)
     };
-    let direction = (0..LAID_DIRECTIONS)
+    let direction = (0..params.directions)
         .map(|k| {
-            let angle = std::f64::consts::TAU * k as f64 / LAID_DIRECTIONS as f64;
+            let angle = std::f64::consts::TAU * k as f64 / params.directions as f64;
             first * angle.cos() + second * angle.sin()
         })
-        .filter(|d| d.angle(&axis) <= LAID_MAX_BEND.to_radians())
+        .filter(|d| d.angle(&axis) <= params.max_bend_deg.to_radians())
         .filter_map(|d| Some((raised(&d)?, d)))
         .max_by(|a, b| a.0.total_cmp(&b.0));
     let Some((_, direction)) = direction else {
@@ -114,12 +92,12 @@ pub(super) fn laid_hand(
         .own
         .iter()
         .map(|&v| positions[v as usize])
-        .filter(|p| off_forearm(p, wrist, elbow))
+        .filter(|p| off_forearm(p, wrist, elbow, params.forearm_clearance))
         .map(|p| p - wrist)
         .collect();
     let back = -frame(pointing, palm).column(1).into_owned();
-    let tilt =
-        laid_slope(&near, normal, direction).atan() - laid_slope(&own, back, pointing).atan();
+    let tilt = laid_slope(&near, normal, direction, params).atan()
+        - laid_slope(&own, back, pointing, params).atan();
     let direction = direction * tilt.cos() + normal * tilt.sin();
     let turn = UnitQuaternion::from_matrix(
         &(frame(direction, -normal) * frame(pointing, palm).transpose()),
@@ -134,19 +112,25 @@ pub(super) fn laid_hand(
 
 /// The slope (height per length) of the top of the strip a laid hand covers along the unit
 /// `direction`, heights along the unit `normal` (of the body's plane; `near` points from the
-/// wrist, as [`body_plane`] gives them): the highest point every [`LAID_BIN`] (m) along
-/// [`LAID_STRIP`], within [`LAID_STRIP_HALF_WIDTH`] across, fitted by a straight line (least
+/// wrist, as [`body_plane`] gives them): the highest point every `params.bin` (m) along
+/// `params.strip`, within `params.strip_half_width` across, fitted by a straight line (least
 /// squares). The hip under a laid hand curves away from the plane at the wrist, and the hand
 /// with it: laid in the plane, hands were bent 2–28° more than the true ones (held-out seeds
 /// 7531 and 8383, 12 hands), tilted by this slope (less the template hand's own), 0–6°. 0 with
 /// fewer than 4 points.
-fn laid_slope(near: &[Vector3<f64>], normal: Vector3<f64>, direction: Vector3<f64>) -> f64 {
+fn laid_slope(
+    near: &[Vector3<f64>],
+    normal: Vector3<f64>,
+    direction: Vector3<f64>,
+    params: &LaidHandParams,
+) -> f64 {
+    let (strip, bin) = (params.strip, params.bin);
     let across = normal.cross(&direction);
-    let bins = ((LAID_STRIP.1 - LAID_STRIP.0) / LAID_BIN).round() as usize;
+    let bins = ((strip.1 - strip.0) / bin).round() as usize;
     let mut top = vec![f64::NEG_INFINITY; bins];
     for v in near {
-        let k = ((v.dot(&direction) - LAID_STRIP.0) / LAID_BIN).floor();
-        if (0.0..bins as f64).contains(&k) && v.dot(&across).abs() < LAID_STRIP_HALF_WIDTH {
+        let k = ((v.dot(&direction) - strip.0) / bin).floor();
+        if (0.0..bins as f64).contains(&k) && v.dot(&across).abs() < params.strip_half_width {
             let h = &mut top[k as usize];
             *h = h.max(v.dot(&normal));
         }
@@ -155,7 +139,7 @@ fn laid_slope(near: &[Vector3<f64>], normal: Vector3<f64>, direction: Vector3<f6
         .iter()
         .enumerate()
         .filter(|(_, h)| h.is_finite())
-        .map(|(k, h)| (LAID_STRIP.0 + (k as f64 + 0.5) * LAID_BIN, *h))
+        .map(|(k, h)| (strip.0 + (k as f64 + 0.5) * bin, *h))
         .collect();
     if points.len() < 4 {
         return 0.0;
@@ -171,17 +155,21 @@ fn laid_slope(near: &[Vector3<f64>], normal: Vector3<f64>, direction: Vector3<f6
 }
 
 /// The body's plane about the `wrist` of an arm bent onto it (from `elbow`): fitted to the
-/// `scan`'s points within [`LAID_REGION`] of the wrist and farther than [`FOREARM_CLEARANCE`]
+/// `scan`'s points within `params.region` of the wrist and farther than `params.forearm_clearance`
 /// from the forearm. Those points (from the wrist) and the plane's unit normal, on the elbow's
 /// side; `None` with fewer than 30 points.
 pub(super) fn body_plane(
     wrist: Point3<f64>,
     elbow: Point3<f64>,
     scan: &[Point3<f64>],
+    params: &LaidHandParams,
 ) -> Option<(Vec<Vector3<f64>>, Vector3<f64>)> {
     let near: Vec<Vector3<f64>> = scan
         .iter()
-        .filter(|p| (*p - wrist).norm() < LAID_REGION && off_forearm(p, wrist, elbow))
+        .filter(|p| {
+            (*p - wrist).norm() < params.region
+                && off_forearm(p, wrist, elbow, params.forearm_clearance)
+        })
         .map(|p| p - wrist)
         .collect();
     if near.len() < 30 {
@@ -195,19 +183,20 @@ pub(super) fn body_plane(
     Some((near, normal))
 }
 
-/// Whether `p` lies farther than [`FOREARM_CLEARANCE`] from the forearm (the segment from the
+/// Whether `p` lies farther than `clearance` (m) from the forearm (the segment from the
 /// `elbow` to the `wrist`).
-fn off_forearm(p: &Point3<f64>, wrist: Point3<f64>, elbow: Point3<f64>) -> bool {
+fn off_forearm(p: &Point3<f64>, wrist: Point3<f64>, elbow: Point3<f64>, clearance: f64) -> bool {
     let forearm = (wrist - elbow).norm();
     let axis = (wrist - elbow) / forearm;
     let t = (p - elbow).dot(&axis).clamp(0.0, forearm);
-    (p - (elbow + axis * t)).norm() > FOREARM_CLEARANCE
+    (p - (elbow + axis * t)).norm() > clearance
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
     use crate::estimate::hand::laid_wrist::laid_wrist;
+    use crate::estimate::hand::P;
     use crate::template::hand::base_hands;
 
     #[test]
@@ -277,8 +266,8 @@ mod tests {
                     .fold(0.0, f64::max)
             };
             let mut positions = rest.to_vec();
-            let along = laid_wrist(hand, &positions, &scan);
-            let pose = laid_hand(hand, &mut positions, along, &scan).unwrap();
+            let along = laid_wrist(hand, &positions, &scan, &P);
+            let pose = laid_hand(hand, &mut positions, along, &scan, &P.laid).unwrap();
             assert!(pose.rotation.is_some());
             // Where the forearm levels out onto the hand: the crease over the extended wrist,
             // within a centimetre of the styloids (-10 and -2 mm here).
@@ -301,7 +290,7 @@ mod tests {
             );
             // With nothing around the wrist, nothing is done.
             let mut positions = rest.to_vec();
-            assert!(laid_hand(hand, &mut positions, None, &[]).is_none());
+            assert!(laid_hand(hand, &mut positions, None, &[], &P.laid).is_none());
             assert_eq!(&positions, rest);
         }
     }

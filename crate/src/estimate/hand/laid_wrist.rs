@@ -4,35 +4,18 @@
 use nalgebra::{Matrix3, Point3, Vector3};
 
 use super::laid::body_plane;
-use super::MAX_SLIDE;
+use crate::estimate::params::HandParams;
 use crate::template::hand::{mid, wrist_and_axis, Hand};
-
-/// A laid hand's wrist from where the forearm levels out onto it ([`wrist_from_knee`]): the
-/// forearm's heights are taken from this fraction of the way from the elbow to this far (m)
-/// past the wrist, every [`KNEE_STEP`] (m), of the points within [`KNEE_RADIUS`] (m) of its axis.
-const KNEE_FROM: f64 = 0.4;
-
-const KNEE_BEYOND: f64 = 0.085;
-
-const KNEE_STEP: f64 = 0.004;
-
-const KNEE_RADIUS: f64 = 0.08;
-
-/// The knee needs this many heights on either side, and the forearm falling at least this
-/// much (degrees) more steeply than the hand.
-const KNEE_MIN_HEIGHTS: usize = 6;
-
-const KNEE_TURN: f64 = 10.0;
 
 /// How far (m) the wrist of an arm bent onto the body lies along the forearm's unit `axis` from
 /// `wrist`: where the forearm's outer side, falling towards the body's plane (unit `normal`),
-/// levels out onto the hand lying on it. Along the axis, from [`KNEE_FROM`] of the way from the
-/// `elbow` to [`KNEE_BEYOND`] past the wrist, the highest of the `scan`'s points above the plane
-/// within [`KNEE_RADIUS`] of the axis, every [`KNEE_STEP`]; the wrist is the knee of the two
+/// levels out onto the hand lying on it. Along the axis, from `knee_from` of the way from the
+/// `elbow` to `knee_beyond` past the wrist, the highest of the `scan`'s points above the plane
+/// within `knee_radius` of the axis, every `knee_step` (`params.laid`); the wrist is the knee of the two
 /// straight lines, joined, that fit those heights best (least squares), searched over the
 /// slide's range. (The hip beyond the wrist widens the forearm's profile there, which put laid
 /// wrists 17–28 mm short; from the knee they are −15…+4 mm along the forearm, 11 of 12 within
-/// 5 mm, held-out seeds 7531 and 8383.) `None` when the forearm does not fall at least [`KNEE_TURN`] more
+/// 5 mm, held-out seeds 7531 and 8383.) `None` when the forearm does not fall at least `knee_turn_deg` more
 /// steeply than the hand, or too few heights are found either side.
 fn wrist_from_knee(
     wrist: Point3<f64>,
@@ -40,18 +23,21 @@ fn wrist_from_knee(
     axis: Vector3<f64>,
     normal: Vector3<f64>,
     scan: &[Point3<f64>],
+    params: &HandParams,
 ) -> Option<f64> {
+    let laid = &params.laid;
+    let (step, max_slide) = (laid.knee_step, params.max_slide);
     let forearm = (wrist - elbow).dot(&axis);
-    let from = forearm * KNEE_FROM;
-    let stations = ((forearm + KNEE_BEYOND - from) / KNEE_STEP) as usize;
+    let from = forearm * laid.knee_from;
+    let stations = ((forearm + laid.knee_beyond - from) / step) as usize;
     let mut highest = vec![f64::NEG_INFINITY; stations];
     for p in scan {
         let t = (p - elbow).dot(&axis);
-        let k = ((t - from) / KNEE_STEP).floor();
+        let k = ((t - from) / step).floor();
         if k < 0.0 || k >= stations as f64 {
             continue;
         }
-        if (p - (elbow + axis * t)).norm() < KNEE_RADIUS {
+        if (p - (elbow + axis * t)).norm() < laid.knee_radius {
             let h = &mut highest[k as usize];
             *h = h.max((p - wrist).dot(&normal));
         }
@@ -61,7 +47,7 @@ fn wrist_from_knee(
         .iter()
         .enumerate()
         .filter(|(_, h)| h.is_finite())
-        .map(|(k, h)| (from + (k as f64 + 0.5) * KNEE_STEP - forearm, *h))
+        .map(|(k, h)| (from + (k as f64 + 0.5) * step - forearm, *h))
         .collect();
     let fit = |knee: f64| {
         let rows =
@@ -80,17 +66,17 @@ fn wrist_from_knee(
     };
     let enough = |knee: f64| {
         let before = heights.iter().filter(|(t, _)| *t < knee).count();
-        before >= KNEE_MIN_HEIGHTS && heights.len() - before >= KNEE_MIN_HEIGHTS
+        before >= laid.knee_min_heights && heights.len() - before >= laid.knee_min_heights
     };
-    let steps = (1.5 * MAX_SLIDE / KNEE_STEP).round() as usize;
+    let steps = (1.5 * max_slide / step).round() as usize;
     let (_, knee, line) = (0..=steps)
-        .map(|k| -MAX_SLIDE / 2.0 + k as f64 * KNEE_STEP)
+        .map(|k| -max_slide / 2.0 + k as f64 * step)
         .filter(|&knee| enough(knee))
         .filter_map(|knee| fit(knee).map(|(r, line)| (r, knee, line)))
         .min_by(|a, b| a.0.total_cmp(&b.0))?;
     // The forearm falls towards the body (its slope negative) and the hand lies flatter.
     let turn = line.z.atan() - line.y.atan();
-    (line.y < 0.0 && turn >= KNEE_TURN.to_radians()).then_some(knee)
+    (line.y < 0.0 && turn >= laid.knee_turn_deg.to_radians()).then_some(knee)
 }
 
 /// How far (m) along the forearm the wrist of `hand` (at `positions`) lies where the forearm,
@@ -100,9 +86,10 @@ pub(super) fn laid_wrist(
     hand: &Hand,
     positions: &[Point3<f64>],
     scan: &[Point3<f64>],
+    params: &HandParams,
 ) -> Option<f64> {
     let (wrist, axis) = wrist_and_axis(positions, hand.styloids, hand.epicondyles);
     let elbow = mid(positions, hand.epicondyles);
-    let (_, normal) = body_plane(wrist, elbow, scan)?;
-    wrist_from_knee(wrist, elbow, axis, normal, scan)
+    let (_, normal) = body_plane(wrist, elbow, scan, &params.laid)?;
+    wrist_from_knee(wrist, elbow, axis, normal, scan, params)
 }

@@ -22,7 +22,7 @@
 //!
 //! A hand that is not free (against the thigh) or not seen (a hole) shows there as much more or
 //! much less surface than a hand: it is not turned. The hand of an arm bent more than the limbs'
-//! profiles take (`segments::MAX_BEND`, hands on hips), or bent less with its forearm coming down
+//! profiles take (`SegmentParams::max_bend_deg`, hands on hips), or bent less with its forearm coming down
 //! onto the body, is laid on the body, its surface merged with the hip's (`laid_hand`): its wrist
 //! placed where the forearm levels out onto the hand, it is turned about the wrist so that its
 //! palm lies against the body's plane there and its fingers along the most raised strip of the
@@ -52,9 +52,6 @@ use nalgebra::{Point3, Rotation3, Vector3};
 
 use crate::template::hand::Hand;
 
-/// The wrist slides at most this far (m) along the forearm.
-const MAX_SLIDE: f64 = 0.06;
-
 /// Where a hand was moved: the wrist's slide along the forearm (m) and the turn about it.
 #[derive(Debug, Clone, Copy)]
 pub struct HandPose {
@@ -69,3 +66,8 @@ fn slide_wrist(hand: &Hand, positions: &mut [Point3<f64>], axis: Vector3<f64>, b
         positions[*v as usize] += axis * (by * u);
     }
 }
+
+/// The hands' default parameters, for tests.
+#[cfg(test)]
+static P: std::sync::LazyLock<crate::estimate::params::HandParams> =
+    std::sync::LazyLock::new(Default::default);

@@ -4,17 +4,7 @@
 
 use nalgebra::{Matrix3, Point3, Rotation3, Vector3};
 
-/// The surface compared starts this far (m) beyond the wrist's plane: the forearm's skin just
-/// below the wrist stays out whatever the hand's pose.
-const BEYOND: f64 = 0.01;
-
-/// A hand-like cluster has this range of area, relative to the template's hand surface in the
-/// same region (on the development subjects free hands have 0.73–1.07, a hand on the hip 1.8).
-const AREA_RANGE: (f64, f64) = (0.6, 1.5);
-
-/// A larger turn (degrees) is not believed: a hand's flexion or deviation at the wrist is within
-/// it, a match to the thigh or the hip often is not.
-const MAX_TURN: f64 = 60.0;
+use crate::estimate::params::HandParams;
 
 /// A surface as area-weighted points (triangle centroid, area).
 pub type Surface = [(Point3<f64>, f64)];
@@ -35,17 +25,18 @@ pub(super) fn surface(
 }
 
 /// Area, centroid and covariance (area-weighted) of the part of `surface` beyond the plane
-/// through `wrist` across `axis` ([`BEYOND`]) and within `reach` of the wrist.
+/// through `wrist` across `axis` (from `beyond`, m, past it) and within `reach` of the wrist.
 fn moments(
     surface: &Surface,
     wrist: Point3<f64>,
     axis: Vector3<f64>,
     reach: f64,
+    beyond: f64,
 ) -> Option<(f64, Point3<f64>, Matrix3<f64>)> {
     let inside = || {
         surface
             .iter()
-            .filter(move |(p, _)| (p - wrist).dot(&axis) > BEYOND && (p - wrist).norm() < reach)
+            .filter(move |(p, _)| (p - wrist).dot(&axis) > beyond && (p - wrist).norm() < reach)
     };
     let area: f64 = inside().map(|(_, a)| a).sum();
     if area <= 0.0 {
@@ -63,7 +54,7 @@ fn moments(
 }
 
 /// Whether the scan's surface (`scan`) beyond the wrist's plane across `axis` (the forearm's
-/// direction) and within `reach` of `wrist` is hand-like: its area within [`AREA_RANGE`] of the
+/// direction) and within `reach` of `wrist` is hand-like: its area within `params.area_range` of the
 /// template hand's (`template`) there.
 pub fn hand_like(
     wrist: Point3<f64>,
@@ -71,12 +62,15 @@ pub fn hand_like(
     reach: f64,
     template: &Surface,
     scan: &Surface,
+    params: &HandParams,
 ) -> bool {
     match (
-        moments(template, wrist, axis, reach),
-        moments(scan, wrist, axis, reach),
+        moments(template, wrist, axis, reach, params.beyond),
+        moments(scan, wrist, axis, reach, params.beyond),
     ) {
-        (Some((t, _, _)), Some((s, _, _))) => (AREA_RANGE.0..=AREA_RANGE.1).contains(&(s / t)),
+        (Some((t, _, _)), Some((s, _, _))) => {
+            (params.area_range.0..=params.area_range.1).contains(&(s / t))
+        }
         _ => false,
     }
 }
@@ -85,16 +79,17 @@ pub fn hand_like(
 /// as in [`hand_like`]): the shortest rotation of the template hand's axis (wrist → centroid)
 /// onto the scan's, then the turn about it that brings the widest direction across the template
 /// hand onto the scan's (the smaller of the two: the direction has no sign). `None` when either
-/// has no surface there or the turn exceeds [`MAX_TURN`].
+/// has no surface there or the turn exceeds `params.max_turn_deg`.
 pub fn hand_rotation(
     wrist: Point3<f64>,
     axis: Vector3<f64>,
     reach: f64,
     template: &Surface,
     scan: &Surface,
+    params: &HandParams,
 ) -> Option<Rotation3<f64>> {
-    let (_, t_centroid, t_cov) = moments(template, wrist, axis, reach)?;
-    let (_, s_centroid, s_cov) = moments(scan, wrist, axis, reach)?;
+    let (_, t_centroid, t_cov) = moments(template, wrist, axis, reach, params.beyond)?;
+    let (_, s_centroid, s_cov) = moments(scan, wrist, axis, reach, params.beyond)?;
     let (t_axis, s_axis) = (t_centroid - wrist, s_centroid - wrist);
     let bend = Rotation3::rotation_between(&t_axis, &s_axis)?;
     let along = s_axis.normalize();
@@ -118,12 +113,13 @@ pub fn hand_rotation(
         angle += std::f64::consts::PI;
     }
     let rotation = Rotation3::new(along * angle) * bend;
-    (rotation.angle() <= MAX_TURN.to_radians()).then_some(rotation)
+    (rotation.angle() <= params.max_turn_deg.to_radians()).then_some(rotation)
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::estimate::hand::P;
 
     /// A flat hand as a box's surface, area-weighted points 2 mm apart: along +z from 3 cm to
     /// 20 cm beyond a wrist at the origin, 8 cm wide (x), 2 cm thick (y).
@@ -163,16 +159,16 @@ mod tests {
             * Rotation3::from_axis_angle(&Vector3::z_axis(), 15f64.to_radians());
         let scan = moved(&template, |p| turn * p);
         let (wrist, axis) = (Point3::origin(), Vector3::z());
-        assert!(hand_like(wrist, axis, REACH_M, &template, &scan));
-        let found = hand_rotation(wrist, axis, REACH_M, &template, &scan).unwrap();
+        assert!(hand_like(wrist, axis, REACH_M, &template, &scan, &P));
+        let found = hand_rotation(wrist, axis, REACH_M, &template, &scan, &P).unwrap();
         assert!(found.angle_to(&turn).to_degrees() < 0.5, "{found:?}");
         // The template's own pose: no turn.
-        let same = hand_rotation(wrist, axis, REACH_M, &template, &template).unwrap();
+        let same = hand_rotation(wrist, axis, REACH_M, &template, &template, &P).unwrap();
         assert!(same.angle().to_degrees() < 1e-6);
         // Beyond the largest turn believed: none.
         let far = Rotation3::from_axis_angle(&Vector3::x_axis(), 75f64.to_radians());
         let scan = moved(&template, |p| far * p);
-        assert!(hand_rotation(wrist, axis, REACH_M, &template, &scan).is_none());
+        assert!(hand_rotation(wrist, axis, REACH_M, &template, &scan, &P).is_none());
     }
 
     #[test]
@@ -188,8 +184,8 @@ mod tests {
                 scan.push((p, step * step));
             }
         }
-        assert!(!hand_like(wrist, axis, REACH_M, &template, &scan));
+        assert!(!hand_like(wrist, axis, REACH_M, &template, &scan, &P));
         // Nothing scanned beyond the wrist (a hole): not hand-like either.
-        assert!(!hand_like(wrist, axis, REACH_M, &template, &[]));
+        assert!(!hand_like(wrist, axis, REACH_M, &template, &[], &P));
     }
 }

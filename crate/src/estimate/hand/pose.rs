@@ -8,24 +8,12 @@ use super::laid::laid_hand;
 use super::laid_wrist::laid_wrist;
 use super::moments::{hand_like, hand_rotation, surface, Surface};
 use super::wrist_profile::{wrist_from_profile, Profiles};
-use super::{slide_wrist, HandPose, MAX_SLIDE};
+use super::{slide_wrist, HandPose};
 use crate::estimate::matching::Matching;
-use crate::estimate::segments::MAX_BEND;
+use crate::estimate::params::{EstimateParams, HandParams};
 use crate::mesh::normals::vertex_normals_into;
 use crate::mesh::Mesh;
 use crate::template::hand::{mid, turn_hand, wrist_and_axis, Hand};
-
-/// The region's radius about the wrist, times the template hand's reach (its farthest vertex
-/// from the wrist).
-const REACH: f64 = 1.2;
-
-/// An arm bent more than this (degrees, the upper arm from the acromion against the forearm)
-/// but not more than [`MAX_BEND`] has its hand laid on the body when the hand is not free
-/// ([`hand_like`]) and the forearm comes down onto the body and levels out onto it
-/// ([`laid_wrist`]): a hand on the hip with the elbow bent less (held-out seed 3737: 53°, the
-/// hand taken for a free one 100 mm off). Straight arms measure 35–43° (the acromion lies out
-/// from the humerus's axis), hands on the hips 53–86°.
-const LAID_MIN_BEND: f64 = 48.0;
 
 /// Vertices and where they are.
 type Placed = Vec<(u32, Point3<f64>)>;
@@ -33,7 +21,8 @@ type Placed = Vec<(u32, Point3<f64>)>;
 /// Moves each hand of `hands` in `positions` (the segment-wise fit's, metres) to the scan's hand
 /// (`scan`, metres, indexed by `matching`): the slide along the forearm, then the turn about the
 /// wrist of a hand-like one (kept when it matches better); a hand resting on the body is laid on
-/// it by [`laid_hand`]. Per hand, what was done (`None`: a laid hand with no profile and no
+/// it by [`laid_hand`] (`params.hand`; an arm is bent when bent more than
+/// `params.segments.max_bend_deg`, its wrist's profile by `params.profile`). Per hand, what was done (`None`: a laid hand with no profile and no
 /// plane or strip found; left as it was).
 pub fn pose_hands(
     hands: &[Hand],
@@ -41,12 +30,28 @@ pub fn pose_hands(
     triangles: &[[u32; 3]],
     scan: &Mesh,
     matching: &Matching<'_>,
+    params: &EstimateParams,
 ) -> Vec<Option<HandPose>> {
     let scan_surface = surface(&scan.positions, &scan.triangles);
-    let profiles = Profiles { triangles, scan };
+    let profiles = Profiles {
+        triangles,
+        scan,
+        params: &params.profile,
+    };
+    let max_bend = params.segments.max_bend_deg;
     hands
         .iter()
-        .map(|hand| pose_hand(hand, positions, &scan_surface, &profiles, matching))
+        .map(|hand| {
+            pose_hand(
+                hand,
+                positions,
+                &scan_surface,
+                &profiles,
+                matching,
+                &params.hand,
+                max_bend,
+            )
+        })
         .collect()
 }
 
@@ -56,36 +61,40 @@ fn pose_hand(
     scan_surface: &Surface,
     profiles: &Profiles<'_>,
     matching: &Matching<'_>,
+    params: &HandParams,
+    max_bend_deg: f64,
 ) -> Option<HandPose> {
+    let max_slide = params.max_slide;
     let reach = |positions: &[Point3<f64>], wrist: Point3<f64>| {
         hand.share
             .iter()
             .map(|(v, _)| (positions[*v as usize] - wrist).norm())
             .fold(0.0, f64::max)
-            * REACH
+            * params.reach
     };
     let (wrist, axis) = wrist_and_axis(positions, hand.styloids, hand.epicondyles);
     // Where the forearm narrows to the wrist and widens into the hand.
-    let along =
-        wrist_from_profile(hand, positions, profiles).map(|d| d.clamp(-MAX_SLIDE, MAX_SLIDE));
+    let along = wrist_from_profile(hand, positions, profiles, params)
+        .map(|d| d.clamp(-max_slide, max_slide));
     let r = reach(positions, wrist);
     // Only the scan's surface the slide can bring into the region.
     let near: Vec<(Point3<f64>, f64)> = scan_surface
         .iter()
-        .filter(|(p, _)| (p - wrist).norm() < r + MAX_SLIDE)
+        .filter(|(p, _)| (p - wrist).norm() < r + max_slide)
         .copied()
         .collect();
     let template = surface(positions, &hand.triangles);
-    let free = hand_like(wrist, axis, r, &template, &near);
+    let free = hand_like(wrist, axis, r, &template, &near, params);
     // An arm bent like the hands on the hips: the hand is laid on the body. Bent less, a hand
     // that is not free is when the forearm comes down onto the body and levels out onto it.
     let elbow = mid(positions, hand.epicondyles);
     let bend = (elbow - positions[hand.acromion as usize]).angle(&axis);
-    if bend > MAX_BEND.to_radians() || (bend > LAID_MIN_BEND.to_radians() && !free) {
+    let bent = bend > max_bend_deg.to_radians();
+    if bent || (bend > params.laid.min_bend_deg.to_radians() && !free) {
         let scan = &profiles.scan.positions;
-        let knee = laid_wrist(hand, positions, scan);
-        if knee.is_some() || bend > MAX_BEND.to_radians() {
-            return laid_hand(hand, positions, knee.or(along), scan);
+        let knee = laid_wrist(hand, positions, scan, params);
+        if knee.is_some() || bent {
+            return laid_hand(hand, positions, knee.or(along), scan, &params.laid);
         }
     }
     let slide = along.unwrap_or(0.0);
@@ -98,7 +107,14 @@ fn pose_hand(
     }
     let (wrist, axis) = wrist_and_axis(positions, hand.styloids, hand.epicondyles);
     let template = surface(positions, &hand.triangles);
-    let mut rotation = hand_rotation(wrist, axis, reach(positions, wrist), &template, &near);
+    let mut rotation = hand_rotation(
+        wrist,
+        axis,
+        reach(positions, wrist),
+        &template,
+        &near,
+        params,
+    );
     if let Some(turn) = rotation {
         // Kept when the hand's own vertices match the scan better for it.
         let mut normals = vec![Vector3::zeros(); positions.len()];
@@ -149,6 +165,8 @@ fn hand_pairs(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::estimate::hand::P;
+    use crate::estimate::params::ProfileParams;
     use crate::template::hand::base_hands;
     use crate::template::Template;
     use nalgebra::Matrix3;
@@ -204,9 +222,9 @@ mod tests {
                 scan_surface.push((p, step * step));
             }
         }
-        let r = REACH * own.iter().map(|p| (p - wrist).norm()).fold(0.0, f64::max);
+        let r = P.reach * own.iter().map(|p| (p - wrist).norm()).fold(0.0, f64::max);
         let template_hand = surface(rest, &hand.triangles);
-        let turn = hand_rotation(wrist, axis, r, &template_hand, &scan_surface).unwrap();
+        let turn = hand_rotation(wrist, axis, r, &template_hand, &scan_surface, &P).unwrap();
         assert!(turn.angle().to_degrees() > 5.0, "{turn:?}");
         let index = scan_index(rest, &template);
         let matching = matching_on(&index);
@@ -214,8 +232,18 @@ mod tests {
         let profiles = Profiles {
             triangles: &mesh.triangles,
             scan: mesh,
+            params: &ProfileParams::default(),
         };
-        let pose = pose_hand(hand, &mut positions, &scan_surface, &profiles, &matching).unwrap();
+        let pose = pose_hand(
+            hand,
+            &mut positions,
+            &scan_surface,
+            &profiles,
+            &matching,
+            &P,
+            60.0,
+        )
+        .unwrap();
         assert!(pose.rotation.is_none(), "{pose:?}");
         // Only slid along the forearm.
         for v in &hand.own {
@@ -252,23 +280,33 @@ mod tests {
             }
         }
         let (at, along) = wrist_and_axis(rest, hand.styloids, hand.epicondyles);
-        let r = REACH
+        let r = P.reach
             * hand
                 .share
                 .iter()
                 .map(|(v, _)| (rest[*v as usize] - at).norm())
                 .fold(0.0, f64::max);
         let template_hand = surface(rest, &hand.triangles);
-        assert!(!hand_like(at, along, r, &template_hand, &scan_surface));
+        assert!(!hand_like(at, along, r, &template_hand, &scan_surface, &P));
         let mesh = Mesh::new(scan, triangles.clone());
         let index = scan_index(&mesh.positions, &template);
         let matching = matching_on(&index);
         let profiles = Profiles {
             triangles,
             scan: &mesh,
+            params: &ProfileParams::default(),
         };
         let mut positions = rest.to_vec();
-        let pose = pose_hand(hand, &mut positions, &scan_surface, &profiles, &matching).unwrap();
+        let pose = pose_hand(
+            hand,
+            &mut positions,
+            &scan_surface,
+            &profiles,
+            &matching,
+            &P,
+            60.0,
+        )
+        .unwrap();
         assert!(pose.rotation.is_none(), "{pose:?}");
         assert!((pose.slide - 0.03).abs() < 0.006, "{}", pose.slide);
         for v in hand.styloids {

@@ -3,39 +3,26 @@
 
 use nalgebra::Point3;
 
-use super::MAX_SLIDE;
+use crate::estimate::params::{HandParams, ProfileParams};
 use crate::estimate::profile::{
     profile, register_shift, surface_samples, triangles_near, LimbLine,
 };
 use crate::mesh::Mesh;
 use crate::template::hand::{mid, wrist_and_axis, Hand};
 
-/// A forearm's profile runs from the elbow this many times the way to the wrist, over the
-/// hand.
-const PROFILE_LINE: f64 = 1.6;
-
-/// Points farther (m) from the forearm's line are not the forearm or the hand.
-const PROFILE_RADIUS: f64 = 0.06;
-
-/// Points spread this far apart (m) over the surfaces profiled.
-const PROFILE_SPACING: f64 = 0.004;
-
-/// The part of the template's profile (m from its wrist) registered to the scan's: the
-/// forearm's narrowing to the wrist and the hand widening out of it.
-const PROFILE_WINDOW: (f64, f64) = (-0.06, 0.05);
-
 /// What a forearm's profile is taken from: the template's triangles (at the positions fitted)
-/// and the scan.
+/// and the scan, and the profiles' parameters.
 pub(super) struct Profiles<'a> {
     pub(super) triangles: &'a [[u32; 3]],
     pub(super) scan: &'a Mesh,
+    pub(super) params: &'a ProfileParams,
 }
 
 /// How far (m) the wrist lies along the forearm from where the fit put it, from the forearm's
 /// width profile ([`profile`] of the surfaces' samples near the line from the elbow
-/// [`PROFILE_LINE`] times the way to the wrist): the shift (up to [`MAX_SLIDE`] towards the
-/// hand, half of it back)
-/// that brings the posed template's profile over [`PROFILE_WINDOW`] of its wrist — the forearm
+/// `params.profile.line` times the way to the wrist): the shift (up to `params.max_slide`
+/// towards the hand, half of it back) that brings the posed template's profile over
+/// `params.profile.window` of its wrist — the forearm
 /// narrowing to the wrist, the hand widening out of it — nearest the scan's
 /// ([`register_shift`]). A hand is wider than the wrist whatever it rests on; a single feature
 /// (where the width rises fastest) was also taken from the hip beyond a hollow under the hand
@@ -44,37 +31,41 @@ pub(super) fn wrist_from_profile(
     hand: &Hand,
     positions: &[Point3<f64>],
     profiles: &Profiles<'_>,
+    params: &HandParams,
 ) -> Option<f64> {
+    let (line_reach, radius) = (params.profile.line, params.profile.radius);
     let (wrist, _) = wrist_and_axis(positions, hand.styloids, hand.epicondyles);
     let elbow = mid(positions, hand.epicondyles);
     let line = LimbLine {
         root: elbow,
-        end: elbow + (wrist - elbow) * PROFILE_LINE,
+        end: elbow + (wrist - elbow) * line_reach,
     };
     let length = (line.end - line.root).norm();
-    let at_wrist = 1.0 / PROFILE_LINE;
+    let at_wrist = 1.0 / line_reach;
     let points = |positions: &[Point3<f64>], triangles: &[[u32; 3]]| {
-        let near = triangles_near(positions, triangles, &line, PROFILE_RADIUS);
-        surface_samples(positions, &near, PROFILE_SPACING)
+        let near = triangles_near(positions, triangles, &line, radius);
+        surface_samples(positions, &near, params.profile.spacing)
     };
     let template = profile(
         &points(positions, profiles.triangles),
         &[line],
         0,
-        PROFILE_RADIUS,
+        radius,
+        profiles.params,
     );
     let scan = profile(
         &points(&profiles.scan.positions, &profiles.scan.triangles),
         &[line],
         0,
-        PROFILE_RADIUS,
+        radius,
+        profiles.params,
     );
     let window = (
-        at_wrist + PROFILE_WINDOW.0 / length,
-        at_wrist + PROFILE_WINDOW.1 / length,
+        at_wrist + params.profile.window.0 / length,
+        at_wrist + params.profile.window.1 / length,
     );
-    let shifts = (-MAX_SLIDE / 2.0 / length, MAX_SLIDE / length);
-    Some(register_shift(&template, &scan, window, shifts)? * length)
+    let shifts = (-params.max_slide / 2.0 / length, params.max_slide / length);
+    Some(register_shift(&template, &scan, window, shifts, profiles.params)? * length)
 }
 
 #[cfg(test)]
@@ -99,8 +90,10 @@ mod tests {
                 let profiles = Profiles {
                     triangles,
                     scan: &mesh,
+                    params: &ProfileParams::default(),
                 };
-                let found = wrist_from_profile(hand, rest, &profiles).unwrap();
+                let found =
+                    wrist_from_profile(hand, rest, &profiles, &HandParams::default()).unwrap();
                 assert!(
                     (found - longer).abs() < 0.006,
                     "{} {longer}: {found}",

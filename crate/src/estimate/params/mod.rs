@@ -1,5 +1,15 @@
 //! Parameters of the landmark estimate, each with its documented default (the one place they
-//! live). Lengths are metres.
+//! live): [`EstimateParams`] and the parameter structs it holds for the segment-wise fit
+//! ([`SegmentParams`], `segments.rs`), the limbs' profiles ([`ProfileParams`]) and the hands
+//! ([`HandParams`]). Lengths are metres, angles degrees.
+
+pub mod hand;
+pub mod profile;
+pub mod segments;
+
+pub use hand::{HandParams, LaidHandParams, WristProfileParams};
+pub use profile::ProfileParams;
+pub use segments::{ArmSwingParams, BentArmParams, ButtocksParams, SegmentParams};
 
 use serde::{Deserialize, Serialize};
 
@@ -14,8 +24,27 @@ pub struct EstimateParams {
     pub candidate_samples: usize,
     /// Similarity ICP iterations per frame candidate. Default 12.
     pub candidate_iterations: usize,
+    /// Two frame candidates are the same frame when they take the template's up (+y) and its
+    /// facing (+z) each within this angle (degrees) of the same direction (the candidates differ
+    /// by 90° or more); with four or more given landmarks, candidates farther from the given
+    /// landmarks' own frame are not taken. Default 60°.
+    pub same_frame_deg: f64,
+    /// When the two best candidates agree on which way is up but face different ways, and their
+    /// energies lie within this fraction of each other, the one whose torso matches better goes
+    /// first (arms and legs pose freely, the torso does not). Default 0.1.
+    pub torso_close: f64,
+    /// With given landmarks, the segment-wise fit runs from this many of the best candidates and
+    /// the one whose landmarks lie nearer the given ones is kept. Default 2.
+    pub segment_starts: usize,
     /// Iterations of the segment-wise (articulated) fit after the best candidate. Default 20.
     pub segment_iterations: usize,
+    /// The segment-wise fit's own parameters (stretch, bends, the arms' swing, the bent elbow,
+    /// the buttocks).
+    pub segments: SegmentParams,
+    /// The limbs' cross-section profiles (knees, elbows).
+    pub profile: ProfileParams,
+    /// The hands' pose about the wrist.
+    pub hand: HandParams,
     /// Largest angle (degrees) between template and scan normals of a match in the ICP stages.
     /// Default 60°, fine alignment's value.
     pub max_normal_angle_deg: f64,
@@ -50,7 +79,13 @@ impl Default for EstimateParams {
         Self {
             candidate_samples: 1_500,
             candidate_iterations: 12,
+            same_frame_deg: 60.0,
+            torso_close: 0.1,
+            segment_starts: 2,
             segment_iterations: 20,
+            segments: SegmentParams::default(),
+            profile: ProfileParams::default(),
+            hand: HandParams::default(),
             max_normal_angle_deg: 60.0,
             outlier_distance: 0.1,
             fine: FineAlignParams {

@@ -1,0 +1,155 @@
+//! Parameters of the segment-wise fit (`segments.rs`) and of what it calls: the arms' swing
+//! (`arm_swing.rs`), the bent arm's elbow (`bent_arm.rs`), the torso's length from the buttocks
+//! (`buttocks.rs`). Lengths are metres, angles degrees.
+
+use serde::{Deserialize, Serialize};
+
+/// Parameters of the segment-wise (articulated) fit, [`super::EstimateParams::segments`].
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(default)]
+pub struct SegmentParams {
+    /// The range of a limb part's stretch along its axis, times the template's length at the
+    /// body's scale. Default 0.75–1.33: a quarter shorter to a third longer.
+    pub stretch_range: (f64, f64),
+    /// Iterations of the fit after the knees and elbows are placed by the limbs' profiles, the
+    /// thighs' and upper arms' stretches then held (out of the fit's iterations). Default 5.
+    pub profile_iterations: usize,
+    /// Spacing (m) of the points on the template's and the scan's surface the limbs' profiles
+    /// and the back's are taken from. Default 4 mm: a coarse mesh's vertices lie in rings too
+    /// far apart.
+    pub surface_spacing: f64,
+    /// A limb bent more than this (degrees) at the elbow or knee is not placed by its profile
+    /// (the profile is taken across the straight root → end line): its elbow is placed where
+    /// the arm's axes meet (`bent_arm.rs`) and its hand laid on the body (`hand/laid.rs`).
+    /// Default 60°.
+    pub max_bend_deg: f64,
+    /// No elbow or knee bends further than this (degrees from the template's limb; an elbow's
+    /// full flexion is ≈ 145°, hands on hips ≈ 80–105°): a fit folded past it is straightened.
+    /// Default 145°.
+    pub max_fold_deg: f64,
+    /// Scan points farther than this (m) from a leg's line are not the leg. Default 14 cm (a
+    /// thigh's radius is up to ≈ 10 cm).
+    pub leg_radius: f64,
+    /// The same for an arm: narrower, so that an arm held against the trunk takes less of it.
+    /// Default 8 cm.
+    pub arm_radius: f64,
+    /// The arm's line runs on beyond the wrist by this fraction of the forearm, over the hand,
+    /// so that a hand beside the thigh is not taken for the thigh. Default 0.7.
+    pub hand_reach: f64,
+    /// The arms' swing about the shoulder.
+    pub swing: ArmSwingParams,
+    /// The elbow of an arm bent at it.
+    pub bent_arm: BentArmParams,
+    /// The torso's length from the height of the buttocks.
+    pub buttocks: ButtocksParams,
+}
+
+impl Default for SegmentParams {
+    fn default() -> Self {
+        Self {
+            stretch_range: (0.75, 1.33),
+            profile_iterations: 5,
+            surface_spacing: 0.004,
+            max_bend_deg: 60.0,
+            max_fold_deg: 145.0,
+            leg_radius: 0.14,
+            arm_radius: 0.08,
+            hand_reach: 0.7,
+            swing: ArmSwingParams::default(),
+            bent_arm: BentArmParams::default(),
+            buttocks: ButtocksParams::default(),
+        }
+    }
+}
+
+/// Parameters of the arms' swing about the shoulder (`arm_swing.rs`).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(default)]
+pub struct ArmSwingParams {
+    /// The turns tried about each shoulder (degrees, positive towards the body) from where the
+    /// fit has the arm. Default −15°, 0°, 15°, 30°: arms from down along the body to raised (the
+    /// issue's A-poses reach 60° from the body, 20° above the template's), as people are
+    /// scanned.
+    pub turns_deg: Vec<f64>,
+    /// Iterations of the segment-wise fit run from each turn before the turns are compared.
+    /// Default 3.
+    pub iterations: usize,
+    /// Iterations of the segment-wise fit before the arms are swung (the torso settled first).
+    /// Default 5.
+    pub after: usize,
+    /// A match farther than this (m) counts as this far in a turn's energy, an unmatched vertex
+    /// too: the arm's inner side, pressed against the trunk, has no surface of its own on the
+    /// scan, and must not count against the right turn more than a wrong turn's far matches.
+    /// Default 3 cm.
+    pub cap: f64,
+    /// Side (m) of the cells of the surface the rest of the body already explains (a match
+    /// there counts as unmatched). Default 1.5 cm.
+    pub claim_cell: f64,
+}
+
+impl Default for ArmSwingParams {
+    fn default() -> Self {
+        Self {
+            turns_deg: vec![-15.0, 0.0, 15.0, 30.0],
+            iterations: 3,
+            after: 5,
+            cap: 0.03,
+            claim_cell: 0.015,
+        }
+    }
+}
+
+/// Parameters of the elbow of an arm bent at it (`bent_arm.rs`).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(default)]
+pub struct BentArmParams {
+    /// The forearm's own fit takes its vertices (and the hand's) from this fraction of the way
+    /// from the elbow to the wrist on: the elbow's blend with the upper arm is left out.
+    /// Default 0.25.
+    pub forearm_start: f64,
+    /// Iterations of the forearm's own fit. Default 5.
+    pub forearm_iterations: usize,
+}
+
+impl Default for BentArmParams {
+    fn default() -> Self {
+        Self {
+            forearm_start: 0.25,
+            forearm_iterations: 5,
+        }
+    }
+}
+
+/// Parameters of the torso's length from the buttocks (`buttocks.rs`). Lengths are metres at
+/// the template's size.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(default)]
+pub struct ButtocksParams {
+    /// Half-width of the band about the midline the back is taken from. Default 4 cm.
+    pub across: f64,
+    /// The heights searched, from the midpoint of the PSIS. Default −25 cm to +10 cm.
+    pub window: (f64, f64),
+    /// Height of a bin of the back's profile. Default 5 mm.
+    pub bin: f64,
+    /// The peak must stand out of the profile at the window's ends by at least this: a flat
+    /// back gives no height. Default 1 cm.
+    pub min_prominence: f64,
+    /// A bin with fewer points than this has no extent. Default 3.
+    pub min_points: usize,
+    /// The torso's stretch stays within this range (its length from the neck down). Default
+    /// 0.85–1.15.
+    pub stretch_range: (f64, f64),
+}
+
+impl Default for ButtocksParams {
+    fn default() -> Self {
+        Self {
+            across: 0.04,
+            window: (-0.25, 0.10),
+            bin: 0.005,
+            min_prominence: 0.01,
+            min_points: 3,
+            stretch_range: (0.85, 1.15),
+        }
+    }
+}
