@@ -3,10 +3,10 @@
 
 use nalgebra::{Matrix3, Point3, UnitQuaternion, Vector3};
 
+use super::body_plane::{body_plane, off_forearm};
 use super::twist::{twist_about, twist_forearm};
 use super::{slide_wrist, HandPose};
 use crate::estimate::params::LaidHandParams;
-use crate::mesh::principal_axes::principal_axes;
 use crate::template::hand::{mid, turn_hand, wrist_and_axis, Hand};
 
 /// The hand of an arm bent more than `SegmentParams::max_bend_deg` (on the hip), or more than
@@ -152,44 +152,6 @@ fn laid_slope(
         (a + (t - mean_t).powi(2), b + (t - mean_t) * (h - mean_h))
     });
     th / tt
-}
-
-/// The body's plane about the `wrist` of an arm bent onto it (from `elbow`): fitted to the
-/// `scan`'s points within `params.region` of the wrist and farther than `params.forearm_clearance`
-/// from the forearm. Those points (from the wrist) and the plane's unit normal, on the elbow's
-/// side; `None` with fewer than 30 points.
-pub(super) fn body_plane(
-    wrist: Point3<f64>,
-    elbow: Point3<f64>,
-    scan: &[Point3<f64>],
-    params: &LaidHandParams,
-) -> Option<(Vec<Vector3<f64>>, Vector3<f64>)> {
-    let near: Vec<Vector3<f64>> = scan
-        .iter()
-        .filter(|p| {
-            (*p - wrist).norm() < params.region
-                && off_forearm(p, wrist, elbow, params.forearm_clearance)
-        })
-        .map(|p| p - wrist)
-        .collect();
-    if near.len() < 30 {
-        return None;
-    }
-    let points: Vec<Point3<f64>> = near.iter().map(|v| Point3::from(*v)).collect();
-    let mut normal: Vector3<f64> = principal_axes(&points)?.column(2).into();
-    if normal.dot(&(elbow - wrist)) < 0.0 {
-        normal = -normal;
-    }
-    Some((near, normal))
-}
-
-/// Whether `p` lies farther than `clearance` (m) from the forearm (the segment from the
-/// `elbow` to the `wrist`).
-fn off_forearm(p: &Point3<f64>, wrist: Point3<f64>, elbow: Point3<f64>, clearance: f64) -> bool {
-    let forearm = (wrist - elbow).norm();
-    let axis = (wrist - elbow) / forearm;
-    let t = (p - elbow).dot(&axis).clamp(0.0, forearm);
-    (p - (elbow + axis * t)).norm() > clearance
 }
 
 #[cfg(test)]

@@ -3,7 +3,7 @@
 
 use nalgebra::{Matrix3, Point3, Vector3};
 
-use super::laid::body_plane;
+use super::body_plane::body_plane;
 use crate::estimate::params::HandParams;
 use crate::template::hand::{mid, wrist_and_axis, Hand};
 

@@ -35,10 +35,12 @@
 //! * [`moments`] — the surfaces beyond the wrist as area-weighted points: whether the scan's is
 //!   hand-like ([`moments::hand_like`]) and the turn onto it ([`moments::hand_rotation`]).
 //! * [`wrist_profile`] — the wrist's slide from the forearm's width profile.
-//! * [`laid`] — a hand laid on the body: its plane, the raised strip the hand makes on it, the
-//!   palm across the knuckles' line; [`laid_wrist`] — its wrist where the forearm levels out.
+//! * [`laid`] — a hand laid on the body: the raised strip the hand makes on the body's plane
+//!   ([`body_plane`]), the palm across the knuckles' line; [`laid_wrist`] — its wrist where the
+//!   forearm levels out.
 //! * [`twist`] — a hand's turn about the forearm carried down the forearm.
 
+pub mod body_plane;
 pub mod laid;
 pub mod laid_wrist;
 pub mod moments;
