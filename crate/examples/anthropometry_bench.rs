@@ -28,7 +28,7 @@ use bodyspace::pca::measurement_distribution::{
     measurement_distribution, DistributionParams, MeasurementDistribution,
 };
 use bodyspace::pca::random::NormalRng;
-use bodyspace::pca::{build_body_model, BodyModel, BuildParams, TemplateIdentity, TrainingSet};
+use bodyspace::pca::{build_body_model, BodyModel, BuildParams, TrainingSet};
 use bodyspace::synth::subject::{fit_height, shape_and_pose};
 use bodyspace::synth::{subject_rng, MakeHumanData, PopulationProfile};
 use bodyspace::template::{Resolution, Segment, Template};
@@ -121,13 +121,11 @@ fn main() {
             ))
         })
         .collect();
-    let set = TrainingSet {
-        template: TemplateIdentity::of_template(&template),
-        triangles: template.mesh().triangles.clone(),
-        segment_weights: template.segment_weight_table().to_vec(),
-        names: (0..train).map(|i| format!("tuning_{i:03}")).collect(),
+    let set = TrainingSet::on_template(
+        &template,
+        (0..train).map(|i| format!("tuning_{i:03}")).collect(),
         shapes,
-    };
+    );
     let params = BuildParams {
         modes: Some(20),
         compute_quality: false,

@@ -273,6 +273,7 @@ fn tiny_model() -> Result<bodyspace::pca::BodyModel, bodyspace::pca::PcaError> {
         },
         triangles,
         segment_weights: weights,
+        rest_shape: base.clone(),
         names: (1..=6).map(|k| format!("subject_{k:03}")).collect(),
         shapes,
     };

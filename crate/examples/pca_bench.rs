@@ -301,6 +301,7 @@ fn build_bench(subjects: usize) {
         segment_weights: (0..mesh.vertex_count() as u32)
             .map(|v| template.segment_weights(v))
             .collect(),
+        rest_shape: mesh.positions.clone(),
         names: (0..subjects).map(|i| format!("s{i}")).collect(),
         shapes,
     };

@@ -40,15 +40,11 @@ fn model(n: usize) -> (BodyModel, Template) {
                 .collect()
         })
         .collect();
-    let set = TrainingSet {
-        template: TemplateIdentity::of_template(&template),
-        triangles: mesh.triangles.clone(),
-        segment_weights: (0..mesh.vertex_count() as u32)
-            .map(|v| template.segment_weights(v))
-            .collect(),
-        names: (1..=n).map(|i| format!("fit_{i}")).collect(),
+    let set = TrainingSet::on_template(
+        &template,
+        (1..=n).map(|i| format!("fit_{i}")).collect(),
         shapes,
-    };
+    );
     let params = BuildParams {
         variance: 1.0,
         compute_quality: false,

@@ -6,6 +6,8 @@
 //! * [`shape_model`] — [`ShapeModel`] (one part) and the [`TemplateIdentity`] it was built on
 //! * [`model`] — [`BodyModel`] (whole body + six segments): assembly, projection of a new mesh,
 //!   stitched reconstruction and seam report
+//! * [`template_frame`] — a training shape in the template's frame (its units, a rigid fit
+//!   onto the template's rest shape), where every model is built
 //! * [`build`] — [`build_body_model`] from a [`TrainingSet`]; [`params`] — its [`BuildParams`]
 //! * [`segments`] — segment vertex subsets and normalised blend weights
 //! * [`marginal`] — a model's marginal on a vertex subset (segment models of a whole-body file)
@@ -53,6 +55,7 @@ pub mod shape_model;
 pub mod statismo;
 pub mod stitch;
 pub mod subdivide;
+pub mod template_frame;
 
 pub use build::{build_body_model, TrainingSet};
 pub use error::PcaError;
