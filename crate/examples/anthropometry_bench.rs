@@ -20,13 +20,13 @@
 //! 5. The manikins' population model: the sampled bodies' covariance against the linear map from
 //!    scores (J·Jᵀ at the mean body).
 
-use bodyspace::measure::{upright, BodyMeasurer, Kind, Measure, MeasureParams, Measurements};
-use bodyspace::mesh::similarity::similarity;
-use bodyspace::pca::boundary_manikins::{boundary_manikins, ManikinParams};
-use bodyspace::pca::from_measurements::{body_from_measurements, FromMeasurementsParams};
-use bodyspace::pca::measurement_distribution::{
+use bodyspace::anthropometry::boundary_manikins::{boundary_manikins, ManikinParams};
+use bodyspace::anthropometry::from_measurements::{body_from_measurements, FromMeasurementsParams};
+use bodyspace::anthropometry::measurement_distribution::{
     measurement_distribution, DistributionParams, MeasurementDistribution,
 };
+use bodyspace::measure::{upright, BodyMeasurer, Kind, Measure, MeasureParams, Measurements};
+use bodyspace::mesh::similarity::similarity;
 use bodyspace::pca::random::NormalRng;
 use bodyspace::pca::{build_body_model, BodyModel, BuildParams, TrainingSet};
 use bodyspace::synth::subject::{fit_height, shape_and_pose};

@@ -18,7 +18,7 @@
 
 use bodyspace::measure::{BodyMeasurer, MeasureParams};
 use bodyspace::mesh::normals::NormalTopology;
-use bodyspace::pca::file::{read_model_for, write_model, BasisPrecision};
+use bodyspace::model_file::file::{read_model_for, write_model, BasisPrecision};
 use bodyspace::pca::random::NormalRng;
 use bodyspace::pca::segments::segment_subsets;
 use bodyspace::pca::subdivide::{subdivide_model, FineTemplate};

@@ -97,7 +97,7 @@ export interface MeasurementDistribution {
 
 /**
  * The percentile (0–100) of `value` among `sorted` (ascending): 100·(below + ½·equal)/N, NaN for
- * an empty population — the core's `pca::measurement_distribution::percentile_of`, done here so
+ * an empty population — the core's `anthropometry::measurement_distribution::percentile_of`, done here so
  * that a slider move looks it up on the UI thread against the distribution computed once.
  */
 export function percentileOf(sorted: readonly number[], value: number): number {

@@ -3,9 +3,9 @@
 
 use super::manifest::{read_manifest, Status};
 use super::model::{read_fit, template_for_vertex_count};
-use crate::pca::export::{eigenvalues_csv, quality_csv, scores_csv};
-use crate::pca::file::{write_model, BasisPrecision};
-use crate::pca::outliers::{far_subjects, far_threshold};
+use crate::anthropometry::outliers::{far_subjects, far_threshold};
+use crate::model_file::export::{eigenvalues_csv, quality_csv, scores_csv};
+use crate::model_file::file::{write_model, BasisPrecision};
 use crate::pca::{
     build_body_model, BuildParams, GpaParams, PoseRemoval, QualityParams, TrainingSet,
 };
@@ -161,7 +161,7 @@ pub fn run(args: &BuildModelArgs) -> Result<(), String> {
     let bytes = write_model(&model, precision);
     std::fs::write(&args.out, &bytes).map_err(|e| format!("{}: {e}", args.out.display()))?;
     if let Some(gltf) = &args.gltf {
-        let glb = crate::pca::gltf::model_glb(&model, usize::MAX);
+        let glb = crate::model_file::gltf::model_glb(&model, usize::MAX);
         std::fs::write(gltf, glb).map_err(|e| format!("{}: {e}", gltf.display()))?;
     }
     if let Some(csv) = &args.csv {
