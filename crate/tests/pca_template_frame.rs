@@ -3,7 +3,8 @@
 //! template vertex order) give the same model once all y-up in metres and once in a mixture of
 //! y-up metres, CAESAR's z-up millimetres, turned centimetres and −x up: the same modes,
 //! eigenvalues within 1e-6 relative, a mean body whose stature (the project's measurement) is
-//! within 1 mm and is a person's, standing up.
+//! within 1 mm and is a person's, standing up; and a fit projects onto the model alike in either
+//! frame.
 #![cfg(not(target_arch = "wasm32"))]
 
 mod synth_support;
@@ -142,6 +143,21 @@ fn the_same_subjects_in_any_frames_and_units_give_the_same_model() {
         .map(|(p, q)| (p - q).abs())
         .fold(0.0f32, f32::max);
     assert!(mean_gap < 1e-4, "means differ by up to {mean_gap} m");
+    // A fit projects the same in any frame and units (subject 1 is z up in millimetres).
+    let (in_metres, in_mm) = (
+        b.project(&upright.shapes[1]).unwrap(),
+        b.project(&mixed.shapes[1]).unwrap(),
+    );
+    assert!((in_mm.pose.scale - 1e-3).abs() < 1e-12);
+    for (x, y) in in_metres
+        .coefficients
+        .whole
+        .iter()
+        .zip(&in_mm.coefficients.whole)
+    {
+        assert!((x - y).abs() < 1e-6, "b {x} vs {y}");
+    }
+    assert!((in_metres.residual - in_mm.residual).abs() < 1e-6);
 }
 
 #[test]
