@@ -228,3 +228,12 @@ impl ModelPopulation {
 pub fn manikin_defaults_json() -> Result<String, JsError> {
     serde_json::to_string(&ManikinParams::default()).map_err(js)
 }
+
+/// The percentile (0–100) of `value` among `sorted` (ascending): the core's
+/// [`crate::anthropometry::measurement_distribution::percentile_of`], which the UI keeps in
+/// TypeScript for speed (`web/shared/anthropometry.ts`); exported so that a test holds the two
+/// to the same results.
+#[wasm_bindgen(js_name = percentileOf)]
+pub fn percentile_of(sorted: &[f64], value: f64) -> f64 {
+    crate::anthropometry::measurement_distribution::percentile_of(sorted, value)
+}
