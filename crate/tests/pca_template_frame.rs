@@ -18,8 +18,11 @@ use nalgebra::{Point3, Rotation3, Vector3};
 
 const SUBJECTS: u64 = 6;
 
-/// The frames a fit may come in, each a map from the template's frame (metres, y up).
-fn frame(k: u64) -> (&'static str, Box<dyn Fn(&Point3<f64>) -> Point3<f64>>) {
+/// A map of points from the template's frame (metres, y up) into another frame.
+type FrameMap = Box<dyn Fn(&Point3<f64>) -> Point3<f64>>;
+
+/// The frames a fit may come in.
+fn frame(k: u64) -> (&'static str, FrameMap) {
     match k % 5 {
         0 => ("y up, m", Box::new(|p| *p)),
         // `bodyspace synth`'s CAESAR frame: (x, y, z) ↦ 1000·(x, −z, y), any origin.
@@ -95,7 +98,7 @@ fn the_same_subjects_in_any_frames_and_units_give_the_same_model() {
             .map(|(b, k)| {
                 let (name, map) = frame(k);
                 eprintln!("subject {k}: {name}");
-                b.iter().map(|p| map(p)).collect()
+                b.iter().map(&map).collect()
             })
             .collect(),
     );
@@ -185,7 +188,7 @@ fn pose_removal_none_uses_the_shapes_as_given() {
     // Facing −z as given: the mean's first vertex is the average of the inputs' own.
     let p = rest[0];
     let expected = [p.x, 1.01 * p.y, -p.z];
-    for k in 0..3 {
-        assert!((m.whole.mean[k] as f64 - expected[k]).abs() < 1e-5);
+    for (got, want) in m.whole.mean.iter().zip(expected) {
+        assert!((*got as f64 - want).abs() < 1e-5);
     }
 }
