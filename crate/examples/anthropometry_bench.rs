@@ -20,15 +20,15 @@
 //! 5. The manikins' population model: the sampled bodies' covariance against the linear map from
 //!    scores (J·Jᵀ at the mean body).
 
-use bodyspace::measure::{upright, BodyMeasurer, Kind, Measure, MeasureParams, Measurements};
-use bodyspace::mesh::similarity::similarity;
-use bodyspace::pca::boundary_manikins::{boundary_manikins, ManikinParams};
-use bodyspace::pca::from_measurements::{body_from_measurements, FromMeasurementsParams};
-use bodyspace::pca::measurement_distribution::{
+use bodyspace::anthropometry::boundary_manikins::{boundary_manikins, ManikinParams};
+use bodyspace::anthropometry::from_measurements::{body_from_measurements, FromMeasurementsParams};
+use bodyspace::anthropometry::measurement_distribution::{
     measurement_distribution, DistributionParams, MeasurementDistribution,
 };
+use bodyspace::measure::{upright, BodyMeasurer, Kind, Measure, MeasureParams, Measurements};
+use bodyspace::mesh::similarity::similarity;
 use bodyspace::pca::random::NormalRng;
-use bodyspace::pca::{build_body_model, BodyModel, BuildParams, TemplateIdentity, TrainingSet};
+use bodyspace::pca::{build_body_model, BodyModel, BuildParams, TrainingSet};
 use bodyspace::synth::subject::{fit_height, shape_and_pose};
 use bodyspace::synth::{subject_rng, MakeHumanData, PopulationProfile};
 use bodyspace::template::{Resolution, Segment, Template};
@@ -121,13 +121,11 @@ fn main() {
             ))
         })
         .collect();
-    let set = TrainingSet {
-        template: TemplateIdentity::of_template(&template),
-        triangles: template.mesh().triangles.clone(),
-        segment_weights: template.segment_weight_table().to_vec(),
-        names: (0..train).map(|i| format!("tuning_{i:03}")).collect(),
+    let set = TrainingSet::on_template(
+        &template,
+        (0..train).map(|i| format!("tuning_{i:03}")).collect(),
         shapes,
-    };
+    );
     let params = BuildParams {
         modes: Some(20),
         compute_quality: false,

@@ -11,7 +11,7 @@ use std::path::Path;
 use bodyspace::io::{write_landmarks_csv, write_lnd, write_obj, write_ply, write_ply_ascii};
 use bodyspace::landmarks::LandmarkSet;
 use bodyspace::mesh::Mesh;
-use bodyspace::pca::file::{write_model, BasisPrecision};
+use bodyspace::model_file::file::{write_model, BasisPrecision};
 use bodyspace::pca::{build_body_model, BuildParams, QualityParams, TemplateIdentity, TrainingSet};
 use bodyspace::template::Template;
 use nalgebra::Point3;
@@ -273,6 +273,7 @@ fn tiny_model() -> Result<bodyspace::pca::BodyModel, bodyspace::pca::PcaError> {
         },
         triangles,
         segment_weights: weights,
+        rest_shape: base.clone(),
         names: (1..=6).map(|k| format!("subject_{k:03}")).collect(),
         shapes,
     };

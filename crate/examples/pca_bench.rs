@@ -18,7 +18,7 @@
 
 use bodyspace::measure::{BodyMeasurer, MeasureParams};
 use bodyspace::mesh::normals::NormalTopology;
-use bodyspace::pca::file::{read_model_for, write_model, BasisPrecision};
+use bodyspace::model_file::file::{read_model_for, write_model, BasisPrecision};
 use bodyspace::pca::random::NormalRng;
 use bodyspace::pca::segments::segment_subsets;
 use bodyspace::pca::subdivide::{subdivide_model, FineTemplate};
@@ -301,6 +301,7 @@ fn build_bench(subjects: usize) {
         segment_weights: (0..mesh.vertex_count() as u32)
             .map(|v| template.segment_weights(v))
             .collect(),
+        rest_shape: mesh.positions.clone(),
         names: (0..subjects).map(|i| format!("s{i}")).collect(),
         shapes,
     };

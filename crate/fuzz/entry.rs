@@ -5,7 +5,7 @@
 //! not.
 
 use bodyspace::io::{read_landmarks, read_scan};
-use bodyspace::pca::file::read_model;
+use bodyspace::model_file::file::read_model;
 
 /// What a target does with one input.
 pub type Target = fn(&[u8]);

@@ -58,12 +58,12 @@ fn every_corpus_and_regression_file_is_read_without_panic_in_bounded_time() {
 fn the_bsm_target_gets_past_the_checksum_of_a_mutated_data_section() {
     let root = Path::new(env!("CARGO_MANIFEST_DIR"));
     let mut bytes = std::fs::read(root.join("fuzz/corpus/bsm/tube_f32.bsm")).unwrap();
-    assert!(bodyspace::pca::file::read_model(&bytes).is_ok());
+    assert!(bodyspace::model_file::file::read_model(&bytes).is_ok());
     let last = bytes.len() - 2;
     bytes[last] ^= 0x01;
-    let err = bodyspace::pca::file::read_model(&bytes).unwrap_err();
+    let err = bodyspace::model_file::file::read_model(&bytes).unwrap_err();
     assert!(err.to_string().contains("CRC-32"), "{err}");
     let fixed = entry::with_valid_crc(&bytes).expect("the header is found");
-    assert!(bodyspace::pca::file::read_model(&fixed).is_ok());
+    assert!(bodyspace::model_file::file::read_model(&fixed).is_ok());
     assert!(entry::with_valid_crc(&fixed).is_none());
 }

@@ -6,9 +6,9 @@
 //! percentiles, needs 4.3).
 #![cfg(not(target_arch = "wasm32"))]
 
+use bodyspace::anthropometry::from_measurements::{body_from_measurements, FromMeasurementsParams};
 use bodyspace::cli::model::{base_measurer, load_model};
 use bodyspace::measure::{Kind, Measure};
-use bodyspace::pca::from_measurements::{body_from_measurements, FromMeasurementsParams};
 use std::path::Path;
 
 #[test]

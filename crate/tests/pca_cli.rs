@@ -99,7 +99,7 @@ fn build_project_reconstruct_round_trip() {
     for part in ["whole", "head", "left_arm", "torso", "right_leg"] {
         assert_eq!(summary["models"][part]["modes"], 1, "{part}: {summary}");
     }
-    let header = bodyspace::pca::file::read_model(&std::fs::read(&fixed).unwrap()).unwrap();
+    let header = bodyspace::model_file::file::read_model(&std::fs::read(&fixed).unwrap()).unwrap();
     assert_eq!(header.settings.modes, Some(1));
     let (ok, _, err) = run(&[
         "build-model",

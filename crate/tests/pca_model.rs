@@ -174,8 +174,11 @@ fn a_fixed_mode_count_overrides_the_variance_cut_and_is_recorded() {
         assert!(m.mode_count() <= 9);
     }
     // Recorded in the settings, and in the file.
-    let bytes = bodyspace::pca::file::write_model(&six, bodyspace::pca::file::BasisPrecision::F32);
-    let read = bodyspace::pca::file::read_model(&bytes).unwrap();
+    let bytes = bodyspace::model_file::file::write_model(
+        &six,
+        bodyspace::model_file::file::BasisPrecision::F32,
+    );
+    let read = bodyspace::model_file::file::read_model(&bytes).unwrap();
     assert_eq!(read.settings.modes, Some(6));
     assert!(build_body_model(&set, &params(0)).is_err());
     // Settings written before the field existed read as "no fixed count".

@@ -4,7 +4,7 @@
 
 mod pca_support;
 
-use bodyspace::pca::file::read_model_for;
+use bodyspace::model_file::file::read_model_for;
 use bodyspace::pca::random::NormalRng;
 use bodyspace::pca::subdivide::{subdivide_model, FineTemplate};
 use bodyspace::pca::{

@@ -97,8 +97,9 @@ export interface MeasurementDistribution {
 
 /**
  * The percentile (0–100) of `value` among `sorted` (ascending): 100·(below + ½·equal)/N, NaN for
- * an empty population — the core's `pca::measurement_distribution::percentile_of`, done here so
- * that a slider move looks it up on the UI thread against the distribution computed once.
+ * an empty population — the core's `anthropometry::measurement_distribution::percentile_of`, done here so
+ * that a slider move looks it up on the UI thread against the distribution computed once (held to
+ * the core's by tests/e2e/percentile-parity.spec.ts).
  */
 export function percentileOf(sorted: readonly number[], value: number): number {
   if (sorted.length === 0) return NaN;

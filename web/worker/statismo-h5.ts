@@ -1,7 +1,7 @@
 // Statismo HDF5 files in the worker, with h5wasm (the HDF5 C library compiled to WebAssembly).
 // h5wasm is imported only when a .h5 is opened or saved (its 4 MB stay out of the first load).
 // This file only moves datasets between the file and the core's StatismoArrays; the layout's
-// meaning and every check are the core's (crate/src/pca/statismo.rs, docs/shape-model.md).
+// meaning and every check are the core's (crate/src/model_file/statismo.rs, docs/shape-model.md).
 import { maxModelBytes, StatismoArrays } from '../pkg/bodyspace.js';
 
 type H5Module = typeof import('h5wasm');

@@ -1,8 +1,8 @@
 //! Anthropometry for JavaScript on the loaded [`ShapeSpace`]: the body of the model that has
-//! target measurements ([`crate::pca::from_measurements`]) and the tolerances that say "met",
+//! target measurements ([`crate::anthropometry::from_measurements`]) and the tolerances that say "met",
 //! the measurement distributions of the model's population
-//! ([`crate::pca::measurement_distribution`], held as a [`ModelPopulation`]) and its boundary
-//! manikins ([`crate::pca::boundary_manikins`]).
+//! ([`crate::anthropometry::measurement_distribution`], held as a [`ModelPopulation`]) and its boundary
+//! manikins ([`crate::anthropometry::boundary_manikins`]).
 //!
 //! Targets cross as a JSON object `{name: value}` (names of `docs/measurements.md`, values in
 //! m, m³, m²); results as JSON.
@@ -13,13 +13,13 @@ use js_sys::Function;
 use serde::Serialize;
 use wasm_bindgen::prelude::*;
 
-use crate::measure::Measure;
-use crate::pca::boundary_manikins::{boundary_manikins, ManikinParams};
-use crate::pca::from_measurements::{body_from_measurements, FromMeasurementsParams};
-use crate::pca::measurement_distribution::{
+use crate::anthropometry::boundary_manikins::{boundary_manikins, ManikinParams};
+use crate::anthropometry::from_measurements::{body_from_measurements, FromMeasurementsParams};
+use crate::anthropometry::measurement_distribution::{
     measurement_distribution, DistributionParams, MeasurementDistribution,
 };
-use crate::pca::segment_targets::{segment_body_from_measurements, segment_measurements};
+use crate::anthropometry::segment_targets::{segment_body_from_measurements, segment_measurements};
+use crate::measure::Measure;
 use crate::template::Segment;
 
 use super::model::{js, ShapeSpace};
@@ -31,7 +31,7 @@ struct Found<'a> {
     /// "whole" or the segment whose model the coefficients are of.
     part: &'a str,
     #[serde(flatten)]
-    found: &'a crate::pca::from_measurements::BodyFromMeasurements,
+    found: &'a crate::anthropometry::from_measurements::BodyFromMeasurements,
 }
 
 /// How close "met" is per kind (JSON of `ShapeSpace::targetTolerancesJson`), m / m³ / m².
@@ -116,7 +116,7 @@ impl ShapeSpace {
 
     /// The measurements a target may name in each part's view, as JSON `{whole: [...], head:
     /// [...], ...}` (whole: all; a segment: those that act on its model,
-    /// [`crate::pca::segment_targets::measurement_segment`]).
+    /// [`crate::anthropometry::segment_targets::measurement_segment`]).
     #[wasm_bindgen(js_name = targetableJson)]
     pub fn targetable_json(&self) -> Result<String, JsError> {
         let mut out = BTreeMap::new();
@@ -227,4 +227,13 @@ impl ModelPopulation {
 #[wasm_bindgen(js_name = manikinDefaultsJson)]
 pub fn manikin_defaults_json() -> Result<String, JsError> {
     serde_json::to_string(&ManikinParams::default()).map_err(js)
+}
+
+/// The percentile (0–100) of `value` among `sorted` (ascending): the core's
+/// [`crate::anthropometry::measurement_distribution::percentile_of`], which the UI keeps in
+/// TypeScript for speed (`web/shared/anthropometry.ts`); exported so that a test holds the two
+/// to the same results.
+#[wasm_bindgen(js_name = percentileOf)]
+pub fn percentile_of(sorted: &[f64], value: f64) -> f64 {
+    crate::anthropometry::measurement_distribution::percentile_of(sorted, value)
 }

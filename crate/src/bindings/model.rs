@@ -14,9 +14,9 @@ use wasm_bindgen::prelude::*;
 
 use crate::measure::{BodyMeasurer, MeasureParams};
 use crate::mesh::normals::NormalTopology;
-use crate::pca::export::{eigenvalues_csv, quality_csv, scores_csv};
-use crate::pca::file::{read_model, read_model_for, write_model, BasisPrecision};
-use crate::pca::gltf::{model_glb, parts_glb};
+use crate::model_file::export::{eigenvalues_csv, quality_csv, scores_csv};
+use crate::model_file::file::{read_model, read_model_for, write_model, BasisPrecision};
+use crate::model_file::gltf::{model_glb, parts_glb};
 use crate::pca::subdivide::{subdivide_model, FineTemplate};
 use crate::pca::{
     BodyModel, BuildParams, Coefficients, Morph, QualityCurves, SeamReport, ShapeModel,
@@ -392,7 +392,7 @@ impl ShapeSpace {
     }
 
     /// The whole-body model and the six segment models as one GLB (seven meshes, each with its
-    /// first `modes` modes at +1σ as morph targets; layout in `pca::gltf`).
+    /// first `modes` modes at +1σ as morph targets; layout in `model_file::gltf`).
     #[wasm_bindgen(js_name = partsGlb)]
     pub fn parts_glb(&self, modes: u32) -> Uint8Array {
         Uint8Array::from(parts_glb(&self.model, modes as usize).as_slice())

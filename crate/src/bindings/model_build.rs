@@ -5,11 +5,12 @@ use nalgebra::Point3;
 use wasm_bindgen::prelude::*;
 
 use super::model::{js, ShapeSpace};
-use crate::pca::{build_body_model, BuildParams, TemplateIdentity, TrainingSet};
+use crate::pca::{build_body_model, BuildParams, TrainingSet};
 use crate::template::{Resolution, Template};
 
-/// Builds a model from `count` fits in template vertex order (`positions` = count·#V·3, metres),
-/// keeping modes up to `variance` (0 < variance ≤ 1). `names_json` is a JSON array of names.
+/// Builds a model from `count` fits in template vertex order (`positions` = count·#V·3, each fit
+/// in its scan's frame and units: the core brings it into the template's), keeping modes up to
+/// `variance` (0 < variance ≤ 1). `names_json` is a JSON array of names.
 #[wasm_bindgen(js_name = buildShapeModel)]
 pub fn build_shape_model(
     positions: &[f32],
@@ -56,15 +57,7 @@ pub fn build_shape_model(
                 .collect()
         })
         .collect();
-    let set = TrainingSet {
-        template: TemplateIdentity::of_template(&template),
-        triangles: template.mesh().triangles.clone(),
-        segment_weights: (0..vertex_count as u32)
-            .map(|v| template.segment_weights(v))
-            .collect(),
-        names,
-        shapes,
-    };
+    let set = TrainingSet::on_template(&template, names, shapes);
     let params = BuildParams {
         variance,
         compute_quality,

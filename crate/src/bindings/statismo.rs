@@ -1,17 +1,19 @@
 //! Statismo HDF5 models for JavaScript. The worker reads and writes the HDF5 file with h5wasm
 //! and moves its datasets through [`StatismoArrays`]; the core makes them from the model in
 //! view (`ShapeSpace.statismoArrays`) and opens them on the template (`loadStatismoModel`), with
-//! the same functions and checks as the native reader (`pca::statismo`).
+//! the same functions and checks as the native reader (`model_file::statismo`).
 
 use js_sys::{Float32Array, Uint32Array};
 use wasm_bindgen::prelude::*;
 
-use crate::pca::statismo::{body_model_from_statismo, statismo_of_part, RowMajor, StatismoModel};
+use crate::model_file::statismo::{
+    body_model_from_statismo, statismo_of_part, RowMajor, StatismoModel,
+};
 use crate::template::{Resolution, Segment};
 
 use super::model::{js, template_at, ShapeSpace};
 
-/// The datasets of one statismo model (layout and units: `pca::statismo`), copied in and out.
+/// The datasets of one statismo model (layout and units: `model_file::statismo`), copied in and out.
 #[wasm_bindgen]
 #[derive(Default)]
 pub struct StatismoArrays {
@@ -160,11 +162,11 @@ impl StatismoArrays {
         serde_json::json!({
             "dataInfo": self.inner.data_info,
             "parameters": self.inner.parameters,
-            "builderName": crate::pca::statismo::BUILDER_NAME,
+            "builderName": crate::model_file::statismo::BUILDER_NAME,
             "representer": {
-                "name": crate::pca::statismo::REPRESENTER_NAME,
-                "version": crate::pca::statismo::REPRESENTER_VERSION,
-                "datasetType": crate::pca::statismo::DATASET_TYPE,
+                "name": crate::model_file::statismo::REPRESENTER_NAME,
+                "version": crate::model_file::statismo::REPRESENTER_VERSION,
+                "datasetType": crate::model_file::statismo::DATASET_TYPE,
             },
         })
         .to_string()
@@ -189,14 +191,14 @@ impl ShapeSpace {
     }
 }
 
-/// The largest model file accepted, in bytes (`pca::file::MAX_MODEL_BYTES`, for `.h5` files too).
+/// The largest model file accepted, in bytes (`model_file::file::MAX_MODEL_BYTES`, for `.h5` files too).
 #[wasm_bindgen(js_name = maxModelBytes)]
 pub fn max_model_bytes() -> f64 {
-    crate::pca::file::MAX_MODEL_BYTES as f64
+    crate::model_file::file::MAX_MODEL_BYTES as f64
 }
 
 /// Opens statismo datasets read from `file_name` on the embedded template at the resolution of
-/// its point count (`pca::statismo::body_model_from_statismo`: a model on other points is
+/// its point count (`model_file::statismo::body_model_from_statismo`: a model on other points is
 /// refused with the reason). Errors are prefixed by `file_name`.
 #[wasm_bindgen(js_name = loadStatismoModel)]
 pub fn load_statismo_model(

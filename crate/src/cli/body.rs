@@ -1,10 +1,10 @@
 //! `bodyspace body --model MODEL --measure stature=1.75 --measure waist_girth=0.82 --out
 //! body.ply`: the most likely body of the model with those measurements
-//! ([`crate::pca::from_measurements`]); prints its coefficients and achieved vs target as JSON.
+//! ([`crate::anthropometry::from_measurements`]); prints its coefficients and achieved vs target as JSON.
 
 use super::model::{base_measurer, load_model, write_ply};
+use crate::anthropometry::from_measurements::{body_from_measurements, FromMeasurementsParams};
 use crate::measure::Measure;
-use crate::pca::from_measurements::{body_from_measurements, FromMeasurementsParams};
 use std::path::PathBuf;
 
 /// Arguments of `bodyspace body`.

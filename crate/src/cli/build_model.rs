@@ -2,10 +2,10 @@
 //! --modes N] [--scale] [--f16] [--csv DIR] [--gltf FILE.glb]`.
 
 use super::manifest::{read_manifest, Status};
-use super::model::{read_fit, template_for_vertex_count, template_identity};
-use crate::pca::export::{eigenvalues_csv, quality_csv, scores_csv};
-use crate::pca::file::{write_model, BasisPrecision};
-use crate::pca::outliers::{far_subjects, far_threshold};
+use super::model::{read_fit, template_for_vertex_count};
+use crate::anthropometry::outliers::{far_subjects, far_threshold};
+use crate::model_file::export::{eigenvalues_csv, quality_csv, scores_csv};
+use crate::model_file::file::{write_model, BasisPrecision};
 use crate::pca::{
     build_body_model, BuildParams, GpaParams, PoseRemoval, QualityParams, TrainingSet,
 };
@@ -120,33 +120,8 @@ pub fn run(args: &BuildModelArgs) -> Result<(), String> {
     }
     let template = template_for_vertex_count(shapes[0].len())
         .map_err(|e| format!("{}: {e}", files[0].display()))?;
-    let mesh = template.mesh();
-    // Fits come in their scans' frames (CAESAR: z up, any origin). A rigid fit of each onto the
-    // template puts the model in the template's frame (y up, facing +z), so the mean body
-    // stands upright in the app; GPA then removes the remaining pose differences.
-    for (shape, file) in shapes.iter_mut().zip(&files) {
-        if shape.len() != mesh.vertex_count() {
-            return Err(format!(
-                "{}: {} vertices, but the template has {} (fits must be in template vertex order)",
-                file.display(),
-                shape.len(),
-                mesh.vertex_count()
-            ));
-        }
-        let pose = crate::pca::procrustes_gpa::rigid_align(shape, &mesh.positions, false);
-        for p in shape.iter_mut() {
-            *p = pose.apply(p);
-        }
-    }
-    let set = TrainingSet {
-        template: template_identity(&template),
-        triangles: mesh.triangles.clone(),
-        segment_weights: (0..mesh.vertex_count() as u32)
-            .map(|v| template.segment_weights(v))
-            .collect(),
-        names,
-        shapes,
-    };
+    // The core brings each fit (in its scan's frame and units) into the template's frame.
+    let set = TrainingSet::on_template(&template, names, shapes);
     let params = BuildParams {
         variance: args.variance,
         max_modes: args.max_modes,
@@ -186,7 +161,7 @@ pub fn run(args: &BuildModelArgs) -> Result<(), String> {
     let bytes = write_model(&model, precision);
     std::fs::write(&args.out, &bytes).map_err(|e| format!("{}: {e}", args.out.display()))?;
     if let Some(gltf) = &args.gltf {
-        let glb = crate::pca::gltf::model_glb(&model, usize::MAX);
+        let glb = crate::model_file::gltf::model_glb(&model, usize::MAX);
         std::fs::write(gltf, glb).map_err(|e| format!("{}: {e}", gltf.display()))?;
     }
     if let Some(csv) = &args.csv {

@@ -1,8 +1,8 @@
 //! `bodyspace export-gltf --model MODEL --out FILE.glb [--parts whole|all] [--modes N]`: a model
-//! file as binary glTF with its modes as morph targets (`pca::gltf`).
+//! file as binary glTF with its modes as morph targets (`model_file::gltf`).
 
 use super::model::load_model;
-use crate::pca::gltf::{model_glb, parts_glb};
+use crate::model_file::gltf::{model_glb, parts_glb};
 use std::path::PathBuf;
 
 /// Which models go into the GLB.

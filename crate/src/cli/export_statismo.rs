@@ -1,10 +1,10 @@
 //! `bodyspace export-statismo --model MODEL --out FILE.h5 [--segment NAME]`: a model as a
-//! statismo HDF5 file (`pca::statismo`, written by `io::statismo_h5`) for statismo, Scalismo
+//! statismo HDF5 file (`model_file::statismo`, written by `io::statismo_h5`) for statismo, Scalismo
 //! and exploreCOSMOS: the whole body, or one segment over its own vertices.
 
 use super::model::load_model;
 use crate::io::statismo_h5::write_statismo_h5;
-use crate::pca::statismo::statismo_of_part;
+use crate::model_file::statismo::statismo_of_part;
 use crate::template::Segment;
 use std::path::PathBuf;
 

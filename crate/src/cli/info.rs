@@ -30,7 +30,7 @@ fn read_file(path: &Path) -> Result<(Vec<u8>, String), String> {
 /// the one-line message for stderr.
 pub fn run(args: &InfoArgs) -> Result<(), String> {
     let (bytes, name) = read_file(&args.scan)?;
-    if bytes.starts_with(crate::pca::file::MAGIC) || super::model::is_hdf5(&args.scan)? {
+    if bytes.starts_with(crate::model_file::file::MAGIC) || super::model::is_hdf5(&args.scan)? {
         return model_info(&args.scan);
     }
     let mesh = read_scan(&bytes, &name).map_err(|e| e.to_string())?;

@@ -1,14 +1,14 @@
 //! `bodyspace manikins --model MODEL --measure stature --measure waist_girth --coverage 0.9
-//! --out DIR`: the boundary manikins of 2–4 measurements ([`crate::pca::boundary_manikins`]),
+//! --out DIR`: the boundary manikins of 2–4 measurements ([`crate::anthropometry::boundary_manikins`]),
 //! one PLY per manikin and `manikins.csv` in DIR, the summary as JSON on stdout.
 
 use super::model::{base_measurer, load_model, write_ply};
-use crate::measure::Measure;
-use crate::pca::boundary_manikins::{boundary_manikins, ManikinParams};
-use crate::pca::from_measurements::FromMeasurementsParams;
-use crate::pca::measurement_distribution::{
+use crate::anthropometry::boundary_manikins::{boundary_manikins, ManikinParams};
+use crate::anthropometry::from_measurements::FromMeasurementsParams;
+use crate::anthropometry::measurement_distribution::{
     sampled_measurements, DistributionParams, PopulationMeasurements,
 };
+use crate::measure::Measure;
 use std::path::PathBuf;
 
 /// Arguments of `bodyspace manikins`.

@@ -2,14 +2,14 @@
 //! JSON (`--mesh FIT`, with `--model MODEL` also its percentile among the model's training
 //! subjects), of every fit of a folder as one CSV (`--fits DIR --csv OUT.csv`), or their
 //! distribution in a model (`--model MODEL --distribution [--samples N] [--csv OUT.csv]`,
-//! [`crate::pca::measurement_distribution`]).
+//! [`crate::anthropometry::measurement_distribution`]).
 
 use super::build_model::{fit_files, subject_of};
 use super::model::{base_measurer, load_model, measure_any_frame, read_fit};
-use crate::measure::{BodyMeasurer, Measure, Measurements};
-use crate::pca::measurement_distribution::{
+use crate::anthropometry::measurement_distribution::{
     measurement_distribution, training_measurements, DistributionParams, PopulationMeasurements,
 };
+use crate::measure::{BodyMeasurer, Measure, Measurements};
 use crate::template::Template;
 use std::fmt::Write;
 use std::path::{Path, PathBuf};

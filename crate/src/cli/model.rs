@@ -3,8 +3,8 @@
 
 use crate::measure::{BodyMeasurer, MeasureParams, Measurements};
 use crate::mesh::Mesh;
-use crate::pca::file::read_model_for;
-use crate::pca::statismo::body_model_from_statismo;
+use crate::model_file::file::read_model_for;
+use crate::model_file::statismo::body_model_from_statismo;
 use crate::pca::{BodyModel, TemplateIdentity};
 use crate::template::{Resolution, Template};
 use nalgebra::Point3;
@@ -47,15 +47,15 @@ pub fn is_hdf5(path: &Path) -> Result<bool, String> {
 }
 
 /// Reads a model — a `.bsm` model file, or a statismo HDF5 file made on the embedded template
-/// (`pca::statismo::body_model_from_statismo`) — and checks it against the embedded template
+/// (`model_file::statismo::body_model_from_statismo`) — and checks it against the embedded template
 /// at the model's resolution. Every command that takes `--model` reads it here.
 pub fn load_model(path: &Path) -> Result<(BodyModel, Template), String> {
     if is_hdf5(path)? {
         return load_statismo(path);
     }
     let bytes = std::fs::read(path).map_err(|e| format!("{}: {e}", path.display()))?;
-    let header_model =
-        crate::pca::file::read_model(&bytes).map_err(|e| format!("{}: {e}", path.display()))?;
+    let header_model = crate::model_file::file::read_model(&bytes)
+        .map_err(|e| format!("{}: {e}", path.display()))?;
     let resolution: Resolution = header_model
         .template
         .resolution

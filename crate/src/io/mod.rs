@@ -12,7 +12,7 @@
 //!   (`write_landmarks`: one of them by the file name's extension).
 //! * [`subject_files`]: which scan and landmark files make one subject of a batch.
 //! * Shape models: [`statismo_h5`] (native only) reads and writes statismo HDF5 files with the
-//!   HDF5 C library; the layout is `crate::pca::statismo`'s.
+//!   HDF5 C library; the layout is `crate::model_file::statismo`'s.
 //! * [`error`]: [`IoError`], the one error type of every reader; [`limits`]: the largest input
 //!   accepted (inflated size, vertices, triangles), checked before memory is reserved.
 

@@ -1,7 +1,7 @@
 //! Statismo HDF5 model files, natively, through the HDF5 C library (crate `hdf5-metno`, Debian's
 //! `libhdf5-dev`): [`write_statismo_h5`] writes a [`StatismoModel`] in statismo 0.9's layout,
 //! [`read_statismo_h5`] reads one back. This module only moves datasets; the layout's meaning
-//! and every check live in `crate::pca::statismo`. Native only: the browser uses h5wasm.
+//! and every check live in `crate::model_file::statismo`. Native only: the browser uses h5wasm.
 //!
 //! ```text
 //! /version/majorVersion, /version/minorVersion     int32 scalars (0, 9)
@@ -22,8 +22,8 @@ use std::str::FromStr;
 use hdf5::types::VarLenUnicode;
 use hdf5::{Group, H5Type};
 
-use crate::pca::file::MAX_MODEL_BYTES;
-use crate::pca::statismo::{
+use crate::model_file::file::MAX_MODEL_BYTES;
+use crate::model_file::statismo::{
     RowMajor, StatismoModel, BUILDER_NAME, DATASET_TYPE, REPRESENTER_NAME, REPRESENTER_VERSION,
 };
 use crate::pca::PcaError;
@@ -65,7 +65,9 @@ pub fn write_statismo_h5(
 fn write(path: &Path, model: &StatismoModel, build_time: &str) -> hdf5::Result<()> {
     let file = hdf5::File::create(path)?;
     let version = file.create_group("version")?;
-    let (major, minor) = model.version.unwrap_or(crate::pca::statismo::VERSION);
+    let (major, minor) = model
+        .version
+        .unwrap_or(crate::model_file::statismo::VERSION);
     version
         .new_dataset::<i32>()
         .create("majorVersion")?
@@ -137,8 +139,8 @@ fn write(path: &Path, model: &StatismoModel, build_time: &str) -> hdf5::Result<(
 }
 
 /// Reads the datasets of a statismo model from `path` (float or double, any integer type for
-/// the cells), without judging them: `pca::statismo::check_statismo` does. A file larger than
-/// `pca::file::MAX_MODEL_BYTES`, or a dataset that would take more, is refused before reading.
+/// the cells), without judging them: `model_file::statismo::check_statismo` does. A file larger than
+/// `model_file::file::MAX_MODEL_BYTES`, or a dataset that would take more, is refused before reading.
 pub fn read_statismo_h5(path: &Path) -> Result<StatismoModel, PcaError> {
     let bytes = std::fs::metadata(path)
         .map_err(|e| PcaError::Statismo(format!("{}: {e}", path.display())))?

@@ -1,5 +1,10 @@
-//! Building a body model from aligned subjects: GPA, then snapshot PCA of the whole body and of
-//! each segment, then the quality curves.
+//! Building a body model from aligned subjects: each brought into the template's frame, GPA,
+//! then snapshot PCA of the whole body and of each segment, then the quality curves.
+//!
+//! A model is always built in the template's frame (y up, metres, facing +z), whatever the
+//! frames and units of its fits: unless the pose removal is [`PoseRemoval::None`] (shapes used as
+//! given), every shape is first mapped there by its units and a rigid fit onto the template's
+//! rest shape ([`super::template_frame`]); GPA then removes what pose differences remain.
 //!
 //! Segment models share the whole-body GPA frame rather than running their own GPA: then every
 //! segment reconstruction lives in the same coordinates as the whole body and its neighbours, so
@@ -12,9 +17,11 @@ use super::gram::{modes_for_variance, snapshot_pca, SnapshotPca};
 use super::metrics::{quality_curves, QualityCurves};
 use super::model::BodyModel;
 use super::params::BuildParams;
-use super::procrustes_gpa::generalised_procrustes;
+use super::procrustes_gpa::{generalised_procrustes, PoseRemoval};
 use super::segments::{segment_subsets, validate_weights};
 use super::shape_model::{ShapeModel, TemplateIdentity};
+use super::template_frame::into_template_frame;
+use crate::template::Template;
 use nalgebra::Point3;
 
 /// Aligned subjects in template vertex order plus what the model must remember of the template.
@@ -24,17 +31,45 @@ pub struct TrainingSet {
     pub triangles: Vec<[u32; 3]>,
     /// One `[f32; 6]` per template vertex, [`crate::template::Segment::ALL`] order.
     pub segment_weights: Vec<[f32; 6]>,
+    /// The template's rest shape (`template.vertex_count` points, y up, metres, facing +z): the
+    /// frame every shape is brought into before GPA.
+    pub rest_shape: Vec<Point3<f64>>,
     /// Subject names, same order as `shapes`.
     pub names: Vec<String>,
-    /// N shapes of `template.vertex_count` points.
+    /// N shapes of `template.vertex_count` points, each in any frame and in metres,
+    /// centimetres or millimetres.
     pub shapes: Vec<Vec<Point3<f64>>>,
 }
 
 impl TrainingSet {
+    /// The `shapes` (fits in `template`'s vertex order) named `names`, with what the model
+    /// keeps of `template`: its identity, triangles, segment weights and rest shape.
+    pub fn on_template(
+        template: &Template,
+        names: Vec<String>,
+        shapes: Vec<Vec<Point3<f64>>>,
+    ) -> Self {
+        let mesh = template.mesh();
+        Self {
+            template: TemplateIdentity::of_template(template),
+            triangles: mesh.triangles.clone(),
+            segment_weights: template.segment_weight_table().to_vec(),
+            rest_shape: mesh.positions.clone(),
+            names,
+            shapes,
+        }
+    }
+
     fn validate(&self) -> Result<(), PcaError> {
         let v = self.template.vertex_count;
         if self.shapes.len() < 2 {
             return Err(PcaError::TooFewSubjects(self.shapes.len()));
+        }
+        if self.rest_shape.len() != v {
+            return Err(PcaError::BadParameter(format!(
+                "the template's rest shape has {} vertices, the template {v}",
+                self.rest_shape.len()
+            )));
         }
         for (k, shape) in self.shapes.iter().enumerate() {
             let name = self
@@ -122,7 +157,20 @@ pub fn build_body_model(set: &TrainingSet, params: &BuildParams) -> Result<BodyM
         ));
     }
     set.validate()?;
-    let refs: Vec<&[Point3<f64>]> = set.shapes.iter().map(|s| s.as_slice()).collect();
+    let framed: Vec<Vec<Point3<f64>>> = if params.gpa.pose == PoseRemoval::None {
+        Vec::new()
+    } else {
+        set.shapes
+            .iter()
+            .map(|s| into_template_frame(s, &set.rest_shape))
+            .collect()
+    };
+    let shapes = if framed.is_empty() {
+        &set.shapes
+    } else {
+        &framed
+    };
+    let refs: Vec<&[Point3<f64>]> = shapes.iter().map(|s| s.as_slice()).collect();
     let gpa = generalised_procrustes(&refs, &params.gpa);
     let rows: Vec<Vec<f64>> = gpa
         .aligned
@@ -130,6 +178,7 @@ pub fn build_body_model(set: &TrainingSet, params: &BuildParams) -> Result<BodyM
         .map(|s| s.iter().flat_map(|p| [p.x, p.y, p.z]).collect())
         .collect();
     drop(gpa);
+    drop(framed);
     let whole = model_of(&rows, Vec::new(), params);
     let segments = segment_subsets(&set.segment_weights)
         .into_iter()

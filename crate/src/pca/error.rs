@@ -39,7 +39,7 @@ pub enum PcaError {
         "model file format version {found} is not supported (this build reads version {supported})"
     )]
     UnsupportedVersion { found: u32, supported: u32 },
-    /// The file is larger than [`super::file::MAX_MODEL_BYTES`], the largest model accepted.
+    /// The file is larger than `model_file::file::MAX_MODEL_BYTES`, the largest model accepted.
     #[error("model file is {bytes} bytes, more than the {limit} bytes of the largest model accepted (see Limits in the README)")]
     TooLarge { bytes: u64, limit: u64 },
     /// The file ends before the header or an array it declares.

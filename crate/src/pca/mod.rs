@@ -1,58 +1,39 @@
 //! PCA shape spaces (paper §4): S = S̄ + Φ·B for the whole body and six overlapping segments.
-//! (Measurements of a body are [`crate::measure`].)
+//! (Measurements of a body are [`crate::measure`]; anthropometry on a model — distributions,
+//! bodies from measurements, manikins — is [`crate::anthropometry`]; the model file formats are
+//! [`crate::model_file`]. Both use this module, never the reverse.)
 //!
 //! * [`procrustes_gpa`] — generalised Procrustes analysis (rigid pose removal, optional scale)
 //! * [`gram`] — snapshot PCA through the N×N Gram matrix
 //! * [`shape_model`] — [`ShapeModel`] (one part) and the [`TemplateIdentity`] it was built on
 //! * [`model`] — [`BodyModel`] (whole body + six segments): assembly, projection of a new mesh,
 //!   stitched reconstruction and seam report
+//! * [`template_frame`] — a training shape in the template's frame (its units, a rigid fit
+//!   onto the template's rest shape), where every model is built
 //! * [`build`] — [`build_body_model`] from a [`TrainingSet`]; [`params`] — its [`BuildParams`]
 //! * [`segments`] — segment vertex subsets and normalised blend weights
 //! * [`marginal`] — a model's marginal on a vertex subset (segment models of a whole-body file)
 //! * [`stitch`] — the stitching types (coefficients, plan, seam report) and f32 slider kernels
 //! * [`morph`] — the body on screen: held coefficients and positions, slider moves as rank-1 updates
 //! * [`subdivide`] — a model mapped exactly to the template's finer resolution (S̄_fine = S·S̄, φ_fine = S·φ)
-//! * [`outliers`] — training subjects far outside the model (Mahalanobis distance of their scores)
-//! * [`from_measurements`] — the most likely body with given measurements (least Mahalanobis norm)
-//! * [`segment_targets`] — targets of a segment acting on its model; which measurements belong
-//!   to which segment
-//! * [`measurement_distribution`] — every measurement over the training subjects and sampled
-//!   bodies: percentiles, histograms, correlations, a body's percentile
-//! * [`boundary_manikins`] — the bodies on the boundary of a coverage region of 2–4 measurements
-//! * [`chi_square`] — normal and χ² quantiles
 //! * [`metrics`] — compactness, generalization, specificity (Styner 2003)
-//! * [`export`] — eigenvalues, scores and quality curves as CSV
-//! * [`gltf`] — the whole-body model, or all seven models, as GLB with modes as morph targets
-//! * [`file`] — the versioned model file format ([`f16`] for the compact basis)
-//! * [`statismo`] — a model as statismo's HDF5 datasets (what Scalismo and exploreCOSMOS read),
-//!   and a statismo model opened on the template
 //! * [`random`] — seeded normal draws
 
-pub mod boundary_manikins;
 pub mod build;
-pub mod chi_square;
 pub mod error;
-pub mod export;
-pub mod f16;
-pub mod file;
-pub mod from_measurements;
-pub mod gltf;
 pub mod gram;
 pub mod marginal;
-pub mod measurement_distribution;
 pub mod metrics;
 pub mod model;
 pub mod morph;
-pub mod outliers;
 pub mod params;
 pub mod procrustes_gpa;
 pub mod random;
-pub mod segment_targets;
 pub mod segments;
 pub mod shape_model;
-pub mod statismo;
 pub mod stitch;
 pub mod subdivide;
+pub mod template_frame;
 
 pub use build::{build_body_model, TrainingSet};
 pub use error::PcaError;

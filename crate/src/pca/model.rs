@@ -14,7 +14,9 @@ use super::stitch::{
     add_modes, axpy, kahan_add, nonzero_modes, scatter_axpy, Coefficients, ModeDelta, ModeTarget,
     SeamReport, StitchPlan,
 };
+use crate::mesh::bounds::bounding_extent;
 use crate::mesh::similarity::Similarity;
+use crate::mesh::units::detect_units;
 use crate::template::Segment;
 
 /// Result of [`BodyModel::project`].
@@ -119,7 +121,9 @@ impl BodyModel {
         Ok(())
     }
 
-    /// Projects `positions` (`#V` points in template order) onto every model.
+    /// Projects `positions` (`#V` points in template order, any frame, in metres, centimetres or
+    /// millimetres unless the model removes no pose) onto every model; `pose` is the map of the
+    /// mesh into the model's frame.
     pub fn project(&self, positions: &[Point3<f64>]) -> Result<Projection, PcaError> {
         let v = self.template.vertex_count;
         if positions.len() != v {
@@ -141,10 +145,24 @@ impl BodyModel {
             .chunks_exact(3)
             .map(|c| Point3::new(c[0] as f64, c[1] as f64, c[2] as f64))
             .collect();
+        // In its units' metres first, as the build brings every training shape
+        // ([`super::template_frame`]): a fit in millimetres projects as in metres.
+        let u = match self.settings.gpa.pose {
+            PoseRemoval::None => 1.0,
+            _ => detect_units(bounding_extent(positions)).scale_to_metres(),
+        };
+        let metres: Vec<Point3<f64>> = positions
+            .iter()
+            .map(|p| Point3::from(p.coords * u))
+            .collect();
         let pose = match self.settings.gpa.pose {
             PoseRemoval::None => Similarity::identity(),
-            PoseRemoval::Rigid => rigid_align(positions, &mean, false),
-            PoseRemoval::Similarity => rigid_align(positions, &mean, true),
+            PoseRemoval::Rigid => rigid_align(&metres, &mean, false),
+            PoseRemoval::Similarity => rigid_align(&metres, &mean, true),
+        };
+        let pose = Similarity {
+            scale: pose.scale * u,
+            ..pose
         };
         let x: Vec<f64> = positions
             .iter()

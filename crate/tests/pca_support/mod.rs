@@ -107,6 +107,7 @@ pub fn training_set(n: usize, seed: u64) -> TrainingSet {
         template: template_identity(),
         triangles: triangles(),
         segment_weights: segment_weights(),
+        rest_shape: tube(),
         names: (0..n).map(|i| format!("subject{i:03}")).collect(),
         shapes: subjects(n, seed),
     }

@@ -2,8 +2,8 @@
 //! count M). Every table has a `model` column (`whole` or a segment name) so the seven models fit
 //! in one file each.
 
-use super::model::BodyModel;
-use super::shape_model::ShapeModel;
+use crate::pca::model::BodyModel;
+use crate::pca::shape_model::ShapeModel;
 use crate::template::Segment;
 use std::fmt::Write;
 

@@ -5,14 +5,14 @@
 //! manikin; bad choices are refused with a message.
 #![cfg(not(target_arch = "wasm32"))]
 
-use bodyspace::cli::model::{base_measurer, load_model};
-use bodyspace::measure::Measure;
-use bodyspace::pca::boundary_manikins::{boundary_manikins, ManikinParams};
-use bodyspace::pca::chi_square::chi_square_quantile;
-use bodyspace::pca::from_measurements::FromMeasurementsParams;
-use bodyspace::pca::measurement_distribution::{
+use bodyspace::anthropometry::boundary_manikins::{boundary_manikins, ManikinParams};
+use bodyspace::anthropometry::chi_square::chi_square_quantile;
+use bodyspace::anthropometry::from_measurements::FromMeasurementsParams;
+use bodyspace::anthropometry::measurement_distribution::{
     sampled_measurements, DistributionParams, PopulationMeasurements,
 };
+use bodyspace::cli::model::{base_measurer, load_model};
+use bodyspace::measure::Measure;
 use std::path::Path;
 
 #[test]

@@ -5,7 +5,7 @@
 //! unlike the rest.
 
 use super::chi_square::chi_square_quantile;
-use super::shape_model::ShapeModel;
+use crate::pca::shape_model::ShapeModel;
 
 /// The share of a normal population inside the threshold; one body in a thousand lies beyond it.
 pub const FAR_PROBABILITY: f64 = 0.999;

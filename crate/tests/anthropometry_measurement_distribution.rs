@@ -4,11 +4,11 @@
 //! training population's spread.
 #![cfg(not(target_arch = "wasm32"))]
 
-use bodyspace::cli::model::{base_measurer, load_model};
-use bodyspace::measure::Measure;
-use bodyspace::pca::measurement_distribution::{
+use bodyspace::anthropometry::measurement_distribution::{
     measure_at_sigma, measurement_distribution, DistributionParams, PERCENTILE_LEVELS,
 };
+use bodyspace::cli::model::{base_measurer, load_model};
+use bodyspace::measure::Measure;
 use std::path::Path;
 
 #[test]

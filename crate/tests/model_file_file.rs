@@ -2,7 +2,7 @@
 
 mod pca_support;
 
-use bodyspace::pca::file::{
+use bodyspace::model_file::file::{
     read_model, read_model_for, write_model, BasisPrecision, FORMAT_VERSION,
 };
 use bodyspace::pca::{build_body_model, BodyModel, BuildParams, Coefficients, PcaError};

@@ -7,10 +7,10 @@
 //! Bodies are measured in the model frame, which is the template's (y up): the build moves every
 //! fit onto the template before GPA, and [`super::from_measurements`] measures the same way.
 
-use super::error::PcaError;
-use super::random::NormalRng;
-use super::shape_model::ShapeModel;
 use crate::measure::{BodyMeasurer, Kind, Measure, Measurements};
+use crate::pca::error::PcaError;
+use crate::pca::random::NormalRng;
+use crate::pca::shape_model::ShapeModel;
 use serde::Serialize;
 
 /// The percentile levels every distribution reports (%).

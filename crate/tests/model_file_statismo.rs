@@ -1,4 +1,4 @@
-//! Statismo HDF5 models (`pca::statismo`, `io::statismo_h5`, `bodyspace export-statismo`): a
+//! Statismo HDF5 models (`model_file::statismo`, `io::statismo_h5`, `bodyspace export-statismo`): a
 //! model built on the embedded template written, read back and opened again; segment files;
 //! segment marginals against segment models built directly; older and foreign files; refusals.
 //! The command line's `export-statismo` and its reading of `.h5` models: `pca_cli.rs`.
@@ -7,8 +7,8 @@
 mod pca_support;
 
 use bodyspace::io::statismo_h5::{read_statismo_h5, write_statismo_h5};
+use bodyspace::model_file::statismo::{body_model_from_statismo, statismo_of_part, StatismoModel};
 use bodyspace::pca::random::NormalRng;
-use bodyspace::pca::statismo::{body_model_from_statismo, statismo_of_part, StatismoModel};
 use bodyspace::pca::{
     build_body_model, BodyModel, BuildParams, PcaError, TemplateIdentity, TrainingSet,
 };
@@ -40,15 +40,11 @@ fn model(n: usize) -> (BodyModel, Template) {
                 .collect()
         })
         .collect();
-    let set = TrainingSet {
-        template: TemplateIdentity::of_template(&template),
-        triangles: mesh.triangles.clone(),
-        segment_weights: (0..mesh.vertex_count() as u32)
-            .map(|v| template.segment_weights(v))
-            .collect(),
-        names: (1..=n).map(|i| format!("fit_{i}")).collect(),
+    let set = TrainingSet::on_template(
+        &template,
+        (1..=n).map(|i| format!("fit_{i}")).collect(),
         shapes,
-    };
+    );
     let params = BuildParams {
         variance: 1.0,
         compute_quality: false,
@@ -245,19 +241,19 @@ fn inconsistent_or_foreign_files_are_refused_with_the_reason() {
     f.cells.data[0] = 1 << 30;
     assert!(refuse(f).contains("refers to point"));
     let mut f = good;
-    f.points = bodyspace::pca::statismo::RowMajor {
+    f.points = bodyspace::model_file::statismo::RowMajor {
         rows: 3,
         cols: 100,
         data: vec![0.0; 300],
     };
     f.mean = vec![0.0; 300];
     let k = f.mode_count();
-    f.pca_basis = bodyspace::pca::statismo::RowMajor {
+    f.pca_basis = bodyspace::model_file::statismo::RowMajor {
         rows: 300,
         cols: k,
         data: vec![0.0; 300 * k],
     };
-    f.cells = bodyspace::pca::statismo::RowMajor {
+    f.cells = bodyspace::model_file::statismo::RowMajor {
         rows: 3,
         cols: 1,
         data: vec![0, 1, 2],

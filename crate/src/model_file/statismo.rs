@@ -17,13 +17,13 @@
 
 use nalgebra::Point3;
 
-use super::error::PcaError;
-use super::marginal::marginal;
-use super::model::BodyModel;
-use super::params::BuildParams;
-use super::segments::{segment_subsets, segment_triangles};
-use super::shape_model::{ShapeModel, TemplateIdentity};
 use crate::mesh::units::detect_units;
+use crate::pca::error::PcaError;
+use crate::pca::marginal::marginal;
+use crate::pca::model::BodyModel;
+use crate::pca::params::BuildParams;
+use crate::pca::segments::{segment_subsets, segment_triangles};
+use crate::pca::shape_model::{ShapeModel, TemplateIdentity};
 use crate::template::{Segment, Template};
 
 /// Millimetres per metre: files are written in millimetres.

@@ -13,10 +13,10 @@
 //!   their bands as the models do. The `segments` node is translated 1 m along +x so the
 //!   two bodies stand side by side; vertex data are in the model frame (metres, y up).
 
-use super::model::BodyModel;
-use super::segments::segment_triangles;
-use super::shape_model::ShapeModel;
 use crate::io::glb_write::GlbWriter;
+use crate::pca::model::BodyModel;
+use crate::pca::segments::segment_triangles;
+use crate::pca::shape_model::ShapeModel;
 use crate::template::Segment;
 use serde_json::{json, Value};
 

@@ -19,11 +19,11 @@
 //! iteration of [`super::from_measurements`] is regularised towards that start: among the
 //! segment shapes that meet the targets, the one that changes the body least in σ units.
 
-use super::error::PcaError;
 use super::from_measurements::{solve, BodyFromMeasurements, FromMeasurementsParams, MeasuredBody};
-use super::model::BodyModel;
-use super::stitch::{Coefficients, ModeDelta, ModeTarget, StitchPlan};
 use crate::measure::{BodyMeasurer, Measure};
+use crate::pca::error::PcaError;
+use crate::pca::model::BodyModel;
+use crate::pca::stitch::{Coefficients, ModeDelta, ModeTarget, StitchPlan};
 use crate::template::Segment;
 
 /// The segment whose model a target of `m` acts on (module doc); `None` for a measurement of

@@ -14,13 +14,13 @@
 //! segments by name) `<model>/mean` f32 3n, `<model>/basis` f32 or f16 M·3n (mode-major),
 //! `<model>/scores` f32 N·M. Segment vertex subsets are derived from the weights (weight > 0).
 
-use super::error::PcaError;
 use super::f16::{f16_to_f32, f32_to_f16};
-use super::metrics::QualityCurves;
-use super::model::BodyModel;
-use super::params::BuildParams;
-use super::segments::segment_subsets;
-use super::shape_model::{ShapeModel, TemplateIdentity};
+use crate::pca::error::PcaError;
+use crate::pca::metrics::QualityCurves;
+use crate::pca::model::BodyModel;
+use crate::pca::params::BuildParams;
+use crate::pca::segments::segment_subsets;
+use crate::pca::shape_model::{ShapeModel, TemplateIdentity};
 use crate::template::Segment;
 use serde::{Deserialize, Serialize};
 

@@ -13,13 +13,13 @@
 //! measurement values ([`super::from_measurements::body_from_measurements`]).
 
 use super::chi_square::chi_square_quantile;
-use super::error::PcaError;
 use super::from_measurements::{
     body_from_measurements, BodyFromMeasurements, FromMeasurementsParams,
 };
 use super::measurement_distribution::{measure_at_sigma, PopulationMeasurements};
-use super::shape_model::ShapeModel;
 use crate::measure::{BodyMeasurer, Measure, Measurements};
+use crate::pca::error::PcaError;
+use crate::pca::shape_model::ShapeModel;
 use nalgebra::{DMatrix, DVector, SymmetricEigen};
 use serde::Serialize;
 

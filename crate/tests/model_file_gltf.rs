@@ -2,7 +2,7 @@
 
 mod pca_support;
 
-use bodyspace::pca::gltf::model_glb;
+use bodyspace::model_file::gltf::model_glb;
 use bodyspace::pca::{build_body_model, BuildParams, Coefficients};
 
 #[test]
@@ -105,7 +105,7 @@ fn checked_glb(glb: &[u8]) -> (serde_json::Value, Vec<u8>) {
 
 #[test]
 fn the_seven_models_export_as_seven_meshes_with_their_own_morph_targets() {
-    use bodyspace::pca::gltf::{parts_glb, SEGMENTS_OFFSET_M};
+    use bodyspace::model_file::gltf::{parts_glb, SEGMENTS_OFFSET_M};
     use bodyspace::template::Segment;
     let set = pca_support::training_set(8, 31);
     let params = BuildParams {

@@ -1,16 +1,16 @@
-//! End-to-end: targets of a segment act on its model (`pca::segment_targets`) on the demo model
+//! End-to-end: targets of a segment act on its model (`anthropometry::segment_targets`) on the demo model
 //! (`public/models/demo.bsm`). Which measurements belong to which segment; a head-girth and a
 //! thigh-girth target met on the stitched body within 5 mm by the head and right-leg models with
 //! the rest of the body held (vertices outside the segment do not move); a target of another
 //! segment refused with a message that lists the segment's own.
 #![cfg(not(target_arch = "wasm32"))]
 
-use bodyspace::cli::model::{base_measurer, load_model};
-use bodyspace::measure::Measure;
-use bodyspace::pca::from_measurements::FromMeasurementsParams;
-use bodyspace::pca::segment_targets::{
+use bodyspace::anthropometry::from_measurements::FromMeasurementsParams;
+use bodyspace::anthropometry::segment_targets::{
     measurement_segment, segment_body_from_measurements, segment_measurements,
 };
+use bodyspace::cli::model::{base_measurer, load_model};
+use bodyspace::measure::Measure;
 use bodyspace::pca::{Coefficients, ModeDelta, ModeTarget};
 use bodyspace::template::Segment;
 use std::path::Path;

@@ -16,9 +16,9 @@
 //! degenerate one. (A segment model with the body held, [`super::segment_targets`], runs the
 //! same iteration from and towards its starting coefficients.)
 
-use super::error::PcaError;
-use super::shape_model::ShapeModel;
 use crate::measure::{BodyMeasurer, Kind, Measure};
+use crate::pca::error::PcaError;
+use crate::pca::shape_model::ShapeModel;
 use nalgebra::{DMatrix, DVector};
 use serde::Serialize;
 
