@@ -158,6 +158,9 @@ export class Viewer {
       const rendered = Number(this.container.dataset.frames ?? '0') + 1;
       this.container.dataset.frames = String(rendered);
       if (this.framed) this.container.dataset.framedNdc = projectedExtent(this.framed, this.camera);
+      // Where everything shown lands (a body beside the framed one may reach past the canvas).
+      const shown = this.contentBounds();
+      if (!shown.isEmpty()) this.container.dataset.shownNdc = projectedExtent(shown, this.camera);
     });
   }
 

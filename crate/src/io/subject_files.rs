@@ -165,6 +165,15 @@ pub fn pair_subject_files<S: AsRef<str>>(file_names: &[S]) -> SubjectPairing {
 mod tests {
     use super::*;
 
+    /// `(subject, scan, landmarks)` of each subject.
+    fn subjects_of(pairing: &SubjectPairing) -> Vec<(&str, usize, Option<usize>)> {
+        pairing
+            .subjects
+            .iter()
+            .map(|s| (s.subject.as_str(), s.scan, s.landmarks))
+            .collect()
+    }
+
     #[test]
     fn subject_names_drop_scan_extensions_only() {
         assert_eq!(subject_name("scan_001.ply"), Some("scan_001"));
@@ -189,11 +198,7 @@ mod tests {
             "c.ply",
         ];
         let pairing = pair_subject_files(&names);
-        let got: Vec<_> = pairing
-            .subjects
-            .iter()
-            .map(|s| (s.subject.as_str(), s.scan, s.landmarks))
-            .collect();
+        let got = subjects_of(&pairing);
         // `.lnd` is looked for before `.json`; c has no landmark file; the second c is a duplicate.
         assert_eq!(
             got,
@@ -220,11 +225,7 @@ mod tests {
             "population.json",
         ];
         let pairing = pair_subject_files(&names);
-        let got: Vec<_> = pairing
-            .subjects
-            .iter()
-            .map(|s| (s.subject.as_str(), s.scan, s.landmarks))
-            .collect();
+        let got = subjects_of(&pairing);
         assert_eq!(got, [("scan_001", 2, Some(1)), ("scan_002", 5, Some(8))]);
         assert_eq!(pairing.not_scans, [3, 4, 6, 7]);
         // The subject's second landmark file is not unpaired; the population file is.
