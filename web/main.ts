@@ -43,9 +43,18 @@ const warpStep = new WarpStep(alignClient, viewer, session, templateView, showEr
 const alignStep = new AlignStep(alignClient, viewer, session, templateView, warpStep, showError);
 // An edited landmark set invalidates the warp and the fit as a new landmark file does, but keeps the view.
 const landmarkStep = new LandmarkStep(client, landmarkClient, viewer, session, () => caesarNames, (keepView) => {
-  alignStep.reset();
-  warpStep.reset(keepView);
+  session.changed(keepView ? 'edited' : 'estimated');
 }, showError);
+// Picking a landmark to place on a hidden scan (after Align) shows the scan, so the click lands.
+landmarkStep.onPick = () => warpStep.show('scan', true);
+// One change of the session, one reset of what was made from it: the picked landmark (new files),
+// then the fit (before the warp: both run in the align worker, which a running fit's cancel stops),
+// then the warp, which runs again.
+session.onChange((change) => {
+  if (change === 'files') landmarkStep.reset();
+  alignStep.reset();
+  warpStep.reset(change === 'edited');
+});
 templateView.onLoaded((data) => landmarkStep.setTemplate(data));
 // Another template resolution: the warp and the fit were made with the old one.
 templateView.onLoaded(() => {
@@ -105,20 +114,16 @@ async function open(all: File[]): Promise<void> {
   body.dataset.busy = 'true';
   const outcome = await readFiles(client, files, (text) => topBar.setStatus(text));
   const scan = outcome.scans.at(-1);
+  const landmarks = outcome.landmarks.at(-1);
   if (scan) {
-    session.setScan(scan.scan);
     lastReadMs = scan.roundTripMs;
     body.dataset.lastScanRoundTripMs = scan.roundTripMs.toFixed(2);
     body.dataset.lastScanCoreMs = scan.scan.timings.coreMs.toFixed(2);
     body.dataset.lastScanCopyMs = scan.scan.timings.copyMs.toFixed(2);
   }
-  const landmarks = outcome.landmarks.at(-1);
-  if (landmarks) session.setLandmarks(landmarks);
   if (scan || landmarks) {
-    landmarkStep.reset();
     // Before the refresh, so the camera frames the new data, not the template beside it.
-    alignStep.reset();
-    warpStep.reset();
+    session.open(scan?.scan ?? null, landmarks ?? null);
     // The scan and the shape body would stand in the same place: the scan takes the view.
     shapeSpace.hide();
     refresh(Boolean(scan) || !session.scan);
@@ -138,8 +143,6 @@ async function open(all: File[]): Promise<void> {
 function changeUnits(units: Units): void {
   session.setScanUnits(units);
   refresh(true);
-  alignStep.reset();
-  warpStep.reset();
 }
 
 /** Pushes the session into the view and the panels; `frame` re-aims the camera. */

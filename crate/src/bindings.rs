@@ -177,12 +177,11 @@ pub fn parse_landmarks(bytes: &[u8], file_name: &str) -> Result<String, JsError>
 
 /// The subjects among files given together (a drop or a folder), by the batch's pairing rule
 /// ([`crate::io::subject_files`]), as JSON: `{subjects: [{subject, scan, landmarks}],
-/// duplicates: [index]}`, where `scan` and `landmarks` (or `null`) index `file_names` and
-/// `duplicates` are further scans of a subject already listed.
+/// duplicates: [{file, kept}], not_scans: [index], unpaired: [index]}`, every index into
+/// `file_names` ([`crate::io::subject_files::SubjectPairing`]).
 #[wasm_bindgen(js_name = pairSubjectFiles)]
 pub fn pair_subject_files_js(file_names: Vec<String>) -> Result<String, JsError> {
-    let (subjects, duplicates) = pair_subject_files(&file_names);
-    serde_json::to_string(&serde_json::json!({ "subjects": subjects, "duplicates": duplicates }))
+    serde_json::to_string(&pair_subject_files(&file_names))
         .map_err(|e| JsError::new(&e.to_string()))
 }
 

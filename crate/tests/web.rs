@@ -146,6 +146,7 @@ fn dropped_files_pair_by_base_name_as_the_cli_pairs_them() {
         "b.lnd",
         "b.obj",
         "lone.json",
+        "truth_7.ply",
     ]
     .map(String::from)
     .to_vec();
@@ -158,7 +159,9 @@ fn dropped_files_pair_by_base_name_as_the_cli_pairs_them() {
                 {"subject": "b", "scan": 0, "landmarks": 3},
                 {"subject": "scan_7", "scan": 1, "landmarks": 2},
             ],
-            "duplicates": [4],
+            "duplicates": [{"file": 4, "kept": 0}],
+            "not_scans": [6],
+            "unpaired": [5],
         })
     );
 }

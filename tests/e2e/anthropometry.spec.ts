@@ -3,6 +3,7 @@
 // on that segment's model), bad entries say what is wrong and change nothing; the population
 // shows the body's percentile; boundary manikins are listed, shown and exported.
 import { readFileSync } from 'node:fs';
+import zlib from 'node:zlib';
 import { expect, test, type Download, type Page } from '@playwright/test';
 import { shapeReady } from './steps';
 
@@ -89,6 +90,29 @@ async function downloads(page: Page, act: () => Promise<void>, done: () => Promi
   return files;
 }
 
+/** The files of a ZIP archive of stored (uncompressed) entries, each checked against its CRC-32. */
+function unzipStored(archive: Buffer): Map<string, Buffer> {
+  const files = new Map<string, Buffer>();
+  let at = 0;
+  while (archive.readUInt32LE(at) === 0x04034b50) {
+    expect(archive.readUInt16LE(at + 8)).toBe(0);
+    const crc = archive.readUInt32LE(at + 14);
+    const size = archive.readUInt32LE(at + 18);
+    const nameLength = archive.readUInt16LE(at + 26);
+    const extra = archive.readUInt16LE(at + 28);
+    const name = archive.toString('utf8', at + 30, at + 30 + nameLength);
+    const data = archive.subarray(at + 30 + nameLength + extra, at + 30 + nameLength + extra + size);
+    expect(zlib.crc32(data), name).toBe(crc);
+    files.set(name, Buffer.from(data));
+    at += 30 + nameLength + extra + size;
+  }
+  // The central directory follows, then its end record, which counts the entries.
+  const end = archive.lastIndexOf(Buffer.from([0x50, 0x4b, 0x05, 0x06]));
+  expect(archive.readUInt32LE(end + 16)).toBe(at);
+  expect(archive.readUInt16LE(end + 10)).toBe(files.size);
+  return files;
+}
+
 test('the population shows where the body sits; boundary manikins of two measurements are listed, shown and exported', async ({ page }) => {
   await page.goto('/');
   await shapeReady(page);
@@ -124,12 +148,15 @@ test('the population shows where the body sits; boundary manikins of two measure
   await page.getByTestId('manikin-2').click();
   await expect(page.getByTestId('measure-stature')).toHaveText(`${listed} cm`);
 
-  const files = await downloads(
+  // One download: an archive of them all.
+  const archives = await downloads(
     page,
     () => page.getByTestId('manikin-export').click(),
     () => expect(page.locator('body')).toHaveAttribute('data-manikins-exported', '8'),
-    10,
+    1,
   );
+  expect([...archives.keys()]).toEqual(['manikins.zip']);
+  const files = unzipStored(archives.get('manikins.zip')!);
   const names = [...files.keys()].sort();
   expect(names).toEqual(['manikin_01.ply', 'manikin_02.ply', 'manikin_03.ply', 'manikin_04.ply', 'manikin_05.ply', 'manikin_06.ply', 'manikin_07.ply', 'manikin_08.ply', 'manikins.csv', 'manikins.glb']);
   const glb = files.get('manikins.glb')!;

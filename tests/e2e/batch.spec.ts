@@ -1,11 +1,13 @@
 // The batch in the browser: six synthetic subjects, a scan without landmarks (its landmarks are
-// estimated) and a broken scan dropped at once are aligned by the worker pool, survive a reload,
-// and make a model; a worker whose core traps
-// mid-batch, or a cancelled one, leaves the others and the shape model alone.
+// estimated) and two broken scans dropped at once are aligned by the worker pool (the broken ones
+// said in the banner, not aligned), survive a reload, and make a model; Clear batch asks first; a
+// reload in the middle of a batch resumes it by itself; a worker whose core traps mid-batch, or a
+// cancelled one, leaves the others and the shape model alone; what a drop leaves out (a second
+// scan of a subject, the ground truths of `bodyspace synth`) is said and not aligned.
 import { expect, test, type Page } from '@playwright/test';
 import { dropFiles, waitForLoads } from './fixtures';
 import { shapeReady } from './steps';
-import { synthSubjects } from './synth';
+import { synthFolder, synthSubjects } from './synth';
 
 const body = (page: Page) => page.locator('body');
 const row = (page: Page, subject: string) => page.locator(`[data-testid="batch-row"][data-subject="${subject}"]`);
@@ -16,6 +18,11 @@ async function openApp(page: Page): Promise<void> {
   await shapeReady(page);
 }
 
+/** At most `n` subjects aligned at once (`?debug`). */
+async function setBatchWorkers(page: Page, n: number | null): Promise<void> {
+  await page.evaluate((k) => (window as unknown as { bodyspaceDebug: { setBatchWorkers: (n: number | null) => void } }).bodyspaceDebug.setBatchWorkers(k), n);
+}
+
 async function waitForBatch(page: Page, total: number): Promise<void> {
   await expect(body(page)).toHaveAttribute('data-batch-total', String(total));
   await expect(body(page)).toHaveAttribute('data-batch-finished', String(total), { timeout: 300_000 });
@@ -24,14 +31,23 @@ async function waitForBatch(page: Page, total: number): Promise<void> {
 test('six subjects dropped at once are aligned, come back after a reload and build a model', async ({ page }) => {
   test.setTimeout(420_000);
   const files = synthSubjects(7, 13);
-  // Subject 7 comes without its landmarks; a broken scan comes with subject 1's.
+  // Subject 7 comes without its landmarks; a broken scan comes with subject 1's, and a second one alone.
   const broken = { name: 'broken.ply', bytes: Buffer.from('ply\nformat ascii 1.0\nelement vertex 3\nend_header\n1 2\n') };
   const brokenLandmarks = { name: 'broken.lnd', bytes: files.find((f) => f.name === 'landmarks_001.lnd')!.bytes };
-  const dropped = [...files.filter((f) => f.name !== 'landmarks_007.lnd'), broken, brokenLandmarks];
+  const broken2 = { name: 'garbled.stl', bytes: Buffer.from('solid x\nfacet normal 0 0 1\nouter loop\nvertex 1 2\n') };
+  const dropped = [...files.filter((f) => f.name !== 'landmarks_007.lnd'), broken, brokenLandmarks, broken2];
   await openApp(page);
   await dropFiles(page, dropped);
   await waitForLoads(page, 1);
-  await waitForBatch(page, 8);
+  // The files that cannot be read leave the batch: the banner names both, as it does for one file.
+  await expect(body(page)).toHaveAttribute('data-batch-finished', '7', { timeout: 300_000 });
+  await waitForBatch(page, 7);
+  await expect(row(page, 'broken')).toHaveCount(0);
+  await expect(row(page, 'garbled')).toHaveCount(0);
+  await expect(page.getByTestId('error-banner')).toContainText('broken.ply');
+  await expect(page.getByTestId('error-banner')).toContainText('garbled.stl');
+  await expect(page.getByTestId('error-banner')).toContainText('left out of the batch');
+  await expect(page.getByTestId('batch-summary')).toHaveText(/^7 of 7 finished,/);
   expect(Number(await body(page).getAttribute('data-batch-workers'))).toBeGreaterThanOrEqual(1);
 
   const subjects = ['scan_001', 'scan_002', 'scan_003', 'scan_004', 'scan_005', 'scan_006', 'scan_007'];
@@ -45,18 +61,15 @@ test('six subjects dropped at once are aligned, come back after a reload and bui
     expect(Number(rms)).toBeLessThan(10);
     before[s] = { status, rms };
   }
-  await expect(row(page, 'broken')).toHaveAttribute('data-status', 'failed');
-  await expect(row(page, 'broken')).toContainText('broken.ply');
 
-  // Sorting by RMS puts the rows in RMS order (the failed subject, without one, last).
+  // Sorting by RMS puts the rows in RMS order, and again the other way.
   await page.getByTestId('batch-sort-rms').click();
   const sorted = await page.locator('[data-testid="batch-row"]').evaluateAll((rows) => rows.map((r) => r.getAttribute('data-subject')!));
-  expect(sorted.at(-1)).toBe('broken');
-  const shown = sorted.slice(0, -1).map((s) => Number(before[s]!.rms));
+  const shown = sorted.map((s) => Number(before[s]!.rms));
   expect(shown).toEqual([...shown].sort((a, b) => a - b));
   await page.getByTestId('batch-sort-rms').click();
   const descending = await page.locator('[data-testid="batch-row"]').evaluateAll((rows) => rows.map((r) => r.getAttribute('data-subject')!));
-  expect(descending[0]).toBe('broken');
+  expect(descending).toEqual([...sorted].reverse());
 
   // A click on a row shows that fit with its heat map.
   await row(page, 'scan_003').click();
@@ -72,13 +85,12 @@ test('six subjects dropped at once are aligned, come back after a reload and bui
 
   await page.reload();
   await expect(body(page)).toHaveAttribute('data-template-ready', 'true', { timeout: 60_000 });
-  await expect(body(page)).toHaveAttribute('data-batch-total', '8');
+  await expect(body(page)).toHaveAttribute('data-batch-total', '7');
   for (const s of subjects.filter((s) => s !== 'scan_006')) {
     await expect(row(page, s)).toHaveAttribute('data-status', before[s]!.status);
     await expect(row(page, s).getByTestId('batch-rms')).toHaveText(before[s]!.rms);
   }
   await expect(row(page, 'scan_006')).toHaveAttribute('data-status', 'excluded');
-  await expect(row(page, 'broken')).toHaveAttribute('data-status', 'failed');
 
   await shapeReady(page);
   await page.getByTestId('batch-build').click();
@@ -87,6 +99,16 @@ test('six subjects dropped at once are aligned, come back after a reload and bui
   await expect(page.getByTestId('shape-panel')).toContainText('6 subjects');
   await shapeReady(page);
 
+  // Clear batch asks first: declined, nothing goes; accepted, the batch goes.
+  let asked = '';
+  page.once('dialog', (dialog) => {
+    asked = dialog.message();
+    void dialog.dismiss();
+  });
+  await page.getByTestId('batch-clear').click();
+  await expect.poll(() => asked).toContain('Clear the batch? Its 7 subjects and 7 fits are forgotten');
+  await expect(body(page)).toHaveAttribute('data-batch-total', '7');
+  page.once('dialog', (dialog) => void dialog.accept());
   await page.getByTestId('batch-clear').click();
   await expect(body(page)).toHaveAttribute('data-batch-total', '0');
   await page.reload();
@@ -112,7 +134,9 @@ test('a trapped or cancelled batch worker leaves the other subjects and the shap
   });
   await dropFiles(page, synthSubjects(5, 14));
   await waitForLoads(page, 1);
-  await waitForBatch(page, 5);
+  // Four finish (one by failing); the cancelled one is stopped, not finished.
+  await expect(body(page)).toHaveAttribute('data-batch-finished', '4', { timeout: 300_000 });
+  await expect(body(page)).toHaveAttribute('data-batch-stopped', '1');
 
   await expect(row(page, 'scan_001')).toHaveAttribute('data-status', 'failed');
   await expect(row(page, 'scan_001')).toContainText('stopped unexpectedly');
@@ -129,4 +153,71 @@ test('a trapped or cancelled batch worker leaves the other subjects and the shap
   await expect(row(page, 'scan_004')).not.toHaveAttribute('data-status', 'cancelled');
   await waitForBatch(page, 5);
   for (const s of ['scan_001', 'scan_004']) expect(['ok', 'flagged']).toContain(await row(page, s).getAttribute('data-status'));
+});
+
+test('a reload in the middle of a batch resumes it by itself; Cancel all is not counted as finished', async ({ page }) => {
+  test.setTimeout(420_000);
+  await openApp(page);
+  await setBatchWorkers(page, 1);
+  await dropFiles(page, synthSubjects(4, 15));
+  await waitForLoads(page, 1);
+  await expect(body(page)).toHaveAttribute('data-batch-running', '1');
+
+  // Cancel all: nothing finished, all four stopped, and one click starts them again.
+  await page.getByTestId('batch-cancel-all').click();
+  await expect(body(page)).toHaveAttribute('data-batch-stopped', '4');
+  await expect(body(page)).toHaveAttribute('data-batch-finished', '0');
+  await expect(page.getByTestId('batch-summary')).toHaveText(/^0 of 4 finished, 4 stopped/);
+  expect(Number(await page.getByTestId('batch-progress').getAttribute('value'))).toBeLessThan(0.25);
+  await page.getByTestId('batch-retry-all').click();
+  await expect(body(page)).toHaveAttribute('data-batch-stopped', '0');
+
+  // Reload while the first aligns and three wait: all four finish without a click.
+  await expect(row(page, 'scan_001')).toHaveAttribute('data-status', 'aligning');
+  await expect(row(page, 'scan_004')).toHaveAttribute('data-status', 'queued');
+  await expect(page.getByTestId('batch-summary')).toHaveText(/^0 of 4 finished/);
+  await expect(body(page)).toHaveAttribute('data-batch-saving', '0');
+  await page.reload();
+  await expect(body(page)).toHaveAttribute('data-template-ready', 'true', { timeout: 60_000 });
+  await expect(body(page)).toHaveAttribute('data-batch-total', '4');
+  await expect(page.locator('[data-testid="batch-row"][data-status="interrupted"]')).toHaveCount(0);
+  await waitForBatch(page, 4);
+  for (const s of ['scan_001', 'scan_002', 'scan_003', 'scan_004']) expect(['ok', 'flagged']).toContain(await row(page, s).getAttribute('data-status'));
+  await expect(page.getByTestId('batch-retry')).toHaveCount(0);
+});
+
+test('a second scan of a subject names the one kept; one subject is not offered as a model', async ({ page }) => {
+  test.setTimeout(300_000);
+  const [landmarks, scan] = synthSubjects(1, 16);
+  await openApp(page);
+  // The same subject from two folders: the scan and its landmark file twice.
+  await dropFiles(page, [scan!, landmarks!, scan!, landmarks!]);
+  await waitForLoads(page, 1);
+  const banner = page.getByTestId('error-banner');
+  await expect(banner).toContainText('scan_001.ply: a second scan of subject scan_001; scan_001.ply was kept and this one left out');
+  await expect(banner).not.toContainText('no scan of the same base name');
+  await waitForBatch(page, 1);
+  expect(['ok', 'flagged']).toContain(await row(page, 'scan_001').getAttribute('data-status'));
+  // A model of one subject is not offered: the button says why.
+  await expect(page.getByTestId('batch-build')).toBeDisabled();
+  await expect(page.getByTestId('batch-build')).toHaveText('Build model');
+  await expect(page.getByTestId('batch-build-status')).toHaveText('A model needs at least two kept fits; the batch has 1.');
+});
+
+test('the folder bodyspace synth writes gives one subject per scan; its ground truths are left out and said', async ({ page }) => {
+  const files = synthFolder(3, 17);
+  expect(files.filter((f) => /^(surface|truth)_/.test(f.name))).toHaveLength(6);
+  await openApp(page);
+  await setBatchWorkers(page, 1);
+  await dropFiles(page, files);
+  await waitForLoads(page, 1);
+  await expect(body(page)).toHaveAttribute('data-batch-total', '3');
+  await expect(body(page)).toHaveAttribute('data-batch-not-scans', '6');
+  const subjects = await page.locator('[data-testid="batch-row"]').evaluateAll((rows) => rows.map((r) => r.getAttribute('data-subject')));
+  expect(subjects).toEqual(['scan_001', 'scan_002', 'scan_003']);
+  await expect(page.getByTestId('error-banner')).toContainText('surface_001.ply');
+  await expect(page.getByTestId('error-banner')).toContainText('truth_003.ply');
+  await expect(page.getByTestId('error-banner')).toContainText('not scans of a body');
+  await expect(page.getByTestId('batch-panel')).toContainText('6 meshes that are not scans of a body were left out');
+  await page.getByTestId('batch-cancel-all').click();
 });

@@ -1,11 +1,13 @@
 // The landmark editor as a person uses it: pick a landmark, click on the scan beside its marker to
 // move it there, drag a marker, mark one absent, undo / redo, align with the edited set, export
-// the set as .lnd and read it back.
+// the set as .lnd and read it back; before any file nothing is marked absent; after Align a picked
+// landmark brings the hidden scan back; a new scan forgets the pick and the list's scroll.
 import { readFileSync } from 'node:fs';
 import { expect, test, type Page } from '@playwright/test';
 import { dropFiles, waitForLoads, type TestFile } from './fixtures';
 import { sampleFile } from './samples';
 import { openWithSample } from './steps';
+import { synthSubjects } from './synth';
 
 const body = (page: Page) => page.locator('body');
 const row = (page: Page, name: string) => page.getByTestId('landmark-list').locator(`li[data-name="${name}"]`);
@@ -312,4 +314,45 @@ test('changing the scan units carries the placed landmarks and those that follow
   (await positionMm(page, 'Substernale')).forEach((v, i) => expect(v).toBeCloseTo(moved[i]! * 1000, 1));
   (await positionMm(page, 'Sellion')).forEach((v, i) => expect(v).toBeCloseTo(given[i]! * 1000, 1));
   await expect(row(page, 'Substernale')).toHaveAttribute('data-state', 'edited');
+});
+
+test('before any file nothing is absent; after Align a picked landmark shows the scan and a click places it; a new scan forgets the pick', async ({ page }) => {
+  test.setTimeout(300_000);
+  await page.goto('./');
+  await expect(body(page)).toHaveAttribute('data-core-ready', 'true', { timeout: 60_000 });
+  // No set yet: the 73 names are listed, none marked absent.
+  await expect(page.getByTestId('landmark-list').locator('li')).toHaveCount(73);
+  await expect(page.getByTestId('landmark-list').locator('li[data-status="missing"]')).toHaveCount(0);
+  await expect(page.getByTestId('landmark-list')).not.toContainText('✗');
+
+  const [landmarks, scan] = synthSubjects(1, 21);
+  await openWithSample(page, [scan!, landmarks!]);
+  await expect(body(page)).toHaveAttribute('data-rbf-state', 'done', { timeout: 60_000 });
+  await page.getByTestId('align-run').click();
+  await expect(body(page)).toHaveAttribute('data-align-state', 'done', { timeout: 240_000 });
+  // The fit's heat map hides the scan ...
+  await expect(page.locator('#viewport')).toHaveAttribute('data-scan-visible', 'false');
+  // ... and picking a landmark to place brings it back, so the click the hint asks for lands on it.
+  const before = await positionMm(page, 'Substernale');
+  const marker = await pickMarker(page, 'Substernale');
+  await expect(page.locator('#viewport')).toHaveAttribute('data-scan-visible', 'true');
+  await page.mouse.click(marker.x + 9, marker.y + 7);
+  await expect(row(page, 'Substernale')).toHaveAttribute('data-state', 'edited');
+  const moved = await positionMm(page, 'Substernale');
+  expect(Math.hypot(...moved.map((v, i) => v - before[i]!))).toBeGreaterThan(1);
+
+  // The list scrolled to the last landmark and it picked: a new scan starts at the top, nothing picked.
+  await row(page, 'Crotch').click();
+  await expect(body(page)).toHaveAttribute('data-selected-landmark', 'Crotch');
+  const scrolled = await page.getByTestId('landmark-list').evaluate((list) => {
+    list.scrollTop = list.scrollHeight;
+    return list.scrollTop;
+  });
+  expect(scrolled).toBeGreaterThan(0);
+  const [landmarks2, scan2] = synthSubjects(1, 22);
+  await dropFiles(page, [scan2!, landmarks2!]);
+  await waitForLoads(page, 2);
+  await expect(body(page)).toHaveAttribute('data-selected-landmark', '');
+  await expect(page.getByTestId('landmark-list').locator('li[data-selected="true"]')).toHaveCount(0);
+  expect(await page.getByTestId('landmark-list').evaluate((list) => list.scrollTop)).toBe(0);
 });

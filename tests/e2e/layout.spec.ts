@@ -1,9 +1,12 @@
 // The page at the window widths people use (1280–1920 × 900): with the sample subject open,
 // warped and aligned, no value in a panel is cut off, no panel scrolls sideways, and the 3D
-// view sits between the columns, so the bodies are never drawn under a panel.
+// view sits between the columns, so the bodies are never drawn under a panel; the shape body
+// brought back beside a scan is in view; the batch table's headers and statuses are whole.
 import { expect, test, type Page } from '@playwright/test';
 import { dropFiles, waitForLoads } from './fixtures';
 import { sampleSubject } from './samples';
+import { shapeReady, slide } from './steps';
+import { synthSubjects } from './synth';
 
 const WIDTHS = [1280, 1400, 1600, 1920];
 const HEIGHT = 900;
@@ -128,5 +131,48 @@ for (const width of WIDTHS) {
     await page.getByTestId('align-rms').scrollIntoViewIfNeeded();
     await page.screenshot({ path: info.outputPath(`layout-${width}-align.png`) });
     expect(await clippedText(page)).toEqual([]);
+  });
+}
+
+/** The largest |NDC| of everything shown (`data-shown-ndc`): past ≈ 1.05 a body is cut off by the canvas's edge. */
+async function shownExtent(page: Page): Promise<number> {
+  const ndc = (await page.locator('#viewport').getAttribute('data-shown-ndc'))?.split(',').map(Number) ?? [];
+  return ndc.length === 4 ? Math.max(...ndc.map(Math.abs)) : Infinity;
+}
+
+for (const width of [1280, 1920]) {
+  test(`at ${width} × ${HEIGHT} the shape body brought back beside a scan is in view, and the batch table is not cramped`, async ({ page }, info) => {
+    test.setTimeout(300_000);
+    await page.setViewportSize({ width, height: HEIGHT });
+    await page.goto('./');
+    await expect(page.locator('body')).toHaveAttribute('data-template-ready', 'true', { timeout: 60_000 });
+    await shapeReady(page);
+    const [landmarks, scan] = synthSubjects(1, 41);
+    await dropFiles(page, [scan!, landmarks!]);
+    await waitForLoads(page, 1);
+    await expect(page.locator('body')).toHaveAttribute('data-rbf-state', 'done', { timeout: 60_000 });
+    await expect(page.locator('body')).toHaveAttribute('data-shape-shown', 'false');
+    // A slider brings the shape body back beside the scan: the view takes both in.
+    await slide(page, 0, 1.5);
+    await expect(page.locator('body')).toHaveAttribute('data-shape-shown', 'true');
+    await expect.poll(() => shownExtent(page)).toBeLessThan(1.05);
+    await page.screenshot({ path: info.outputPath(`scan-and-shape-${width}.png`) });
+
+    // A batch: headers and values whole, each status on one line.
+    await dropFiles(page, synthSubjects(3, 42));
+    await waitForLoads(page, 2);
+    await expect(page.locator('body')).toHaveAttribute('data-batch-finished', '3', { timeout: 240_000 });
+    await page.getByTestId('batch-table').scrollIntoViewIfNeeded();
+    await page.screenshot({ path: info.outputPath(`batch-${width}.png`) });
+    expect(await clippedText(page)).toEqual([]);
+    // One line box per line of text: a wrapped status has two.
+    const lines = await page.getByTestId('batch-status').evaluateAll((cells) =>
+      cells.map((c) => {
+        const range = document.createRange();
+        range.selectNodeContents(c);
+        return new Set([...range.getClientRects()].map((r) => Math.round(r.top))).size;
+      }),
+    );
+    expect(lines).toEqual([1, 1, 1]);
   });
 }

@@ -1,4 +1,5 @@
 import { gzipSync } from 'node:zlib';
+import { readFileSync } from 'node:fs';
 import { expect, test, type Page } from '@playwright/test';
 import {
   LND_FOUND,
@@ -162,4 +163,17 @@ test('a small gzip file that would inflate far beyond any scan is refused, and t
   await expect(byTestId(page, 'error-text')).toContainText(/decompression bomb|inflate/);
   await expect(byTestId(page, 'scan-file')).toHaveText('subject.ply');
   await expect(byTestId(page, 'scan-triangles')).toHaveText('14');
+});
+
+test('"Lt. Bustpoint" and "Rt. Bustpoint" are read as the CAESAR Thelion/Bustpoint landmarks', async ({ page }) => {
+  await openApp(page);
+  const csv = readFileSync(new URL('../../public/samples/landmarks_001.csv', import.meta.url), 'utf8')
+    .replace('Lt. Thelion/Bustpoint', 'Lt. Bustpoint')
+    .replace('Rt. Thelion/Bustpoint', 'Rt. Bustpoint');
+  await dropFiles(page, [{ name: 'bust.csv', bytes: Buffer.from(csv) }]);
+  await waitForLoads(page, 1);
+  await expect(byTestId(page, 'landmarks-found')).toHaveText('73');
+  await expect(byTestId(page, 'landmarks-unknown')).toHaveText('0');
+  const list = byTestId(page, 'landmark-list');
+  for (const side of ['Lt.', 'Rt.']) await expect(list.locator(`li[data-name="${side} Thelion/Bustpoint"]`)).toHaveAttribute('data-state', 'given');
 });

@@ -22,11 +22,21 @@ function bodyspaceBinary(): string {
  * scans, quick to align): `scan_00i.ply` and `landmarks_00i.lnd` for each.
  */
 export function synthSubjects(n: number, seed: number, stepMm = 20): TestFile[] {
+  return synthFolder(n, seed, stepMm).filter((f) => /^(scan_\d+\.ply|landmarks_\d+\.lnd)$/.test(f.name));
+}
+
+/**
+ * Every file `bodyspace synth` writes for `n` subjects, as "Open folder…" on its output reads them:
+ * besides each scan and its landmarks (`.lnd` and `.csv`), the ground truths `surface_ID.ply`
+ * and `truth_ID.ply`, and the population's own files.
+ */
+export function synthFolder(n: number, seed: number, stepMm = 20): TestFile[] {
   const out = mkdtempSync(join(tmpdir(), 'bodyspace-synth-'));
   try {
     execFileSync(bodyspaceBinary(), ['synth', '--n', String(n), '--seed', String(seed), '--step', String(stepMm), '--out', out], { stdio: 'ignore' });
-    return readdirSync(out)
-      .filter((name) => /^(scan_\d+\.ply|landmarks_\d+\.lnd)$/.test(name))
+    return readdirSync(out, { withFileTypes: true })
+      .filter((entry) => entry.isFile())
+      .map((entry) => entry.name)
       .sort()
       .map((name) => ({ name, bytes: readFileSync(join(out, name)) }));
   } finally {

@@ -3,11 +3,11 @@
 // the last good state on screen. The result is shown as a distance heat map.
 import { CancelledError, type CoreClient } from '../client/core-client';
 import { rbfParams, type AlignResult } from '../shared/align-types';
+import type { Bounds } from '../shared/bounds';
 import { baseName } from '../shared/file-kind';
 import type { CoreEvent } from '../shared/messages';
 import { AlignPanel } from '../ui/align-panel';
-import { distanceHeat } from '../view/heat-colours';
-import type { Viewer } from '../view/viewer';
+import type { BodyMesh, Viewer } from '../view/viewer';
 import { download } from '../ui/download';
 import { scanInput, scanTransfer } from './scan-input';
 import type { Session } from './session';
@@ -21,7 +21,7 @@ export const FITTED_COLOUR = 0x8fd19e;
 export class AlignStep {
   readonly panel: AlignPanel;
   private result: AlignResult | null = null;
-  private latest: { positions: Float32Array; iteration: number } | null = null;
+  private latest: { positions: Float32Array; normals: Float32Array; bounds: Bounds; iteration: number } | null = null;
   private iteration = 0;
   private running = false;
   private drawScheduled = false;
@@ -69,6 +69,7 @@ export class AlignStep {
     this.panel.render({ state: 'running', iteration: 0, maxIterations: 0, rmsMm: null, stage: 'base' });
     this.warp.show('scan', true);
     const triangles = template.triangles;
+    let rounds = 0;
     const onEvent = (event: CoreEvent) => {
       if (event.kind === 'alignProgress') {
         this.iteration = event.iteration;
@@ -83,7 +84,8 @@ export class AlignStep {
         });
         document.body.dataset.alignStage = event.stage;
       } else {
-        this.latest = { positions: event.positions, iteration: event.iteration };
+        this.latest = { positions: event.positions, normals: event.normals, bounds: event.bounds, iteration: event.iteration };
+        document.body.dataset.alignRounds = String(++rounds);
         this.showLatestSoon(triangles);
       }
     };
@@ -95,7 +97,7 @@ export class AlignStep {
       );
       recordTimings(result, performance.now() - posted);
       this.result = result;
-      const heat = distanceHeat(result.distances);
+      const heat = result.heat;
       this.legendMaxMm = heat.maxMm;
       this.showFitted({ positions: result.positions, triangles, normals: result.normals }, heat.colours);
       // The see-through scan would speckle the heat map it coincides with; its toggle brings it back.
@@ -127,19 +129,21 @@ export class AlignStep {
     this.drawScheduled = true;
     requestAnimationFrame(() => {
       this.drawScheduled = false;
-      if (this.running && this.latest) this.showFitted({ positions: this.latest.positions, triangles }, null);
+      const latest = this.latest;
+      if (this.running && latest) this.showFitted({ positions: latest.positions, normals: latest.normals, bounds: latest.bounds, triangles }, null);
     });
   }
 
   private showCancelled(): void {
     const template = this.template.data;
-    if (this.latest && template) this.showFitted({ positions: this.latest.positions, triangles: template.triangles }, null);
+    const latest = this.latest;
+    if (latest && template) this.showFitted({ positions: latest.positions, normals: latest.normals, bounds: latest.bounds, triangles: template.triangles }, null);
     else this.warp.show('warped', true);
     document.body.dataset.alignCancelledIteration = String(this.iteration);
     this.panel.render({ state: 'cancelled', iteration: this.iteration, hasPositions: Boolean(this.latest) });
   }
 
-  private showFitted(mesh: { positions: Float32Array; triangles: Uint32Array; normals?: Float32Array }, colours: Float32Array | null): void {
+  private showFitted(mesh: BodyMesh, colours: Float32Array | null): void {
     this.warp.show('warped', false);
     this.viewer.showBody('scan', { opacity: SCAN_OPACITY });
     this.viewer.showBody('fitted', {

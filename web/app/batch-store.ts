@@ -80,6 +80,10 @@ export class BatchStore {
     return this.run('readwrite', (s) => s.put(record));
   }
 
+  delete(subject: string): Promise<undefined> {
+    return this.run('readwrite', (s) => s.delete(subject));
+  }
+
   clear(): Promise<undefined> {
     return this.run('readwrite', (s) => s.clear());
   }

@@ -54,8 +54,12 @@ export function startBatch(page: BatchPage): Batch {
     onRetry: (subject) => batch.retry(subject),
     onExclude: (subject, excluded) => batch.setExcluded(subject, excluded),
     onCancelAll: () => batch.cancelAll(),
+    onRetryAll: () => batch.retryAll(),
     onBuild: () => void page.shapeSpace.buildFrom(batch.kept(), (text) => panel.showBuildStatus(text)),
     onClear: () => {
+      const fits = batch.all.filter((r) => r.fit).length;
+      const question = `Clear the batch? Its ${batch.all.length} subject${batch.all.length === 1 ? '' : 's'} and ${fits} fit${fits === 1 ? '' : 's'} are forgotten here and in this browser's storage; this cannot be undone.`;
+      if (!window.confirm(question)) return;
       panel.select(null);
       void batch.clear();
     },

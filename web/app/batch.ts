@@ -5,6 +5,7 @@
 import { CancelledError, type CoreClient } from '../client/core-client';
 import { browserPoolSize, WorkerPool } from '../client/worker-pool';
 import type { AlignParams, QualityReport } from '../shared/align-types';
+import type { SubjectPairing } from '../shared/results';
 import type { TemplateResolution } from '../shared/template-data';
 import { alignSubject } from './batch-job';
 import { BatchStore, type BatchRecord } from './batch-store';
@@ -22,11 +23,22 @@ export interface BatchRow extends BatchRecord {
   progressLabel: string;
 }
 
-/** Overall progress: subjects finished (any end state) of all, and the estimated time left. */
+/**
+ * Overall progress: subjects finished (aligned: ok, flagged, or failed in the alignment) of all,
+ * those that will not finish without the person (cancelled, interrupted), and the time left.
+ */
 export interface BatchSummary {
   total: number;
   finished: number;
+  /** Of `finished`, the failed ones. */
+  failed: number;
+  /** Cancelled, or interrupted by a reload without their scan: a retry (or the scan again) finishes them. */
+  stopped: number;
+  /** Stopped subjects whose scan is stored, so "Retry all" can start them again. */
+  retryable: number;
   running: number;
+  /** Meshes of the last drop that are not scans of a body, left out. */
+  notScans: number;
   /** Fraction of the work done, counting the running subjects' progress. */
   fraction: number;
   /** Seconds left at the pace so far; null before anything finished. */
@@ -41,7 +53,8 @@ interface Job {
   cancel: AbortController;
 }
 
-const ENDED = new Set(['ok', 'flagged', 'failed', 'cancelled', 'interrupted']);
+const FINISHED = new Set(['ok', 'flagged', 'failed']);
+const STOPPED = new Set(['cancelled', 'interrupted']);
 
 export class Batch {
   private readonly rows = new Map<string, BatchRow>();
@@ -56,8 +69,14 @@ export class Batch {
   private finishedInRun = 0;
   /** Writes to the browser's storage not yet finished (shown as `data-batch-saving`). */
   private saving = 0;
+  /** Meshes of the last drop that are not scans of a body. */
+  private notScans = 0;
+  /** The files of the last drop that could not be read, as the banner says them. */
+  private unreadable: string[] = [];
   /** `?debug`: the next job traps its worker's core instead of aligning (the crash-isolation test). */
   trapNext = false;
+  /** Subjects whose job was trapped on purpose: a failure, not an unreadable file. */
+  private readonly trapped = new Set<string>();
 
   constructor(
     private readonly pairing: CoreClient,
@@ -73,13 +92,17 @@ export class Batch {
     document.body.dataset.batchSaving = '0';
   }
 
-  /** Brings back the stored batch: subjects queued or aligning when the page went away are interrupted. */
+  /**
+   * Brings back the stored batch. Subjects queued or aligning when the page went away are queued
+   * again and start by themselves when their scan is stored; without it they are interrupted
+   * (their scan must be dropped again).
+   */
   async restore(): Promise<void> {
     try {
       for (const record of await this.store.all()) {
         if (record.status === 'queued' || record.status === 'aligning') {
-          record.status = 'interrupted';
-          record.reason = record.scan ? 'interrupted by a reload; retry' : 'interrupted by a reload; drop its scan again';
+          record.status = record.scan ? 'queued' : 'interrupted';
+          record.reason = record.scan ? '' : 'interrupted by a reload; drop its scan again';
         }
         this.rows.set(record.subject, { ...record, progress: 0, progressLabel: '' });
       }
@@ -87,6 +110,7 @@ export class Batch {
       this.onError([`The stored batch could not be read: ${error instanceof Error ? error.message : String(error)}`]);
     }
     this.onChange();
+    this.pump();
   }
 
   /** Whether `files` make a batch: more than one scan dropped or picked at once. */
@@ -94,16 +118,26 @@ export class Batch {
     return files.filter((f) => isScan(f.name)).length > 1;
   }
 
-  /** Adds the subjects among `files` (a subject already in the batch is replaced) and starts them. */
+  /**
+   * Adds the subjects among `files` (a subject already in the batch is replaced) and starts them.
+   * What the core's pairing leaves out (a second scan of a subject, meshes that are not scans,
+   * files of no subject) is said in the banner.
+   */
   async add(files: File[]): Promise<void> {
     const pairing = await this.pairing.call({ type: 'pairSubjectFiles', fileNames: files.map((f) => f.name) });
-    const errors = pairing.duplicates.map((i) => `${files[i]!.name}: another scan of the same subject was dropped with it; this one was left out`);
-    const used = new Set<number>();
+    this.unreadable = [];
+    const errors = pairing.duplicates.map(
+      (d) => `${files[d.file]!.name}: a second scan of subject ${subjectOf(pairing, d.kept)}; ${files[d.kept]!.name} was kept and this one left out`,
+    );
+    if (pairing.not_scans.length) {
+      const names = pairing.not_scans.map((i) => files[i]!.name);
+      errors.push(`${names.join(', ')}: not scans of a body (ground truths of synthetic subjects); left out`);
+    }
+    this.notScans = pairing.not_scans.length;
+    document.body.dataset.batchNotScans = String(this.notScans);
     let order = Math.max(-1, ...[...this.rows.values()].map((r) => r.order)) + 1;
     const settings = this.settings();
     for (const s of pairing.subjects) {
-      used.add(s.scan);
-      if (s.landmarks !== null) used.add(s.landmarks);
       const old = this.rows.get(s.subject);
       if (old && this.running.has(s.subject)) this.cancel(s.subject);
       const row: BatchRow = {
@@ -124,8 +158,8 @@ export class Batch {
       this.rows.set(s.subject, row);
       await this.save(row);
     }
-    const unpaired = files.filter((f, i) => !used.has(i) && !pairing.duplicates.includes(i));
-    if (unpaired.length) errors.push(`${unpaired.map((f) => f.name).join(', ')}: no scan of the same base name among the files dropped; left out`);
+    const unpaired = pairing.unpaired.map((i) => files[i]!.name);
+    if (unpaired.length) errors.push(`${unpaired.join(', ')}: no scan of the same base name among the files dropped; left out`);
     if (errors.length) this.onError(errors);
     this.onChange();
     this.pump();
@@ -141,7 +175,8 @@ export class Batch {
 
   summary(): BatchSummary {
     const rows = this.all;
-    const finished = rows.filter((r) => ENDED.has(r.status)).length;
+    const finished = rows.filter((r) => FINISHED.has(r.status)).length;
+    const stopped = rows.filter((r) => STOPPED.has(r.status));
     const inFlight = rows.filter((r) => r.status === 'aligning').reduce((sum, r) => sum + r.progress, 0);
     const work = rows.filter((r) => r.status === 'queued' || r.status === 'aligning').length;
     const doneInRun = this.finishedInRun + inFlight;
@@ -150,7 +185,11 @@ export class Batch {
     return {
       total: rows.length,
       finished,
+      failed: rows.filter((r) => r.status === 'failed').length,
+      stopped: stopped.length,
+      retryable: stopped.filter((r) => r.scan).length,
       running: this.running.size,
+      notScans: this.notScans,
       fraction: rows.length ? (finished + inFlight) / rows.length : 0,
       etaSeconds: work > 0 && this.finishedInRun > 0 ? (elapsed / doneInRun) * left : null,
       workers: this.workers(),
@@ -193,6 +232,11 @@ export class Batch {
     this.pump();
   }
 
+  /** Retries every cancelled or interrupted subject whose scan is stored. */
+  retryAll(): void {
+    for (const row of this.all) if (STOPPED.has(row.status) && row.scan) this.retry(row.subject);
+  }
+
   setExcluded(subject: string, excluded: boolean): void {
     const row = this.rows.get(subject);
     if (!row) return;
@@ -206,6 +250,7 @@ export class Batch {
     this.cancelAll();
     this.rows.clear();
     this.runStart = null;
+    this.notScans = 0;
     try {
       await this.store.clear();
     } catch (error) {
@@ -244,17 +289,23 @@ export class Batch {
     void this.save(row);
     this.onChange();
     const t0 = performance.now();
+    // Until the first progress the job only reads the files: a failure then is a file that cannot
+    // be read, which no retry mends.
+    let reading = true;
     try {
       if (!row.scan) throw new Error('its scan is not stored in this browser; drop it again');
       if (this.trapNext) {
         this.trapNext = false;
+        this.trapped.add(row.subject);
         await job.client.call({ type: 'trap' });
       }
       const result = await alignSubject(job.client, { scan: row.scan, landmarks: row.landmarks }, settings.resolution, settings.params, (fraction, label) => {
+        reading = false;
         row.progress = fraction;
         row.progressLabel = label;
         this.onChange(true);
       }, job.cancel.signal);
+      reading = false;
       row.seconds = (performance.now() - t0) / 1e3;
       row.rmsMm = result.report.fine.scan_to_template.rms_mm;
       row.fit = { positions: result.positions, distances: result.distances, report: result.report, quality: result.quality };
@@ -266,6 +317,7 @@ export class Batch {
     } catch (error) {
       row.seconds = (performance.now() - t0) / 1e3;
       if (error instanceof CancelledError) await this.finish(row, 'cancelled', 'cancelled', job);
+      else if (reading && !this.trapped.delete(row.subject)) await this.dropUnreadable(row, error, job);
       else await this.finish(row, 'failed', error instanceof Error ? error.message : String(error), job);
     }
   }
@@ -283,6 +335,29 @@ export class Batch {
     this.pump();
   }
 
+  /**
+   * A subject whose files cannot be read leaves the batch: the banner names the file and the
+   * problem (every such file of the drop at once), as for a single file.
+   */
+  private async dropUnreadable(row: BatchRow, error: unknown, job: Job): Promise<void> {
+    const message = error instanceof Error ? error.message : String(error);
+    const named = [row.scan?.name, row.landmarks?.name].some((n) => n && message.startsWith(n));
+    this.unreadable.push(`${named ? '' : `${row.scan?.name ?? row.subject}: `}${message}; left out of the batch`);
+    this.onError([...this.unreadable]);
+    if (this.running.get(row.subject) === job) this.running.delete(row.subject);
+    this.pool?.give(job.slot);
+    if (this.rows.get(row.subject) === row) {
+      this.rows.delete(row.subject);
+      try {
+        await this.store.delete(row.subject);
+      } catch {
+        // Not stored: nothing to forget.
+      }
+    }
+    this.onChange();
+    this.pump();
+  }
+
   private async save(row: BatchRow): Promise<void> {
     const { progress: _p, progressLabel: _l, ...record } = row;
     document.body.dataset.batchSaving = String(++this.saving);
@@ -294,6 +369,11 @@ export class Batch {
       document.body.dataset.batchSaving = String(--this.saving);
     }
   }
+}
+
+/** The subject whose scan is file `scan` of the pairing. */
+function subjectOf(pairing: SubjectPairing, scan: number): string {
+  return pairing.subjects.find((s) => s.scan === scan)?.subject ?? '';
 }
 
 /** What the raised flags mean, with the measures behind them. */

@@ -42,6 +42,8 @@ export class LandmarkStep {
   /** A check for suspicious landmarks is running / another is wanted after it. */
   private checking = false;
   private recheck = false;
+  /** Called when a landmark is picked on a loaded scan (the page shows the scan, so a click can place it). */
+  onPick: ((name: string) => void) | null = null;
   /** Counts estimates and resets, so a stale estimate's reply is dropped. */
   private generation = 0;
   /** The check waiting for a pause in the edits (a burst of clicks or undos is checked once). */
@@ -99,6 +101,8 @@ export class LandmarkStep {
     this.suspicious = null;
     this.prediction = null;
     this.estimate = { state: 'none' };
+    this.panel.guide.show(null);
+    this.panel.scrollListToTop();
   }
 
   /**
@@ -259,6 +263,7 @@ export class LandmarkStep {
       selected: this.selected,
       flagged: new Set(this.suspicious?.map((s) => s.name) ?? []),
       sharpness: this.sharpness,
+      loaded: Boolean(this.session.edits),
       tools: {
         estimate: this.estimate,
         absent: entries.filter((e) => !e.position).length,
@@ -275,6 +280,7 @@ export class LandmarkStep {
   private select(name: string): void {
     this.selected = name;
     this.panel.guide.show(name);
+    if (this.session.scan) this.onPick?.(name);
     this.render();
   }
 

@@ -5,6 +5,7 @@
 import { CancelledError, type CoreClient } from '../client/core-client';
 import type { ManikinSet, MeasurementDistribution } from '../shared/anthropometry';
 import { SEGMENTS, type Measurements } from '../shared/shape-results';
+import { zip, type ZipEntry } from '../shared/zip';
 import { download } from '../ui/download';
 import type { ManikinPanel } from '../ui/manikin-panel';
 import type { PopulationView } from '../ui/population-view';
@@ -120,8 +121,9 @@ export class Population {
   }
 
   /**
-   * The manikins found, as separate downloads: `manikins.glb` (every manikin, side by side, one
-   * mesh each), `manikin_01.ply` … (the core's PLY writer) and `manikins.csv` (the core's CSV).
+   * The manikins found, as one download `manikins.zip` holding `manikins.glb` (every manikin,
+   * side by side, one mesh each), `manikin_01.ply` … (the core's PLY writer) and `manikins.csv`
+   * (the core's CSV): one file, so the browser does not ask to allow many downloads.
    */
   async exportManikins(): Promise<void> {
     const set = this.manikins;
@@ -130,14 +132,15 @@ export class Population {
       const client = await this.ready();
       const triangles = this.triangles!;
       const bodies = [];
+      const files: ZipEntry[] = [];
       for (const k of set.manikins.manikins) {
         const made = await client.call({ type: 'reconstruct', coefficients: { whole: k.body.sigma, segments: SEGMENTS.map(() => null) } });
         bodies.push({ name: k.name, positions: made.positions, normals: made.normals, triangles });
         const ply = await client.call({ type: 'exportMesh', positions: made.positions.slice(), triangles: triangles.slice(), format: 'ply' });
-        download(`${k.name}.ply`, ply);
+        files.push({ name: `${k.name}.ply`, data: ply });
       }
-      download('manikins.glb', await bodiesGlb(bodies, 0.7), 'model/gltf-binary');
-      download('manikins.csv', set.csv, 'text/csv');
+      files.unshift({ name: 'manikins.glb', data: await bodiesGlb(bodies, 0.7) }, { name: 'manikins.csv', data: set.csv });
+      download('manikins.zip', zip(files), 'application/zip');
       this.page.dataset.manikinsExported = String(bodies.length);
     } catch (error) {
       this.manikinPanel.showError(`The manikins could not be exported: ${error instanceof Error ? error.message : String(error)}`);

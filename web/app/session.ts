@@ -4,6 +4,14 @@
 import { METRES_PER_UNIT, type MeshSummary, type ParsedLandmarks, type ParsedScan, type Units } from '../shared/results';
 import { LandmarkEdits } from './landmark-edits';
 
+/**
+ * What changed: `files`, a scan or landmark file opened (everything made from the old ones goes:
+ * the picked landmark, the warp, the fit, and the view re-aims); `units`, the scan's units chosen;
+ * `edited`, a landmark of the set edited (the warp and the fit go, the view stays); `estimated`,
+ * the set filled in by the estimate (the warp and the fit go, the view re-aims).
+ */
+export type SessionChange = 'files' | 'units' | 'edited' | 'estimated';
+
 export class Session {
   scan: ParsedScan | null = null;
   /** The scan's units as the user chose them (the detected units until overridden). */
@@ -13,11 +21,31 @@ export class Session {
   /** The current landmark set: the file's, an estimate, and the edits made since. */
   edits: LandmarkEdits | null = null;
 
+  private readonly listeners: ((change: SessionChange) => void)[] = [];
+
   /** `caesarNames`: the 73 CAESAR landmark names in file order (from the core). */
   constructor(private readonly caesarNames: () => readonly string[]) {}
 
+  /** Calls `listener` after each change, in the order the listeners were added. */
+  onChange(listener: (change: SessionChange) => void): void {
+    this.listeners.push(listener);
+  }
+
+  /** Opens what was read (a scan, a landmark file, or both) as one change. */
+  open(scan: ParsedScan | null, landmarks: ParsedLandmarks | null): void {
+    if (!scan && !landmarks) return;
+    if (scan) this.setScan(scan);
+    if (landmarks) this.setLandmarks(landmarks);
+    this.changed('files');
+  }
+
+  /** Tells the listeners of a change made to the set being edited (`edits`). */
+  changed(change: SessionChange): void {
+    for (const listener of this.listeners) listener(change);
+  }
+
   /**
-   * A new scan. The landmarks of a file opened before stay (with their edits), as a file does
+   * A new scan (no change is told: `open` tells it once for what was read together). The landmarks of a file opened before stay (with their edits), as a file does
    * for the scan dropped after it; landmarks estimated or placed on the old scan go.
    */
   setScan(scan: ParsedScan): void {
@@ -42,6 +70,7 @@ export class Session {
     const factor = this.scanScale / before;
     const givenFollows = !this.landmarks?.units;
     this.edits?.rescale(factor, (state) => state !== 'given' || givenFollows);
+    this.changed('units');
   }
 
   /** Factor on the worker's positions (metres by the detected units) for the chosen units. */

@@ -2,7 +2,7 @@
 // values, morphs through the MorphQueue, and runs exports, CSV, links and in-app model builds.
 import type { CoreClient } from '../client/core-client';
 import { fetchBounded, foreignHost, MODEL_DOWNLOAD_LIMIT } from '../shared/bounded-fetch';
-import { positionsChecksum } from '../shared/checksum';
+import type { Bounds } from '../shared/bounds';
 import { HostPrompt } from '../ui/host-prompt';
 import { decodeShapeLink, encodeShapeLink, isShareableModel, quantiseSigma, type ShapeLink } from '../shared/shape-link';
 import {
@@ -376,8 +376,10 @@ export class ShapeSpace {
     if (body.positions.length / 3 !== this.vertexCountShown) return;
     this.body = body;
     if (!this.suppressed) {
-      const mesh = { positions: body.positions, triangles, normals: body.normals };
-      this.viewer.showBody('shape', { mesh, colour: 0xc8b4a0, transform: standBeside(body.positions) }, this.frameNext);
+      const mesh = { positions: body.positions, triangles, normals: body.normals, bounds: body.bounds };
+      // Back beside a scan after being hidden: the view takes both in, so neither is cut off.
+      const returning = this.page.dataset.shapeShown === 'false';
+      this.viewer.showBody('shape', { mesh, colour: 0xc8b4a0, transform: standBeside(body.bounds) }, this.frameNext || returning);
     }
     // Post → result → the new arrays in the body's vertex buffers (rendering not included).
     const roundTripMs = performance.now() - sentAt;
@@ -386,8 +388,8 @@ export class ShapeSpace {
     this.panel.showBody(body, body.positions.length / 3, roundTripMs);
     this.population.showBody(body.measurements);
     const p = this.page.dataset;
-    // A pass over every coordinate: only for the body the sliders settle on (tests, links).
-    if (this.morph.idle) p.shapeChecksum = positionsChecksum(body.positions);
+    // Made in the worker; published for the body the sliders settle on (tests, links).
+    if (this.morph.idle) p.shapeChecksum = body.checksum;
     p.shapeStature = (reading(body.measurements, 'stature') ?? NaN).toFixed(5);
     p.shapeReconstructMs = body.reconstructMs.toFixed(3);
     p.shapeRoundTripMs = roundTripMs.toFixed(3);
@@ -533,9 +535,7 @@ export class ShapeSpace {
  * template's side, so the template and the model body are both in view (display only). */
 const SHAPE_BODY_SIDE_OFFSET_M = 1.0;
 
-function standBeside(positions: Float32Array): number[] {
-  let minY = Infinity;
-  for (let i = 1; i < positions.length; i += 3) minY = Math.min(minY, positions[i]!);
-  if (!Number.isFinite(minY)) minY = 0;
+function standBeside(bounds: Bounds): number[] {
+  const minY = Number.isFinite(bounds[1]) ? bounds[1] : 0;
   return [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, SHAPE_BODY_SIDE_OFFSET_M, -minY, 0, 1];
 }

@@ -1,4 +1,5 @@
 // Inputs and results of the RBF warp (paper §3.1) and fine alignment (§3.2). No DOM here.
+import type { DistanceHeat } from './heat-scale';
 import type { TemplateResolution } from './template-data';
 import type { Units } from './results';
 
@@ -160,6 +161,8 @@ export interface AlignResult {
   positions: Float32Array;
   normals: Float32Array;
   distances: Float32Array;
+  /** The distances' heat map (`distanceHeat`), made in the worker. */
+  heat: DistanceHeat;
   report: AlignReport;
   /** The core's quality flags of the fit (`align/quality.rs`, its default thresholds). */
   quality: QualityReport;

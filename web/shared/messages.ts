@@ -1,4 +1,5 @@
 // Messages between the UI thread and the core worker. No DOM here: shared by both threads.
+import type { Bounds } from './bounds';
 import type { AlignDefaults, AlignParams, AlignProgress, AlignResult, ScanInput, WarpResult } from './align-types';
 import type { LandmarkEstimate, LandmarkPrediction, SuspiciousLandmark } from './landmark-entry';
 import type { ParsedLandmarks, ParsedScan, SubjectPairing } from './results';
@@ -105,8 +106,11 @@ export type ResultOf<R extends CoreRequestBody> = CoreResults[R['type']];
 /** Events a long call sends before its result. */
 export type CoreEvent =
   | ({ kind: 'alignProgress' } & AlignProgress)
-  /** The template's current positions (metres, scan frame) at the start of a round. */
-  | { kind: 'alignRound'; round: number; iteration: number; positions: Float32Array };
+  /**
+   * The template's current positions (metres, scan frame) at the start of a round, with their
+   * vertex normals and bounds, made in the worker so the page only hands them to the view.
+   */
+  | { kind: 'alignRound'; round: number; iteration: number; positions: Float32Array; normals: Float32Array; bounds: Bounds };
 
 /** A reply from the worker: any number of `progress` / `event`, then one `result` or one `error`. */
 export type CoreReply =

@@ -58,10 +58,14 @@ export interface ParsedLandmarks {
 }
 
 /**
- * The subjects among files given together (`pairSubjectFiles`): `scan` and `landmarks` index the
- * file names given; `duplicates` are further scans of a subject already listed.
+ * The subjects among files given together (`pairSubjectFiles`, the core's
+ * `io/subject_files.rs`): every number indexes the file names given. `duplicates`: further scans
+ * of a listed subject (`kept`: the scan kept); `not_scans`: meshes that are not scans of a body;
+ * `unpaired`: files of no subject.
  */
 export interface SubjectPairing {
   subjects: { subject: string; scan: number; landmarks: number | null }[];
-  duplicates: number[];
+  duplicates: { file: number; kept: number }[];
+  not_scans: number[];
+  unpaired: number[];
 }

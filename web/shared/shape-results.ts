@@ -1,4 +1,5 @@
 // What the worker returns about shape models. No DOM: shared by both threads.
+import type { Bounds } from './bounds';
 
 /** Segment names in the core's order (`template::Segment::ALL`). */
 export const SEGMENTS = ['head', 'left_arm', 'right_arm', 'torso', 'left_leg', 'right_leg'] as const;
@@ -86,6 +87,10 @@ export interface SeamReport {
 export interface ReconstructedBody {
   positions: Float32Array;
   normals: Float32Array;
+  /** The positions' bounds, found in the worker (the page stands the body on the floor by them). */
+  bounds: Bounds;
+  /** `positionsChecksum` of the positions, made in the worker (tests and links compare bodies by it). */
+  checksum: string;
   measurements: Measurements;
   seam: SeamReport;
   /** Core morph call in the worker (rank-1 updates or a full reconstruction), ms. */

@@ -123,10 +123,13 @@ export class AlignPanel {
   }
 }
 
-function statusText(view: { iteration: number; maxIterations: number; rmsMm: number | null; stage: AlignStage }): string {
-  const rms = view.rmsMm === null ? '' : `, RMS ${view.rmsMm.toFixed(2)} mm`;
+/**
+ * The running fit's line. No RMS: the rounds' RMS is over the template vertices matched within
+ * reach only (the chart's), not the fit's scan → template RMS, which is measured when it ends.
+ */
+function statusText(view: { iteration: number; maxIterations: number; stage: AlignStage }): string {
   const stage = view.stage === 'fine' ? ' (fine stage)' : '';
-  return view.iteration === 0 ? 'RBF warp and scan index…' : `Iteration ${view.iteration} of at most ${view.maxIterations}${stage}${rms}`;
+  return view.iteration === 0 ? 'RBF warp and scan index…' : `Iteration ${view.iteration} of at most ${view.maxIterations}${stage}; the fit's RMS is measured when it ends`;
 }
 
 /** Which template Align fits, and how: a fine template goes coarse to fine. */

@@ -11,6 +11,8 @@ export interface BatchActions {
   onRetry(subject: string): void;
   onExclude(subject: string, excluded: boolean): void;
   onCancelAll(): void;
+  /** Retries every cancelled or interrupted subject whose scan is stored. */
+  onRetryAll(): void;
   onBuild(): void;
   onClear(): void;
 }
@@ -29,8 +31,15 @@ const COLUMNS: { key: Column; label: string; title: string }[] = [
 export function statusText(row: BatchRow): string {
   if (row.excluded) return 'excluded';
   if (row.status === 'aligning') return `aligning ${Math.round(row.progress * 100)} %`;
-  if (row.status === 'interrupted') return 'interrupted — retry';
+  if (row.status === 'interrupted') return row.scan ? 'interrupted' : 'interrupted — drop its scan again';
   return row.status;
+}
+
+/** The summary line: finished (with the failed among them), stopped, aligning, time left. */
+function summaryText(s: BatchSummary, eta: string): string {
+  const failed = s.failed ? ` (${s.failed} failed)` : '';
+  const stopped = s.stopped ? `, ${s.stopped} stopped (cancelled or interrupted)` : '';
+  return `${s.finished} of ${s.total} finished${failed}${stopped}, ${s.running} aligning on ${s.workers} worker${s.workers === 1 ? '' : 's'}${eta}.`;
 }
 
 function sortValue(row: BatchRow, column: Column): string | number {
@@ -77,6 +86,7 @@ export class BatchPanel {
     const data = document.body.dataset;
     data.batchTotal = String(summary.total);
     data.batchFinished = String(summary.finished);
+    data.batchStopped = String(summary.stopped);
     data.batchRunning = String(summary.running);
     data.batchWorkers = String(summary.workers);
     this.redraw();
@@ -101,22 +111,28 @@ export class BatchPanel {
     const active = summary.running > 0 || rows.some((r) => r.status === 'queued');
     const eta = summary.etaSeconds === null ? '' : ` · about ${formatSeconds(summary.etaSeconds)} left`;
     const kept = rows.filter((r) => (r.status === 'ok' || r.status === 'flagged') && !r.excluded && r.fit).length;
+    const build = button(kept < 2 ? 'Build model' : `Build model (${kept})`, 'batch-build', () => this.actions.onBuild(), kept < 2);
+    if (kept < 2) build.title = `A model needs at least two kept fits; the batch has ${kept}.`;
     this.root.replaceChildren(
       h('h2', {}, 'Batch'),
-      h(
-        'p',
-        { class: 'note', 'data-testid': 'batch-summary' },
-        `${summary.finished} of ${summary.total} finished, ${summary.running} aligning on ${summary.workers} worker${summary.workers === 1 ? '' : 's'}${eta}.`,
-      ),
+      h('p', { class: 'note', 'data-testid': 'batch-summary' }, summaryText(summary, eta)),
+      ...(summary.notScans
+        ? [h('p', { class: 'note', 'data-testid': 'batch-not-scans' }, `${summary.notScans} meshes that are not scans of a body were left out (surface_* and truth_*: ground truths of synthetic subjects).`)]
+        : []),
       h('progress', { max: '1', value: summary.fraction.toFixed(3), class: 'batch-progress', 'data-testid': 'batch-progress' }),
       h(
         'div',
         { class: 'row' },
         button('Cancel all', 'batch-cancel-all', () => this.actions.onCancelAll(), !active),
-        button(`Build model (${kept})`, 'batch-build', () => this.actions.onBuild(), kept < 2),
+        ...(summary.retryable > 0 ? [button(`Retry all (${summary.retryable})`, 'batch-retry-all', () => this.actions.onRetryAll())] : []),
+        build,
         button('Clear batch', 'batch-clear', () => this.actions.onClear()),
       ),
-      h('p', { class: 'note', 'data-testid': 'batch-build-status' }, this.buildStatus),
+      h(
+        'p',
+        { class: 'note', 'data-testid': 'batch-build-status' },
+        this.buildStatus || (kept < 2 && summary.running === 0 && !active ? `A model needs at least two kept fits; the batch has ${kept}.` : ''),
+      ),
       this.table(rows, button),
       ...(this.selected ? [heatLegend(0, this.selected.legendMaxMm, `${this.selected.subject}: distance of each template vertex to its scan`)] : []),
     );
@@ -156,7 +172,7 @@ export class BatchPanel {
         status,
         h('td', { 'data-testid': 'batch-rms' }, row.rmsMm === null ? '—' : row.rmsMm.toFixed(2)),
         h('td', { class: 'batch-flags', title: row.reason }, flags),
-        h('td', {}, row.seconds === null ? '—' : row.seconds.toFixed(1)),
+        h('td', { class: 'batch-time' }, row.seconds === null ? '—' : row.seconds.toFixed(1)),
       );
       if (row.fit) tr.addEventListener('click', () => this.actions.onSelect(row.subject));
       return tr;

@@ -46,7 +46,7 @@ export class EnergyChart {
     ctx.fillText('E (log)', pad.l, 19);
     ctx.fillStyle = RMS_COLOUR;
     ctx.textAlign = 'right';
-    ctx.fillText('RMS mm', w - pad.r, 19);
+    ctx.fillText('matched RMS mm', w - pad.r, 19);
     ctx.textAlign = 'left';
     const pts = this.points;
     if (pts.length < 1) return;

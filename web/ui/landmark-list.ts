@@ -26,13 +26,18 @@ export class LandmarkList {
     this.element.addEventListener('mouseleave', () => actions.onHover(null));
   }
 
-  /** `clickable`: whether picking a landmark means anything (a scan to place it on is loaded). */
+  /**
+   * `clickable`: whether picking a landmark means anything (a scan to place it on is loaded);
+   * `loaded`: whether there is a set at all (before any file the names are listed without marks:
+   * nothing is absent from a set that is not there).
+   */
   render(
     entries: readonly LandmarkEntry[],
     selected: string | null,
     flagged: ReadonlySet<string>,
     sharpness: ReadonlyMap<string, Sharpness>,
     clickable: boolean,
+    loaded = true,
   ): void {
     this.element.replaceChildren(
       ...entries.map((e) => {
@@ -42,16 +47,16 @@ export class LandmarkList {
           'li',
           {
             // `data-status` says whether the set has the landmark; `data-state` where it came from.
-            'data-status': e.position ? 'found' : 'missing',
+            'data-status': loaded ? (e.position ? 'found' : 'missing') : 'none',
             'data-state': e.state,
             'data-name': e.name,
             'data-selected': String(e.name === selected),
             'data-flagged': String(flagged.has(e.name)),
             'data-position-mm': e.position?.map((v) => (v * 1000).toFixed(4)).join(','),
             'data-sharpness': defined,
-            title: `${e.name}: ${e.state}${confidence ? `, confidence ${confidence}` : ''}${defined ? `; ${DEFINED_AS[defined]}` : ''}`,
+            title: !loaded ? `${e.name}: no scan or landmark file yet` : `${e.name}: ${e.state}${confidence ? `, confidence ${confidence}` : ''}${defined ? `; ${DEFINED_AS[defined]}` : ''}`,
           },
-          h('span', { class: 'mark', 'aria-label': e.state }, MARKS[e.state]),
+          loaded ? h('span', { class: 'mark', 'aria-label': e.state }, MARKS[e.state]) : h('span', { class: 'mark' }),
           h('span', { class: 'name' }, e.name),
           h('span', { class: 'confidence' }, flagged.has(e.name) ? '⚠' : confidence),
         );
@@ -68,5 +73,10 @@ export class LandmarkList {
     );
     // A landmark picked on the scan scrolls into view (the list scrolls on its own, under the tools).
     this.element.querySelector<HTMLElement>('li[data-selected="true"]')?.scrollIntoView({ block: 'nearest' });
+  }
+
+  /** Back to the top of the list (a new set). */
+  scrollToTop(): void {
+    this.element.scrollTop = 0;
   }
 }

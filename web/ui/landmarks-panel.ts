@@ -23,6 +23,8 @@ export interface EditorView {
   /** Each landmark's definition sharpness, from the last estimate's report (empty before one). */
   sharpness: ReadonlyMap<string, Sharpness>;
   tools: ToolsView;
+  /** Whether a landmark set exists (a scan or a landmark file is open). */
+  loaded: boolean;
 }
 
 export class LandmarksPanel {
@@ -36,11 +38,16 @@ export class LandmarksPanel {
     this.list = new LandmarkList(actions);
   }
 
+  /** A new set: the list back at its top. */
+  scrollListToTop(): void {
+    this.list.scrollToTop();
+  }
+
   render(facts: LandmarkFacts | null, editor: EditorView | null): void {
     const title = h('h2', {}, `CAESAR landmarks (${editor?.entries.length ?? 0})`);
     if (editor) {
       this.tools.render(editor.tools);
-      this.list.render(editor.entries, editor.selected, editor.flagged, editor.sharpness, editor.tools.hasScan);
+      this.list.render(editor.entries, editor.selected, editor.flagged, editor.sharpness, editor.tools.hasScan, editor.loaded);
     }
     const editing = editor ? [h('h2', {}, 'Edit'), this.tools.element, this.guide.element, title, this.list.element] : [];
     if (!facts) {

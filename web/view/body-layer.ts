@@ -2,6 +2,7 @@
 // three.js computes them for meshes sent without, such as an alignment's per-round positions) and
 // its landmark markers. Scans, the template, fits and shape-space bodies are all shown this way.
 import * as THREE from 'three';
+import type { Bounds } from '../shared/bounds';
 import { LandmarkMarkers, type LandmarkPoints } from './landmark-markers';
 
 /** Flat arrays as the core returns them: positions in metres, unit vertex normals. */
@@ -10,6 +11,8 @@ export interface BodyMesh {
   triangles: Uint32Array;
   /** Computed from the triangles when absent. */
   normals?: Float32Array;
+  /** `[minX, minY, minZ, maxX, maxY, maxZ]` of the positions, when known (else computed: a pass over them). */
+  bounds?: Bounds;
 }
 
 /** What `Viewer.showBody` draws; `null` removes that part, `undefined` keeps it. */
@@ -49,9 +52,13 @@ export class BodyLayer {
    * rebuilds the geometry.
    */
   update(content: BodyContent): void {
+    let rebuilt = false;
     if (content.mesh !== undefined && content.mesh !== this.source) {
       if (content.mesh && this.sameTopology(content.mesh)) this.morphMesh(content.mesh);
-      else this.setMesh(content.mesh, content.colour);
+      else {
+        this.setMesh(content.mesh, content.colour);
+        rebuilt = true;
+      }
     }
     if (this.mesh && content.meshScale !== undefined) this.mesh.scale.setScalar(content.meshScale);
     if (content.vertexColours !== undefined) this.setVertexColours(content.vertexColours);
@@ -64,7 +71,8 @@ export class BodyLayer {
       this.group.matrixWorldNeedsUpdate = true;
     }
     if (content.landmarks !== undefined) this.landmarks = content.landmarks;
-    this.rebuildMarkers();
+    // Markers are sized by the body: rebuilt for new landmarks or a new body, not for a morph.
+    if (content.landmarks !== undefined || rebuilt || content.meshScale !== undefined) this.rebuildMarkers();
   }
 
   get vertexCount(): number {
@@ -160,7 +168,8 @@ export class BodyLayer {
       normal.array = body.normals;
       normal.needsUpdate = true;
     } else geometry.computeVertexNormals();
-    geometry.computeBoundingBox();
+    if (body.bounds) geometry.boundingBox = new THREE.Box3(new THREE.Vector3(...body.bounds.slice(0, 3)), new THREE.Vector3(...body.bounds.slice(3)));
+    else geometry.computeBoundingBox();
     // The box's sphere is looser than computeBoundingSphere's but needs no second pass.
     geometry.boundingSphere = geometry.boundingBox!.getBoundingSphere(new THREE.Sphere());
     this.source = body;

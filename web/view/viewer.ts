@@ -154,10 +154,19 @@ export class Viewer {
     this.frameRequested = true;
     requestAnimationFrame(() => {
       this.frameRequested = false;
+      const t0 = performance.now();
       this.renderer.render(this.scene, this.camera);
+      // The main thread's part of drawing (three.js's buffer uploads and draw calls), for the benchmarks.
+      const renderMs = performance.now() - t0;
+      this.container.dataset.lastRenderMs = renderMs.toFixed(1);
+      this.container.dataset.maxRenderMs = Math.max(renderMs, Number(this.container.dataset.maxRenderMs ?? 0)).toFixed(1);
+      this.container.dataset.totalRenderMs = (renderMs + Number(this.container.dataset.totalRenderMs ?? 0)).toFixed(1);
       const rendered = Number(this.container.dataset.frames ?? '0') + 1;
       this.container.dataset.frames = String(rendered);
       if (this.framed) this.container.dataset.framedNdc = projectedExtent(this.framed, this.camera);
+      // Where everything shown lands (a body beside the framed one may reach past the canvas).
+      const shown = this.contentBounds();
+      if (!shown.isEmpty()) this.container.dataset.shownNdc = projectedExtent(shown, this.camera);
     });
   }
 

@@ -3,6 +3,8 @@
 // terminated worker loses nothing the page has not already got.
 import { alignDefaults, alignScan, exportMesh, rbfWarp, ScanWithLandmarks } from '../pkg/bodyspace.js';
 import type { AlignDefaults, AlignParams, AlignProgress, AlignReport, AlignResult, QualityReport, ScanInput, WarpResult } from '../shared/align-types';
+import { boundsOf } from '../shared/bounds';
+import { distanceHeat } from '../shared/heat-scale';
 import type { CoreEvent } from '../shared/messages';
 import { templateHandle } from './template-handlers';
 
@@ -36,16 +38,21 @@ export function runAlign(
     emit({ kind: 'alignProgress', ...progress });
     return true;
   };
+  // The round's normals and bounds are made here, so the page's part of a round does not grow
+  // with the template (it hands the arrays to the view).
   const onRound = (_stage: string, round: number, positions: Float32Array): void => {
-    emit({ kind: 'alignRound', round, iteration: lastIteration, positions }, [positions.buffer]);
+    const normals = roundNormals(scan.resolution, positions);
+    emit({ kind: 'alignRound', round, iteration: lastIteration, positions, normals, bounds: boundsOf(positions) }, [positions.buffer, normals.buffer]);
   };
   const t0 = performance.now();
   const outcome = withScan(scan, (input) => alignScan(templateHandle(scan.resolution), input, JSON.stringify(params), onProgress, onRound));
   try {
+    const distances = outcome.distances();
     return {
       positions: outcome.positions(),
       normals: outcome.normals(),
-      distances: outcome.distances(),
+      distances,
+      heat: distanceHeat(distances),
       report: JSON.parse(outcome.reportJson()) as AlignReport,
       quality: JSON.parse(outcome.qualityJson()) as QualityReport,
       workerMs: performance.now() - t0,
@@ -53,6 +60,13 @@ export function runAlign(
   } finally {
     outcome.free();
   }
+}
+
+/** Vertex normals of a round's `positions` over the template they are of (the base template's during a fine template's first stage, if sent at its size). */
+function roundNormals(resolution: ScanInput['resolution'], positions: Float32Array): Float32Array {
+  const handle = templateHandle(resolution);
+  if (positions.length === 3 * handle.vertexCount || resolution === 'base') return handle.normalsOf(positions);
+  return templateHandle('base').normalsOf(positions);
 }
 
 /** Runs `f` on the scan and its landmarks copied into the core, freeing the copy afterwards. */

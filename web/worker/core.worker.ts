@@ -91,7 +91,7 @@ self.onmessage = async (event: MessageEvent<CoreRequest>) => {
           post({ id, type: 'event', event }, transfer),
         );
         const result: AlignResult = { ...aligned, wasmMemoryBytes: (await ready).memory.buffer.byteLength };
-        post({ id, type: 'result', result }, [result.positions.buffer, result.normals.buffer, result.distances.buffer]);
+        post({ id, type: 'result', result }, [result.positions.buffer, result.normals.buffer, result.distances.buffer, result.heat.colours.buffer]);
         break;
       }
       case 'estimateLandmarks': {

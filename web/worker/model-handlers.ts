@@ -2,6 +2,8 @@
 // shown; morphs it (rank-1 updates per slider move, a full rebuild when asked), switches it to
 // the fine template, measures it, and exports CSV / GLB / the model file / statismo HDF5.
 import { buildShapeModel, loadShapeModel, loadStatismoModel, manikinDefaultsJson, type ModelPopulation, type ShapeSpace } from '../pkg/bodyspace.js';
+import { boundsOf } from '../shared/bounds';
+import { positionsChecksum } from '../shared/checksum';
 import type {
   ExportBody,
   LoadedModel,
@@ -81,12 +83,16 @@ export function morph(c: ShapeCoefficients, rebuild: boolean): ReconstructedBody
   const t2 = performance.now();
   const normals = model.normals();
   const t3 = performance.now();
+  const bounds = boundsOf(positions);
+  const checksum = positionsChecksum(positions);
   const measurements = JSON.parse(model.measureJson()) as ReconstructedBody['measurements'];
   const seam = JSON.parse(model.seamJson()) as ReconstructedBody['seam'];
   const t4 = performance.now();
   return {
     positions,
     normals,
+    bounds,
+    checksum,
     measurements,
     seam,
     reconstructMs: t1 - t0,

@@ -8,6 +8,7 @@ use js_sys::{Float32Array, Uint32Array, Uint8Array};
 use wasm_bindgen::prelude::*;
 
 use crate::landmarks::Landmark;
+use crate::mesh::normals::NormalTopology;
 use crate::rbf::virtual_landmarks;
 use crate::template::{Resolution, Template};
 
@@ -19,6 +20,8 @@ pub struct TemplateHandle {
     pub(super) base: Option<Template>,
     /// `#V·3` unit vertex normals, xyz interleaved.
     normals: Vec<f32>,
+    /// The template's triangles, for the normals of other positions ([`TemplateHandle::normals_of`]).
+    topology: NormalTopology,
     /// The 12 virtual landmarks made by the RBF's own rule on the template surface (the same
     /// points `rbf_warp_mesh` pairs with the scan's), for display.
     virtual_landmarks: Vec<Landmark>,
@@ -36,10 +39,14 @@ pub fn load_template(resolution: &str) -> Result<TemplateHandle, JsError> {
     let normals = template.mesh().flat_vertex_normals_f32();
     let base = (template.resolution() != Resolution::Base)
         .then(|| template.at_resolution(Resolution::Base));
+    let mesh = template.mesh();
+    let topology = NormalTopology::new(&mesh.triangles, mesh.positions.len())
+        .ok_or_else(|| JsError::new("embedded template: a triangle indexes no vertex"))?;
     Ok(TemplateHandle {
         template,
         base,
         normals,
+        topology,
         virtual_landmarks,
     })
 }
@@ -84,6 +91,24 @@ impl TemplateHandle {
     /// `#V·3` unit vertex normals.
     pub fn normals(&self) -> Float32Array {
         Float32Array::from(self.normals.as_slice())
+    }
+
+    /// `#V·3` unit vertex normals of other `positions` (`#V·3`, e.g. an alignment's round) over
+    /// the template's triangles (computed now, copied out): the worker's work, so the page only
+    /// hands the arrays to the view.
+    #[wasm_bindgen(js_name = normalsOf)]
+    pub fn normals_of(&self, positions: &[f32]) -> Result<Float32Array, JsError> {
+        let n = 3 * self.topology.vertex_count();
+        if positions.len() != n {
+            return Err(JsError::new(&format!(
+                "positions hold {} values; the template has {} vertices ({n} values)",
+                positions.len(),
+                n / 3
+            )));
+        }
+        let mut out = vec![0.0f32; n];
+        self.topology.vertex_normals_into(positions, &mut out);
+        Ok(Float32Array::from(out.as_slice()))
     }
 
     /// Landmark names, one per line: the 73 CAESAR names in `.lnd` order, then the 12 virtual.

@@ -68,7 +68,9 @@ fn find_landmark_file(subject: &str, folders: &[&Path]) -> Option<PathBuf> {
 }
 
 /// Every scan in `scans` with its landmark file, sorted by subject name. Two scans with the same
-/// subject name are an error (their fits would overwrite each other).
+/// subject name are an error (their fits would overwrite each other). Meshes that are not scans
+/// of a body ([`subject_files::is_not_a_scan`], the pairing rule the app uses too) are left out,
+/// and a line on standard error says how many.
 pub fn list_subjects(scans: &Path, landmarks: Option<&Path>) -> Result<Vec<Subject>, String> {
     let entries = std::fs::read_dir(scans).map_err(|e| {
         format!(
@@ -77,8 +79,14 @@ pub fn list_subjects(scans: &Path, landmarks: Option<&Path>) -> Result<Vec<Subje
         )
     })?;
     let mut by_name: BTreeMap<String, PathBuf> = BTreeMap::new();
+    let mut not_scans = 0;
     for entry in entries.flatten() {
         let path = entry.path();
+        let file_name = path.file_name().and_then(|n| n.to_str()).unwrap_or("");
+        if path.is_file() && subject_files::is_not_a_scan(file_name) {
+            not_scans += 1;
+            continue;
+        }
         let Some(name) = subject_name(&path).filter(|_| path.is_file()) else {
             continue;
         };
@@ -89,6 +97,15 @@ pub fn list_subjects(scans: &Path, landmarks: Option<&Path>) -> Result<Vec<Subje
                 path.display()
             ));
         }
+    }
+    if not_scans > 0 {
+        eprintln!(
+            "{}: left out {not_scans} meshes that are not scans of a body ({})",
+            scans.display(),
+            subject_files::NOT_SCAN_PREFIXES
+                .map(|p| format!("{p}*"))
+                .join(", ")
+        );
     }
     let folders: Vec<&Path> = landmarks.into_iter().chain([scans]).collect();
     Ok(by_name
@@ -104,6 +121,34 @@ pub fn list_subjects(scans: &Path, landmarks: Option<&Path>) -> Result<Vec<Subje
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_synth_folder_lists_its_scans_only() {
+        let dir =
+            std::env::temp_dir().join(format!("bodyspace-batch-subjects-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        for name in [
+            "scan_001.ply",
+            "surface_001.ply",
+            "truth_001.ply",
+            "landmarks_001.lnd",
+            "scan_002.ply",
+        ] {
+            std::fs::write(dir.join(name), b"").unwrap();
+        }
+        let listed = list_subjects(&dir, None).unwrap();
+        std::fs::remove_dir_all(&dir).unwrap();
+        let names: Vec<_> = listed.iter().map(|s| s.name.as_str()).collect();
+        assert_eq!(names, ["scan_001", "scan_002"]);
+        assert_eq!(
+            listed[0]
+                .landmarks
+                .as_ref()
+                .and_then(|p| p.file_name())
+                .and_then(|n| n.to_str()),
+            Some("landmarks_001.lnd")
+        );
+    }
 
     #[test]
     fn shards_split_the_sorted_list_disjointly() {

@@ -83,6 +83,13 @@ fn name_key(raw: &str) -> String {
         };
         key.push_str(word);
     }
+    // CAESAR's `Thelion/Bustpoint` written as its second half (`Lt. Bustpoint`, `bust point`).
+    if let Some(at) = key
+        .find("bustpoint")
+        .filter(|&at| !key[..at].ends_with("thelion"))
+    {
+        key.insert_str(at, "thelion");
+    }
     // `RightAcromion` / `LeftGonion` written as one word.
     for (long, short) in [("right", "rt"), ("left", "lt")] {
         if key.len() > long.len() + 2 && key.starts_with(long) {
@@ -118,6 +125,9 @@ mod tests {
             ("LeftGonion", "Lt. Gonion"),
             ("R Tragion", "Rt. Tragion"),
             ("rt thelion", "Rt. Thelion/Bustpoint"),
+            ("Lt. Bustpoint", "Lt. Thelion/Bustpoint"),
+            ("Rt. Bustpoint", "Rt. Thelion/Bustpoint"),
+            ("right bust point", "Rt. Thelion/Bustpoint"),
             ("Waist, Preferred, Post", "Waist, Preferred, Post."),
             ("Rt. Calcaneus, Posterior", "Rt. Calcaneous, Post."),
             (
