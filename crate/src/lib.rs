@@ -15,6 +15,7 @@ pub mod measure;
 pub mod mesh;
 pub mod pca;
 pub mod rbf;
+pub mod subject;
 pub mod synth;
 pub mod template;
 pub mod utils;
