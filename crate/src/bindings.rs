@@ -7,7 +7,9 @@
 //! * this file: `coreVersion`, `caesarLandmarkNames`, `parseScan` ([`ParsedScan`]: counts,
 //!   positions, triangles, normals, summary), `parseLandmarks`, `pairSubjectFiles`;
 //! * `template.rs`: `loadTemplate` ([`TemplateHandle`]);
-//! * `align.rs`: `alignDefaults`, [`ScanWithLandmarks`], `rbfWarp`, `alignScan`, `exportMesh`;
+//! * `align.rs`: `alignDefaults`, [`ScanWithLandmarks`], `rbfWarp`, `exportMesh`;
+//! * `subject.rs`: [`SubjectScan`], `fitSubject`, `fitSubjectFiles`: the one path from a subject
+//!   to a checked fit, as the command line takes it;
 //! * `landmarks.rs`: `estimateLandmarks` ([`LandmarkEstimate`]), `checkLandmarks`;
 //! * `landmark_export.rs`: `writeLandmarks` (`.lnd`, CSV or JSON);
 //! * `model.rs`: `loadShapeModel` ([`ShapeSpace`]); `model_build.rs`: `buildShapeModel`;
@@ -19,13 +21,13 @@
 mod align;
 mod landmark_export;
 mod landmarks;
+mod subject;
 mod template;
 
-pub use align::{
-    align_defaults, align_scan_js, export_mesh, rbf_warp_js, AlignOutcome, ScanWithLandmarks,
-};
+pub use align::{align_defaults, export_mesh, rbf_warp_js, AlignOutcome, ScanWithLandmarks};
 pub use landmark_export::write_landmarks;
 pub use landmarks::{check_landmarks_js, estimate_landmarks_js, LandmarkEstimate};
+pub use subject::{fit_subject_files_js, fit_subject_js, SubjectScan};
 pub use template::{load_template, TemplateHandle};
 
 use js_sys::{Float32Array, Uint32Array};
@@ -166,7 +168,7 @@ pub fn parse_landmarks(bytes: &[u8], file_name: &str) -> Result<String, JsError>
             .iter()
             .flat_map(|l| [l.position.x, l.position.y, l.position.z])
             .collect(),
-        units: fixed_units(file_name),
+        units: crate::io::landmark_file_units(file_name).map(Units::name),
         detected_units: detect_units(bounding_extent(
             &set.landmarks.iter().map(|l| l.position).collect::<Vec<_>>(),
         )),
@@ -193,11 +195,4 @@ fn checked_file_name(file_name: &str) -> Result<&str, JsError> {
         ));
     }
     Ok(file_name)
-}
-
-/// CAESAR `.lnd` files are in millimetres by definition; other landmark formats carry no units.
-fn fixed_units(file_name: &str) -> Option<&'static str> {
-    let lower = file_name.to_ascii_lowercase();
-    let stem = lower.strip_suffix(".gz").unwrap_or(&lower);
-    stem.ends_with(".lnd").then_some("millimetres")
 }

@@ -19,6 +19,7 @@ pub mod mesh;
 pub mod model_file;
 pub mod pca;
 pub mod rbf;
+pub mod subject;
 pub mod synth;
 pub mod template;
 pub mod utils;

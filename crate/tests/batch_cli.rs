@@ -146,15 +146,22 @@ fn batch_records_every_subject_resumes_shards_and_pools_fits() {
         let bound = if subject == "lonely" { 6.5 } else { 2.0 };
         assert!(rms < bound, "{subject}: scan→template RMS {rms} mm");
         assert_eq!(report["quality"]["rms_mm"].as_f64(), Some(rms));
+        // A full landmark file is checked (no estimate); a scan without one is estimated.
+        let source = if subject == "lonely" { "estimated" } else { "checked" };
+        assert_eq!(report["landmarks"]["source"], source, "{subject}");
         assert_eq!(
-            report["landmarks_estimated"],
+            report["landmarks"]["estimate"].is_object(),
             subject == "lonely",
             "{subject}"
         );
-        assert_eq!(
-            report["estimate"]["landmarks"].as_array().unwrap().len(),
-            73
-        );
+        let l = &report["landmarks"];
+        let left_out = l["left_out"].as_array().unwrap().len() as u64;
+        let (given, used) = (l["given"].as_u64().unwrap(), l["used"].as_u64().unwrap());
+        if subject == "lonely" {
+            assert_eq!((given, used), (0, 73));
+        } else {
+            assert_eq!((given, used + left_out), (73, 73), "{subject}");
+        }
     }
     // Nothing half-written is left behind.
     for dir in ["fits", "reports"] {

@@ -385,9 +385,12 @@ fn the_command_line_writes_every_format_and_aligns_without_landmarks() {
     }
     let fit = dir.join("fit.ply");
     let report = bodyspace(&["align", "--scan", &s(&scan), "--out", &s(&fit)]);
-    assert_eq!(report["landmarks_estimated"], true);
+    assert_eq!(report["landmarks"]["source"], "estimated");
     assert_eq!(
-        report["estimate"]["landmarks"].as_array().unwrap().len(),
+        report["landmarks"]["estimate"]["landmarks"]
+            .as_array()
+            .unwrap()
+            .len(),
         73
     );
     let rms = report["fine"]["scan_to_template"]["rms_mm"]

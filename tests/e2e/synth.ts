@@ -10,7 +10,7 @@ import type { TestFile } from './fixtures';
 const TARGET = fileURLToPath(new URL('../../crate/target/', import.meta.url));
 
 /** The native CLI: BODYSPACE_BIN, else the release build, else the debug build. */
-function bodyspaceBinary(): string {
+export function bodyspaceBinary(): string {
   const candidates = [process.env.BODYSPACE_BIN, join(TARGET, 'release/bodyspace'), join(TARGET, 'debug/bodyspace')];
   const found = candidates.find((p): p is string => Boolean(p && existsSync(p)));
   if (!found) throw new Error('no bodyspace binary: run `cargo build --manifest-path crate/Cargo.toml` first');

@@ -9,7 +9,7 @@ import type { CoreEvent } from '../shared/messages';
 import { AlignPanel } from '../ui/align-panel';
 import type { BodyMesh, Viewer } from '../view/viewer';
 import { download } from '../ui/download';
-import { scanInput, scanTransfer } from './scan-input';
+import { subjectInput, subjectTransfer } from './scan-input';
 import type { Session } from './session';
 import { subjects } from './subjects';
 import type { TemplateView } from './template-view';
@@ -57,7 +57,7 @@ export class AlignStep {
 
   async run(): Promise<void> {
     const template = this.template.data;
-    const input = template ? scanInput(this.session, template.resolution) : null;
+    const input = template ? subjectInput(this.session, template.resolution) : null;
     const rbf = this.warp.panel.current;
     if (!template || !input || !rbf) return;
     this.running = true;
@@ -92,8 +92,8 @@ export class AlignStep {
     try {
       const posted = performance.now();
       const result = await this.client.call(
-        { type: 'align', scan: input, params: { rbf: rbfParams(rbf) } },
-        { transfer: scanTransfer(input), onEvent },
+        { type: 'align', subject: input, options: { params: { rbf: rbfParams(rbf) } } },
+        { transfer: subjectTransfer(input), onEvent },
       );
       recordTimings(result, performance.now() - posted);
       this.result = result;

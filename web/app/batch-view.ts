@@ -35,7 +35,7 @@ export function startBatch(page: BatchPage): Batch {
     () => {
       const resolution = templateView.data?.resolution;
       const rbf = page.warpStep.panel.current;
-      return resolution ? { resolution, params: rbf ? { rbf: rbfParams(rbf) } : {} } : null;
+      return resolution ? { resolution, options: { params: rbf ? { rbf: rbfParams(rbf) } : {} } } : null;
     },
     (progress) => {
       if (!progress) return draw();

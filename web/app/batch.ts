@@ -4,7 +4,7 @@
 // quality flags (`align/quality.rs`, returned with each alignment).
 import { CancelledError, type CoreClient } from '../client/core-client';
 import { browserPoolSize, WorkerPool } from '../client/worker-pool';
-import type { AlignParams, QualityReport } from '../shared/align-types';
+import type { QualityReport, SubjectOptions } from '../shared/align-types';
 import type { SubjectPairing } from '../shared/results';
 import type { TemplateResolution } from '../shared/template-data';
 import { alignSubject } from './batch-job';
@@ -14,7 +14,7 @@ import type { AlignedSubject } from './subjects';
 /** What the batch needs of the page at each start: the template resolution and the settings. */
 export interface BatchSettings {
   resolution: TemplateResolution;
-  params: AlignParams;
+  options: SubjectOptions;
 }
 
 /** A subject as the table shows it: its record and, while aligning, its progress. */
@@ -299,7 +299,7 @@ export class Batch {
         this.trapped.add(row.subject);
         await job.client.call({ type: 'trap' });
       }
-      const result = await alignSubject(job.client, { scan: row.scan, landmarks: row.landmarks }, settings.resolution, settings.params, (fraction, label) => {
+      const result = await alignSubject(job.client, { scan: row.scan, landmarks: row.landmarks }, settings.resolution, settings.options, (fraction, label) => {
         reading = false;
         row.progress = fraction;
         row.progressLabel = label;
@@ -383,5 +383,6 @@ function flagReason(q: QualityReport): string {
   if (q.flags.includes('high_rms')) parts.push(`RMS ${q.rms_mm?.toFixed(2)} mm > ${t.max_rms_mm} mm`);
   if (q.flags.includes('unmatched')) parts.push(`${(q.unmatched_fraction * 100).toFixed(0)} % unmatched > ${t.max_unmatched_fraction * 100} %`);
   if (q.flags.includes('fold_overs')) parts.push(`${(q.folded_fraction * 100).toFixed(1)} % folded > ${t.max_folded_fraction * 100} %`);
+  if (q.flags.includes('suspicious_landmarks')) parts.push(`suspicious landmarks left out: ${q.suspicious_landmarks.join(', ')}`);
   return parts.join('; ');
 }

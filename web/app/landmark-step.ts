@@ -141,6 +141,7 @@ export class LandmarkStep {
       );
       if (!current()) return;
       edits.fillEstimate(result.names, result.positions, result.confidence, result.given);
+      this.session.estimateReport = result.report;
       this.suspicious = result.report.flagged;
       this.sharpness = new Map(result.report.landmarks.map((l) => [l.name, l.sharpness]));
       this.prediction = { ...result.prediction, scale: this.session.scanScale };

@@ -1,6 +1,7 @@
 // What is loaded: the scan, its chosen units, the landmark file and the landmark set being edited
 // (which the warp and the alignment use). Derives what the view and the panels show; a failed load
 // never touches it.
+import type { EstimateReport } from '../shared/landmark-entry';
 import { METRES_PER_UNIT, type MeshSummary, type ParsedLandmarks, type ParsedScan, type Units } from '../shared/results';
 import { LandmarkEdits } from './landmark-edits';
 
@@ -20,6 +21,8 @@ export class Session {
   landmarks: ParsedLandmarks | null = null;
   /** The current landmark set: the file's, an estimate, and the edits made since. */
   edits: LandmarkEdits | null = null;
+  /** The report of the landmark estimate that filled in the set's estimated landmarks, if one did. */
+  estimateReport: EstimateReport | null = null;
 
   private readonly listeners: ((change: SessionChange) => void)[] = [];
 
@@ -51,12 +54,14 @@ export class Session {
   setScan(scan: ParsedScan): void {
     this.scan = scan;
     this.scanUnits = scan.summary.units_detected;
+    this.estimateReport = null;
     if (!this.landmarks || !this.edits) this.edits = new LandmarkEdits(this.caesarNames());
   }
 
   /** A landmark file replaces the set being edited: its landmarks given, the rest absent. */
   setLandmarks(landmarks: ParsedLandmarks): void {
     this.landmarks = landmarks;
+    this.estimateReport = null;
     this.edits = LandmarkEdits.fromFile(this.caesarNames(), landmarks.names, this.landmarkPositionsMetres());
   }
 

@@ -57,6 +57,37 @@ export function rbfParams(settings: RbfSettings): NonNullable<AlignParams['rbf']
  */
 export type AlignStage = 'base' | 'fine' | 'estimate';
 
+/**
+ * A subject as the page holds it, for the core's one path from a subject to a checked fit
+ * (`crate/src/subject/`): the scan in metres under the units the person chose, the landmarks
+ * given or placed (metres), and the estimate the landmark worker already made, if any.
+ */
+export interface SubjectInput {
+  name: string;
+  resolution: TemplateResolution;
+  positions: Float32Array;
+  triangles: Uint32Array;
+  units: Units;
+  /** Whether `units` are the detected ones (not chosen by the person). */
+  unitsDetected: boolean;
+  given: { names: string[]; positions: Float64Array; file: string };
+  estimate: { names: string[]; positions: Float64Array; report: string } | null;
+}
+
+/** The core's `SubjectOptions` (absent fields keep the core's defaults). */
+export interface SubjectOptions {
+  params?: AlignParams;
+  check_landmarks?: boolean;
+  thresholds?: Partial<QualityReport['thresholds']>;
+  nearly_full?: number;
+}
+
+/** A file's bytes and name, as the batch hands a subject's files to the core. */
+export interface FileBytes {
+  bytes: ArrayBuffer;
+  name: string;
+}
+
 /** The scan and its landmarks as the core needs them, all in metres. */
 export interface ScanInput {
   resolution: TemplateResolution;
@@ -156,6 +187,31 @@ export interface AlignReport {
   total_ms: number;
 }
 
+/** How the warp's landmarks were chosen (`subject/policy.rs`). */
+export interface LandmarkPolicyReport {
+  source: 'estimated' | 'filled_in' | 'checked' | 'as_given';
+  file: string;
+  given: number;
+  left_out: { name: string; distance_mm: number; kind: string; suggestion: string; expected: [number, number, number] }[];
+  estimated: number;
+  used: number;
+  estimate?: unknown;
+}
+
+/** From the scan's frame and units into the template's: x_t = R·(s·x) + t (`subject/frame.rs`). */
+export interface TemplateFrame {
+  scale_to_metres: number;
+  rotation: [number, number, number][];
+  translation: [number, number, number];
+}
+
+/** The core's report of one subject (`SubjectReport`): the alignment's report and what the path added. */
+export interface SubjectReport extends AlignReport {
+  landmarks: LandmarkPolicyReport;
+  quality: QualityReport | null;
+  to_template: TemplateFrame;
+}
+
 /** The fitted template and the per-vertex distance (metres) to the scan. */
 export interface AlignResult {
   positions: Float32Array;
@@ -163,7 +219,7 @@ export interface AlignResult {
   distances: Float32Array;
   /** The distances' heat map (`distanceHeat`), made in the worker. */
   heat: DistanceHeat;
-  report: AlignReport;
+  report: SubjectReport;
   /** The core's quality flags of the fit (`align/quality.rs`, its default thresholds). */
   quality: QualityReport;
   /** The whole core call in the worker: inputs in, alignment, outputs copied out. */
@@ -173,7 +229,7 @@ export interface AlignResult {
 }
 
 /** A reason to look at a fit again (`align/quality.rs` `QualityFlag`, docs/batch.md). */
-export type QualityFlag = 'high_rms' | 'unmatched' | 'fold_overs';
+export type QualityFlag = 'high_rms' | 'unmatched' | 'fold_overs' | 'suspicious_landmarks';
 
 /** The core's `QualityReport`: the measures behind the flags and the flags raised. */
 export interface QualityReport {
@@ -184,6 +240,7 @@ export interface QualityReport {
   compared_triangles: number;
   folded_triangles: number;
   folded_fraction: number;
+  suspicious_landmarks: string[];
   flags: QualityFlag[];
   thresholds: { max_rms_mm: number; max_unmatched_fraction: number; max_folded_fraction: number };
 }

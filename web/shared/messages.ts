@@ -1,6 +1,6 @@
 // Messages between the UI thread and the core worker. No DOM here: shared by both threads.
 import type { Bounds } from './bounds';
-import type { AlignDefaults, AlignParams, AlignProgress, AlignResult, ScanInput, WarpResult } from './align-types';
+import type { AlignDefaults, AlignParams, AlignProgress, AlignResult, FileBytes, ScanInput, SubjectInput, SubjectOptions, WarpResult } from './align-types';
 import type { LandmarkEstimate, LandmarkPrediction, SuspiciousLandmark } from './landmark-entry';
 import type { ParsedLandmarks, ParsedScan, SubjectPairing } from './results';
 import type { TemplateData, TemplateResolution } from './template-data';
@@ -20,8 +20,13 @@ export type CoreRequestBody =
   /** The core's alignment parameters with their defaults. */
   | { type: 'alignDefaults' }
   | { type: 'rbfWarp'; scan: ScanInput; params: AlignParams }
-  /** RBF warp then fine alignment; replies with `alignProgress` and `alignRound` events. */
-  | { type: 'align'; scan: ScanInput; params: AlignParams }
+  /**
+   * The core's one path from a subject to a checked fit (landmark policy, RBF warp, fine
+   * alignment, quality check, frame); replies with `alignProgress` and `alignRound` events.
+   */
+  | { type: 'align'; subject: SubjectInput; options: SubjectOptions }
+  /** The same path on a subject's files (the batch): `bytes` are transferred. */
+  | { type: 'alignFiles'; scan: FileBytes; landmarks: FileBytes | null; resolution: TemplateResolution; options: SubjectOptions }
   /** The 73 CAESAR landmarks of a scan with a partial or empty set (kept as given); replies with progress. */
   | { type: 'estimateLandmarks'; scan: ScanInput }
   /** The suspicious landmarks of a set (`positions` `#names·3`, metres) against an estimate's prediction. */
@@ -80,6 +85,7 @@ export interface CoreResults {
   alignDefaults: AlignDefaults;
   rbfWarp: WarpResult;
   align: AlignResult;
+  alignFiles: AlignResult;
   estimateLandmarks: LandmarkEstimate;
   checkLandmarks: SuspiciousLandmark[];
   exportMesh: Uint8Array;

@@ -1,10 +1,11 @@
-// The RBF warp and the full alignment in the worker, both the core's one pipeline. Progress goes
-// out after every iteration and the template's positions after every round (transferred), so a
-// terminated worker loses nothing the page has not already got.
-import { alignDefaults, alignScan, exportMesh, rbfWarp, ScanWithLandmarks } from '../pkg/bodyspace.js';
-import type { AlignDefaults, AlignParams, AlignProgress, AlignReport, AlignResult, QualityReport, ScanInput, WarpResult } from '../shared/align-types';
+// The RBF warp and the core's one path from a subject to a checked fit, in the worker. Progress
+// goes out after every iteration and the template's positions after every round (transferred),
+// so a terminated worker loses nothing the page has not already got.
+import { alignDefaults, exportMesh, fitSubject, fitSubjectFiles, rbfWarp, ScanWithLandmarks, SubjectScan, type AlignOutcome } from '../pkg/bodyspace.js';
+import type { AlignDefaults, AlignParams, AlignProgress, AlignReport, AlignResult, FileBytes, QualityReport, ScanInput, SubjectInput, SubjectOptions, SubjectReport, WarpResult } from '../shared/align-types';
 import { boundsOf } from '../shared/bounds';
 import { distanceHeat } from '../shared/heat-scale';
+import type { TemplateResolution } from '../shared/template-data';
 import type { CoreEvent } from '../shared/messages';
 import { templateHandle } from './template-handlers';
 
@@ -27,9 +28,10 @@ export function runRbfWarp(scan: ScanInput, params: AlignParams): WarpResult {
   }
 }
 
+/** The page's subject through the core's one path (`fitSubject`). */
 export function runAlign(
-  scan: ScanInput,
-  params: AlignParams,
+  subject: SubjectInput,
+  options: SubjectOptions,
   emit: (event: CoreEvent, transfer?: Transferable[]) => void,
 ): Omit<AlignResult, 'wasmMemoryBytes'> {
   let lastIteration = 0;
@@ -41,11 +43,46 @@ export function runAlign(
   // The round's normals and bounds are made here, so the page's part of a round does not grow
   // with the template (it hands the arrays to the view).
   const onRound = (_stage: string, round: number, positions: Float32Array): void => {
-    const normals = roundNormals(scan.resolution, positions);
+    const normals = roundNormals(subject.resolution, positions);
     emit({ kind: 'alignRound', round, iteration: lastIteration, positions, normals, bounds: boundsOf(positions) }, [positions.buffer, normals.buffer]);
   };
   const t0 = performance.now();
-  const outcome = withScan(scan, (input) => alignScan(templateHandle(scan.resolution), input, JSON.stringify(params), onProgress, onRound));
+  const scan = new SubjectScan(subject.name, subject.positions, subject.triangles, subject.units, subject.unitsDetected);
+  try {
+    scan.setGiven(subject.given.names.join('\n'), subject.given.positions, subject.given.file);
+    if (subject.estimate) scan.setEstimate(subject.estimate.names.join('\n'), subject.estimate.positions, subject.estimate.report);
+    return result(fitSubject(templateHandle(subject.resolution), scan, JSON.stringify(options), onProgress, onRound), t0);
+  } finally {
+    scan.free();
+  }
+}
+
+/** A subject's files through the same path (`fitSubjectFiles`): the batch's job. */
+export function runAlignFiles(
+  scan: FileBytes,
+  landmarks: FileBytes | null,
+  resolution: TemplateResolution,
+  options: SubjectOptions,
+  emit: (event: CoreEvent) => void,
+): Omit<AlignResult, 'wasmMemoryBytes'> {
+  const onProgress = (progress: AlignProgress): boolean => {
+    emit({ kind: 'alignProgress', ...progress });
+    return true;
+  };
+  const t0 = performance.now();
+  const outcome = fitSubjectFiles(
+    templateHandle(resolution),
+    new Uint8Array(scan.bytes),
+    scan.name,
+    landmarks ? new Uint8Array(landmarks.bytes) : undefined,
+    landmarks?.name,
+    JSON.stringify(options),
+    onProgress,
+  );
+  return result(outcome, t0);
+}
+
+function result(outcome: AlignOutcome, t0: number): Omit<AlignResult, 'wasmMemoryBytes'> {
   try {
     const distances = outcome.distances();
     return {
@@ -53,7 +90,7 @@ export function runAlign(
       normals: outcome.normals(),
       distances,
       heat: distanceHeat(distances),
-      report: JSON.parse(outcome.reportJson()) as AlignReport,
+      report: JSON.parse(outcome.reportJson()) as SubjectReport,
       quality: JSON.parse(outcome.qualityJson()) as QualityReport,
       workerMs: performance.now() - t0,
     };

@@ -4,7 +4,7 @@ import init, { caesarLandmarkNames, coreVersion, pairSubjectFiles, parseLandmark
 import type { AlignResult } from '../shared/align-types';
 import type { CoreReply, CoreRequest } from '../shared/messages';
 import type { MeshSummary, ParsedLandmarks, ParsedScan, SubjectPairing } from '../shared/results';
-import { runAlign, runAlignDefaults, runExport, runRbfWarp } from './align-handlers';
+import { runAlign, runAlignDefaults, runAlignFiles, runExport, runRbfWarp } from './align-handlers';
 import { runCheck, runEstimate } from './landmark-handlers';
 import { templateData, templateTransfer } from './template-handlers';
 import * as models from './model-handlers';
@@ -87,11 +87,18 @@ self.onmessage = async (event: MessageEvent<CoreRequest>) => {
       }
       case 'align': {
         const id = request.id;
-        const aligned = runAlign(request.scan, request.params, (event, transfer) =>
+        const aligned = runAlign(request.subject, request.options, (event, transfer) =>
           post({ id, type: 'event', event }, transfer),
         );
         const result: AlignResult = { ...aligned, wasmMemoryBytes: (await ready).memory.buffer.byteLength };
         post({ id, type: 'result', result }, [result.positions.buffer, result.normals.buffer, result.distances.buffer, result.heat.colours.buffer]);
+        break;
+      }
+      case 'alignFiles': {
+        const id = request.id;
+        const aligned = runAlignFiles(request.scan, request.landmarks, request.resolution, request.options, (event) => post({ id, type: 'event', event }));
+        const result: AlignResult = { ...aligned, wasmMemoryBytes: (await ready).memory.buffer.byteLength };
+        post({ id, type: 'result', result }, [result.positions.buffer, result.normals.buffer, result.distances.buffer]);
         break;
       }
       case 'estimateLandmarks': {

@@ -78,41 +78,15 @@ pub fn rbf_warp_js(
     outcome(template, alignment)
 }
 
-/// RBF warp then fine alignment (paper §3.1 + §3.2). `params` JSON of [`AlignParams`]; `on_progress(progress)` after every L-BFGS iteration with the core's
-/// [`Progress`] as one object (`{stage, iteration, max_iterations, round, energy, data_error,
-/// smoothness_error, rms, matched, elapsed_ms}`; returning `false` cancels); `on_round(stage,
-/// round, positions)` with the current template positions (`Float32Array`, metres, the handle's
-/// resolution) at the start of every round. A `fine` template is aligned coarse to fine.
-#[wasm_bindgen(js_name = alignScan)]
-pub fn align_scan_js(
-    template: &TemplateHandle,
-    scan: &ScanWithLandmarks,
-    params: &str,
-    on_progress: &Function,
-    on_round: &Function,
-) -> Result<AlignOutcome, JsError> {
-    let params = align_params(params)?;
-    let alignment = run(
-        template,
-        scan,
-        &params,
-        &mut JsObserver {
-            on_progress,
-            on_round: Some(on_round),
-        },
-    )?;
-    outcome(template, alignment)
-}
-
 /// The fitted (or warped) template: positions, normals, per-vertex distance to the scan (metres;
 /// empty after the warp alone), the core's report and its quality flags as JSON.
 #[wasm_bindgen]
 pub struct AlignOutcome {
-    positions: Vec<f32>,
-    normals: Vec<f32>,
-    distances: Vec<f32>,
-    report: String,
-    quality: String,
+    pub(super) positions: Vec<f32>,
+    pub(super) normals: Vec<f32>,
+    pub(super) distances: Vec<f32>,
+    pub(super) report: String,
+    pub(super) quality: String,
 }
 
 #[wasm_bindgen]
@@ -234,7 +208,7 @@ fn align_params(json: &str) -> Result<AlignParams, JsError> {
 }
 
 /// The scan as a mesh in metres, with its sizes and indices checked.
-fn scan_mesh(positions: &[f32], triangles: &[u32]) -> Result<Mesh, JsError> {
+pub(super) fn scan_mesh(positions: &[f32], triangles: &[u32]) -> Result<Mesh, JsError> {
     if positions.len() % 3 != 0 || triangles.len() % 3 != 0 {
         return Err(JsError::new(
             "scan: positions and triangles must hold whole xyz / abc triples",

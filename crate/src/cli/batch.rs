@@ -1,9 +1,10 @@
 //! `bodyspace batch --scans DIR --out OUT [--landmarks DIR] [--jobs N] [--resolution base|fine]
-//! [--shard K/N]`: aligns every scan of a folder with the one pipeline ([`align_scan`]), several
-//! subjects at once, and screens the fits with the core's quality flags ([`assess`]).
+//! [--shard K/N] [align's options]`: every scan of a folder through the core's one path from
+//! files to a fit ([`fit_subject`], as `bodyspace align` and the app take it), several subjects
+//! at once, with the options `align` shares ([`SubjectArgs`]).
 //!
 //! Writes `OUT/fits/<subject>.ply` (as `bodyspace align` writes it), `OUT/reports/<subject>.json`
-//! (the [`crate::align::AlignmentReport`] plus `quality` and the batch's `batch` record) and
+//! (the core's [`SubjectReport`] plus the batch's `batch` record) and
 //! `OUT/manifest.csv`. A subject that fails is recorded and never stops the others; a rerun of
 //! the same command does only what is missing or failed. docs/batch.md has the whole story.
 
@@ -20,15 +21,9 @@ use serde::Serialize;
 use super::batch_subjects::{list_subjects, Shard, Subject};
 use super::manifest::{manifest_csv, write_atomically, Status, SubjectRecord};
 use super::read_file;
+use super::subject_args::{fit_ply, Frame, SubjectArgs};
 use super::truth::{find_truth_file, read_truth};
-use crate::align::{
-    align_scan, assess, AlignInput, AlignParams, AlignmentReport, FineAlignParams, Preset,
-    QualityReport, QualityThresholds,
-};
-use crate::estimate::EstimateReport;
-use crate::io::{read_landmarks, read_scan, write_ply};
-use crate::landmarks::LandmarkSet;
-use crate::mesh::Mesh;
+use crate::subject::{fit_subject, read_subject, SubjectOptions, SubjectReport};
 use crate::template::{Resolution, Template};
 
 /// Arguments of `bodyspace batch`.
@@ -53,107 +48,37 @@ pub struct BatchArgs {
     /// at least 1 (docs/batch.md measures why).
     #[arg(long, value_parser = clap::value_parser!(u32).range(1..))]
     pub threads_per_job: Option<u32>,
-    /// Template resolution: base or fine (fine is aligned coarse to fine, as in `align`).
-    #[arg(long, default_value = "base")]
-    pub resolution: String,
     /// Take only the K-th of N disjoint shares of the sorted subjects (K = 1..N): subject i
     /// (0-based) when i % N = K − 1. For job arrays (docs/batch.md).
     #[arg(long)]
     pub shard: Option<String>,
-    /// Parameter preset: paper (the default) or anchored, as in `align`.
-    #[arg(long, default_value = "paper", value_parser = ["paper", "anchored"])]
-    pub preset: String,
-    /// Limit on fine-alignment iterations (at `fine`: of the base stage).
-    #[arg(long, default_value_t = FineAlignParams::default().max_iterations)]
-    pub max_iterations: usize,
-    /// Flag fits whose scan → template RMS exceeds this (mm).
-    #[arg(long, default_value_t = QualityThresholds::default().max_rms_mm)]
-    pub max_rms_mm: f64,
-    /// Flag fits where more than this fraction of weighted template vertices had no data match.
-    #[arg(long, default_value_t = QualityThresholds::default().max_unmatched_fraction)]
-    pub max_unmatched: f64,
-    /// Flag fits where more than this fraction of template triangles folded over.
-    #[arg(long, default_value_t = QualityThresholds::default().max_folded_fraction)]
-    pub max_folded: f64,
     /// Folder of ground truths of synthetic subjects (`truth_ID.ply` for `scan_ID`, as
     /// `bodyspace synth` writes, else `<subject>.ply`): adds the correspondence error to each report, as
     /// `align --truth` does. A subject without its truth fails.
     #[arg(long)]
     pub truth: Option<PathBuf>,
-    /// Take given landmark files as they are: no check for suspicious landmarks (which costs one
-    /// landmark estimate per subject, more than the alignment itself; docs/batch.md).
-    #[arg(long)]
-    pub no_landmark_check: bool,
+    #[command(flatten)]
+    pub subject: SubjectArgs,
 }
 
 /// What every job shares.
 struct Context<'a> {
     template: &'a Template,
     base_template: Option<&'a Template>,
-    base_triangles: &'a [[u32; 3]],
-    params: AlignParams,
-    thresholds: QualityThresholds,
+    options: SubjectOptions,
+    frame: Frame,
     resolution: &'static str,
     fits: PathBuf,
     reports: PathBuf,
     truth: Option<&'a Path>,
-    check_landmarks: bool,
 }
 
-/// A subject's report file: the alignment report's fields, `quality` and `batch`.
+/// A subject's report file: the batch's record and the core's subject report.
 #[derive(Serialize)]
 struct ReportFile<'a> {
     batch: &'a SubjectRecord,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    quality: Option<&'a QualityReport>,
-    /// Whether the scan had no landmark file and the estimate's landmarks were used.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    landmarks_estimated: Option<bool>,
-    /// The landmark estimate's report (also the check of a given file).
-    #[serde(skip_serializing_if = "Option::is_none")]
-    estimate: Option<&'a EstimateReport>,
     #[serde(flatten)]
-    alignment: Option<&'a AlignmentReport>,
-}
-
-/// The landmarks the warp uses, the estimate's report, and the names of suspicious given
-/// landmarks. A scan without a landmark file gets the estimate's 73; a given file is checked by
-/// the estimate (`landmarks/estimate/suspicious.rs`) and its suspicious landmarks are left out,
-/// unless the context says not to check.
-fn landmarks_of(
-    subject: &Subject,
-    scan: &Mesh,
-    ctx: &Context<'_>,
-) -> Result<(LandmarkSet, Option<EstimateReport>, Vec<String>), String> {
-    let template = ctx.base_template.unwrap_or(ctx.template);
-    let given = match &subject.landmarks {
-        Some(path) => read_landmarks(&read_file(path)?, &path.display().to_string())
-            .map_err(|e| e.to_string())?,
-        None => LandmarkSet::default(),
-    };
-    if subject.landmarks.is_some() && !ctx.check_landmarks {
-        return Ok((given, None, Vec::new()));
-    }
-    let estimate = super::landmarks::estimate(template, scan, &given, &subject.scan)?;
-    let suspicious: Vec<String> = estimate
-        .report
-        .flagged
-        .iter()
-        .map(|f| f.name.clone())
-        .collect();
-    let landmarks = if subject.landmarks.is_some() {
-        LandmarkSet {
-            landmarks: given
-                .landmarks
-                .into_iter()
-                .filter(|l| !suspicious.contains(&l.name))
-                .collect(),
-            ..given
-        }
-    } else {
-        estimate.to_set()
-    };
-    Ok((landmarks, Some(estimate.report), suspicious))
+    subject: Option<&'a SubjectReport>,
 }
 
 /// Aligns one subject and writes its fit and report; the record says how it went. Nothing here
@@ -197,10 +122,7 @@ fn process(subject: &Subject, ctx: &Context<'_>) -> SubjectRecord {
         record.flags.clear();
         let report = ReportFile {
             batch: &record,
-            quality: None,
-            landmarks_estimated: None,
-            estimate: None,
-            alignment: None,
+            subject: None,
         };
         if let Err(e) = write_report(ctx, &record.subject, &report) {
             record.reason = format!("{}; and {e}", record.reason);
@@ -216,17 +138,28 @@ fn align_and_write(
     start: Instant,
 ) -> Result<(), String> {
     let scan_name = subject.scan.display().to_string();
-    let scan = read_scan(&read_file(&subject.scan)?, &scan_name).map_err(|e| e.to_string())?;
-    let (landmarks, estimate, suspicious) = landmarks_of(subject, &scan, ctx)?;
-    let input = AlignInput {
-        template: ctx.template,
-        base_template: ctx.base_template,
-        scan: &scan,
-        landmarks: &landmarks,
-        units: None,
+    let scan_bytes = read_file(&subject.scan)?;
+    let landmark_file = match &subject.landmarks {
+        Some(path) => Some((read_file(path)?, path.display().to_string())),
+        None => None,
     };
-    let mut alignment =
-        align_scan(&input, &ctx.params, &mut ()).map_err(|e| format!("{scan_name}: {e}"))?;
+    let input = read_subject(
+        (&scan_bytes, &scan_name),
+        landmark_file
+            .as_ref()
+            .map(|(bytes, name)| (bytes.as_slice(), name.as_str())),
+        None,
+    )
+    .map_err(|e| e.to_string())?;
+    let mut fit = fit_subject(
+        ctx.template,
+        ctx.base_template,
+        &input,
+        None,
+        &ctx.options,
+        &mut (),
+    )
+    .map_err(|e| e.to_string())?;
     if let Some(folder) = ctx.truth {
         let path = find_truth_file(&subject.name, folder).ok_or_else(|| {
             format!(
@@ -240,37 +173,30 @@ fn align_and_write(
             ctx.template.base_vertex_count(),
             ctx.template.mesh().positions.len(),
         ];
-        let truth = read_truth(&path, &expected, alignment.scale_to_metres)?;
-        alignment.compare_with_truth(ctx.template, &truth);
+        let truth = read_truth(&path, &expected, fit.alignment.scale_to_metres)?;
+        fit.compare_with_truth(ctx.template, &truth);
     }
-    let mut quality = assess(&alignment, ctx.base_triangles, &ctx.thresholds);
-    quality.add_suspicious_landmarks(suspicious);
-    record.rms_mm = quality.rms_mm;
-    record.flags = quality.flags.iter().map(|f| f.name().to_string()).collect();
-    record.status = if quality.flags.is_empty() {
+    let quality = fit.report.quality.as_ref();
+    record.rms_mm = quality.and_then(|q| q.rms_mm);
+    record.flags = quality
+        .map(|q| q.flags.iter().map(|f| f.name().to_string()).collect())
+        .unwrap_or_default();
+    record.status = if record.flags.is_empty() {
         Status::Ok
     } else {
         Status::Flagged
     };
     record.reason = record.flags.join(";");
 
-    let to_m = alignment.scale_to_metres;
-    let fitted = Mesh::new(
-        alignment.positions.iter().map(|p| p / to_m).collect(),
-        ctx.template.mesh().triangles.clone(),
-    );
     // The fit first, the report last: a report that says "done" always has its fit.
     write_atomically(
         &ctx.fits.join(format!("{}.ply", subject.name)),
-        &write_ply(&fitted),
+        &fit_ply(&fit, ctx.template, ctx.frame),
     )?;
     record.seconds = start.elapsed().as_secs_f64();
     let report = ReportFile {
         batch: record,
-        quality: Some(&quality),
-        landmarks_estimated: Some(subject.landmarks.is_none()),
-        estimate: estimate.as_ref(),
-        alignment: Some(&alignment.report),
+        subject: Some(&fit.report),
     };
     write_report(ctx, &subject.name, &report)
 }
@@ -388,34 +314,9 @@ fn format_seconds(s: f64) -> String {
 /// Runs `bodyspace batch`; the error is the one-line message for stderr.
 pub fn run(args: &BatchArgs) -> Result<(), String> {
     let started = Instant::now();
-    let resolution = Resolution::from_str(&args.resolution)
-        .map_err(|e| format!("--resolution {}: {e}", args.resolution))?;
+    let resolution = args.subject.resolution()?;
     let shard = args.shard.as_deref().map(Shard::from_str).transpose()?;
-    let thresholds = QualityThresholds {
-        max_rms_mm: args.max_rms_mm,
-        max_unmatched_fraction: args.max_unmatched,
-        max_folded_fraction: args.max_folded,
-    };
-    for (flag, value) in [
-        ("--max-rms-mm", args.max_rms_mm),
-        ("--max-unmatched", args.max_unmatched),
-        ("--max-folded", args.max_folded),
-    ] {
-        if !(value.is_finite() && value >= 0.0) {
-            return Err(format!("{flag} {value}: must be a finite number ≥ 0"));
-        }
-    }
-    let defaults = Preset::from_name(&args.preset)
-        .ok_or_else(|| format!("--preset {}: paper or anchored", args.preset))?
-        .params();
-    let params = AlignParams {
-        fine: FineAlignParams {
-            max_iterations: args.max_iterations,
-            ..defaults.fine
-        },
-        ..defaults
-    };
-    params.validate().map_err(|e| e.to_string())?;
+    let options = args.subject.options()?;
 
     let all = list_subjects(&args.scans, args.landmarks.as_deref())?;
     if all.is_empty() {
@@ -466,16 +367,14 @@ pub fn run(args: &BatchArgs) -> Result<(), String> {
         let base =
             (resolution != Resolution::Base).then(|| template.at_resolution(Resolution::Base));
         let ctx = Context {
-            base_triangles: &base.as_ref().unwrap_or(&template).mesh().triangles,
             template: &template,
             base_template: base.as_ref(),
-            params,
-            thresholds,
+            options,
+            frame: args.subject.frame,
             resolution: resolution_name,
             fits: fits.clone(),
             reports: reports.clone(),
             truth: args.truth.as_deref(),
-            check_landmarks: !args.no_landmark_check,
         };
         eprintln!(
             "bodyspace batch: {} subjects to align ({skipped} done before), {jobs} at a time, {threads_per_job} thread(s) each",

@@ -15,6 +15,7 @@ pub mod measure;
 pub mod model;
 pub mod project;
 pub mod reconstruct;
+pub mod subject_args;
 pub mod synth;
 pub mod template;
 pub mod truth;

@@ -12,6 +12,17 @@ use super::gzip::{inner_name, maybe_gunzip};
 use super::landmark_raw::RawLandmark;
 use super::{landmarks_csv, landmarks_json, lnd, IoError};
 use crate::landmarks::{canonical_name, Landmark, LandmarkSet};
+use crate::mesh::units::Units;
+
+/// The units a landmark file's format fixes: CAESAR `.lnd` files are millimetres by definition
+/// (`name.lnd` or `name.lnd.gz`); CSV and JSON carry none, and their landmarks are in the units
+/// of the scan they were placed on. The one place this rule lives: the command line, the batch
+/// and the app all read a landmark file's units from here.
+pub fn landmark_file_units(file_name: &str) -> Option<Units> {
+    let lower = file_name.to_ascii_lowercase();
+    let stem = lower.strip_suffix(".gz").unwrap_or(&lower);
+    stem.ends_with(".lnd").then_some(Units::Millimetres)
+}
 
 /// Reads a landmark file: CAESAR `.lnd`, CSV `name,x,y,z` (header optional, quoted names) or JSON
 /// `{"name": [x, y, z]}` (`null` = missing; an array of `{name, position}` also works), optionally gzip-compressed. Names are normalised to
@@ -91,4 +102,19 @@ fn assemble(raw: Vec<RawLandmark>, file: &str) -> Result<LandmarkSet, IoError> {
         });
     }
     Ok(set)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn only_lnd_files_fix_their_units() {
+        for name in ["a.lnd", "A.LND", "dir/a.lnd.gz"] {
+            assert_eq!(landmark_file_units(name), Some(Units::Millimetres), "{name}");
+        }
+        for name in ["a.csv", "a.json", "a.lnd.csv", "lnd", "a.csv.gz"] {
+            assert_eq!(landmark_file_units(name), None, "{name}");
+        }
+    }
 }

@@ -43,7 +43,7 @@ pub mod text_xyz;
 pub use error::IoError;
 pub use landmarks_csv::write_landmarks_csv;
 pub use landmarks_json::write_landmarks_json;
-pub use landmarks_read::read_landmarks;
+pub use landmarks_read::{landmark_file_units, read_landmarks};
 pub use landmarks_write::write_landmarks;
 pub use lnd::write_lnd;
 pub use obj_write::write_obj;

@@ -1,0 +1,153 @@
+//! [`fit_subject`]: one subject from what was read to a checked fit — the landmark policy, the RBF
+//! warp and fine alignment ([`align_scan`]), the quality check and the frame — and its report.
+
+use nalgebra::Point3;
+
+use super::error::SubjectError;
+use super::frame::TemplateFrame;
+use super::input::{read_subject, SubjectInput};
+use super::options::SubjectOptions;
+use super::policy::{subject_landmarks, PriorEstimate};
+use super::report::SubjectReport;
+use crate::align::{align_scan, assess, AlignInput, AlignObserver, Alignment};
+use crate::mesh::units::Units;
+use crate::template::{Resolution, Template};
+
+/// A fitted subject.
+#[derive(Debug, Clone)]
+pub struct SubjectFit {
+    /// The alignment: positions in metres, the scan's frame, template order.
+    pub alignment: Alignment,
+    pub report: SubjectReport,
+}
+
+impl SubjectFit {
+    /// The fit in the scan's frame and units (as a fit is written by default).
+    pub fn positions_in_scan_units(&self) -> Vec<Point3<f64>> {
+        let to_m = self.alignment.scale_to_metres;
+        self.alignment.positions.iter().map(|p| p / to_m).collect()
+    }
+
+    /// Adds the correspondence error against `truth` (true template positions, at least the base
+    /// vertices, metres, the scan's frame) to the report.
+    pub fn compare_with_truth(&mut self, template: &Template, truth: &[Point3<f64>]) {
+        self.alignment.compare_with_truth(template, truth);
+        self.report.alignment.correspondence = self.alignment.report.correspondence.clone();
+    }
+
+    /// The fit in the template's frame: upright, y up, metres, facing +z.
+    pub fn positions_in_template_frame(&self) -> Vec<Point3<f64>> {
+        let frame = &self.report.to_template;
+        let to_m = self.alignment.scale_to_metres;
+        self.alignment
+            .positions
+            .iter()
+            .map(|p| frame.to_template(&(p / to_m)))
+            .collect()
+    }
+}
+
+/// Fits `template` (at `fine`: coarse to fine, from `base_template` when the caller keeps one) to
+/// the subject: its landmarks by the one policy (`policy.rs`; `prior`: an estimate already run on
+/// this scan with these landmarks), then [`align_scan`], the quality check with the options'
+/// thresholds (left-out landmarks raise `suspicious_landmarks`) and the frame. `observer` hears
+/// the estimate and every iteration of the alignment; a `Break` cancels.
+pub fn fit_subject(
+    template: &Template,
+    base_template: Option<&Template>,
+    input: &SubjectInput,
+    prior: Option<PriorEstimate>,
+    options: &SubjectOptions,
+    observer: &mut dyn AlignObserver,
+) -> Result<SubjectFit, SubjectError> {
+    let (units, units_detected) = input.scan_units();
+    let given = input.given_in_scan_units();
+    let file = input.given.as_ref().map_or("", |g| g.file.as_str());
+    let landmarks = subject_landmarks(
+        template,
+        &input.scan,
+        units,
+        &given,
+        file,
+        prior,
+        options,
+        observer,
+    )
+    .map_err(|e| match e {
+        SubjectError::Estimate { message, .. } => SubjectError::Estimate {
+            scan: input.name.clone(),
+            message,
+        },
+        e => e,
+    })?;
+    let align_input = AlignInput {
+        template,
+        base_template,
+        scan: &input.scan,
+        landmarks: &landmarks.set,
+        units: Some(units),
+    };
+    let mut alignment =
+        align_scan(&align_input, &options.params, observer).map_err(|source| {
+            SubjectError::Align {
+                scan: input.name.clone(),
+                source,
+            }
+        })?;
+    alignment.report.units_detected = units_detected;
+
+    let owned_base;
+    let base = match (base_template, template.resolution()) {
+        (Some(base), _) => base,
+        (None, Resolution::Base) => template,
+        (None, _) => {
+            owned_base = template.at_resolution(Resolution::Base);
+            &owned_base
+        }
+    };
+    let quality = alignment.report.fine.is_some().then(|| {
+        let mut quality = assess(&alignment, &base.mesh().triangles, &options.thresholds);
+        quality.add_suspicious_landmarks(
+            landmarks
+                .report
+                .left_out
+                .iter()
+                .map(|l| l.name.clone())
+                .collect(),
+        );
+        quality
+    });
+    let to_template = TemplateFrame::of_fit(
+        &alignment.positions,
+        &base.mesh().positions,
+        alignment.scale_to_metres,
+    )
+    .unwrap_or_else(|| TemplateFrame {
+        scale_to_metres: alignment.scale_to_metres,
+        rotation: [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]],
+        translation: [0.0; 3],
+    });
+    let report = SubjectReport {
+        landmarks: landmarks.report,
+        quality,
+        to_template,
+        alignment: alignment.report.clone(),
+    };
+    Ok(SubjectFit { alignment, report })
+}
+
+/// [`read_subject`] then [`fit_subject`]: the whole path from file bytes (`scan`: bytes and file
+/// name; `landmarks`: the same for its landmark file, if any; `units` overrides the scan's
+/// detected units).
+pub fn fit_subject_files(
+    template: &Template,
+    base_template: Option<&Template>,
+    scan: (&[u8], &str),
+    landmarks: Option<(&[u8], &str)>,
+    units: Option<Units>,
+    options: &SubjectOptions,
+    observer: &mut dyn AlignObserver,
+) -> Result<SubjectFit, SubjectError> {
+    let input = read_subject(scan, landmarks, units)?;
+    fit_subject(template, base_template, &input, None, options, observer)
+}

@@ -1,0 +1,33 @@
+//! One subject, from its files to a checked fit: the one path that `bodyspace align`,
+//! `bodyspace batch`, the app's single scan and the app's batch all take, so the same scan and
+//! landmarks give the same report whichever way they came in.
+//!
+//! * [`input`] — [`read_subject`]: a scan file and its landmark file (optional) → [`SubjectInput`],
+//!   with the units rule (a landmark file is in the units its format fixes, else the scan's).
+//! * [`policy`] — [`subject_landmarks`]: the landmark policy. A nearly full file is checked and
+//!   its suspicious landmarks left out; a partial file is filled in by the estimate, a scan
+//!   without a file gets the estimate's 73.
+//! * [`frame`] — [`TemplateFrame`]: the rigid motion and unit scale from the scan's frame into the
+//!   template's (upright, y up, metres, facing +z), where bodies are compared.
+//! * [`fit`] — [`fit_subject`]: RBF warp and fine alignment ([`crate::align::align_scan`]), the
+//!   quality check, the frame → [`SubjectFit`] with its [`SubjectReport`] (`report.rs`).
+//! * [`SubjectOptions`] (`options.rs`): every choice of the path, with its default;
+//!   [`SubjectError`] (`error.rs`).
+//!
+//! It sits above `align` and the landmark estimate and below the command line and the bindings.
+
+pub mod error;
+pub mod fit;
+pub mod frame;
+pub mod input;
+pub mod options;
+pub mod policy;
+pub mod report;
+
+pub use error::SubjectError;
+pub use fit::{fit_subject, fit_subject_files, SubjectFit};
+pub use frame::TemplateFrame;
+pub use input::{read_subject, GivenLandmarks, SubjectInput};
+pub use options::SubjectOptions;
+pub use policy::{subject_landmarks, LandmarkSource, PriorEstimate, SubjectLandmarks};
+pub use report::{LandmarkPolicyReport, SubjectReport};

@@ -1,0 +1,36 @@
+//! Every choice of the path from files to a fit, with its default: the alignment's parameters,
+//! whether given landmarks are checked, the quality thresholds and the landmark estimate's
+//! parameters. `bodyspace align` and `bodyspace batch` share their flags for these
+//! (`cli/subject_args.rs`); the app sends the same fields as JSON.
+
+use serde::{Deserialize, Serialize};
+
+use crate::align::{AlignParams, QualityThresholds};
+
+/// A landmark file with at least this many of the 73 CAESAR landmarks is nearly full (a CAESAR
+/// file missing a few): it is checked, not filled in; its missing landmarks stay absent.
+pub const NEARLY_FULL: usize = 64;
+
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(default)]
+pub struct SubjectOptions {
+    /// RBF warp and fine alignment (`align/params.rs`; default: the `paper` preset).
+    pub params: AlignParams,
+    /// Check given landmarks and leave the suspicious ones out of the warp (default true).
+    pub check_landmarks: bool,
+    /// When a fit is flagged (`align/quality.rs`).
+    pub thresholds: QualityThresholds,
+    /// Given landmarks at or above this count are checked, not filled in ([`NEARLY_FULL`]).
+    pub nearly_full: usize,
+}
+
+impl Default for SubjectOptions {
+    fn default() -> Self {
+        Self {
+            params: AlignParams::default(),
+            check_landmarks: true,
+            thresholds: QualityThresholds::default(),
+            nearly_full: NEARLY_FULL,
+        }
+    }
+}

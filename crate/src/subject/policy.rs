@@ -1,0 +1,176 @@
+//! The landmark policy, one rule for every path: which landmarks the warp of a subject uses.
+//!
+//! 1. Given landmarks are checked (unless the options say not to): those far from where the other
+//!    given landmarks of their rigid part put them — a swapped Lt./Rt. pair, a typo, a landmark on
+//!    the wrong part — are left out, with the reason ([`check_given`]).
+//! 2. A nearly full set (at least [`super::options::NEARLY_FULL`] of the 73) is used as checked:
+//!    its missing landmarks stay absent and the warp runs without them.
+//! 3. A partial set, or none, is filled in by the landmark estimate
+//!    ([`crate::estimate::estimate_landmarks`]), which keeps the trusted given landmarks
+//!    exactly as given. A caller that already ran that estimate on this scan with these landmarks
+//!    (the app's landmark editor) hands its result in as a [`PriorEstimate`] instead.
+
+use nalgebra::Point3;
+use serde::Serialize;
+
+use super::error::SubjectError;
+use super::options::SubjectOptions;
+use super::report::LandmarkPolicyReport;
+use crate::align::AlignObserver;
+use crate::template::parts::{dominant_part, parts};
+use crate::estimate::{
+    estimate_landmarks, flag_given, given_landmarks, landmark_rest, EstimateInput, EstimateParams,
+    SuspiciousLandmark,
+};
+use crate::landmarks::LandmarkSet;
+use crate::mesh::units::Units;
+use crate::mesh::Mesh;
+use crate::template::{Resolution, Template};
+
+/// Where a subject's landmarks came from.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum LandmarkSource {
+    /// No landmarks were given: all come from the estimate.
+    Estimated,
+    /// A partial set was given and the estimate filled in the rest.
+    FilledIn,
+    /// A nearly full set was given and checked; suspicious ones were left out.
+    Checked,
+    /// Given landmarks used as they are, unchecked (the options said so).
+    AsGiven,
+}
+
+/// The landmark estimate a caller already ran on this scan with the trusted given landmarks.
+#[derive(Debug, Clone)]
+pub struct PriorEstimate {
+    /// The estimated landmarks (scan frame and units); given ones in it are ignored.
+    pub set: LandmarkSet,
+    /// The estimate's report as it was serialised.
+    pub report: serde_json::Value,
+}
+
+/// The landmarks a subject's warp uses, and how they were chosen.
+#[derive(Debug, Clone)]
+pub struct SubjectLandmarks {
+    /// The scan's frame and units.
+    pub set: LandmarkSet,
+    pub report: LandmarkPolicyReport,
+}
+
+/// Applies the landmark policy to `given` (the scan's frame and `units`; may be empty) on `scan`
+/// (the scan's frame and units). `file` names the landmark file in the report (empty: none).
+/// The estimate, when it runs, reports to `observer` (stage `estimate`; a `Break` cancels).
+pub fn subject_landmarks(
+    template: &Template,
+    scan: &Mesh,
+    units: Units,
+    given: &LandmarkSet,
+    file: &str,
+    prior: Option<PriorEstimate>,
+    options: &SubjectOptions,
+    observer: &mut dyn AlignObserver,
+) -> Result<SubjectLandmarks, SubjectError> {
+    let given_count = given_landmarks(given).len();
+    let left_out = if options.check_landmarks && given_count > 0 {
+        check_given(template, given, units)
+    } else {
+        Vec::new()
+    };
+    let trusted = LandmarkSet {
+        landmarks: given
+            .landmarks
+            .iter()
+            .filter(|l| !left_out.iter().any(|f| f.name == l.name))
+            .cloned()
+            .collect(),
+        ..given.clone()
+    };
+    let source = match (given_count, options.check_landmarks) {
+        (0, _) => LandmarkSource::Estimated,
+        (n, _) if n < options.nearly_full => LandmarkSource::FilledIn,
+        (_, true) => LandmarkSource::Checked,
+        (_, false) => LandmarkSource::AsGiven,
+    };
+    let fill_in = matches!(
+        source,
+        LandmarkSource::Estimated | LandmarkSource::FilledIn
+    );
+    let prior = match prior {
+        Some(prior) => Some(prior),
+        None if fill_in => {
+            let input = EstimateInput {
+                template,
+                scan,
+                given: &trusted,
+                units: Some(units),
+            };
+            let estimate = estimate_landmarks(&input, &EstimateParams::default(), observer)
+                .map_err(|e| SubjectError::Estimate {
+                    scan: String::new(),
+                    message: e.to_string(),
+                })?;
+            let report = serde_json::to_value(&estimate.report).unwrap_or_default();
+            Some(PriorEstimate {
+                set: estimate.to_set(),
+                report,
+            })
+        }
+        None => None,
+    };
+    let mut set = trusted;
+    let mut estimated = 0;
+    let mut estimate_report = None;
+    if let Some(prior) = prior {
+        for l in prior.set.landmarks {
+            if set.get(&l.name).is_none() && !left_out.iter().any(|f| f.name == l.name) {
+                set.missing.retain(|m| *m != l.name);
+                set.landmarks.push(l);
+                estimated += 1;
+            }
+        }
+        estimate_report = Some(prior.report);
+    }
+    Ok(SubjectLandmarks {
+        report: LandmarkPolicyReport {
+            source,
+            file: file.to_string(),
+            given: given_count,
+            left_out,
+            estimated,
+            used: given_landmarks(&set).len(),
+            estimate: estimate_report,
+        },
+        set,
+    })
+}
+
+/// The given landmarks (scan frame and `units`) that look wrong: each predicted from the other
+/// given landmarks of its rigid part, flagged beyond the estimate's suspicious distance. Needs
+/// no fit of the scan: a part with too few given landmarks to predict from is not judged.
+pub fn check_given(template: &Template, given: &LandmarkSet, units: Units) -> Vec<SuspiciousLandmark> {
+    let base;
+    let template = match template.resolution() {
+        Resolution::Base => template,
+        _ => {
+            base = template.at_resolution(Resolution::Base);
+            &base
+        }
+    };
+    let rest = landmark_rest(template);
+    let parts = parts(template);
+    let landmark_part: Vec<usize> = template
+        .landmark_vertices()
+        .iter()
+        .map(|(_, v)| dominant_part(&parts, *v))
+        .collect();
+    let unknown = vec![Point3::new(f64::NAN, f64::NAN, f64::NAN); rest.len()];
+    flag_given(
+        &rest,
+        &landmark_part,
+        &given_landmarks(given),
+        &unknown,
+        &EstimateParams::default(),
+        units.scale_to_metres(),
+    )
+}

@@ -1,0 +1,49 @@
+//! What the path from files to a fit reports, as one serialisable type: how the landmarks were
+//! chosen, the alignment's own report (`align/alignment_report.rs`, flattened in), the quality
+//! check and the frame. The command line prints it, the batch writes it beside each fit, the app
+//! shows it: the same fields whichever path the subject took. Lengths in mm, times in ms.
+
+use serde::Serialize;
+
+use super::frame::TemplateFrame;
+use super::policy::LandmarkSource;
+use crate::align::{AlignmentReport, QualityReport};
+use crate::estimate::SuspiciousLandmark;
+
+/// How the warp's landmarks were chosen ([`super::policy::subject_landmarks`]).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct LandmarkPolicyReport {
+    pub source: LandmarkSource,
+    /// The landmark file's name; empty when none was given.
+    pub file: String,
+    /// CAESAR landmarks given (in the file, or placed by a person).
+    pub given: usize,
+    /// Given landmarks the check found suspicious and left out of the warp, each with its reason.
+    pub left_out: Vec<SuspiciousLandmark>,
+    /// Landmarks the estimate filled in.
+    pub estimated: usize,
+    /// CAESAR landmarks the warp used (given and trusted, plus estimated).
+    pub used: usize,
+    /// The landmark estimate's report, when it ran (`landmarks/estimate/report.rs`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub estimate: Option<serde_json::Value>,
+}
+
+/// One subject's report.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct SubjectReport {
+    pub landmarks: LandmarkPolicyReport,
+    /// The quality check of the fit (`align/quality.rs`); absent after the warp alone.
+    pub quality: Option<QualityReport>,
+    /// From the scan's frame and units into the template's.
+    pub to_template: TemplateFrame,
+    #[serde(flatten)]
+    pub alignment: AlignmentReport,
+}
+
+impl SubjectReport {
+    /// Whether the quality check raised any flag.
+    pub fn flagged(&self) -> bool {
+        self.quality.as_ref().is_some_and(|q| !q.flags.is_empty())
+    }
+}

@@ -1,0 +1,264 @@
+//! The one path from a subject's files to a checked fit (`crate/src/subject/`), end to end:
+//! `bodyspace align`, `bodyspace batch` and the core's own function give the same report for the
+//! same files; a CAESAR `.lnd` (millimetres) beside a scan in metres fits as the same landmarks in
+//! a CSV in metres; the same subject in any frame and units (y-up m, z-up mm, turned cm, −x up)
+//! gives the same fit in the template's frame.
+
+mod synth_support;
+
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+use bodyspace::io::{write_lnd, write_ply};
+use bodyspace::landmarks::{Landmark, LandmarkSet};
+use bodyspace::mesh::units::Units;
+use bodyspace::mesh::Mesh;
+use bodyspace::subject::{
+    fit_subject, fit_subject_files, GivenLandmarks, SubjectInput, SubjectOptions,
+};
+use bodyspace::synth::{PopulationProfile, ScannerParams, SubjectId};
+use bodyspace::template::Template;
+use nalgebra::{Point3, Rotation3, Vector3};
+use synth_support::{base_template_and_data, subject_in_metres};
+
+/// Held-out subject 0 of a population nothing was tuned on, scanned coarsely (quick to fit), in
+/// metres, y up: its scan and its 73 landmarks.
+fn subject() -> (Template, Mesh, LandmarkSet) {
+    let (template, data) = base_template_and_data();
+    let id = SubjectId {
+        profile: PopulationProfile::HeldOut,
+        seed: 5151,
+        index: 0,
+    };
+    let scanner = ScannerParams {
+        vertical_step: 0.012,
+        horizontal_step: 0.012,
+        ..id.profile.scanner()
+    };
+    let (scan, landmarks, _) = subject_in_metres(&data, &template, id, &scanner);
+    (template, scan, landmarks)
+}
+
+fn options() -> SubjectOptions {
+    let mut options = SubjectOptions::default();
+    options.params.fine.max_iterations = 40;
+    options
+}
+
+fn csv(set: &LandmarkSet) -> String {
+    let mut text = String::from("name,x,y,z\n");
+    for l in &set.landmarks {
+        let p = l.position;
+        text += &format!("\"{}\",{:.9},{:.9},{:.9}\n", l.name, p.x, p.y, p.z);
+    }
+    text
+}
+
+fn bodyspace(args: &[&str]) -> serde_json::Value {
+    let out = Command::new(env!("CARGO_BIN_EXE_bodyspace"))
+        .args(args)
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    serde_json::from_slice(&out.stdout).unwrap()
+}
+
+/// The report without what differs from run to run by nature: times, and the batch's record.
+fn comparable(mut report: serde_json::Value) -> serde_json::Value {
+    fn strip(v: &mut serde_json::Value) {
+        match v {
+            serde_json::Value::Object(map) => {
+                map.retain(|k, _| !(k.ends_with("_ms") || k == "batch" || k == "seconds"));
+                map.values_mut().for_each(strip);
+            }
+            serde_json::Value::Array(items) => items.iter_mut().for_each(strip),
+            _ => {}
+        }
+    }
+    strip(&mut report);
+    report
+}
+
+fn temp_dir(name: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("bodyspace-{name}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+fn s(p: &Path) -> String {
+    p.display().to_string()
+}
+
+#[test]
+fn align_batch_and_the_core_give_the_same_report() {
+    let (template, scan, landmarks) = subject();
+    let dir = temp_dir("one-path");
+    // As `bodyspace synth` writes a subject: millimetres, CAESAR .lnd.
+    let scan_path = dir.join("scan_001.ply");
+    let lnd_path = dir.join("landmarks_001.lnd");
+    std::fs::write(&scan_path, write_ply(&scan.scaled(1000.0))).unwrap();
+    std::fs::write(&lnd_path, write_lnd(&landmarks.scaled(1000.0), "001")).unwrap();
+    let (scan_s, lnd_s, dir_s) = (s(&scan_path), s(&lnd_path), s(&dir));
+    let (fit_s, out) = (s(&dir.join("fit.ply")), dir.join("out"));
+    let out_s = s(&out);
+    let from_align = bodyspace(&[
+        "align",
+        "--scan",
+        &scan_s,
+        "--landmarks",
+        &lnd_s,
+        "--out",
+        &fit_s,
+        "--max-iterations",
+        "40",
+    ]);
+    bodyspace(&[
+        "batch",
+        "--scans",
+        &dir_s,
+        "--out",
+        &out_s,
+        "--jobs",
+        "1",
+        "--max-iterations",
+        "40",
+    ]);
+    let from_batch: serde_json::Value = serde_json::from_slice(
+        &std::fs::read(out.join("reports").join("scan_001.json")).unwrap(),
+    )
+    .unwrap();
+
+    let scan_bytes = std::fs::read(&scan_path).unwrap();
+    let lnd_bytes = std::fs::read(&lnd_path).unwrap();
+    let fit = fit_subject_files(
+        &template,
+        None,
+        (&scan_bytes, &s(&scan_path)),
+        Some((&lnd_bytes, &s(&lnd_path))),
+        None,
+        &options(),
+        &mut (),
+    )
+    .unwrap();
+    let from_core = serde_json::to_value(&fit.report).unwrap();
+
+    assert_eq!(from_align["landmarks"]["source"], "checked");
+    assert_eq!(from_align["units"], "millimetres");
+    assert!(from_align["quality"]["rms_mm"].as_f64().unwrap() < 2.5);
+    let reference = comparable(from_core);
+    assert_eq!(comparable(from_align), reference);
+    assert_eq!(comparable(from_batch), reference);
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn an_lnd_beside_a_metres_scan_fits_as_its_csv() {
+    let (_, scan, landmarks) = subject();
+    let dir = temp_dir("lnd-metres");
+    let scan_path = dir.join("scan.ply");
+    std::fs::write(&scan_path, write_ply(&scan)).unwrap();
+    std::fs::write(dir.join("l.lnd"), write_lnd(&landmarks.scaled(1000.0), "1")).unwrap();
+    std::fs::write(dir.join("l.csv"), csv(&landmarks)).unwrap();
+    let fit = |file: &str| {
+        bodyspace(&[
+            "align",
+            "--scan",
+            &s(&scan_path),
+            "--landmarks",
+            &s(&dir.join(file)),
+            "--out",
+            &s(&dir.join("fit.ply")),
+            "--max-iterations",
+            "40",
+        ])
+    };
+    let (lnd, csv) = (fit("l.lnd"), fit("l.csv"));
+    assert_eq!(lnd["units"], "metres");
+    let rms = |r: &serde_json::Value| r["quality"]["rms_mm"].as_f64().unwrap();
+    assert!(rms(&lnd) < 2.5, "{}", rms(&lnd));
+    // The .lnd keeps 3 decimals of a millimetre: the fits agree far below the printed digits.
+    assert!((rms(&lnd) - rms(&csv)).abs() < 0.01, "{} vs {}", rms(&lnd), rms(&csv));
+    assert_eq!(lnd["warp"]["used"], csv["warp"]["used"]);
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn any_frame_and_units_give_the_same_fit_in_the_template_frame() {
+    let (template, scan, landmarks) = subject();
+    let turn = |axis: Vector3<f64>, degrees: f64| {
+        Rotation3::from_axis_angle(&nalgebra::Unit::new_normalize(axis), degrees.to_radians())
+    };
+    // (name, rotation applied to the y-up body, units, offset in metres)
+    let frames = [
+        ("y-up m", Rotation3::identity(), Units::Metres, Vector3::zeros()),
+        (
+            "z-up mm",
+            turn(Vector3::x(), 90.0),
+            Units::Millimetres,
+            Vector3::new(0.3, -0.2, 0.0),
+        ),
+        (
+            "turned cm",
+            turn(Vector3::y(), 140.0),
+            Units::Centimetres,
+            Vector3::new(-1.0, 0.4, 2.0),
+        ),
+        (
+            "-x up m",
+            turn(Vector3::z(), 90.0),
+            Units::Metres,
+            Vector3::new(0.0, 0.0, 0.5),
+        ),
+    ];
+    let mut fits = Vec::new();
+    for (name, rotation, units, offset) in frames {
+        let k = 1.0 / units.scale_to_metres();
+        let moved = |p: &Point3<f64>| (rotation * p + offset) * k;
+        let input = SubjectInput {
+            name: name.to_string(),
+            scan: Mesh::new(
+                scan.positions.iter().map(moved).collect(),
+                scan.triangles.clone(),
+            ),
+            units: None,
+            given: Some(GivenLandmarks {
+                set: LandmarkSet {
+                    landmarks: landmarks
+                        .landmarks
+                        .iter()
+                        .map(|l| Landmark {
+                            name: l.name.clone(),
+                            position: moved(&l.position),
+                        })
+                        .collect(),
+                    ..LandmarkSet::default()
+                },
+                units: None,
+                file: String::new(),
+            }),
+        };
+        let fit = fit_subject(&template, None, &input, None, &options(), &mut ()).unwrap();
+        assert_eq!(fit.report.alignment.units, units, "{name}");
+        let rms = fit.report.quality.as_ref().unwrap().rms_mm.unwrap();
+        assert!(rms < 2.5, "{name}: RMS {rms} mm");
+        fits.push((name, fit.positions_in_template_frame()));
+    }
+    let (_, reference) = &fits[0];
+    let n = reference.len() as f64;
+    // Upright in the template's frame: the stature along y.
+    let height = reference.iter().map(|p| p.y).fold(f64::MIN, f64::max)
+        - reference.iter().map(|p| p.y).fold(f64::MAX, f64::min);
+    assert!((1.4..2.1).contains(&height), "stature {height} m");
+    for (name, fit) in &fits[1..] {
+        let d: Vec<f64> = fit.iter().zip(reference).map(|(a, b)| (a - b).norm()).collect();
+        let mean = d.iter().sum::<f64>() / n;
+        let worst = d.iter().copied().fold(0.0, f64::max);
+        eprintln!("{name}: {:.4} mm mean, {:.3} mm worst from the y-up fit", mean * 1e3, worst * 1e3);
+        assert!(mean < 1e-4 && worst < 2e-3, "{name}: {:.4} mm mean, {:.3} mm worst", mean * 1e3, worst * 1e3);
+    }
+}

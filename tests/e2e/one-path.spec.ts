@@ -1,0 +1,58 @@
+// One path for a subject (docs/subject.md): the same scan and CAESAR landmark file give the same
+// fit through `bodyspace align` (the native program), the app's single scan and the app's batch —
+// the RMS the page shows equals the command line's to the digits shown. The scans are what
+// `bodyspace synth` writes: z up, millimetres, `.lnd` in millimetres.
+import { execFileSync } from 'node:child_process';
+import { mkdtempSync, rmSync, writeFileSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
+import { expect, test } from '@playwright/test';
+import { dropFiles, waitForLoads } from './fixtures';
+import { shapeReady } from './steps';
+import { bodyspaceBinary, synthSubjects } from './synth';
+
+/** `bodyspace align` on the files, with the core's defaults: its report. */
+function alignNatively(scan: { name: string; bytes: Buffer }, landmarks: { name: string; bytes: Buffer }): { quality: { rms_mm: number }; landmarks: { source: string; used: number } } {
+  const dir = mkdtempSync(join(tmpdir(), 'bodyspace-one-path-'));
+  try {
+    writeFileSync(join(dir, scan.name), scan.bytes);
+    writeFileSync(join(dir, landmarks.name), landmarks.bytes);
+    const out = execFileSync(bodyspaceBinary(), ['align', '--scan', join(dir, scan.name), '--landmarks', join(dir, landmarks.name), '--out', join(dir, 'fit.ply')], {
+      encoding: 'utf8',
+      maxBuffer: 64 << 20,
+    });
+    return JSON.parse(out);
+  } finally {
+    rmSync(dir, { recursive: true, force: true });
+  }
+}
+
+test('the command line, the single scan and the batch give the same fit of the same files', async ({ page }) => {
+  test.setTimeout(420_000);
+  const files = synthSubjects(2, 31);
+  const scan = files.find((f) => f.name === 'scan_001.ply')!;
+  const lnd = files.find((f) => f.name === 'landmarks_001.lnd')!;
+  const native = alignNatively(scan, lnd);
+  expect(native.landmarks.source).toBe('checked');
+  const expected = native.quality.rms_mm.toFixed(2);
+
+  await page.goto('./?debug');
+  await expect(page.locator('body')).toHaveAttribute('data-template-ready', 'true', { timeout: 60_000 });
+  await shapeReady(page);
+
+  // The single scan: dropped with its landmark file, aligned with the panel's defaults.
+  await dropFiles(page, [scan, lnd]);
+  await waitForLoads(page, 2);
+  await expect(page.locator('body')).toHaveAttribute('data-rbf-state', 'done', { timeout: 60_000 });
+  await page.getByTestId('align-run').click();
+  await expect(page.locator('body')).toHaveAttribute('data-align-state', 'done', { timeout: 240_000 });
+  const single = Number(await page.getByTestId('align-rms').getAttribute('data-rms-mm'));
+  expect(single.toFixed(2)).toBe(expected);
+
+  // The batch: both subjects dropped at once, each aligned in a pool worker.
+  await dropFiles(page, files);
+  await expect(page.locator('body')).toHaveAttribute('data-batch-total', '2');
+  await expect(page.locator('body')).toHaveAttribute('data-batch-finished', '2', { timeout: 300_000 });
+  const row = page.locator('[data-testid="batch-row"][data-subject="scan_001"]');
+  await expect(row.getByTestId('batch-rms')).toHaveText(expected);
+});
