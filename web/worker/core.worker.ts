@@ -98,7 +98,7 @@ self.onmessage = async (event: MessageEvent<CoreRequest>) => {
         const id = request.id;
         const aligned = runAlignFiles(request.scan, request.landmarks, request.resolution, request.options, (event) => post({ id, type: 'event', event }));
         const result: AlignResult = { ...aligned, wasmMemoryBytes: (await ready).memory.buffer.byteLength };
-        post({ id, type: 'result', result }, [result.positions.buffer, result.normals.buffer, result.distances.buffer]);
+        post({ id, type: 'result', result }, [result.positions.buffer, result.normals.buffer, result.distances.buffer, result.heat.colours.buffer]);
         break;
       }
       case 'estimateLandmarks': {
