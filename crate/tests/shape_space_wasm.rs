@@ -192,3 +192,72 @@ fn statismo_arrays_round_trip_and_a_segment_is_refused() {
     assert!(load_statismo_model(&head, "head.h5").is_err());
     assert!(space.statismo_arrays("tail").is_err());
 }
+
+/// A reading of the mean body from `measure_json`.
+fn reading(space: &ShapeSpace, name: &str) -> f64 {
+    let json = space.measure_json().unwrap_or_else(|_| panic!("measure"));
+    let v: serde_json::Value = serde_json::from_str(&json).unwrap_or_else(|e| panic!("{e}"));
+    v.as_array()
+        .and_then(|a| a.iter().find(|r| r["name"] == name))
+        .and_then(|r| r["value"].as_f64())
+        .unwrap_or_else(|| panic!("no {name} in {json}"))
+}
+
+#[wasm_bindgen_test]
+fn fits_in_mixed_frames_and_units_build_the_upright_model() {
+    // The app's batch hands over fits in their scans' frames: here y up in metres, CAESAR's
+    // z up in millimetres, turned in centimetres and −x up. The model is the all-y-up one.
+    let n = 5;
+    let upright = subjects(n);
+    let per_body = upright.len() / n;
+    let (c, s) = (2.2f64.cos(), 2.2f64.sin());
+    let mixed: Vec<f32> = upright
+        .chunks_exact(per_body)
+        .enumerate()
+        .flat_map(|(k, body)| {
+            body.chunks_exact(3)
+                .flat_map(move |p| {
+                    let (x, y, z) = (p[0] as f64, p[1] as f64, p[2] as f64);
+                    let q = match k % 4 {
+                        0 => [x, y, z],
+                        1 => [1e3 * x + 50.0, -1e3 * z, 1e3 * y + 20.0],
+                        2 => [
+                            100.0 * (c * x + s * z) + 9.0,
+                            100.0 * y,
+                            100.0 * (c * z - s * x),
+                        ],
+                        _ => [-y, x, z + 0.3],
+                    };
+                    q.map(|v| v as f32)
+                })
+                .collect::<Vec<f32>>()
+        })
+        .collect();
+    let names = serde_json::to_string(&(0..n).map(|i| format!("s{i}")).collect::<Vec<_>>())
+        .unwrap_or_default();
+    let a = build_shape_model(&upright, n as u32, &names, 1.0, false)
+        .unwrap_or_else(|_| panic!("build"));
+    let b =
+        build_shape_model(&mixed, n as u32, &names, 1.0, false).unwrap_or_else(|_| panic!("build"));
+    let (sa, sb) = (stature(&a), stature(&b));
+    assert!((sa - sb).abs() < 1e-3, "stature {sa} vs {sb}");
+    assert!((1.4..2.1).contains(&sb), "stature {sb}");
+    let (ha, hb) = (reading(&a, "hip_girth"), reading(&b, "hip_girth"));
+    assert!((ha - hb).abs() < 1e-3, "hip girth {ha} vs {hb}");
+    let info = |space: &ShapeSpace| -> serde_json::Value {
+        serde_json::from_str(&space.info_json().unwrap_or_else(|_| panic!("info")))
+            .unwrap_or_else(|e| panic!("{e}"))
+    };
+    let (ia, ib) = (info(&a), info(&b));
+    let variances = |i: &serde_json::Value| -> Vec<f64> {
+        i["parts"][0]["variances"]
+            .as_array()
+            .map(|v| v.iter().filter_map(|x| x.as_f64()).collect())
+            .unwrap_or_default()
+    };
+    let (va, vb) = (variances(&ia), variances(&ib));
+    assert!(!va.is_empty() && va.len() == vb.len());
+    for (x, y) in va.iter().zip(&vb) {
+        assert!((x - y).abs() <= 1e-5 * va[0], "λ {x} vs {y}");
+    }
+}
