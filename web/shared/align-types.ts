@@ -199,7 +199,7 @@ export interface LandmarkPolicyReport {
 }
 
 /** From the scan's frame and units into the template's: x_t = R·(s·x) + t (`subject/frame.rs`). */
-export interface TemplateFrame {
+export interface ToTemplate {
   scale_to_metres: number;
   rotation: [number, number, number][];
   translation: [number, number, number];
@@ -209,7 +209,7 @@ export interface TemplateFrame {
 export interface SubjectReport extends AlignReport {
   landmarks: LandmarkPolicyReport;
   quality: QualityReport | null;
-  to_template: TemplateFrame;
+  to_template: ToTemplate;
 }
 
 /** The fitted template and the per-vertex distance (metres) to the scan. */

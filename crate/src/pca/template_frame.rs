@@ -34,7 +34,12 @@ pub struct TemplateFrame {
 /// the shape in metres onto `rest` (the template's rest shape). Shapes: `shape`, `rest` both #V
 /// points in template vertex order; the identity map in metres when they differ in length.
 pub fn template_frame(shape: &[Point3<f64>], rest: &[Point3<f64>]) -> TemplateFrame {
-    let units = detect_units(bounding_extent(shape));
+    template_frame_in(shape, rest, detect_units(bounding_extent(shape)))
+}
+
+/// [`template_frame`] for a shape whose units are known (a fit of a scan whose units were given
+/// or detected on the scan itself).
+pub fn template_frame_in(shape: &[Point3<f64>], rest: &[Point3<f64>], units: Units) -> TemplateFrame {
     let u = units.scale_to_metres();
     let metres: Vec<Point3<f64>> = shape.iter().map(|p| Point3::from(p.coords * u)).collect();
     let rigid = rigid_align(&metres, rest, false);

@@ -4,7 +4,7 @@
 use nalgebra::Point3;
 
 use super::error::SubjectError;
-use super::frame::TemplateFrame;
+use super::frame::ToTemplate;
 use super::input::{read_subject, SubjectInput};
 use super::options::SubjectOptions;
 use super::policy::{subject_landmarks, PriorEstimate};
@@ -117,16 +117,9 @@ pub fn fit_subject(
         );
         quality
     });
-    let to_template = TemplateFrame::of_fit(
-        &alignment.positions,
-        &base.mesh().positions,
-        alignment.scale_to_metres,
-    )
-    .unwrap_or_else(|| TemplateFrame {
-        scale_to_metres: alignment.scale_to_metres,
-        rotation: [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]],
-        translation: [0.0; 3],
-    });
+    let to_m = alignment.scale_to_metres;
+    let in_scan_units: Vec<_> = alignment.positions.iter().map(|p| p / to_m).collect();
+    let to_template = ToTemplate::of_fit(&in_scan_units, &base.mesh().positions, units);
     let report = SubjectReport {
         landmarks: landmarks.report,
         quality,

@@ -7,8 +7,9 @@
 //! * [`policy`] — [`subject_landmarks`]: the landmark policy. A nearly full file is checked and
 //!   its suspicious landmarks left out; a partial file is filled in by the estimate, a scan
 //!   without a file gets the estimate's 73.
-//! * [`frame`] — [`TemplateFrame`]: the rigid motion and unit scale from the scan's frame into the
-//!   template's (upright, y up, metres, facing +z), where bodies are compared.
+//! * [`frame`] — [`ToTemplate`]: the unit scale and rigid motion from the scan's frame into the
+//!   template's (upright, y up, metres, facing +z), where bodies are compared — the shape
+//!   model's own rule (`pca/template_frame.rs`), recorded with the fit.
 //! * [`fit`] — [`fit_subject`]: RBF warp and fine alignment ([`crate::align::align_scan`]), the
 //!   quality check, the frame → [`SubjectFit`] with its [`SubjectReport`] (`report.rs`).
 //! * [`SubjectOptions`] (`options.rs`): every choice of the path, with its default;
@@ -26,7 +27,7 @@ pub mod report;
 
 pub use error::SubjectError;
 pub use fit::{fit_subject, fit_subject_files, SubjectFit};
-pub use frame::TemplateFrame;
+pub use frame::ToTemplate;
 pub use input::{read_subject, GivenLandmarks, SubjectInput};
 pub use options::SubjectOptions;
 pub use policy::{subject_landmarks, LandmarkSource, PriorEstimate, SubjectLandmarks};

@@ -5,7 +5,7 @@
 
 use serde::Serialize;
 
-use super::frame::TemplateFrame;
+use super::frame::ToTemplate;
 use super::policy::LandmarkSource;
 use crate::align::{AlignmentReport, QualityReport};
 use crate::estimate::SuspiciousLandmark;
@@ -36,7 +36,7 @@ pub struct SubjectReport {
     /// The quality check of the fit (`align/quality.rs`); absent after the warp alone.
     pub quality: Option<QualityReport>,
     /// From the scan's frame and units into the template's.
-    pub to_template: TemplateFrame,
+    pub to_template: ToTemplate,
     #[serde(flatten)]
     pub alignment: AlignmentReport,
 }
