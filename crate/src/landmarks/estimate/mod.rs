@@ -22,6 +22,7 @@ pub mod arm_swing;
 pub mod bent_arm;
 pub mod buttocks;
 pub mod candidates;
+pub mod check;
 pub mod confidence;
 pub mod error;
 pub mod expected;
@@ -37,6 +38,7 @@ pub mod suspicious;
 pub mod tick;
 pub mod typical_error;
 
+pub use check::{check_given, GivenCheck};
 pub use error::EstimateError;
 pub use frame::FrameReport;
 pub use params::EstimateParams;
