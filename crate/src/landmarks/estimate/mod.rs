@@ -12,7 +12,9 @@
 //! * [`hand`] — the hand's pose about the wrist, from the scan's surface beyond it.
 //! * [`matching`] — closest compatible scan points, the ICP energy.
 //! * [`suspicious`] — [`flag_suspicious`]: given landmarks far from where they are expected;
-//!   [`expected`] — where: from the other given landmarks of the part, or from the fit.
+//!   [`expected`] — where: from the other given landmarks of the part, or from the fit;
+//!   [`check`] — [`check_given`]: a nearly full given file judged on its own, each landmark
+//!   against the other given landmarks of its rigid groups (no fit).
 //! * [`confidence`] — the typical error of each landmark (`typical_error`) and the fit's residual.
 //! * [`tick`] — progress and cancel through the caller's `AlignObserver`.
 //! * [`EstimateParams`] (`params.rs`), [`EstimateReport`] (`report.rs`), [`EstimateError`]
