@@ -540,12 +540,8 @@ mod tests {
     fn every_group_name_is_a_caesar_landmark_and_every_landmark_has_a_group() {
         let groups = rigid_groups();
         assert_eq!(groups.len(), 3 + 2 * 6);
-        for i in 0..CAESAR_LANDMARKS.len() {
-            assert!(
-                groups.iter().any(|g| g.contains(&i)),
-                "{}",
-                CAESAR_LANDMARKS[i].name
-            );
+        for (i, l) in CAESAR_LANDMARKS.iter().enumerate() {
+            assert!(groups.iter().any(|g| g.contains(&i)), "{}", l.name);
         }
     }
 }
