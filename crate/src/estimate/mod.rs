@@ -16,7 +16,9 @@
 //!   template's hands: `template::hand`).
 //! * [`matching`] — closest compatible scan points, the ICP energy.
 //! * [`suspicious`] — [`flag_suspicious`]: given landmarks far from where they are expected;
-//!   [`expected`] — where: from the other given landmarks of the part, or from the fit.
+//!   [`expected`] — where: from the other given landmarks of the part, or from the fit;
+//!   [`check`] — [`check_given`]: a nearly full given file judged on its own, each landmark
+//!   against the other given landmarks of its rigid groups (no fit).
 //! * [`confidence`] — the typical error of each landmark (`typical_error`) and the fit's residual.
 //! * [`tick`] — progress and cancel through the caller's `AlignObserver`.
 //! * [`params`] — [`EstimateParams`] and the parameter structs it holds (every tuning number,
@@ -27,6 +29,7 @@ pub mod arm_swing;
 pub mod bent_arm;
 pub mod buttocks;
 pub mod candidates;
+pub mod check;
 pub mod confidence;
 pub mod error;
 pub mod expected;
@@ -42,6 +45,7 @@ pub mod suspicious;
 pub mod tick;
 pub mod typical_error;
 
+pub use check::{check_given, GivenCheck};
 pub use error::EstimateError;
 pub use frame::FrameReport;
 pub use params::EstimateParams;

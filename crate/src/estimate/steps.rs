@@ -22,6 +22,7 @@ use std::borrow::Cow;
 use nalgebra::Point3;
 
 use super::candidates::{even_sample, fit_similarity, prefer_torso, FittedCandidate};
+use super::check::{judge_given, CheckParams, NEARLY_FULL};
 use super::confidence::{confidence, neighbourhoods, residual};
 use super::error::EstimateError;
 use super::expected::expected_positions;
@@ -375,13 +376,16 @@ pub fn estimate_landmarks(
     })
 }
 
-/// The given landmarks (CAESAR index, position in scan units) that look wrong: each predicted
-/// from the other given landmarks of its part (`landmark_rest`: the template's landmark
-/// vertices at rest, `landmark_part`: their parts), or else taken from `fit_predicted` (scan
-/// units), and flagged beyond the parameters' distances. Twice: a wrong landmark spoils the
-/// prediction of the others of its part, so the second pass predicts from the landmarks the
-/// first did not flag. `to_m`: scan units → metres. Cheap (no fit): an edit can be re-checked
-/// against the last estimate's `predicted` and `part`.
+/// The given landmarks (CAESAR index, position in scan units) that look wrong. A nearly full
+/// set ([`NEARLY_FULL`] or more) is judged on its own by the check of a given file
+/// ([`judge_given`], `check.rs`: each landmark against the other given landmarks of its rigid
+/// groups, pose and all). A smaller one: each predicted from the other given landmarks of its
+/// part (`landmark_rest`: the template's landmark vertices at rest, `landmark_part`: their
+/// parts), or else taken from `fit_predicted` (scan units), and flagged beyond the parameters'
+/// distances; twice, as a wrong landmark spoils the prediction of the others of its part, so
+/// the second pass predicts from the landmarks the first did not flag. `to_m`: scan units →
+/// metres. Cheap (no fit): an edit can be re-checked against the last estimate's `predicted`
+/// and `part`.
 pub fn flag_given(
     landmark_rest: &[Point3<f64>],
     landmark_part: &[usize],
@@ -390,9 +394,12 @@ pub fn flag_given(
     params: &EstimateParams,
     to_m: f64,
 ) -> Vec<SuspiciousLandmark> {
+    if given.len() >= NEARLY_FULL {
+        return judge_given(landmark_rest, given, to_m * 1000.0, &CheckParams::default()).flagged;
+    }
     let flag = |trusted: &[(usize, Point3<f64>)]| {
         let expected = expected_positions(landmark_rest, landmark_part, trusted, fit_predicted);
-        let thresholds: Vec<f64> = expected
+        let expected: Vec<_> = expected
             .iter()
             .map(|e| {
                 let metres = if e.from_given {
@@ -400,11 +407,10 @@ pub fn flag_given(
                 } else {
                     params.suspicious_distance_fit
                 };
-                metres / to_m
+                Some((e.position, metres / to_m))
             })
             .collect();
-        let expected: Vec<Point3<f64>> = expected.iter().map(|e| e.position).collect();
-        flag_suspicious(given, &expected, &thresholds, to_m * 1000.0)
+        flag_suspicious(given, &expected, to_m * 1000.0)
     };
     let first = flag(given);
     let trusted: Vec<(usize, Point3<f64>)> = given

@@ -41,52 +41,43 @@ pub struct SuspiciousLandmark {
     pub expected: [f64; 3],
 }
 
-/// Flags the `given` landmarks (CAESAR index, position) lying farther than `thresholds[i]` from
-/// `predicted[i]` (both 73, CAESAR order). Positions and thresholds are in the scan's units;
-/// `to_mm` converts a scan length to millimetres for the report.
+/// Flags the `given` landmarks (CAESAR index, position) lying farther than their threshold from
+/// where they are expected: `expected[i]` (73, CAESAR order) is the expected position and the
+/// threshold, both in the scan's units, or `None` where landmark `i` cannot be judged. `to_mm`
+/// converts a scan length to millimetres: distances are reported in mm, a coordinate in the
+/// scan's units with the digits that tell 0.1 mm apart ([`coordinate_text`]).
 pub fn flag_suspicious(
     given: &[(usize, Point3<f64>)],
-    predicted: &[Point3<f64>],
-    thresholds: &[f64],
+    expected: &[Option<(Point3<f64>, f64)>],
     to_mm: f64,
 ) -> Vec<SuspiciousLandmark> {
     let position_of = |index: usize| given.iter().find(|(i, _)| *i == index).map(|(_, p)| *p);
+    let near = |p: &Point3<f64>, j: usize| expected[j].is_some_and(|(e, t)| (p - e).norm() <= t);
     let mut flagged = Vec::new();
     for &(index, p) in given {
-        let expected = predicted[index];
-        let threshold = thresholds[index];
-        let error = p - expected;
+        let Some((expected_here, threshold)) = expected[index] else {
+            continue;
+        };
+        let error = p - expected_here;
         let distance = error.norm();
         if distance <= threshold || distance.is_nan() {
             continue;
         }
         let name = CAESAR_LANDMARKS[index].name;
-        let (kind, suggestion) = if let Some(partner) = partner_of(index).filter(|&j| {
-            position_of(j).is_some_and(|q| {
-                (p - predicted[j]).norm() <= thresholds[j] && (q - expected).norm() <= threshold
-            })
-        }) {
+        let (kind, suggestion) = if let Some(partner) = partner_of(index)
+            .filter(|&j| near(&p, j) && position_of(j).is_some_and(|q| near(&q, index)))
+        {
             let other = CAESAR_LANDMARKS[partner].name;
             (
                 SuspicionKind::Swapped,
                 format!("{name} and {other} look swapped: exchange their positions"),
             )
-        } else if let Some(axis) = lone_axis(&error, threshold) {
-            let value = [p.x, p.y, p.z][axis];
-            let wanted = [expected.x, expected.y, expected.z][axis];
-            let axis = ['x', 'y', 'z'][axis];
-            (
-                SuspicionKind::Coordinate,
-                format!("check the {axis} coordinate: it is {value:.1}, the others suggest about {wanted:.1}"),
-            )
-        } else if let Some(other) = (0..predicted.len())
+        } else if let Some(other) = (0..expected.len())
             .filter(|&j| j != index)
-            .min_by(|&a, &b| {
-                (p - predicted[a])
-                    .norm()
-                    .total_cmp(&(p - predicted[b]).norm())
-            })
-            .filter(|&j| (p - predicted[j]).norm() <= threshold / 2.0)
+            .filter_map(|j| expected[j].map(|(e, _)| (j, (p - e).norm())))
+            .min_by(|a, b| a.1.total_cmp(&b.1))
+            .filter(|&(_, d)| d <= threshold / 2.0)
+            .map(|(j, _)| j)
         {
             (
                 SuspicionKind::OtherLandmark,
@@ -95,11 +86,21 @@ pub fn flag_suspicious(
                     CAESAR_LANDMARKS[other].name
                 ),
             )
+        } else if let Some(axis) = lone_axis(&error) {
+            let (value, wanted) = coordinate_text(p[axis], expected_here[axis], to_mm);
+            let apart = error[axis].abs() * to_mm;
+            let axis = ['x', 'y', 'z'][axis];
+            (
+                SuspicionKind::Coordinate,
+                format!(
+                    "check the {axis} coordinate: it is {value}, the others suggest about {wanted} ({apart:.0} mm apart)"
+                ),
+            )
         } else {
             (
                 SuspicionKind::Far,
                 format!(
-                    "{:.0} mm from where the scan puts it: re-place it or leave it out",
+                    "{:.0} mm from where the other landmarks put it: re-place it or leave it out",
                     distance * to_mm
                 ),
             )
@@ -109,10 +110,31 @@ pub fn flag_suspicious(
             distance_mm: distance * to_mm,
             kind,
             suggestion,
-            expected: expected.into(),
+            expected: expected_here.into(),
         });
     }
     flagged
+}
+
+/// Two coordinates in the scan's units (`to_mm`: units → mm), named by their unit when it is
+/// mm, cm or m, with the decimals that resolve 0.1 mm (mm: 1, cm: 2, m: 4) and more while the
+/// two would print alike: "1234.5 mm", "1.2345 m".
+pub fn coordinate_text(value: f64, wanted: f64, to_mm: f64) -> (String, String) {
+    let unit = [(1.0, " mm"), (10.0, " cm"), (1000.0, " m")]
+        .iter()
+        .find(|(k, _)| (to_mm / k - 1.0).abs() < 1e-9)
+        .map_or("", |(_, u)| u);
+    let mut decimals = (to_mm / 0.1).log10().ceil().clamp(0.0, 12.0) as usize;
+    loop {
+        let (a, b) = (
+            format!("{value:.decimals$}"),
+            format!("{wanted:.decimals$}"),
+        );
+        if a != b || decimals >= 12 {
+            return (format!("{a}{unit}"), format!("{b}{unit}"));
+        }
+        decimals += 1;
+    }
 }
 
 /// The CAESAR index of the other side's landmark (`Lt. X` ↔ `Rt. X`).
@@ -128,13 +150,15 @@ pub fn partner_of(index: usize) -> Option<usize> {
     CAESAR_LANDMARKS.iter().position(|l| l.name == other)
 }
 
-/// The one axis that carries the error when the other two are within `threshold / 2`.
-fn lone_axis(error: &nalgebra::Vector3<f64>, threshold: f64) -> Option<usize> {
+/// The one axis that carries the error: the other two components together at most half of it.
+fn lone_axis(error: &nalgebra::Vector3<f64>) -> Option<usize> {
     let k = error.iamax();
     let others = (0..3)
         .filter(|&j| j != k)
-        .all(|j| error[j].abs() <= threshold / 2.0);
-    others.then_some(k)
+        .map(|j| error[j] * error[j])
+        .sum::<f64>()
+        .sqrt();
+    (others <= error[k].abs() / 2.0).then_some(k)
 }
 
 #[cfg(test)]
@@ -180,7 +204,8 @@ mod tests {
         given[crotch].1 = pred[index("Suprasternale")] + nalgebra::Vector3::new(5.0, 5.0, 5.0);
         let near = index("Rt. Gonion");
         given[near].1.x += 20.0;
-        let flags = flag_suspicious(&given, &pred, &[60.0; 73], 1.0);
+        let expected: Vec<_> = pred.iter().map(|p| Some((*p, 60.0))).collect();
+        let flags = flag_suspicious(&given, &expected, 1.0);
         let kinds: Vec<(&str, SuspicionKind)> =
             flags.iter().map(|f| (f.name.as_str(), f.kind)).collect();
         assert!(
@@ -207,5 +232,25 @@ mod tests {
             "{}",
             sellion.suggestion
         );
+    }
+
+    #[test]
+    fn a_coordinate_is_printed_in_the_scan_units_never_two_alike() {
+        assert_eq!(
+            coordinate_text(1234.52, 1204.0, 1.0),
+            ("1234.5 mm".to_string(), "1204.0 mm".to_string())
+        );
+        assert_eq!(
+            coordinate_text(-0.1234, -0.0931, 1000.0),
+            ("-0.1234 m".to_string(), "-0.0931 m".to_string())
+        );
+        assert_eq!(
+            coordinate_text(12.3, 15.3, 10.0),
+            ("12.30 cm".to_string(), "15.30 cm".to_string())
+        );
+        // Closer than the scan's precision: more digits until they differ.
+        let (a, b) = coordinate_text(1.000_01, 1.000_02, 1000.0);
+        assert_ne!(a, b);
+        assert_eq!((a.as_str(), b.as_str()), ("1.00001 m", "1.00002 m"));
     }
 }
