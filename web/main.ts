@@ -87,6 +87,7 @@ acceptDrops((files) => void open(files));
 Promise.all([client.call({ type: 'version' }), client.call({ type: 'caesarNames' }), alignClient.call({ type: 'alignDefaults' })])
   .then(([version, names, defaults]) => {
     warpStep.panel.setDefaults(defaults);
+    landmarkStep.nearlyFull = defaults.subject.nearly_full;
     caesarNames = names;
     landmarkStep.show(null);
     topBar.setStatus(`Core ${version} ready. Drop a scan and its landmarks anywhere on the page.`);

@@ -1,5 +1,5 @@
 //! False alarms, detection and cost of the check of a given landmark file
-//! (`landmarks/estimate/check.rs`, [`check_given`]) on the correct landmark files of
+//! (`estimate/check.rs`, [`check_given`]) on the correct landmark files of
 //! `bodyspace synth` populations.
 //!
 //! `cargo run --release --example given_check -- DIR... [--metres] [--residuals] [--params JSON]`
@@ -19,12 +19,12 @@ use std::path::Path;
 use std::time::Instant;
 
 use bodyspace::io::read_landmarks;
-use bodyspace::landmarks::estimate::check::{
+use bodyspace::estimate::check::{
     judge_given, predict_given, rigid_groups, tolerance_mm, CheckParams,
 };
-use bodyspace::landmarks::estimate::steps::{given_landmarks, landmark_rest};
-use bodyspace::landmarks::estimate::suspicious::partner_of;
-use bodyspace::landmarks::estimate::SuspicionKind;
+use bodyspace::estimate::steps::{given_landmarks, landmark_rest};
+use bodyspace::estimate::suspicious::partner_of;
+use bodyspace::estimate::SuspicionKind;
 use bodyspace::landmarks::{LandmarkSet, CAESAR_LANDMARKS};
 use bodyspace::template::Template;
 

@@ -1,4 +1,4 @@
-//! The check of a given landmark file (`landmarks/estimate/check.rs`, `check_given`) end to end on
+//! The check of a given landmark file (`estimate/check.rs`, `check_given`) end to end on
 //! the correct landmark files of synthetic `held-out` subjects (placement noise included, CAESAR
 //! frame, millimetres and metres): few flags on correct files; a swapped Lt./Rt. pair and a
 //! 60 mm typo in one coordinate found (a 30 mm one is found about one time in three on these
@@ -9,7 +9,7 @@
 #[path = "synth_support/mod.rs"]
 mod synth_support;
 
-use bodyspace::landmarks::estimate::{check_given, SuspicionKind};
+use bodyspace::estimate::{check_given, SuspicionKind};
 use bodyspace::landmarks::LandmarkSet;
 use bodyspace::synth::{
     population_subject, LandmarkParams, PopulationProfile, ScannerParams, SubjectId, Units,

@@ -21,9 +21,6 @@ import { LandmarkEdits } from './landmark-edits';
 import { estimateInput, scanInput, scanTransfer } from './scan-input';
 import type { Session } from './session';
 
-/** A landmark file with at least this many of the 73 is nearly full: not filled in by itself. */
-export const NEARLY_FULL = 64;
-
 /** Quiet time (ms) after an edit before the set is checked for suspicious landmarks. */
 const CHECK_DELAY_MS = 400;
 
@@ -48,6 +45,11 @@ export class LandmarkStep {
   private generation = 0;
   /** The check waiting for a pause in the edits (a burst of clicks or undos is checked once). */
   private checkTimer: ReturnType<typeof setTimeout> | null = null;
+  /**
+   * A landmark file with at least this many of the 73 is nearly full: checked, not filled in by
+   * itself — the core's rule (`SubjectOptions.nearly_full`, from `alignDefaults`).
+   */
+  nearlyFull = Number.NaN;
 
   /**
    * `client` writes the exports; `estimator` is the landmark worker's client (estimate and check).
@@ -107,14 +109,14 @@ export class LandmarkStep {
 
   /**
    * After a load: a scan without landmarks, or with a partial file (fewer than
-   * `NEARLY_FULL` CAESAR landmarks), gets an estimate of the rest, the given ones kept as given
+   * `nearlyFull` CAESAR landmarks), gets an estimate of the rest, the given ones kept as given
    * (the estimate also flags the suspicious ones); a nearly full file (a CAESAR file missing a
    * few) is only checked: its missing landmarks stay absent, the warp runs without them, and
    * "Estimate" fills them in on request.
    */
   afterLoad(): void {
     if (!this.session.scan) return;
-    if ((this.session.edits?.placed().names.length ?? 0) >= NEARLY_FULL) this.check();
+    if ((this.session.edits?.placed().names.length ?? 0) >= this.nearlyFull) this.check();
     else void this.estimateLandmarks();
   }
 

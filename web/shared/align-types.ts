@@ -32,6 +32,8 @@ export interface AlignDefaults {
     rough_only: boolean;
   };
   kernels: Kernel[];
+  /** The core's `SubjectOptions` defaults beyond the parameters. */
+  subject: { check_landmarks: boolean; nearly_full: number };
 }
 
 /** The kernel's parameter, or null for the thin-plate spline. */

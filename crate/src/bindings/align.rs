@@ -1,10 +1,11 @@
-//! `alignDefaults`, `ScanWithLandmarks`, `rbfWarp` and `alignScan`: the core's alignment pipeline
-//! ([`crate::align::align_scan`]) on a scan sent from the page; `exportMesh` writes a fitted
-//! template as PLY or OBJ. Everything crosses in metres; the scan and the landmarks are checked
-//! once, when the `ScanWithLandmarks` is made, then trusted by the core. Parameters cross as one
-//! JSON object of the core's [`AlignParams`] (absent fields keep the core's defaults), progress as
-//! one object per iteration (the core's [`Progress`]), reports as the core's
-//! [`crate::align::AlignmentReport`] in JSON.
+//! `alignDefaults`, `ScanWithLandmarks`, `rbfWarp` and `exportMesh`: the core's defaults, the
+//! RBF warp alone (paper §3.1, [`crate::align::align_scan`] with `rough_only`) on a scan sent from
+//! the page — the whole path to a fit is `subject.rs` — and a fitted template written as PLY or
+//! OBJ. Everything crosses in metres; the scan and the landmarks are checked once, when the
+//! `ScanWithLandmarks` is made, then trusted by the core. Parameters cross as one JSON object of
+//! the core's [`AlignParams`] (absent fields keep the core's defaults), progress as one object per
+//! iteration (the core's [`Progress`]), reports as the core's [`crate::align::AlignmentReport`]
+//! in JSON.
 
 use std::ops::ControlFlow;
 
@@ -24,7 +25,8 @@ use crate::mesh::Mesh;
 use crate::rbf::Kernel;
 
 /// The core's defaults as JSON: `{params: AlignParams, kernels: [Kernel with its default
-/// parameter, one per kernel]}` — the one source of the app's default settings.
+/// parameter, one per kernel], subject: SubjectOptions}` — the one source of the app's default
+/// settings (the landmark policy's `nearly_full` among them).
 #[wasm_bindgen(js_name = alignDefaults)]
 pub fn align_defaults() -> Result<String, JsError> {
     let kernels: Vec<Kernel> = ["thin-plate", "gaussian", "multiquadric"]
@@ -34,6 +36,7 @@ pub fn align_defaults() -> Result<String, JsError> {
     serde_json::to_string(&json!({
         "params": AlignParams::default(),
         "kernels": kernels,
+        "subject": crate::subject::SubjectOptions::default(),
     }))
     .map_err(|e| JsError::new(&e.to_string()))
 }

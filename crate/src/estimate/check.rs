@@ -164,7 +164,7 @@ pub const RIGID_GROUPS: [&[&str]; 9] = [
 ];
 
 /// The check of a given set: the suspicious landmarks, and the given ones it could not judge.
-#[derive(Debug, Clone, PartialEq, Serialize)]
+#[derive(Debug, Clone, Default, PartialEq, Serialize)]
 pub struct GivenCheck {
     /// The suspicious given landmarks, each with its distance (mm), kind and suggestion.
     pub flagged: Vec<SuspiciousLandmark>,

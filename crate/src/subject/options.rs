@@ -7,9 +7,7 @@ use serde::{Deserialize, Serialize};
 
 use crate::align::{AlignParams, QualityThresholds};
 
-/// A landmark file with at least this many of the 73 CAESAR landmarks is nearly full (a CAESAR
-/// file missing a few): it is checked, not filled in; its missing landmarks stay absent.
-pub const NEARLY_FULL: usize = 64;
+pub use crate::estimate::check::NEARLY_FULL;
 
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(default)]
@@ -20,7 +18,9 @@ pub struct SubjectOptions {
     pub check_landmarks: bool,
     /// When a fit is flagged (`align/quality.rs`).
     pub thresholds: QualityThresholds,
-    /// Given landmarks at or above this count are checked, not filled in ([`NEARLY_FULL`]).
+    /// A landmark file with at least this many of the 73 CAESAR landmarks is nearly full (a
+    /// CAESAR file missing a few): it is checked, not filled in, and its missing landmarks stay
+    /// absent. Default [`NEARLY_FULL`], 64.
     pub nearly_full: usize,
 }
 

@@ -1,8 +1,8 @@
 //! The landmark policy, one rule for every path: which landmarks the warp of a subject uses.
 //!
 //! 1. Given landmarks are checked (unless the options say not to): those far from where the other
-//!    given landmarks of their rigid part put them — a swapped Lt./Rt. pair, a typo, a landmark on
-//!    the wrong part — are left out, with the reason ([`check_given`]).
+//!    given landmarks of their rigid groups put them — a swapped Lt./Rt. pair, a typo, a landmark
+//!    on the wrong part — are left out, with the reason ([`check_given`], no fit of the scan).
 //! 2. A nearly full set (at least [`super::options::NEARLY_FULL`] of the 73) is used as checked:
 //!    its missing landmarks stay absent and the warp runs without them.
 //! 3. A partial set, or none, is filled in by the landmark estimate
@@ -10,22 +10,19 @@
 //!    exactly as given. A caller that already ran that estimate on this scan with these landmarks
 //!    (the app's landmark editor) hands its result in as a [`PriorEstimate`] instead.
 
-use nalgebra::Point3;
 use serde::Serialize;
 
 use super::error::SubjectError;
 use super::options::SubjectOptions;
 use super::report::LandmarkPolicyReport;
 use crate::align::AlignObserver;
-use crate::template::parts::{dominant_part, parts};
 use crate::estimate::{
-    estimate_landmarks, flag_given, given_landmarks, landmark_rest, EstimateInput, EstimateParams,
-    SuspiciousLandmark,
+    check_given, estimate_landmarks, given_landmarks, EstimateInput, EstimateParams,
 };
 use crate::landmarks::LandmarkSet;
 use crate::mesh::units::Units;
 use crate::mesh::Mesh;
-use crate::template::{Resolution, Template};
+use crate::template::Template;
 
 /// Where a subject's landmarks came from.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
@@ -72,11 +69,10 @@ pub fn subject_landmarks(
     observer: &mut dyn AlignObserver,
 ) -> Result<SubjectLandmarks, SubjectError> {
     let given_count = given_landmarks(given).len();
-    let left_out = if options.check_landmarks && given_count > 0 {
-        check_given(template, given, units)
-    } else {
-        Vec::new()
-    };
+    let check = (options.check_landmarks && given_count > 0)
+        .then(|| check_given(template, given, 1e3 * units.scale_to_metres()))
+        .unwrap_or_default();
+    let left_out = check.flagged;
     let trusted = LandmarkSet {
         landmarks: given
             .landmarks
@@ -137,40 +133,11 @@ pub fn subject_landmarks(
             file: file.to_string(),
             given: given_count,
             left_out,
+            unjudged: check.unjudged,
             estimated,
             used: given_landmarks(&set).len(),
             estimate: estimate_report,
         },
         set,
     })
-}
-
-/// The given landmarks (scan frame and `units`) that look wrong: each predicted from the other
-/// given landmarks of its rigid part, flagged beyond the estimate's suspicious distance. Needs
-/// no fit of the scan: a part with too few given landmarks to predict from is not judged.
-pub fn check_given(template: &Template, given: &LandmarkSet, units: Units) -> Vec<SuspiciousLandmark> {
-    let base;
-    let template = match template.resolution() {
-        Resolution::Base => template,
-        _ => {
-            base = template.at_resolution(Resolution::Base);
-            &base
-        }
-    };
-    let rest = landmark_rest(template);
-    let parts = parts(template);
-    let landmark_part: Vec<usize> = template
-        .landmark_vertices()
-        .iter()
-        .map(|(_, v)| dominant_part(&parts, *v))
-        .collect();
-    let unknown = vec![Point3::new(f64::NAN, f64::NAN, f64::NAN); rest.len()];
-    flag_given(
-        &rest,
-        &landmark_part,
-        &given_landmarks(given),
-        &unknown,
-        &EstimateParams::default(),
-        units.scale_to_metres(),
-    )
 }

@@ -20,11 +20,14 @@ pub struct LandmarkPolicyReport {
     pub given: usize,
     /// Given landmarks the check found suspicious and left out of the warp, each with its reason.
     pub left_out: Vec<SuspiciousLandmark>,
+    /// Given landmarks the check could not judge (too few other given landmarks in their rigid
+    /// groups): used as given.
+    pub unjudged: Vec<String>,
     /// Landmarks the estimate filled in.
     pub estimated: usize,
     /// CAESAR landmarks the warp used (given and trusted, plus estimated).
     pub used: usize,
-    /// The landmark estimate's report, when it ran (`landmarks/estimate/report.rs`).
+    /// The landmark estimate's report, when it ran (`estimate/report.rs`).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub estimate: Option<serde_json::Value>,
 }
