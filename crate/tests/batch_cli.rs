@@ -147,7 +147,11 @@ fn batch_records_every_subject_resumes_shards_and_pools_fits() {
         assert!(rms < bound, "{subject}: scan→template RMS {rms} mm");
         assert_eq!(report["quality"]["rms_mm"].as_f64(), Some(rms));
         // A full landmark file is checked (no estimate); a scan without one is estimated.
-        let source = if subject == "lonely" { "estimated" } else { "checked" };
+        let source = if subject == "lonely" {
+            "estimated"
+        } else {
+            "checked"
+        };
         assert_eq!(report["landmarks"]["source"], source, "{subject}");
         assert_eq!(
             report["landmarks"]["estimate"].is_object(),

@@ -128,10 +128,9 @@ fn align_batch_and_the_core_give_the_same_report() {
         "--max-iterations",
         "40",
     ]);
-    let from_batch: serde_json::Value = serde_json::from_slice(
-        &std::fs::read(out.join("reports").join("scan_001.json")).unwrap(),
-    )
-    .unwrap();
+    let from_batch: serde_json::Value =
+        serde_json::from_slice(&std::fs::read(out.join("reports").join("scan_001.json")).unwrap())
+            .unwrap();
 
     let scan_bytes = std::fs::read(&scan_path).unwrap();
     let lnd_bytes = std::fs::read(&lnd_path).unwrap();
@@ -182,7 +181,12 @@ fn an_lnd_beside_a_metres_scan_fits_as_its_csv() {
     let rms = |r: &serde_json::Value| r["quality"]["rms_mm"].as_f64().unwrap();
     assert!(rms(&lnd) < 2.5, "{}", rms(&lnd));
     // The .lnd keeps 3 decimals of a millimetre: the fits agree far below the printed digits.
-    assert!((rms(&lnd) - rms(&csv)).abs() < 0.01, "{} vs {}", rms(&lnd), rms(&csv));
+    assert!(
+        (rms(&lnd) - rms(&csv)).abs() < 0.01,
+        "{} vs {}",
+        rms(&lnd),
+        rms(&csv)
+    );
     assert_eq!(lnd["warp"]["used"], csv["warp"]["used"]);
     let _ = std::fs::remove_dir_all(&dir);
 }
@@ -195,7 +199,12 @@ fn any_frame_and_units_give_the_same_fit_in_the_template_frame() {
     };
     // (name, rotation applied to the y-up body, units, offset in metres)
     let frames = [
-        ("y-up m", Rotation3::identity(), Units::Metres, Vector3::zeros()),
+        (
+            "y-up m",
+            Rotation3::identity(),
+            Units::Metres,
+            Vector3::zeros(),
+        ),
         (
             "z-up mm",
             turn(Vector3::x(), 90.0),
@@ -257,7 +266,11 @@ fn any_frame_and_units_give_the_same_fit_in_the_template_frame() {
     let height = stature(reference);
     assert!((1.4..2.1).contains(&height), "stature {height} m");
     for (name, fit) in &fits[1..] {
-        let mut d: Vec<f64> = fit.iter().zip(reference).map(|(a, b)| (a - b).norm()).collect();
+        let mut d: Vec<f64> = fit
+            .iter()
+            .zip(reference)
+            .map(|(a, b)| (a - b).norm())
+            .collect();
         let mean = d.iter().sum::<f64>() / d.len() as f64;
         d.sort_by(f64::total_cmp);
         let p99 = d[d.len() * 99 / 100];

@@ -41,8 +41,12 @@ impl SubjectScan {
         units: &str,
         detected: bool,
     ) -> Result<SubjectScan, JsError> {
-        let units: Units = serde_json::from_value(serde_json::Value::from(units))
-            .map_err(|_| JsError::new(&format!("scan units {units:?}: metres, centimetres or millimetres")))?;
+        let units: Units =
+            serde_json::from_value(serde_json::Value::from(units)).map_err(|_| {
+                JsError::new(&format!(
+                    "scan units {units:?}: metres, centimetres or millimetres"
+                ))
+            })?;
         let to_m = units.scale_to_metres();
         let metres = scan_mesh(positions, triangles)?;
         let scan = Mesh::new(
@@ -78,7 +82,12 @@ impl SubjectScan {
     /// (`names` one per line, `positions` `#L·3` metres; `report` its report's JSON): the policy
     /// fills in from it instead of estimating again.
     #[wasm_bindgen(js_name = setEstimate)]
-    pub fn set_estimate(&mut self, names: &str, positions: &[f64], report: &str) -> Result<(), JsError> {
+    pub fn set_estimate(
+        &mut self,
+        names: &str,
+        positions: &[f64],
+        report: &str,
+    ) -> Result<(), JsError> {
         let set = scan_landmarks(names, positions)?.scaled(1.0 / self.to_m);
         let report = serde_json::from_str(report)
             .map_err(|e| JsError::new(&format!("the estimate's report: {e}")))?;

@@ -7,10 +7,8 @@
 
 use std::path::PathBuf;
 
-use super::read_file;
-use super::subject_args::{fit_ply, SubjectArgs};
-use super::truth::read_truth;
-use crate::subject::{fit_subject, read_subject};
+use super::subject_args::{compare_with_truth_file, fit_ply, read_subject_files, SubjectArgs};
+use crate::subject::fit_subject;
 use crate::template::{Resolution, Template};
 
 /// Arguments of `bodyspace align`.
@@ -43,20 +41,7 @@ pub struct AlignArgs {
 pub fn run(args: &AlignArgs) -> Result<(), String> {
     let options = args.subject.options()?;
     let resolution = args.subject.resolution()?;
-    let scan_name = args.scan.display().to_string();
-    let scan_bytes = read_file(&args.scan)?;
-    let landmark_file = match &args.landmarks {
-        Some(path) => Some((read_file(path)?, path.display().to_string())),
-        None => None,
-    };
-    let input = read_subject(
-        (&scan_bytes, &scan_name),
-        landmark_file
-            .as_ref()
-            .map(|(bytes, name)| (bytes.as_slice(), name.as_str())),
-        None,
-    )
-    .map_err(|e| e.to_string())?;
+    let input = read_subject_files(&args.scan, args.landmarks.as_deref())?;
     let template = Template::embedded()
         .map_err(|e| format!("embedded template: {e}"))?
         .at_resolution(resolution);
@@ -64,12 +49,7 @@ pub fn run(args: &AlignArgs) -> Result<(), String> {
     let mut fit = fit_subject(&template, base.as_ref(), &input, None, &options, &mut ())
         .map_err(|e| e.to_string())?;
     if let Some(path) = &args.truth {
-        let expected = [
-            template.base_vertex_count(),
-            template.mesh().positions.len(),
-        ];
-        let truth = read_truth(path, &expected, fit.alignment.scale_to_metres)?;
-        fit.compare_with_truth(&template, &truth);
+        compare_with_truth_file(&mut fit, &template, path)?;
     }
     std::fs::write(&args.out, fit_ply(&fit, &template, args.subject.frame)).map_err(|e| {
         format!(

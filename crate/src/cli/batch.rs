@@ -20,10 +20,11 @@ use serde::Serialize;
 
 use super::batch_subjects::{list_subjects, Shard, Subject};
 use super::manifest::{manifest_csv, write_atomically, Status, SubjectRecord};
-use super::read_file;
-use super::subject_args::{fit_ply, Frame, SubjectArgs};
-use super::truth::{find_truth_file, read_truth};
-use crate::subject::{fit_subject, read_subject, SubjectOptions, SubjectReport};
+use super::subject_args::{
+    compare_with_truth_file, fit_ply, read_subject_files, Frame, SubjectArgs,
+};
+use super::truth::find_truth_file;
+use crate::subject::{fit_subject, SubjectOptions, SubjectReport};
 use crate::template::{Resolution, Template};
 
 /// Arguments of `bodyspace batch`.
@@ -137,20 +138,7 @@ fn align_and_write(
     record: &mut SubjectRecord,
     start: Instant,
 ) -> Result<(), String> {
-    let scan_name = subject.scan.display().to_string();
-    let scan_bytes = read_file(&subject.scan)?;
-    let landmark_file = match &subject.landmarks {
-        Some(path) => Some((read_file(path)?, path.display().to_string())),
-        None => None,
-    };
-    let input = read_subject(
-        (&scan_bytes, &scan_name),
-        landmark_file
-            .as_ref()
-            .map(|(bytes, name)| (bytes.as_slice(), name.as_str())),
-        None,
-    )
-    .map_err(|e| e.to_string())?;
+    let input = read_subject_files(&subject.scan, subject.landmarks.as_deref())?;
     let mut fit = fit_subject(
         ctx.template,
         ctx.base_template,
@@ -169,12 +157,7 @@ fn align_and_write(
                 subject.name
             )
         })?;
-        let expected = [
-            ctx.template.base_vertex_count(),
-            ctx.template.mesh().positions.len(),
-        ];
-        let truth = read_truth(&path, &expected, fit.alignment.scale_to_metres)?;
-        fit.compare_with_truth(ctx.template, &truth);
+        compare_with_truth_file(&mut fit, ctx.template, &path)?;
     }
     let quality = fit.report.quality.as_ref();
     record.rms_mm = quality.and_then(|q| q.rms_mm);

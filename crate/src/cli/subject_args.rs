@@ -165,8 +165,50 @@ impl SubjectArgs {
     }
 }
 
+/// A subject read from its files by the core's rule (`subject/input.rs`): the scan and, when
+/// there is one, its landmark file.
+pub fn read_subject_files(
+    scan: &std::path::Path,
+    landmarks: Option<&std::path::Path>,
+) -> Result<crate::subject::SubjectInput, String> {
+    let scan_name = scan.display().to_string();
+    let scan_bytes = super::read_file(scan)?;
+    let landmark_file = match landmarks {
+        Some(path) => Some((super::read_file(path)?, path.display().to_string())),
+        None => None,
+    };
+    crate::subject::read_subject(
+        (&scan_bytes, &scan_name),
+        landmark_file
+            .as_ref()
+            .map(|(bytes, name)| (bytes.as_slice(), name.as_str())),
+        None,
+    )
+    .map_err(|e| e.to_string())
+}
+
+/// Adds the correspondence error against the ground truth in `truth` (`bodyspace synth`'s
+/// `truth_ID.ply`: template vertex order, the scan's frame and units) to the fit's report.
+pub fn compare_with_truth_file(
+    fit: &mut crate::subject::SubjectFit,
+    template: &crate::template::Template,
+    truth: &std::path::Path,
+) -> Result<(), String> {
+    let expected = [
+        template.base_vertex_count(),
+        template.mesh().positions.len(),
+    ];
+    let truth = super::truth::read_truth(truth, &expected, fit.alignment.scale_to_metres)?;
+    fit.compare_with_truth(template, &truth);
+    Ok(())
+}
+
 /// The fit as a PLY file in `frame`, template vertex order.
-pub fn fit_ply(fit: &crate::subject::SubjectFit, template: &crate::template::Template, frame: Frame) -> Vec<u8> {
+pub fn fit_ply(
+    fit: &crate::subject::SubjectFit,
+    template: &crate::template::Template,
+    frame: Frame,
+) -> Vec<u8> {
     let positions = match frame {
         Frame::Scan => fit.positions_in_scan_units(),
         Frame::Template => fit.positions_in_template_frame(),

@@ -111,7 +111,11 @@ mod tests {
     #[test]
     fn only_lnd_files_fix_their_units() {
         for name in ["a.lnd", "A.LND", "dir/a.lnd.gz"] {
-            assert_eq!(landmark_file_units(name), Some(Units::Millimetres), "{name}");
+            assert_eq!(
+                landmark_file_units(name),
+                Some(Units::Millimetres),
+                "{name}"
+            );
         }
         for name in ["a.csv", "a.json", "a.lnd.csv", "lnd", "a.csv.gz"] {
             assert_eq!(landmark_file_units(name), None, "{name}");

@@ -39,7 +39,11 @@ pub fn template_frame(shape: &[Point3<f64>], rest: &[Point3<f64>]) -> TemplateFr
 
 /// [`template_frame`] for a shape whose units are known (a fit of a scan whose units were given
 /// or detected on the scan itself).
-pub fn template_frame_in(shape: &[Point3<f64>], rest: &[Point3<f64>], units: Units) -> TemplateFrame {
+pub fn template_frame_in(
+    shape: &[Point3<f64>],
+    rest: &[Point3<f64>],
+    units: Units,
+) -> TemplateFrame {
     let u = units.scale_to_metres();
     let metres: Vec<Point3<f64>> = shape.iter().map(|p| Point3::from(p.coords * u)).collect();
     let rigid = rigid_align(&metres, rest, false);

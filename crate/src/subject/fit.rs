@@ -61,25 +61,7 @@ pub fn fit_subject(
     observer: &mut dyn AlignObserver,
 ) -> Result<SubjectFit, SubjectError> {
     let (units, units_detected) = input.scan_units();
-    let given = input.given_in_scan_units();
-    let file = input.given.as_ref().map_or("", |g| g.file.as_str());
-    let landmarks = subject_landmarks(
-        template,
-        &input.scan,
-        units,
-        &given,
-        file,
-        prior,
-        options,
-        observer,
-    )
-    .map_err(|e| match e {
-        SubjectError::Estimate { message, .. } => SubjectError::Estimate {
-            scan: input.name.clone(),
-            message,
-        },
-        e => e,
-    })?;
+    let landmarks = subject_landmarks(template, input, prior, options, observer)?;
     let align_input = AlignInput {
         template,
         base_template,
@@ -87,13 +69,12 @@ pub fn fit_subject(
         landmarks: &landmarks.set,
         units: Some(units),
     };
-    let mut alignment =
-        align_scan(&align_input, &options.params, observer).map_err(|source| {
-            SubjectError::Align {
-                scan: input.name.clone(),
-                source,
-            }
-        })?;
+    let mut alignment = align_scan(&align_input, &options.params, observer).map_err(|source| {
+        SubjectError::Align {
+            scan: input.name.clone(),
+            source,
+        }
+    })?;
     alignment.report.units_detected = units_detected;
 
     let owned_base;

@@ -139,7 +139,10 @@ mod tests {
                 given: Some(given(None, 1.5 * scale)),
             };
             assert_eq!(input.scan_units().0, units);
-            assert_eq!(input.given_in_scan_units().landmarks[0].position.x, 1.5 * scale);
+            assert_eq!(
+                input.given_in_scan_units().landmarks[0].position.x,
+                1.5 * scale
+            );
         }
     }
 

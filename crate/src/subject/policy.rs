@@ -13,15 +13,14 @@
 use serde::Serialize;
 
 use super::error::SubjectError;
+use super::input::SubjectInput;
 use super::options::SubjectOptions;
 use super::report::LandmarkPolicyReport;
 use crate::align::AlignObserver;
 use crate::estimate::{
-    check_given, estimate_landmarks, given_landmarks, EstimateInput, EstimateParams,
+    check_given, estimate_landmarks, given_landmarks, EstimateInput, EstimateParams, GivenCheck,
 };
 use crate::landmarks::LandmarkSet;
-use crate::mesh::units::Units;
-use crate::mesh::Mesh;
 use crate::template::Template;
 
 /// Where a subject's landmarks came from.
@@ -55,23 +54,25 @@ pub struct SubjectLandmarks {
     pub report: LandmarkPolicyReport,
 }
 
-/// Applies the landmark policy to `given` (the scan's frame and `units`; may be empty) on `scan`
-/// (the scan's frame and units). `file` names the landmark file in the report (empty: none).
-/// The estimate, when it runs, reports to `observer` (stage `estimate`; a `Break` cancels).
+/// Applies the landmark policy to the landmarks given with `input` (if any) on its scan. The
+/// estimate, when it runs, reports to `observer` (stage `estimate`; a `Break` cancels).
 pub fn subject_landmarks(
     template: &Template,
-    scan: &Mesh,
-    units: Units,
-    given: &LandmarkSet,
-    file: &str,
+    input: &SubjectInput,
     prior: Option<PriorEstimate>,
     options: &SubjectOptions,
     observer: &mut dyn AlignObserver,
 ) -> Result<SubjectLandmarks, SubjectError> {
+    let (units, _) = input.scan_units();
+    let given = &input.given_in_scan_units();
+    let file = input.given.as_ref().map_or("", |g| g.file.as_str());
+    let scan = &input.scan;
     let given_count = given_landmarks(given).len();
-    let check = (options.check_landmarks && given_count > 0)
-        .then(|| check_given(template, given, 1e3 * units.scale_to_metres()))
-        .unwrap_or_default();
+    let check = if options.check_landmarks && given_count > 0 {
+        check_given(template, given, 1e3 * units.scale_to_metres())
+    } else {
+        GivenCheck::default()
+    };
     let left_out = check.flagged;
     let trusted = LandmarkSet {
         landmarks: given
@@ -88,24 +89,23 @@ pub fn subject_landmarks(
         (_, true) => LandmarkSource::Checked,
         (_, false) => LandmarkSource::AsGiven,
     };
-    let fill_in = matches!(
-        source,
-        LandmarkSource::Estimated | LandmarkSource::FilledIn
-    );
+    let fill_in = matches!(source, LandmarkSource::Estimated | LandmarkSource::FilledIn);
     let prior = match prior {
         Some(prior) => Some(prior),
         None if fill_in => {
-            let input = EstimateInput {
+            let estimate_input = EstimateInput {
                 template,
                 scan,
                 given: &trusted,
                 units: Some(units),
             };
-            let estimate = estimate_landmarks(&input, &EstimateParams::default(), observer)
-                .map_err(|e| SubjectError::Estimate {
-                    scan: String::new(),
-                    message: e.to_string(),
-                })?;
+            let estimate =
+                estimate_landmarks(&estimate_input, &EstimateParams::default(), observer).map_err(
+                    |e| SubjectError::Estimate {
+                        scan: input.name.clone(),
+                        message: e.to_string(),
+                    },
+                )?;
             let report = serde_json::to_value(&estimate.report).unwrap_or_default();
             Some(PriorEstimate {
                 set: estimate.to_set(),
