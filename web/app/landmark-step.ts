@@ -248,7 +248,7 @@ export class LandmarkStep {
     if (!edits && !file) return null;
     const placed = (edits?.all ?? []).filter((e) => e.position);
     const unknown = file ? file.report.unknown : [];
-    const filePositions = file ? this.session.landmarkPositionsMetres() : new Float32Array();
+    const filePositions = file ? this.session.landmarkPositionsMetres() : new Float64Array();
     const unknownPoints = unknown.flatMap((name) => {
       const i = file!.names.indexOf(name);
       return i < 0 ? [] : [{ name, position: [filePositions[3 * i]!, filePositions[3 * i + 1]!, filePositions[3 * i + 2]!] as Point }];
