@@ -184,6 +184,8 @@ export interface AlignReport {
   warp: WarpReport;
   anchors: number;
   fine: FineReport;
+  /** The correspondence error against a ground truth (`--truth`, synthetic subjects); else null. */
+  correspondence: unknown;
   rough_ms: number;
   index_ms: number;
   total_ms: number;
@@ -195,6 +197,8 @@ export interface LandmarkPolicyReport {
   file: string;
   given: number;
   left_out: { name: string; distance_mm: number; kind: string; suggestion: string; expected: [number, number, number] }[];
+  /** Given landmarks the check could not judge (too few others in their rigid groups): used as given. */
+  unjudged: string[];
   estimated: number;
   used: number;
   estimate?: unknown;
