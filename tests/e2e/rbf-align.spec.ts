@@ -43,6 +43,11 @@ test('Align fits the template and shows the RMS, the heat map and keeps the subj
   expect(Number(await page.getByTestId('align-chart').getAttribute('data-points'))).toBeGreaterThan(1);
   await expect(page.locator('#viewport')).toHaveAttribute('data-fitted-coloured', 'true');
   await expect(page.getByTestId('heat-legend')).toBeVisible();
+  // The fit's own check in words: the quality flags, and any landmark left out of it.
+  const check = page.getByTestId('align-check');
+  const flags = (await check.getAttribute('data-flags')) ?? '';
+  await expect(check).toContainText(flags ? 'Flagged: ' : 'No quality flag raised.');
+  if (flags.includes('suspicious_landmarks')) await expect(check).toContainText('Left out of the fit: ');
   const download = page.waitForEvent('download');
   await page.getByTestId('export-ply').click();
   expect((await download).suggestedFilename()).toBe('scan_001-fitted.ply');

@@ -4,9 +4,10 @@
 // quality flags (`align/quality.rs`, returned with each alignment).
 import { CancelledError, type CoreClient } from '../client/core-client';
 import { browserPoolSize, WorkerPool } from '../client/worker-pool';
-import type { QualityReport, SubjectOptions } from '../shared/align-types';
+import type { SubjectOptions } from '../shared/align-types';
 import type { SubjectPairing } from '../shared/results';
 import type { TemplateResolution } from '../shared/template-data';
+import { qualityText } from '../ui/format';
 import { alignSubject } from './batch-job';
 import { BatchStore, type BatchRecord } from './batch-store';
 import type { AlignedSubject } from './subjects';
@@ -313,7 +314,7 @@ export class Batch {
       const mib = Math.round(result.wasmMemoryBytes / 2 ** 20);
       document.body.dataset.batchWasmMemoryMib = String(Math.max(mib, Number(document.body.dataset.batchWasmMemoryMib ?? 0)));
       const flags = result.quality.flags;
-      await this.finish(row, flags.length ? 'flagged' : 'ok', flags.length ? flagReason(result.quality) : '', job);
+      await this.finish(row, flags.length ? 'flagged' : 'ok', flags.length ? qualityText(result.quality) : '', job);
     } catch (error) {
       row.seconds = (performance.now() - t0) / 1e3;
       if (error instanceof CancelledError) await this.finish(row, 'cancelled', 'cancelled', job);
@@ -374,15 +375,4 @@ export class Batch {
 /** The subject whose scan is file `scan` of the pairing. */
 function subjectOf(pairing: SubjectPairing, scan: number): string {
   return pairing.subjects.find((s) => s.scan === scan)?.subject ?? '';
-}
-
-/** What the raised flags mean, with the measures behind them. */
-function flagReason(q: QualityReport): string {
-  const t = q.thresholds;
-  const parts: string[] = [];
-  if (q.flags.includes('high_rms')) parts.push(`RMS ${q.rms_mm?.toFixed(2)} mm > ${t.max_rms_mm} mm`);
-  if (q.flags.includes('unmatched')) parts.push(`${(q.unmatched_fraction * 100).toFixed(0)} % unmatched > ${t.max_unmatched_fraction * 100} %`);
-  if (q.flags.includes('fold_overs')) parts.push(`${(q.folded_fraction * 100).toFixed(1)} % folded > ${t.max_folded_fraction * 100} %`);
-  if (q.flags.includes('suspicious_landmarks')) parts.push(`suspicious landmarks left out: ${q.suspicious_landmarks.join(', ')}`);
-  return parts.join('; ');
 }

@@ -1,10 +1,10 @@
 // The Align step (paper §3.1 + §3.2): Align / Cancel, progress, the live E/RMS chart, and the
 // result — the paper's Table 1 numbers, the heat-map legend, export and "keep as aligned subject".
-import type { AlignReport, AlignStage } from '../shared/align-types';
+import type { AlignReport, AlignStage, SubjectReport } from '../shared/align-types';
 import type { TemplateResolution } from '../shared/template-data';
 import { button, byId, h } from './dom';
 import { EnergyChart } from './energy-chart';
-import { formatCount } from './format';
+import { formatCount, qualityText } from './format';
 import { heatLegend } from './heat-legend';
 
 export interface AlignControls {
@@ -22,7 +22,7 @@ export type AlignView =
   | { state: 'running'; iteration: number; maxIterations: number; rmsMm: number | null; stage: AlignStage }
   | { state: 'cancelled'; iteration: number; hasPositions: boolean }
   | { state: 'error'; message: string }
-  | { state: 'done'; report: AlignReport; legendMaxMm: number; kept: boolean };
+  | { state: 'done'; report: SubjectReport; legendMaxMm: number; kept: boolean };
 
 export class AlignPanel {
   private readonly root = byId('align-panel');
@@ -84,7 +84,7 @@ export class AlignPanel {
     this.root.replaceChildren(...parts);
   }
 
-  private result(r: AlignReport, legendMaxMm: number, kept: boolean): HTMLElement[] {
+  private result(r: SubjectReport, legendMaxMm: number, kept: boolean): HTMLElement[] {
     const s = r.fine.scan_to_template;
     const t = r.fine.template_to_scan;
     const mm = (v: number) => v.toFixed(2);
@@ -110,6 +110,7 @@ export class AlignPanel {
         h('dt', {}, 'Time'),
         h('dd', { 'data-testid': 'align-time' }, `${(r.total_ms / 1000).toFixed(2)} s`),
       ),
+      checkNote(r),
       heatLegend(0, legendMaxMm, `Distance of each template vertex to the scan; ≥ ${legendMaxMm.toFixed(1)} mm in yellow`),
       h(
         'div',
@@ -130,6 +131,18 @@ export class AlignPanel {
 function statusText(view: { iteration: number; maxIterations: number; stage: AlignStage }): string {
   const stage = view.stage === 'fine' ? ' (fine stage)' : '';
   return view.iteration === 0 ? 'RBF warp and scan index…' : `Iteration ${view.iteration} of at most ${view.maxIterations}${stage}; the fit's RMS is measured when it ends`;
+}
+
+/**
+ * The fit's own check, in words: the quality flags raised (or none) and the landmarks the core's
+ * policy left out of the fit as suspicious, each with its distance and suggestion.
+ */
+function checkNote(r: SubjectReport): HTMLElement {
+  const flags = r.quality?.flags ?? [];
+  const left = r.landmarks.left_out.map((l) => `${l.name}, ${l.distance_mm.toFixed(0)} mm from where the others put it (${l.suggestion})`);
+  const text = flags.length && r.quality ? `Flagged: ${qualityText(r.quality)}.` : 'No quality flag raised.';
+  const leftText = left.length ? ` Left out of the fit: ${left.join('; ')}.` : '';
+  return h('p', { class: flags.length ? 'warn-note' : 'note', 'data-testid': 'align-check', 'data-flags': flags.join(' ') }, text + leftText);
 }
 
 /** Which template Align fits, and how: a fine template goes coarse to fine. */

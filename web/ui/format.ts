@@ -1,5 +1,6 @@
 // How numbers are written in the panels.
 
+import type { QualityReport } from '../shared/align-types';
 import type { Reading } from '../shared/shape-results';
 
 const integer = new Intl.NumberFormat('en-GB', { maximumFractionDigits: 0 });
@@ -31,4 +32,15 @@ export function formatReading(kind: Reading['kind'], value: number | null): stri
   if (kind === 'volume') return `${(value * 1000).toFixed(1)} L`;
   if (kind === 'area') return `${value.toFixed(3)} m²`;
   return `${(value * 100).toFixed(1)} cm`;
+}
+
+/** What a fit's raised quality flags mean, with the measures behind them (`align/quality.rs`). */
+export function qualityText(q: QualityReport): string {
+  const t = q.thresholds;
+  const parts: string[] = [];
+  if (q.flags.includes('high_rms')) parts.push(`RMS ${q.rms_mm?.toFixed(2)} mm > ${t.max_rms_mm} mm`);
+  if (q.flags.includes('unmatched')) parts.push(`${(q.unmatched_fraction * 100).toFixed(0)} % unmatched > ${t.max_unmatched_fraction * 100} %`);
+  if (q.flags.includes('fold_overs')) parts.push(`${(q.folded_fraction * 100).toFixed(1)} % folded > ${t.max_folded_fraction * 100} %`);
+  if (q.flags.includes('suspicious_landmarks')) parts.push(`suspicious landmarks left out: ${q.suspicious_landmarks.join(', ')}`);
+  return parts.join('; ');
 }
