@@ -93,14 +93,8 @@ pub(crate) trait MeasuredBody {
     fn standard_deviations(&self) -> Vec<f64>;
     /// The body at `z` as flat f32 positions (3V).
     fn body(&self, z: &[f64]) -> Result<Vec<f32>, PcaError>;
-    /// `out` = the body `positions` (at some z) moved by `delta` σ along coefficient `k`.
-    fn moved(
-        &self,
-        positions: &[f32],
-        k: usize,
-        delta: f64,
-        out: &mut [f32],
-    ) -> Result<(), PcaError>;
+    /// `out` = the body `at` (at some z) moved by `delta` σ along coefficient `k`.
+    fn moved(&self, at: &[f32], k: usize, delta: f64, out: &mut [f32]) -> Result<(), PcaError>;
 }
 
 /// The whole-body model: x = S̄ + Φ·(√λ ⊙ z).
@@ -118,15 +112,9 @@ impl MeasuredBody for WholeBody<'_> {
         self.model.body_at_sigma(z)
     }
 
-    fn moved(
-        &self,
-        positions: &[f32],
-        k: usize,
-        delta: f64,
-        out: &mut [f32],
-    ) -> Result<(), PcaError> {
+    fn moved(&self, at: &[f32], k: usize, delta: f64, out: &mut [f32]) -> Result<(), PcaError> {
         let d = (delta * self.sd[k]) as f32;
-        for (p, (&x, &phi)) in out.iter_mut().zip(positions.iter().zip(self.model.mode(k))) {
+        for (p, (&x, &phi)) in out.iter_mut().zip(at.iter().zip(self.model.mode(k))) {
             *p = x + d * phi;
         }
         Ok(())

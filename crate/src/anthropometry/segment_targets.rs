@@ -147,14 +147,8 @@ impl MeasuredBody for SegmentBody<'_> {
         Ok(out)
     }
 
-    fn moved(
-        &self,
-        positions: &[f32],
-        k: usize,
-        delta: f64,
-        out: &mut [f32],
-    ) -> Result<(), PcaError> {
-        out.copy_from_slice(positions);
+    fn moved(&self, at: &[f32], k: usize, delta: f64, out: &mut [f32]) -> Result<(), PcaError> {
+        out.copy_from_slice(at);
         let change = ModeDelta {
             target: ModeTarget::Segment(self.segment),
             mode: k,

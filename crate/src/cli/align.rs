@@ -7,21 +7,15 @@
 
 use std::path::PathBuf;
 
-use super::subject_args::{compare_with_truth_file, fit_ply, read_subject_files, SubjectArgs};
+use super::subject_args::{compare_with_truth_file, fit_ply, SubjectArgs, SubjectFiles};
 use crate::subject::fit_subject;
 use crate::template::{Resolution, Template};
 
 /// Arguments of `bodyspace align`.
 #[derive(clap::Args, Debug)]
 pub struct AlignArgs {
-    /// The scan: PLY, OBJ or STL, optionally gzip-compressed, in any frame and units.
-    #[arg(long)]
-    pub scan: PathBuf,
-    /// The scan's landmarks: CSV (the scan's units), CAESAR .lnd (millimetres) or JSON (the
-    /// scan's units). A nearly full file is checked and its suspicious landmarks left out; a
-    /// partial file is filled in by the landmark estimate; without a file all 73 are estimated.
-    #[arg(long)]
-    pub landmarks: Option<PathBuf>,
+    #[command(flatten)]
+    pub files: SubjectFiles,
     /// Where to write the fitted template (PLY, template vertex order).
     #[arg(long)]
     pub out: PathBuf,
@@ -41,7 +35,7 @@ pub struct AlignArgs {
 pub fn run(args: &AlignArgs) -> Result<(), String> {
     let options = args.subject.options()?;
     let resolution = args.subject.resolution()?;
-    let input = read_subject_files(&args.scan, args.landmarks.as_deref())?;
+    let input = args.files.read()?;
     let template = Template::embedded()
         .map_err(|e| format!("embedded template: {e}"))?
         .at_resolution(resolution);

@@ -1,6 +1,7 @@
 //! The flags `bodyspace align` and `bodyspace batch` share: every choice of the core's one path
 //! from files to a fit ([`SubjectOptions`]), each default read from the core.
 
+use std::path::{Path, PathBuf};
 use std::str::FromStr;
 
 use crate::align::{AlignParams, FineStageParams, Preset, QualityThresholds};
@@ -165,11 +166,31 @@ impl SubjectArgs {
     }
 }
 
+/// One subject's files, as `align` and `landmarks` take them.
+#[derive(clap::Args, Debug, Clone)]
+pub struct SubjectFiles {
+    /// The scan: PLY, OBJ or STL, optionally gzip-compressed, in any frame and units.
+    #[arg(long)]
+    pub scan: PathBuf,
+    /// The scan's landmarks: CSV (the scan's units), CAESAR .lnd (millimetres) or JSON (the
+    /// scan's units). `align` checks a nearly full file and leaves its suspicious landmarks out;
+    /// a partial file is filled in by the landmark estimate; without a file all 73 are estimated.
+    #[arg(long)]
+    pub landmarks: Option<PathBuf>,
+}
+
+impl SubjectFiles {
+    /// The subject read by the core's rule (`subject/input.rs`).
+    pub fn read(&self) -> Result<crate::subject::SubjectInput, String> {
+        read_subject_files(&self.scan, self.landmarks.as_deref())
+    }
+}
+
 /// A subject read from its files by the core's rule (`subject/input.rs`): the scan and, when
 /// there is one, its landmark file.
 pub fn read_subject_files(
-    scan: &std::path::Path,
-    landmarks: Option<&std::path::Path>,
+    scan: &Path,
+    landmarks: Option<&Path>,
 ) -> Result<crate::subject::SubjectInput, String> {
     let scan_name = scan.display().to_string();
     let scan_bytes = super::read_file(scan)?;
@@ -192,7 +213,7 @@ pub fn read_subject_files(
 pub fn compare_with_truth_file(
     fit: &mut crate::subject::SubjectFit,
     template: &crate::template::Template,
-    truth: &std::path::Path,
+    truth: &Path,
 ) -> Result<(), String> {
     let expected = [
         template.base_vertex_count(),

@@ -200,6 +200,7 @@ pub fn swing_arms(
 mod tests {
     use super::*;
     use crate::align::SurfaceIndex;
+    use crate::estimate::params::EstimateParams;
     use crate::mesh::Mesh;
     use crate::template::parts::{base_parts, dominant_parts};
 
@@ -235,11 +236,7 @@ mod tests {
         }
         let scan = Mesh::new(blend(&parts, &scan_poses, rest), triangles.clone());
         let index = SurfaceIndex::new(&scan).unwrap();
-        let matching = Matching {
-            scan: &index,
-            min_cos: 0.5,
-            outlier_distance: 0.1,
-        };
+        let matching = Matching::new(&index, &EstimateParams::default());
         let vertices: Vec<u32> = (0..rest.len() as u32).step_by(2).collect();
         let dominant = dominant_parts(&parts, rest.len());
         // From the template's pose, the refinement (here none, or cancelled) given.

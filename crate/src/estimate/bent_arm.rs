@@ -194,6 +194,7 @@ pub fn place_bent_elbows(
 mod tests {
     use super::*;
     use crate::align::SurfaceIndex;
+    use crate::estimate::params::EstimateParams;
     use crate::mesh::Mesh;
     use crate::template::parts::{base_parts, blend, dominant_parts};
     use nalgebra::{Rotation3, Unit};
@@ -226,11 +227,7 @@ mod tests {
         }
         let scan = Mesh::new(blend(&parts, &scan_poses, rest), triangles.clone());
         let index = SurfaceIndex::new(&scan).unwrap();
-        let matching = Matching {
-            scan: &index,
-            min_cos: 0.5,
-            outlier_distance: 0.1,
-        };
+        let matching = Matching::new(&index, &EstimateParams::default());
         let vertices: Vec<u32> = (0..rest.len() as u32).step_by(2).collect();
         let dominant = dominant_parts(&parts, rest.len());
         let mut poses = start.clone();

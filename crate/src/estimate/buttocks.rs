@@ -151,50 +151,19 @@ mod tests {
     #[test]
     fn the_buttocks_are_where_the_back_reaches_furthest() {
         let (up, front) = (Vector3::y(), Vector3::z());
-        let h = buttock_height(
-            &back(-0.08, 0.03),
-            &Point3::origin(),
-            &up,
-            &front,
-            1.0,
-            &ButtocksParams::default(),
-        )
-        .unwrap();
-        assert!((h + 0.08).abs() <= ButtocksParams::default().bin, "{h}");
+        let params = ButtocksParams::default();
+        let height = |points: &[Point3<f64>], scale: f64| {
+            buttock_height(points, &Point3::origin(), &up, &front, scale, &params)
+        };
+        let h = height(&back(-0.08, 0.03), 1.0).unwrap();
+        assert!((h + 0.08).abs() <= params.bin, "{h}");
         // At twice the size, twice the height.
         let big: Vec<_> = back(-0.08, 0.03).iter().map(|p| p * 2.0).collect();
-        let h = buttock_height(
-            &big,
-            &Point3::origin(),
-            &up,
-            &front,
-            2.0,
-            &ButtocksParams::default(),
-        )
-        .unwrap();
-        assert!(
-            (h + 0.16).abs() <= 2.0 * ButtocksParams::default().bin,
-            "{h}"
-        );
+        let h = height(&big, 2.0).unwrap();
+        assert!((h + 0.16).abs() <= 2.0 * params.bin, "{h}");
         // A flat back, or a peak outside the window, gives none.
-        assert!(buttock_height(
-            &back(-0.08, 0.0),
-            &Point3::origin(),
-            &up,
-            &front,
-            1.0,
-            &ButtocksParams::default()
-        )
-        .is_none());
-        assert!(buttock_height(
-            &back(0.2, 0.03),
-            &Point3::origin(),
-            &up,
-            &front,
-            1.0,
-            &ButtocksParams::default()
-        )
-        .is_none());
+        assert!(height(&back(-0.08, 0.0), 1.0).is_none());
+        assert!(height(&back(0.2, 0.03), 1.0).is_none());
     }
 
     #[test]

@@ -125,6 +125,7 @@ pub fn even_sample(weights: &[f64], count: usize) -> Vec<u32> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::estimate::params::EstimateParams;
 
     #[test]
     fn near_candidates_facing_apart_are_told_by_the_torso() {
@@ -134,11 +135,7 @@ mod tests {
         let rest = &template.mesh().positions;
         let normals = template.mesh().vertex_normals();
         let index = crate::align::SurfaceIndex::new(template.mesh()).unwrap();
-        let matching = Matching {
-            scan: &index,
-            min_cos: 0.5,
-            outlier_distance: 0.1,
-        };
+        let matching = Matching::new(&index, &EstimateParams::default());
         let torso: Vec<u32> = (0..rest.len() as u32)
             .filter(|&v| template.segment_weights(v)[Segment::Torso.index()] >= 0.5)
             .step_by(5)

@@ -3,6 +3,7 @@
 
 use nalgebra::{Point3, Vector3};
 
+use super::params::EstimateParams;
 use crate::align::{CorrespondenceMode, MatchQuery, SurfaceIndex};
 use crate::utils::parallel::filter_map_into;
 
@@ -24,7 +25,16 @@ pub struct Matching<'a> {
     pub outlier_distance: f64,
 }
 
-impl Matching<'_> {
+impl<'a> Matching<'a> {
+    /// Matching onto `scan` with the estimate's normal angle and outlier distance.
+    pub fn new(scan: &'a SurfaceIndex, params: &EstimateParams) -> Self {
+        Self {
+            scan,
+            min_cos: params.max_normal_angle_deg.to_radians().cos(),
+            outlier_distance: params.outlier_distance,
+        }
+    }
+
     /// The matches of `vertices` at `positions` with unit `normals` (both indexed by vertex),
     /// nearest scan vertex with a compatible normal, outliers and incompatible ones dropped.
     pub fn pairs(

@@ -34,7 +34,7 @@ use super::report::{CandidateReport, EstimateReport, LandmarkReport};
 use super::segments::fit_segments;
 use super::suspicious::{flag_suspicious, SuspiciousLandmark};
 use super::tick::Ticker;
-use super::typical_error::TYPICAL_ERROR_MM;
+use super::typical_error::typical_error_mm;
 use crate::align::{
     data_weights, fine_align, AlignObserver, FineAlignInput, FineAlignParams, SurfaceIndex,
 };
@@ -132,11 +132,7 @@ pub fn estimate_landmarks(
 
     let weights = data_weights(&template, FineAlignParams::default().sole_weight);
     let rest_normals = template.mesh().vertex_normals();
-    let matching = Matching {
-        scan: &index,
-        min_cos: params.max_normal_angle_deg.to_radians().cos(),
-        outlier_distance: params.outlier_distance,
-    };
+    let matching = Matching::new(&index, params);
     let mut starts: Vec<(&'static str, _)> = frame_candidates(rest, index.positions())
         .ok_or(EstimateError::NoShape)?
         .into_iter()
@@ -322,7 +318,7 @@ pub fn estimate_landmarks(
                     &near[k],
                     params.outlier_distance,
                 );
-                let c = confidence(TYPICAL_ERROR_MM[k] / 1000.0, sharpness.spread(), r, params);
+                let c = confidence(typical_error_mm(k) / 1000.0, sharpness.spread(), r, params);
                 (finite.then(|| p / to_m), if finite { c } else { 0.0 })
             }
         };

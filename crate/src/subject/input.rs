@@ -4,11 +4,14 @@
 //! file is in the units its format fixes (`.lnd`: millimetres, [`landmark_file_units`]), else in
 //! the scan's.
 
+use crate::align::AlignObserver;
+use crate::estimate::{estimate_landmarks, EstimateInput, EstimateParams, LandmarkEstimate};
 use crate::io::{landmark_file_units, read_landmarks, read_scan};
 use crate::landmarks::LandmarkSet;
 use crate::mesh::bounding_extent;
 use crate::mesh::units::{detect_units, Units};
 use crate::mesh::Mesh;
+use crate::template::Template;
 
 use super::error::SubjectError;
 
@@ -59,6 +62,28 @@ impl SubjectInput {
             }
             None => given.set.clone(),
         }
+    }
+
+    /// The core's landmark estimate on this scan with its default parameters, keeping `given`
+    /// (the scan's frame and units) as it is. It reports to `observer` (a `Break` cancels).
+    pub fn estimate_landmarks(
+        &self,
+        template: &Template,
+        given: &LandmarkSet,
+        observer: &mut dyn AlignObserver,
+    ) -> Result<LandmarkEstimate, SubjectError> {
+        let input = EstimateInput {
+            template,
+            scan: &self.scan,
+            given,
+            units: Some(self.scan_units().0),
+        };
+        estimate_landmarks(&input, &EstimateParams::default(), observer).map_err(|e| {
+            SubjectError::Estimate {
+                scan: self.name.clone(),
+                message: e.to_string(),
+            }
+        })
     }
 }
 

@@ -17,9 +17,7 @@ use super::input::SubjectInput;
 use super::options::SubjectOptions;
 use super::report::LandmarkPolicyReport;
 use crate::align::AlignObserver;
-use crate::estimate::{
-    check_given, estimate_landmarks, given_landmarks, EstimateInput, EstimateParams, GivenCheck,
-};
+use crate::estimate::{check_given, given_landmarks, GivenCheck};
 use crate::landmarks::LandmarkSet;
 use crate::template::Template;
 
@@ -66,7 +64,6 @@ pub fn subject_landmarks(
     let (units, _) = input.scan_units();
     let given = &input.given_in_scan_units();
     let file = input.given.as_ref().map_or("", |g| g.file.as_str());
-    let scan = &input.scan;
     let given_count = given_landmarks(given).len();
     let check = if options.check_landmarks && given_count > 0 {
         check_given(template, given, 1e3 * units.scale_to_metres())
@@ -93,19 +90,7 @@ pub fn subject_landmarks(
     let prior = match prior {
         Some(prior) => Some(prior),
         None if fill_in => {
-            let estimate_input = EstimateInput {
-                template,
-                scan,
-                given: &trusted,
-                units: Some(units),
-            };
-            let estimate =
-                estimate_landmarks(&estimate_input, &EstimateParams::default(), observer).map_err(
-                    |e| SubjectError::Estimate {
-                        scan: input.name.clone(),
-                        message: e.to_string(),
-                    },
-                )?;
+            let estimate = input.estimate_landmarks(template, &trusted, observer)?;
             let report = serde_json::to_value(&estimate.report).unwrap_or_default();
             Some(PriorEstimate {
                 set: estimate.to_set(),

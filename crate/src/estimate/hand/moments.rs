@@ -24,15 +24,23 @@ pub(super) fn surface(
         .collect()
 }
 
-/// Area, centroid and covariance (area-weighted) of the part of `surface` beyond the plane
-/// through `wrist` across `axis` (from `beyond`, m, past it) and within `reach` of the wrist.
+/// The region beyond a wrist where a hand is looked for: past the plane through `wrist` across
+/// `axis` (the forearm's direction, unit) and within `reach` (m) of the wrist.
+#[derive(Debug, Clone, Copy)]
+pub struct BeyondWrist {
+    pub wrist: Point3<f64>,
+    pub axis: Vector3<f64>,
+    pub reach: f64,
+}
+
+/// Area, centroid and covariance (area-weighted) of the part of `surface` in `region`, from
+/// `beyond` (m) past the wrist's plane.
 fn moments(
     surface: &Surface,
-    wrist: Point3<f64>,
-    axis: Vector3<f64>,
-    reach: f64,
+    region: BeyondWrist,
     beyond: f64,
 ) -> Option<(f64, Point3<f64>, Matrix3<f64>)> {
+    let BeyondWrist { wrist, axis, reach } = region;
     let inside = || {
         surface
             .iter()
@@ -53,20 +61,17 @@ fn moments(
     Some((area, Point3::from(centroid), covariance))
 }
 
-/// Whether the scan's surface (`scan`) beyond the wrist's plane across `axis` (the forearm's
-/// direction) and within `reach` of `wrist` is hand-like: its area within `params.area_range` of the
+/// Whether the scan's surface (`scan`) in `region` is hand-like: its area within `params.area_range` of the
 /// template hand's (`template`) there.
 pub fn hand_like(
-    wrist: Point3<f64>,
-    axis: Vector3<f64>,
-    reach: f64,
+    region: BeyondWrist,
     template: &Surface,
     scan: &Surface,
     params: &HandParams,
 ) -> bool {
     match (
-        moments(template, wrist, axis, reach, params.beyond),
-        moments(scan, wrist, axis, reach, params.beyond),
+        moments(template, region, params.beyond),
+        moments(scan, region, params.beyond),
     ) {
         (Some((t, _, _)), Some((s, _, _))) => {
             (params.area_range.0..=params.area_range.1).contains(&(s / t))
@@ -81,15 +86,14 @@ pub fn hand_like(
 /// hand onto the scan's (the smaller of the two: the direction has no sign). `None` when either
 /// has no surface there or the turn exceeds `params.max_turn_deg`.
 pub fn hand_rotation(
-    wrist: Point3<f64>,
-    axis: Vector3<f64>,
-    reach: f64,
+    region: BeyondWrist,
     template: &Surface,
     scan: &Surface,
     params: &HandParams,
 ) -> Option<Rotation3<f64>> {
-    let (_, t_centroid, t_cov) = moments(template, wrist, axis, reach, params.beyond)?;
-    let (_, s_centroid, s_cov) = moments(scan, wrist, axis, reach, params.beyond)?;
+    let wrist = region.wrist;
+    let (_, t_centroid, t_cov) = moments(template, region, params.beyond)?;
+    let (_, s_centroid, s_cov) = moments(scan, region, params.beyond)?;
     let (t_axis, s_axis) = (t_centroid - wrist, s_centroid - wrist);
     let bend = Rotation3::rotation_between(&t_axis, &s_axis)?;
     let along = s_axis.normalize();
@@ -158,23 +162,31 @@ mod tests {
         let turn = Rotation3::from_axis_angle(&Vector3::x_axis(), 25f64.to_radians())
             * Rotation3::from_axis_angle(&Vector3::z_axis(), 15f64.to_radians());
         let scan = moved(&template, |p| turn * p);
-        let (wrist, axis) = (Point3::origin(), Vector3::z());
-        assert!(hand_like(wrist, axis, REACH_M, &template, &scan, &P));
-        let found = hand_rotation(wrist, axis, REACH_M, &template, &scan, &P).unwrap();
+        let region = BeyondWrist {
+            wrist: Point3::origin(),
+            axis: Vector3::z(),
+            reach: REACH_M,
+        };
+        assert!(hand_like(region, &template, &scan, &P));
+        let found = hand_rotation(region, &template, &scan, &P).unwrap();
         assert!(found.angle_to(&turn).to_degrees() < 0.5, "{found:?}");
         // The template's own pose: no turn.
-        let same = hand_rotation(wrist, axis, REACH_M, &template, &template, &P).unwrap();
+        let same = hand_rotation(region, &template, &template, &P).unwrap();
         assert!(same.angle().to_degrees() < 1e-6);
         // Beyond the largest turn believed: none.
         let far = Rotation3::from_axis_angle(&Vector3::x_axis(), 75f64.to_radians());
         let scan = moved(&template, |p| far * p);
-        assert!(hand_rotation(wrist, axis, REACH_M, &template, &scan, &P).is_none());
+        assert!(hand_rotation(region, &template, &scan, &P).is_none());
     }
 
     #[test]
     fn a_hand_against_the_thigh_is_not_hand_like() {
         let template = hand();
-        let (wrist, axis) = (Point3::origin(), Vector3::z());
+        let region = BeyondWrist {
+            wrist: Point3::origin(),
+            axis: Vector3::z(),
+            reach: REACH_M,
+        };
         // The thigh: a wall of skin 3 cm beside the hand, as long as the region.
         let step = 0.004;
         let mut scan = template.clone();
@@ -184,8 +196,8 @@ mod tests {
                 scan.push((p, step * step));
             }
         }
-        assert!(!hand_like(wrist, axis, REACH_M, &template, &scan, &P));
+        assert!(!hand_like(region, &template, &scan, &P));
         // Nothing scanned beyond the wrist (a hole): not hand-like either.
-        assert!(!hand_like(wrist, axis, REACH_M, &template, &[], &P));
+        assert!(!hand_like(region, &template, &[], &P));
     }
 }

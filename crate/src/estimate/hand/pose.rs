@@ -6,7 +6,7 @@ use nalgebra::{Point3, UnitQuaternion, Vector3};
 
 use super::laid::laid_hand;
 use super::laid_wrist::laid_wrist;
-use super::moments::{hand_like, hand_rotation, surface, Surface};
+use super::moments::{hand_like, hand_rotation, surface, BeyondWrist, Surface};
 use super::wrist_profile::{wrist_from_profile, Profiles};
 use super::{slide_wrist, HandPose};
 use crate::estimate::matching::Matching;
@@ -84,7 +84,12 @@ fn pose_hand(
         .copied()
         .collect();
     let template = surface(positions, &hand.triangles);
-    let free = hand_like(wrist, axis, r, &template, &near, params);
+    let region = BeyondWrist {
+        wrist,
+        axis,
+        reach: r,
+    };
+    let free = hand_like(region, &template, &near, params);
     // An arm bent like the hands on the hips: the hand is laid on the body. Bent less, a hand
     // that is not free is when the forearm comes down onto the body and levels out onto it.
     let elbow = mid(positions, hand.epicondyles);
@@ -107,14 +112,12 @@ fn pose_hand(
     }
     let (wrist, axis) = wrist_and_axis(positions, hand.styloids, hand.epicondyles);
     let template = surface(positions, &hand.triangles);
-    let mut rotation = hand_rotation(
+    let region = BeyondWrist {
         wrist,
         axis,
-        reach(positions, wrist),
-        &template,
-        &near,
-        params,
-    );
+        reach: reach(positions, wrist),
+    };
+    let mut rotation = hand_rotation(region, &template, &near, params);
     if let Some(turn) = rotation {
         // Kept when the hand's own vertices match the scan better for it.
         let mut normals = vec![Vector3::zeros(); positions.len()];
@@ -179,11 +182,35 @@ mod tests {
 
     /// Matching onto `index` as the estimate's (compatible normals, 10 cm outliers).
     fn matching_on(index: &crate::align::SurfaceIndex) -> Matching<'_> {
-        Matching {
-            scan: index,
-            min_cos: 0.5,
-            outlier_distance: 0.1,
-        }
+        Matching::new(index, &EstimateParams::default())
+    }
+
+    /// The template's hand `hand` posed onto `scan` (its surface as `scan_surface`) from the
+    /// template's rest positions, as the estimate does (60° the most bend the profiles take).
+    fn posed_on(
+        template: &Template,
+        hand: &Hand,
+        scan: &Mesh,
+        scan_surface: &Surface,
+    ) -> (Vec<Point3<f64>>, HandPose) {
+        let index = scan_index(&scan.positions, template);
+        let profiles = Profiles {
+            triangles: &template.mesh().triangles,
+            scan,
+            params: &ProfileParams::default(),
+        };
+        let mut positions = template.mesh().positions.clone();
+        let matching = matching_on(&index);
+        let pose = pose_hand(
+            hand,
+            &mut positions,
+            scan_surface,
+            &profiles,
+            &matching,
+            &P,
+            60.0,
+        );
+        (positions, pose.unwrap())
     }
 
     #[test]
@@ -224,26 +251,14 @@ mod tests {
         }
         let r = P.reach * own.iter().map(|p| (p - wrist).norm()).fold(0.0, f64::max);
         let template_hand = surface(rest, &hand.triangles);
-        let turn = hand_rotation(wrist, axis, r, &template_hand, &scan_surface, &P).unwrap();
-        assert!(turn.angle().to_degrees() > 5.0, "{turn:?}");
-        let index = scan_index(rest, &template);
-        let matching = matching_on(&index);
-        let mut positions = rest.to_vec();
-        let profiles = Profiles {
-            triangles: &mesh.triangles,
-            scan: mesh,
-            params: &ProfileParams::default(),
+        let region = BeyondWrist {
+            wrist,
+            axis,
+            reach: r,
         };
-        let pose = pose_hand(
-            hand,
-            &mut positions,
-            &scan_surface,
-            &profiles,
-            &matching,
-            &P,
-            60.0,
-        )
-        .unwrap();
+        let turn = hand_rotation(region, &template_hand, &scan_surface, &P).unwrap();
+        assert!(turn.angle().to_degrees() > 5.0, "{turn:?}");
+        let (positions, pose) = posed_on(&template, hand, mesh, &scan_surface);
         assert!(pose.rotation.is_none(), "{pose:?}");
         // Only slid along the forearm.
         for v in &hand.own {
@@ -287,26 +302,14 @@ mod tests {
                 .map(|(v, _)| (rest[*v as usize] - at).norm())
                 .fold(0.0, f64::max);
         let template_hand = surface(rest, &hand.triangles);
-        assert!(!hand_like(at, along, r, &template_hand, &scan_surface, &P));
-        let mesh = Mesh::new(scan, triangles.clone());
-        let index = scan_index(&mesh.positions, &template);
-        let matching = matching_on(&index);
-        let profiles = Profiles {
-            triangles,
-            scan: &mesh,
-            params: &ProfileParams::default(),
+        let region = BeyondWrist {
+            wrist: at,
+            axis: along,
+            reach: r,
         };
-        let mut positions = rest.to_vec();
-        let pose = pose_hand(
-            hand,
-            &mut positions,
-            &scan_surface,
-            &profiles,
-            &matching,
-            &P,
-            60.0,
-        )
-        .unwrap();
+        assert!(!hand_like(region, &template_hand, &scan_surface, &P));
+        let mesh = Mesh::new(scan, triangles.clone());
+        let (positions, pose) = posed_on(&template, hand, &mesh, &scan_surface);
         assert!(pose.rotation.is_none(), "{pose:?}");
         assert!((pose.slide - 0.03).abs() < 0.006, "{}", pose.slide);
         for v in hand.styloids {
