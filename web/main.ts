@@ -19,16 +19,16 @@ import { ScanPanel } from './ui/scan-panel';
 import { TopBar } from './ui/top-bar';
 import { Viewer } from './view/viewer';
 
-const client = new CoreClient();
+const client = new CoreClient('core');
 // Long jobs that Cancel may stop (the RBF warp and alignment) run in a worker of their own:
 // cancelling or losing it never touches the template, the scan read or the shape model, which live
 // in the main core worker.
-const alignClient = new CoreClient();
+const alignClient = new CoreClient('align');
 // The landmark estimate and its checks run in a third worker: cancelling an estimate stops only it.
-const landmarkClient = new CoreClient();
+const landmarkClient = new CoreClient('landmarks');
 // Population work (measurement distributions, boundary manikins) runs in a fourth: cancelling it
 // never touches the body shown.
-const populationClient = new CoreClient();
+const populationClient = new CoreClient('population');
 let caesarNames: string[] = [];
 const session = new Session(() => caesarNames);
 const viewer = new Viewer(byId('viewport'));
@@ -75,7 +75,7 @@ const batch = startBatch({ client, viewer, templateView, warpStep, alignStep, sh
 if (new URLSearchParams(location.search).has('debug')) {
   const trap = (which: 'core' | 'align' | 'batch') => {
     if (which === 'batch') batch.trapNext = true;
-    else void (which === 'core' ? client : alignClient).call({ type: 'trap' }).catch(() => undefined);
+    else void (which === 'core' ? client.call({ type: 'trap' }) : alignClient.call({ type: 'trap' })).catch(() => undefined);
   };
   const setBatchWorkers = (n: number | null) => (batch.workerLimit = n);
   (window as unknown as { bodyspaceDebug: unknown }).bodyspaceDebug = { trap, setBatchWorkers };

@@ -16,7 +16,7 @@ import type { WarpStep } from './warp-step';
 
 export interface BatchPage {
   /** The main core worker (pairing); the batch's own workers are its pool's. */
-  client: CoreClient;
+  client: CoreClient<'core'>;
   viewer: Viewer;
   templateView: TemplateView;
   warpStep: WarpStep;

@@ -8,13 +8,13 @@ import { bodiesGlb } from '../view/gltf-export';
 
 export type BodyFormat = 'ply' | 'obj' | 'glb';
 
-export async function csv(client: CoreClient, kind: ModelCsv): Promise<void> {
+export async function csv(client: CoreClient<'core'>, kind: ModelCsv): Promise<void> {
   const text = await client.call({ type: 'modelCsv', kind });
   download(`${kind}.csv`, text, 'text/csv');
 }
 
 /** The body shown, at the resolution shown (`triangles` are its own); PLY and OBJ by the core's writers. */
-export async function body(client: CoreClient, shown: ReconstructedBody, triangles: Uint32Array, format: BodyFormat): Promise<void> {
+export async function body(client: CoreClient<'core'>, shown: ReconstructedBody, triangles: Uint32Array, format: BodyFormat): Promise<void> {
   if (format === 'ply' || format === 'obj') {
     const bytes = await client.call({ type: 'exportMesh', positions: shown.positions.slice(), triangles: triangles.slice(), format });
     download(`body.${format}`, bytes, format === 'obj' ? 'text/plain' : 'application/octet-stream');
@@ -22,7 +22,7 @@ export async function body(client: CoreClient, shown: ReconstructedBody, triangl
 }
 
 /** One GLB with a body per σ step along whole-body mode `mode` (other values as they are). */
-export async function alongMode(client: CoreClient, coefficients: ShapeCoefficients, triangles: Uint32Array, mode: number, steps: number[]): Promise<void> {
+export async function alongMode(client: CoreClient<'core'>, coefficients: ShapeCoefficients, triangles: Uint32Array, mode: number, steps: number[]): Promise<void> {
   if (steps.length === 0) return;
   const bodies = [];
   for (const t of steps) {
@@ -35,19 +35,19 @@ export async function alongMode(client: CoreClient, coefficients: ShapeCoefficie
 }
 
 /** The model as GLB with its modes as morph targets: the whole body, or all seven models. */
-export async function modelGlb(client: CoreClient, model: LoadedModel, parts: ModelGlbParts): Promise<void> {
+export async function modelGlb(client: CoreClient<'core'>, model: LoadedModel, parts: ModelGlbParts): Promise<void> {
   const modes = Math.max(...model.info.parts.map((p) => p.variances.length));
   const glb = await client.call({ type: 'modelGlb', modes, parts });
   download(parts === 'all' ? 'shape-model-segments.glb' : 'shape-model.glb', glb, 'model/gltf-binary');
 }
 
-export async function modelFile(client: CoreClient): Promise<void> {
+export async function modelFile(client: CoreClient<'core'>): Promise<void> {
   const bytes = await client.call({ type: 'modelFile' });
   download('shape-model.bsm', bytes);
 }
 
 /** The whole body or one segment as a statismo HDF5 file (`shape-model.h5`, `shape-model-head.h5`, …). */
-export async function modelStatismo(client: CoreClient, part: PartName): Promise<void> {
+export async function modelStatismo(client: CoreClient<'core'>, part: PartName): Promise<void> {
   const bytes = await client.call({ type: 'modelStatismo', part });
   download(part === 'whole' ? 'shape-model.h5' : `shape-model-${part}.h5`, bytes, 'application/x-hdf5');
 }

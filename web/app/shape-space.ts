@@ -53,11 +53,11 @@ export class ShapeSpace {
   private suppressed = false;
 
   constructor(
-    private readonly client: CoreClient,
+    private readonly client: CoreClient<'core'>,
     private readonly viewer: Viewer,
     private readonly banner: ErrorBanner,
     /** The worker of population work (distributions, manikins), which Cancel may replace. */
-    populationClient: CoreClient,
+    populationClient: CoreClient<'population'>,
   ) {
     this.morph = new MorphQueue(client, (body, _c, sentAt) => this.show(body, sentAt), (message) => this.banner.show([message]));
     this.panel = new ShapePanel({
