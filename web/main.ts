@@ -49,18 +49,15 @@ const landmarkStep = new LandmarkStep(client, landmarkClient, viewer, session, (
 landmarkStep.onPick = () => warpStep.show('scan', true);
 // One change of the session, one reset of what was made from it: the picked landmark (new files),
 // then the fit (before the warp: both run in the align worker, which a running fit's cancel stops),
-// then the warp, which runs again.
+// then the warp, which runs again (not under a batch fit, which takes only the fit's place).
 session.onChange((change) => {
   if (change === 'files') landmarkStep.reset();
   alignStep.reset();
-  warpStep.reset(change === 'edited');
+  if (change !== 'batchFit') warpStep.reset(change === 'edited');
 });
 templateView.onLoaded((data) => landmarkStep.setTemplate(data));
-// Another template resolution: the warp and the fit were made with the old one.
 templateView.onLoaded(() => {
-  if (!warpStep.ready) return;
-  alignStep.reset();
-  warpStep.reset();
+  if (warpStep.ready) session.changed('template');
 });
 let lastReadMs = 0;
 let loads = 0;
@@ -68,7 +65,7 @@ let loads = 0;
 const shapeSpace = new ShapeSpace(client, viewer, banner, populationClient);
 
 // The batch aligns in a pool of workers of its own.
-const batch = startBatch({ client, viewer, templateView, warpStep, alignStep, shapeSpace, banner });
+const batch = startBatch({ client, viewer, session, templateView, warpStep, shapeSpace, banner });
 
 // `?debug` lets the crash-recovery tests trap a worker's core as a bug would: the main or align
 // worker now, or the next batch job's worker when it starts.
