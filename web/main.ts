@@ -19,16 +19,16 @@ import { ScanPanel } from './ui/scan-panel';
 import { TopBar } from './ui/top-bar';
 import { Viewer } from './view/viewer';
 
-const client = new CoreClient();
+const client = new CoreClient('core');
 // Long jobs that Cancel may stop (the RBF warp and alignment) run in a worker of their own:
 // cancelling or losing it never touches the template, the scan read or the shape model, which live
 // in the main core worker.
-const alignClient = new CoreClient();
+const alignClient = new CoreClient('align');
 // The landmark estimate and its checks run in a third worker: cancelling an estimate stops only it.
-const landmarkClient = new CoreClient();
+const landmarkClient = new CoreClient('landmarks');
 // Population work (measurement distributions, boundary manikins) runs in a fourth: cancelling it
 // never touches the body shown.
-const populationClient = new CoreClient();
+const populationClient = new CoreClient('population');
 let caesarNames: string[] = [];
 const session = new Session(() => caesarNames);
 const viewer = new Viewer(byId('viewport'));
@@ -49,18 +49,15 @@ const landmarkStep = new LandmarkStep(client, landmarkClient, viewer, session, (
 landmarkStep.onPick = () => warpStep.show('scan', true);
 // One change of the session, one reset of what was made from it: the picked landmark (new files),
 // then the fit (before the warp: both run in the align worker, which a running fit's cancel stops),
-// then the warp, which runs again.
+// then the warp, which runs again (not under a batch fit, which takes only the fit's place).
 session.onChange((change) => {
   if (change === 'files') landmarkStep.reset();
   alignStep.reset();
-  warpStep.reset(change === 'edited');
+  if (change !== 'batchFit') warpStep.reset(change === 'edited');
 });
 templateView.onLoaded((data) => landmarkStep.setTemplate(data));
-// Another template resolution: the warp and the fit were made with the old one.
 templateView.onLoaded(() => {
-  if (!warpStep.ready) return;
-  alignStep.reset();
-  warpStep.reset();
+  if (warpStep.ready) session.changed('template');
 });
 let lastReadMs = 0;
 let loads = 0;
@@ -68,14 +65,14 @@ let loads = 0;
 const shapeSpace = new ShapeSpace(client, viewer, banner, populationClient);
 
 // The batch aligns in a pool of workers of its own.
-const batch = startBatch({ client, viewer, templateView, warpStep, alignStep, shapeSpace, banner });
+const batch = startBatch({ client, viewer, session, templateView, warpStep, shapeSpace, banner });
 
 // `?debug` lets the crash-recovery tests trap a worker's core as a bug would: the main or align
 // worker now, or the next batch job's worker when it starts.
 if (new URLSearchParams(location.search).has('debug')) {
   const trap = (which: 'core' | 'align' | 'batch') => {
     if (which === 'batch') batch.trapNext = true;
-    else void (which === 'core' ? client : alignClient).call({ type: 'trap' }).catch(() => undefined);
+    else void (which === 'core' ? client.call({ type: 'trap' }) : alignClient.call({ type: 'trap' })).catch(() => undefined);
   };
   const setBatchWorkers = (n: number | null) => (batch.workerLimit = n);
   (window as unknown as { bodyspaceDebug: unknown }).bodyspaceDebug = { trap, setBatchWorkers };

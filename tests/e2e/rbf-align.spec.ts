@@ -102,11 +102,19 @@ test('a landmark file with too few landmarks shows the core RBF error and keeps 
   await expect(page.locator('body')).toHaveAttribute('data-rbf-state', 'done', { timeout: 60_000 });
   const csv = sampleFile('landmarks_001.csv').bytes.toString('utf8').trim().split('\n');
   const few: TestFile = { name: 'few_landmarks.csv', bytes: Buffer.from(csv.slice(0, 4).join('\n')) };
+  // The warp on the three landmarks fails at once; the estimate then fills in the partial file and
+  // the warp runs again, so the error is recorded as it is shown, whatever the estimate's pace.
+  await page.evaluate(() => {
+    new MutationObserver((_, observer) => {
+      if (document.body.dataset.rbfState !== 'error') return;
+      observer.disconnect();
+      document.body.dataset.rbfErrorShown = document.querySelector('[data-testid="rbf-error"]')?.textContent ?? '';
+    }).observe(document.body, { attributes: true, attributeFilter: ['data-rbf-state'] });
+  });
   await dropFiles(page, [few]);
   await waitForLoads(page, 2);
-  await expect(page.locator('body')).toHaveAttribute('data-rbf-state', 'error', { timeout: 60_000 });
-  await expect(page.getByTestId('rbf-error')).toContainText('RBF warp');
-  await expect(page.getByTestId('rbf-error')).toContainText('landmark');
+  await expect(page.locator('body')).toHaveAttribute('data-rbf-error-shown', /RBF warp/, { timeout: 60_000 });
+  await expect(page.locator('body')).toHaveAttribute('data-rbf-error-shown', /landmark/);
   await expect(page.getByTestId('error-banner')).toBeVisible();
   await expect(page.locator('body')).toHaveAttribute('data-scan-loaded', 'true');
   await expect(page.getByTestId('file-name').or(page.locator('.file-name')).first()).toHaveText('scan_001.ply.gz');

@@ -29,7 +29,7 @@ export class AlignStep {
   private legendMaxMm = 10;
 
   constructor(
-    private readonly client: CoreClient,
+    private readonly client: CoreClient<'align'>,
     private readonly viewer: Viewer,
     private readonly session: Session,
     private readonly template: TemplateView,

@@ -18,7 +18,7 @@ export interface SubjectInput {
  * before the call too (a cancel that came while the files were being read).
  */
 export async function alignSubject(
-  client: CoreClient,
+  client: CoreClient<'batch'>,
   input: SubjectInput,
   resolution: TemplateResolution,
   options: SubjectOptions,

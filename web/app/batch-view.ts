@@ -7,20 +7,21 @@ import { BatchPanel } from '../ui/batch-panel';
 import type { ErrorBanner } from '../ui/error-banner';
 import { distanceHeat } from '../view/heat-colours';
 import type { Viewer } from '../view/viewer';
-import { FITTED_COLOUR, type AlignStep } from './align-step';
+import { FITTED_COLOUR } from './align-step';
 import { Batch } from './batch';
 import { uprightTransform } from './display-frame';
+import type { Session } from './session';
 import type { ShapeSpace } from './shape-space';
 import type { TemplateView } from './template-view';
 import type { WarpStep } from './warp-step';
 
 export interface BatchPage {
   /** The main core worker (pairing); the batch's own workers are its pool's. */
-  client: CoreClient;
+  client: CoreClient<'core'>;
   viewer: Viewer;
+  session: Session;
   templateView: TemplateView;
   warpStep: WarpStep;
-  alignStep: AlignStep;
   shapeSpace: ShapeSpace;
   banner: ErrorBanner;
 }
@@ -75,7 +76,7 @@ export function startBatch(page: BatchPage): Batch {
     }
     const heat = distanceHeat(fit.distances);
     page.shapeSpace.hide();
-    page.alignStep.reset();
+    page.session.changed('batchFit');
     templateView.setShown(false);
     // The next scan opened shows itself again (the warp step's reset).
     for (const key of ['scan', 'warped']) viewer.showBody(key, { visible: false });

@@ -50,7 +50,7 @@ export interface BatchSummary {
 /** A running subject: its pool slot and worker, and its cancel signal. */
 interface Job {
   slot: number;
-  client: CoreClient;
+  client: CoreClient<'batch'>;
   cancel: AbortController;
 }
 
@@ -80,7 +80,7 @@ export class Batch {
   private readonly trapped = new Set<string>();
 
   constructor(
-    private readonly pairing: CoreClient,
+    private readonly pairing: CoreClient<'core'>,
     private readonly settings: () => BatchSettings | null,
     /** `progress`: only a running subject's progress moved (the page may draw it at the next frame). */
     private readonly onChange: (progress?: boolean) => void,

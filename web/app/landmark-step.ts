@@ -56,8 +56,8 @@ export class LandmarkStep {
    * `onEdited(keepView)`: the set changed; `keepView` unless it is a new set (an estimate).
    */
   constructor(
-    private readonly client: CoreClient,
-    private readonly estimator: CoreClient,
+    private readonly client: CoreClient<'core'>,
+    private readonly estimator: CoreClient<'landmarks'>,
     private readonly viewer: Viewer,
     private readonly session: Session,
     private readonly caesarNames: () => readonly string[],

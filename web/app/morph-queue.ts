@@ -11,7 +11,7 @@ export class MorphQueue {
   private rebuild = false;
 
   constructor(
-    private readonly client: CoreClient,
+    private readonly client: CoreClient<'core'>,
     /** `sentAt`: `performance.now()` when the request was posted (for the round trip). */
     private readonly onBody: (body: ReconstructedBody, coefficients: ShapeCoefficients, sentAt: number) => void,
     private readonly onError: (message: string) => void,

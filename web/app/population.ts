@@ -32,7 +32,7 @@ export class Population {
   private readonly page = document.body;
 
   constructor(
-    private readonly client: CoreClient,
+    private readonly client: CoreClient<'population'>,
     private readonly view: PopulationView,
     private readonly manikinPanel: ManikinPanel,
     /** Shows a whole body (σ values) on the sliders. */
@@ -58,7 +58,7 @@ export class Population {
   }
 
   /** The worker holding the model in view (loaded again after a cancel). */
-  async ready(): Promise<CoreClient> {
+  async ready(): Promise<CoreClient<'population'>> {
     if (!this.file) throw new Error('no shape model is loaded');
     if (!this.loaded) {
       const loaded = await this.client.call({ type: 'loadModel', bytes: this.file.bytes.slice(0), fileName: this.file.fileName });

@@ -18,7 +18,7 @@ export interface ReadOutcome {
 }
 
 export async function readFiles(
-  client: CoreClient,
+  client: CoreClient<'core'>,
   files: File[],
   onStatus: (text: string) => void,
 ): Promise<ReadOutcome> {

@@ -3,7 +3,7 @@ import type { CoreClient } from '../client/core-client';
 import type { SubjectStore } from './subjects';
 
 /** Reads each file with the core; meshes with `vertexCount` vertices join the store as 'dropped'. */
-export async function readFits(client: CoreClient, store: SubjectStore, files: File[], vertexCount: number, resolution: string): Promise<string[]> {
+export async function readFits(client: CoreClient<'core'>, store: SubjectStore, files: File[], vertexCount: number, resolution: string): Promise<string[]> {
   const errors: string[] = [];
   for (const file of files) {
     try {

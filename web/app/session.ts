@@ -9,9 +9,12 @@ import { LandmarkEdits } from './landmark-edits';
  * What changed: `files`, a scan or landmark file opened (everything made from the old ones goes:
  * the picked landmark, the warp, the fit, and the view re-aims); `units`, the scan's units chosen;
  * `edited`, a landmark of the set edited (the warp and the fit go, the view stays); `estimated`,
- * the set filled in by the estimate (the warp and the fit go, the view re-aims).
+ * the set filled in by the estimate (the warp and the fit go, the view re-aims); `template`,
+ * another template resolution loaded under a warp (the warp and the fit made with the old one go);
+ * `batchFit`, a batch subject's fit shown in the fit's place (the single scan's fit goes, its warp
+ * stays).
  */
-export type SessionChange = 'files' | 'units' | 'edited' | 'estimated';
+export type SessionChange = 'files' | 'units' | 'edited' | 'estimated' | 'template' | 'batchFit';
 
 export class Session {
   scan: ParsedScan | null = null;
@@ -42,7 +45,7 @@ export class Session {
     this.changed('files');
   }
 
-  /** Tells the listeners of a change made to the set being edited (`edits`). */
+  /** Tells the listeners of a change: one the set being edited (`edits`) had, or one made beside the session (`template`, `batchFit`). */
   changed(change: SessionChange): void {
     for (const listener of this.listeners) listener(change);
   }

@@ -15,7 +15,7 @@ export class TemplateView {
   private readonly shownListeners: ((on: boolean) => void)[] = [];
 
   constructor(
-    private readonly client: CoreClient,
+    private readonly client: CoreClient<'core'>,
     private readonly viewer: Viewer,
     private readonly onError: (message: string) => void,
   ) {

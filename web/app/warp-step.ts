@@ -20,7 +20,7 @@ export class WarpStep {
   private readonly listeners: ((transform: number[] | null) => void)[] = [];
 
   constructor(
-    private readonly client: CoreClient,
+    private readonly client: CoreClient<'align'>,
     private readonly viewer: Viewer,
     private readonly session: Session,
     private readonly template: TemplateView,

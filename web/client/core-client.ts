@@ -1,6 +1,7 @@
-// Owns the core worker: typed requests queued one at a time, replies matched by id, progress
-// callbacks, and cancellation by terminating the worker and starting a fresh one.
-import type { CoreEvent, CoreReply, CoreRequest, CoreRequestBody, ResultOf } from '../shared/messages';
+// Owns a core worker of one role: typed requests queued one at a time, replies matched by id,
+// progress callbacks, and cancellation by terminating the worker and starting a fresh one.
+import type { CoreEvent, CoreReply, CoreRequest, ResultOf } from '../shared/messages';
+import type { RoleRequest, WorkerRole } from '../shared/worker-roles';
 
 /** The rejection of every call pending when `cancel()` ran. */
 export class CancelledError extends Error {
@@ -39,7 +40,11 @@ interface Queued {
   transfer: Transferable[];
 }
 
-export class CoreClient {
+/**
+ * The client of a worker of role `W` (`shared/worker-roles.ts`): `call` takes only that role's
+ * messages, so a message sent to the wrong worker does not typecheck.
+ */
+export class CoreClient<W extends WorkerRole> {
   private worker: Worker;
   private nextId = 1;
   private readonly pending = new Map<number, Pending>();
@@ -47,12 +52,12 @@ export class CoreClient {
   private running: number | null = null;
   private readonly restartListeners: (() => void)[] = [];
 
-  constructor(private readonly makeWorker: () => Worker = defaultWorker) {
+  constructor(readonly role: W) {
     this.worker = this.start();
   }
 
   /** Sends `body` to the worker once earlier calls are done; resolves with the core's result. */
-  call<R extends CoreRequestBody>(body: R, options: CallOptions = {}): Promise<ResultOf<R>> {
+  call<R extends RoleRequest<W>>(body: R, options: CallOptions = {}): Promise<ResultOf<R>> {
     const id = this.nextId++;
     return new Promise<ResultOf<R>>((resolve, reject) => {
       this.pending.set(id, {
@@ -98,7 +103,7 @@ export class CoreClient {
   }
 
   private start(): Worker {
-    const worker = this.makeWorker();
+    const worker = startWorker(this.role);
     worker.onmessage = (event: MessageEvent<CoreReply>) => this.receive(event.data);
     worker.onerror = (event: ErrorEvent) => {
       event.preventDefault();
@@ -146,6 +151,7 @@ export class CoreClient {
   }
 }
 
-function defaultWorker(): Worker {
-  return new Worker(new URL('../worker/core.worker.ts', import.meta.url), { type: 'module' });
+/** The core worker, named by its role (which it holds its requests to; DevTools shows the name). */
+function startWorker(role: WorkerRole): Worker {
+  return new Worker(new URL('../worker/core.worker.ts', import.meta.url), { type: 'module', name: role });
 }

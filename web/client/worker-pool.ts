@@ -12,7 +12,7 @@ export function browserPoolSize(resolution: keyof typeof JOB_MEMORY_MIB): number
 
 /** `size` workers, started on first use; a slot is busy from `take` until `give`. */
 export class WorkerPool {
-  private readonly clients: (CoreClient | null)[];
+  private readonly clients: (CoreClient<'batch'> | null)[];
   private readonly free: number[];
 
   constructor(size: number) {
@@ -25,10 +25,10 @@ export class WorkerPool {
   }
 
   /** A free slot and its client, or null when all are busy. */
-  take(): { slot: number; client: CoreClient } | null {
+  take(): { slot: number; client: CoreClient<'batch'> } | null {
     const slot = this.free.shift();
     if (slot === undefined) return null;
-    const client = this.clients[slot] ?? new CoreClient();
+    const client = this.clients[slot] ?? new CoreClient('batch');
     this.clients[slot] = client;
     return { slot, client };
   }

@@ -8,8 +8,11 @@ import { runAlign, runAlignDefaults, runAlignFiles, runExport, runRbfWarp } from
 import { runCheck, runEstimate } from './landmark-handlers';
 import { templateData, templateTransfer } from './template-handlers';
 import * as models from './model-handlers';
+import { isWorkerRole, roleHandles } from '../shared/worker-roles';
 
 const ready = init();
+/** This worker's role: the name its client started it with (`client/core-client.ts`). */
+const role = (self as unknown as DedicatedWorkerGlobalScope).name;
 
 function post(reply: CoreReply, transfer: Transferable[] = []): void {
   (self as unknown as Worker).postMessage(reply, transfer);
@@ -47,6 +50,7 @@ function readLandmarks(bytes: ArrayBuffer, fileName: string): ParsedLandmarks {
 self.onmessage = async (event: MessageEvent<CoreRequest>) => {
   const request = event.data;
   try {
+    if (!isWorkerRole(role) || !roleHandles(role, request.type)) throw new Error(`the ${role || 'unnamed'} worker is not sent '${request.type}' requests`);
     await ready;
     switch (request.type) {
       case 'version':
