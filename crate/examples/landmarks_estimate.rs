@@ -187,6 +187,7 @@ mod native {
                 scan: &c.scan,
                 given: &given,
                 units: None,
+                orientation: None,
             };
             let estimate = estimate_landmarks(&input, &params, &mut ()).unwrap();
             let to_mm = estimate.scale_to_metres * 1000.0;

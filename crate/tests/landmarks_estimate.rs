@@ -13,7 +13,7 @@ use std::process::Command;
 
 use bodyspace::estimate::{
     estimate_landmarks, flag_given, given_landmarks, landmark_rest, EstimateInput, EstimateParams,
-    LandmarkEstimate, SuspicionKind,
+    LandmarkEstimate, Orientation, SuspicionKind, Verdict,
 };
 use bodyspace::io::{read_landmarks, write_landmarks_csv, write_ply};
 use bodyspace::landmarks::{LandmarkSet, CAESAR_LANDMARKS};
@@ -41,12 +41,21 @@ const HANDS_ON_HIPS_MM: (f64, f64, f64) = (40.0, 30.0, 14.0);
 const FREE_HANDS_MM: f64 = 8.5;
 
 fn estimate(c: &Case, given: &LandmarkSet) -> LandmarkEstimate {
+    estimate_oriented(c, given, None)
+}
+
+fn estimate_oriented(
+    c: &Case,
+    given: &LandmarkSet,
+    orientation: Option<Orientation>,
+) -> LandmarkEstimate {
     let template = bodyspace::template::Template::embedded().unwrap();
     let input = EstimateInput {
         template: &template,
         scan: &c.scan,
         given,
         units: None,
+        orientation,
     };
     estimate_landmarks(&input, &EstimateParams::default(), &mut ()).unwrap()
 }
@@ -102,9 +111,21 @@ fn every_frame_and_pose_is_found_and_the_landmarks_land_near_the_truth() {
         let (mean, worst) = errors_mm(&c, &e);
         let hands = group_mm(&c, &e, &HANDS);
         let elbows = group_mm(&c, &e, &ELBOWS);
+        let check = &r.self_check;
         eprintln!(
-            "{} / {}: mean {mean:.1} mm, worst {worst:.1} mm, elbows {elbows:.1} mm, wrists and hands {hands:.1} mm, up {} facing {}, {:.0} ms",
-            frame.name, pose.name, r.frame.up_axis, r.frame.facing_axis, r.total_ms
+            "{} / {}: mean {mean:.1} mm, worst {worst:.1} mm, elbows {elbows:.1} mm, wrists and hands {hands:.1} mm, up {} facing {}, {:.0} ms; self-check {} (moved {:.1} mm, RMS {:.1} mm, {:.2} m, {} contradicting)",
+            frame.name, pose.name, r.frame.up_axis, r.frame.facing_axis, r.total_ms,
+            check.verdict.name(), check.evidence.fit_moved_mm, check.evidence.fit_rms_mm,
+            check.evidence.stature_m, check.evidence.contradicting.len()
+        );
+        // A right estimate says so: no doubt raised, the confidences as they are.
+        assert_eq!(
+            check.verdict,
+            Verdict::Good,
+            "{} / {}: {:?}",
+            frame.name,
+            pose.name,
+            check
         );
         // The generator's frame is z up, facing −y.
         if frame.name != "z-up-m-turned-130deg" {
@@ -398,4 +419,48 @@ fn the_command_line_writes_every_format_and_aligns_without_landmarks() {
         .unwrap();
     assert!(rms < 2.0, "scan→template RMS {rms} mm");
     let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// The estimate checks itself: forced into a wrong frame (upside down, or lying on its side) it
+/// says it failed, in words, and no landmark keeps a confidence above 10 %; told the right way
+/// up it finds the frame it finds alone, and calls itself good.
+#[test]
+fn an_estimate_forced_into_a_wrong_frame_says_it_failed() {
+    use bodyspace::estimate::Axis;
+    let (template, data) = load();
+    let frame = &frames()[0]; // z up, mm, facing −y
+    let c = case(&data, &template, 11, 1, &poses()[0], frame);
+    for (up, facing) in [(Axis::MinusZ, None), (Axis::PlusX, None)] {
+        let e = estimate_oriented(
+            &c,
+            &LandmarkSet::default(),
+            Some(Orientation { up, facing }),
+        );
+        let check = &e.report.self_check;
+        eprintln!("up {}: {check:?}", up.name());
+        assert_eq!(
+            check.verdict,
+            Verdict::Failed,
+            "up {}: {check:?}",
+            up.name()
+        );
+        assert!(!check.reasons.is_empty());
+        let most = e.confidence.iter().copied().fold(0.0, f64::max);
+        assert!(most <= 0.1, "up {}: confidence {most}", up.name());
+    }
+    let told = Orientation {
+        up: Axis::PlusZ,
+        facing: Some(Axis::MinusY),
+    };
+    let e = estimate_oriented(&c, &LandmarkSet::default(), Some(told));
+    assert_eq!(
+        e.report.self_check.verdict,
+        Verdict::Good,
+        "{:?}",
+        e.report.self_check
+    );
+    assert_eq!(e.report.frame.up_axis, "+z");
+    assert_eq!(e.report.frame.facing_axis, "-y");
+    let (mean, _) = errors_mm(&c, &e);
+    assert!(mean < 20.0, "{mean} mm");
 }

@@ -17,6 +17,7 @@ fn the_estimate_lands_in_the_agreement_band_natively() {
         scan: &scan,
         given: &given,
         units: Some(Units::Metres),
+        orientation: None,
     };
     let e = estimate_landmarks(&input, &EstimateParams::default(), &mut ()).unwrap();
     let positions: Vec<f64> = e

@@ -63,6 +63,9 @@ pub enum QualityFlag {
     FoldOvers,
     /// Given landmarks that look wrong (listed in [`QualityReport::suspicious_landmarks`]).
     SuspiciousLandmarks,
+    /// The landmark estimate the warp used called itself doubtful or failed (its reasons in
+    /// [`QualityReport::landmark_estimate`]).
+    LandmarkEstimate,
 }
 
 impl QualityFlag {
@@ -73,6 +76,7 @@ impl QualityFlag {
             Self::Unmatched => "unmatched",
             Self::FoldOvers => "fold_overs",
             Self::SuspiciousLandmarks => "suspicious_landmarks",
+            Self::LandmarkEstimate => "landmark_estimate",
         }
     }
 }
@@ -94,6 +98,9 @@ pub struct QualityReport {
     pub folded_fraction: f64,
     /// Given landmarks that looked wrong and were left out of the warp (names).
     pub suspicious_landmarks: Vec<String>,
+    /// Why the landmark estimate the warp used doubts itself, in words (empty: it did not, or
+    /// none ran).
+    pub landmark_estimate: Vec<String>,
     /// The flags raised, in [`QualityFlag`] order (empty: the fit looks good).
     pub flags: Vec<QualityFlag>,
     pub thresholds: QualityThresholds,
@@ -107,6 +114,15 @@ impl QualityReport {
             self.flags.push(QualityFlag::SuspiciousLandmarks);
         }
         self.suspicious_landmarks = names;
+    }
+
+    /// Records why the landmark estimate the warp used doubts itself and raises
+    /// [`QualityFlag::LandmarkEstimate`] when it does.
+    pub fn add_landmark_estimate(&mut self, reasons: Vec<String>) {
+        if !reasons.is_empty() && !self.flags.contains(&QualityFlag::LandmarkEstimate) {
+            self.flags.push(QualityFlag::LandmarkEstimate);
+        }
+        self.landmark_estimate = reasons;
     }
 }
 
@@ -195,6 +211,7 @@ pub fn assess(
         folded_triangles: folded,
         folded_fraction,
         suspicious_landmarks: Vec::new(),
+        landmark_estimate: Vec::new(),
         flags,
         thresholds: *thresholds,
     }

@@ -13,7 +13,7 @@ use super::align::{scan_landmarks, JsObserver, ScanWithLandmarks};
 use super::template::TemplateHandle;
 use crate::estimate::{
     estimate_landmarks, flag_given, given_landmarks, landmark_rest, EstimateInput, EstimateParams,
-    LandmarkEstimate as Estimate,
+    LandmarkEstimate as Estimate, Orientation,
 };
 use crate::landmarks::CAESAR_LANDMARKS;
 use crate::mesh::units::Units;
@@ -70,15 +70,25 @@ impl LandmarkEstimate {
 }
 
 /// Estimates the landmarks `scan` lacks (all of them for an empty set); the given ones are kept
-/// as given. `on_progress(progress)` after every iteration with the core's `Progress` (stage
+/// as given. `orientation`: JSON of the core's `Orientation` (`{"up":"+z","facing":null}`) when a
+/// person said which way is up, else empty. `on_progress(progress)` after every iteration with the core's `Progress` (stage
 /// `"estimate"`; returning `false` cancels, and the call then fails with "cancelled").
 #[wasm_bindgen(js_name = estimateLandmarks)]
 pub fn estimate_landmarks_js(
     template: &TemplateHandle,
     scan: &ScanWithLandmarks,
+    orientation: &str,
     on_progress: &Function,
 ) -> Result<LandmarkEstimate, JsError> {
-    let estimate = run(&template.template, scan, on_progress)?;
+    let orientation = if orientation.is_empty() {
+        None
+    } else {
+        let o: Orientation = serde_json::from_str(orientation)
+            .map_err(|e| JsError::new(&format!("orientation {orientation}: {e}")))?;
+        o.validate().map_err(|e| JsError::new(&e))?;
+        Some(o)
+    };
+    let estimate = run(&template.template, scan, orientation, on_progress)?;
     Ok(LandmarkEstimate {
         positions: estimate
             .positions
@@ -144,6 +154,7 @@ pub fn check_landmarks_js(
 fn run(
     template: &Template,
     scan: &ScanWithLandmarks,
+    orientation: Option<Orientation>,
     on_progress: &Function,
 ) -> Result<Estimate, JsError> {
     let input = EstimateInput {
@@ -151,6 +162,7 @@ fn run(
         scan: &scan.scan,
         given: &scan.landmarks,
         units: Some(Units::Metres),
+        orientation,
     };
     let mut observer = JsObserver {
         on_progress,

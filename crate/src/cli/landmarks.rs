@@ -6,7 +6,7 @@
 
 use std::path::PathBuf;
 
-use super::subject_args::SubjectFiles;
+use super::subject_args::{OrientationArgs, SubjectFiles};
 use crate::io::write_landmarks;
 use crate::template::Template;
 
@@ -17,6 +17,8 @@ pub struct LandmarksArgs {
     /// estimate fills in the rest.
     #[command(flatten)]
     pub files: SubjectFiles,
+    #[command(flatten)]
+    pub orientation: OrientationArgs,
     /// Where to write the landmarks: .csv or .json (the scan's frame and units) or .lnd (mm).
     #[arg(long)]
     pub out: PathBuf,
@@ -30,7 +32,12 @@ pub fn run(args: &LandmarksArgs) -> Result<(), String> {
     let input = args.files.read()?;
     let template = Template::embedded().map_err(|e| format!("embedded template: {e}"))?;
     let estimate = input
-        .estimate_landmarks(&template, &input.given_in_scan_units(), &mut ())
+        .estimate_landmarks(
+            &template,
+            &input.given_in_scan_units(),
+            args.orientation.orientation()?,
+            &mut (),
+        )
         .map_err(|e| e.to_string())?;
     let name = args.out.display().to_string();
     let subject = args

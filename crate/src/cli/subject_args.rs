@@ -5,6 +5,7 @@ use std::path::{Path, PathBuf};
 use std::str::FromStr;
 
 use crate::align::{AlignParams, FineStageParams, Preset, QualityThresholds};
+use crate::estimate::{Axis, Orientation};
 use crate::rbf::{Kernel, RbfParams};
 use crate::subject::options::NEARLY_FULL;
 use crate::subject::SubjectOptions;
@@ -94,6 +95,43 @@ pub struct SubjectArgs {
     /// y up, metres, facing +z). The report records the motion between the two either way.
     #[arg(long, value_enum, default_value = "scan")]
     pub frame: Frame,
+    #[command(flatten)]
+    pub orientation: OrientationArgs,
+}
+
+/// Which way is up on a scan, when a person knows it.
+#[derive(clap::Args, Debug, Clone, Default)]
+pub struct OrientationArgs {
+    /// The scan axis pointing from the feet to the head: +x, -x, +y, -y, +z or -z (CAESAR: +z).
+    /// The landmark estimate then tries only this way up (default: it finds it).
+    #[arg(long)]
+    pub up: Option<String>,
+    /// The scan axis the body faces (across `--up`); needs `--up` (default: both ways are tried).
+    #[arg(long, requires = "up")]
+    pub facing: Option<String>,
+}
+
+impl OrientationArgs {
+    /// The orientation stated, checked; `None` when `--up` is not given.
+    pub fn orientation(&self) -> Result<Option<Orientation>, String> {
+        let axis = |flag: &str, name: &str| {
+            Axis::from_name(name)
+                .ok_or_else(|| format!("--{flag} {name}: one of +x, -x, +y, -y, +z, -z"))
+        };
+        let Some(up) = &self.up else {
+            return Ok(None);
+        };
+        let orientation = Orientation {
+            up: axis("up", up)?,
+            facing: self
+                .facing
+                .as_deref()
+                .map(|f| axis("facing", f))
+                .transpose()?,
+        };
+        orientation.validate()?;
+        Ok(Some(orientation))
+    }
 }
 
 impl SubjectArgs {
@@ -162,6 +200,7 @@ impl SubjectArgs {
                 max_folded_fraction: self.max_folded,
             },
             nearly_full: self.nearly_full,
+            orientation: self.orientation.orientation()?,
         })
     }
 }

@@ -4,7 +4,8 @@
 //! docs/landmarks-estimate.md describes the method and what it was measured against.
 //!
 //! * [`steps`] — [`estimate_landmarks`], [`EstimateInput`], [`LandmarkEstimate`]: the steps.
-//! * [`frame`] — principal axes and the four frame candidates; [`FrameReport`].
+//! * [`frame`] — principal axes and the four frame candidates; [`FrameReport`];
+//!   [`orientation`] — the candidates when a person says which way is up ([`Orientation`]).
 //! * [`candidates`] — the similarity ICP of each candidate.
 //! * [`segments`] — the segment-wise rigid fit of the template's parts (`template::parts`,
 //!   shared with `align::part_pose`) to the scan's pose.
@@ -20,6 +21,7 @@
 //!   [`check`] — [`check_given`]: a nearly full given file judged on its own, each landmark
 //!   against the other given landmarks of its rigid groups (no fit).
 //! * [`confidence`] — the typical error of each landmark (`typical_error`) and the fit's residual.
+//! * [`self_check`] — the estimate's verdict on itself (good, doubtful, failed) and why.
 //! * [`tick`] — progress and cancel through the caller's `AlignObserver`.
 //! * [`params`] — [`EstimateParams`] and the parameter structs it holds (every tuning number,
 //!   with its documented default); [`EstimateReport`] (`report.rs`), [`EstimateError`]
@@ -36,10 +38,12 @@ pub mod expected;
 pub mod frame;
 pub mod hand;
 pub mod matching;
+pub mod orientation;
 pub mod params;
 pub mod profile;
 pub mod report;
 pub mod segments;
+pub mod self_check;
 pub mod steps;
 pub mod suspicious;
 pub mod tick;
@@ -48,8 +52,10 @@ pub mod typical_error;
 pub use check::{check_given, GivenCheck};
 pub use error::EstimateError;
 pub use frame::FrameReport;
+pub use orientation::{Axis, Orientation};
 pub use params::EstimateParams;
 pub use report::EstimateReport;
+pub use self_check::{SelfCheck, Verdict};
 pub use steps::{
     estimate_landmarks, flag_given, given_landmarks, landmark_rest, EstimateInput, LandmarkEstimate,
 };

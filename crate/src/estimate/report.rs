@@ -3,6 +3,7 @@
 use serde::Serialize;
 
 use super::frame::FrameReport;
+use super::self_check::SelfCheck;
 use super::suspicious::SuspiciousLandmark;
 use crate::mesh::units::Units;
 
@@ -50,6 +51,9 @@ pub struct EstimateReport {
     pub landmarks: Vec<LandmarkReport>,
     /// Given landmarks far from where the scan puts them (not used to anchor the fit).
     pub flagged: Vec<SuspiciousLandmark>,
+    /// The estimate's verdict on itself, with its reasons in words (`self_check.rs`); the
+    /// confidences already carry its factor.
+    pub self_check: SelfCheck,
     /// RMS distance (mm) of the matched template vertices after the segment-wise fit.
     pub segment_rms_mm: f64,
     /// RMS distance (mm) of the fitted template to the scan after the landmark-free fine fit.

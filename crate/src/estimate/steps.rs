@@ -26,12 +26,14 @@ use super::check::{judge_given, CheckParams, NEARLY_FULL};
 use super::confidence::{confidence, neighbourhoods, residual};
 use super::error::EstimateError;
 use super::expected::expected_positions;
-use super::frame::{frame_candidates, same_frame, FrameReport};
+use super::frame::{same_frame, FrameReport};
 use super::hand::pose_hands;
 use super::matching::Matching;
+use super::orientation::{candidates_for, Orientation};
 use super::params::EstimateParams;
 use super::report::{CandidateReport, EstimateReport, LandmarkReport};
 use super::segments::fit_segments;
+use super::self_check::{self_check, Evidence, SelfCheck};
 use super::suspicious::{flag_suspicious, SuspiciousLandmark};
 use super::tick::Ticker;
 use super::typical_error::typical_error_mm;
@@ -61,6 +63,8 @@ pub struct EstimateInput<'a> {
     pub given: &'a LandmarkSet,
     /// The scan's units; `None` detects them from the body's extent.
     pub units: Option<Units>,
+    /// Which way is up (and the body faces), when a person said so; `None` finds it.
+    pub orientation: Option<Orientation>,
 }
 
 /// The 73 landmarks of a scan.
@@ -133,11 +137,19 @@ pub fn estimate_landmarks(
     let weights = data_weights(&template, FineAlignParams::default().sole_weight);
     let rest_normals = template.mesh().vertex_normals();
     let matching = Matching::new(&index, params);
-    let mut starts: Vec<(&'static str, _)> = frame_candidates(rest, index.positions())
-        .ok_or(EstimateError::NoShape)?
-        .into_iter()
-        .map(|c| ("axes", c.start))
-        .collect();
+    let mut starts: Vec<(&'static str, _)> =
+        candidates_for(rest, index.positions(), input.orientation.as_ref())
+            .ok_or(EstimateError::NoShape)?
+            .into_iter()
+            .map(|c| {
+                let source = if input.orientation.is_some() {
+                    "orientation"
+                } else {
+                    "axes"
+                };
+                (source, c.start)
+            })
+            .collect();
     let mut given_frame = None;
     if given_m.len() >= 4 {
         let from: Vec<_> = given_m
@@ -298,6 +310,13 @@ pub fn estimate_landmarks(
     }
     let fine_ms = now_ms() - fine_start;
 
+    let checked = check_itself(
+        &fine,
+        &best,
+        (&landmark_rest, &landmark_vertices),
+        moved_rms_mm(&posed, &fine.positions, &weights),
+        params,
+    );
     let near = neighbourhoods(rest, &landmark_vertices, params.confidence_radius);
     let mut positions = Vec::with_capacity(CAESAR_LANDMARK_COUNT);
     let mut confidences = Vec::with_capacity(CAESAR_LANDMARK_COUNT);
@@ -318,7 +337,8 @@ pub fn estimate_landmarks(
                     &near[k],
                     params.outlier_distance,
                 );
-                let c = confidence(typical_error_mm(k) / 1000.0, sharpness.spread(), r, params);
+                let c = confidence(typical_error_mm(k) / 1000.0, sharpness.spread(), r, params)
+                    * checked.confidence_factor;
                 (finite.then(|| p / to_m), if finite { c } else { 0.0 })
             }
         };
@@ -352,6 +372,7 @@ pub fn estimate_landmarks(
         estimated: positions.iter().flatten().count() - given.len(),
         landmarks,
         flagged,
+        self_check: checked,
         segment_rms_mm: segment_rms * 1000.0,
         fit_rms_mm: fine.report.template_to_scan.rms * 1000.0,
         iterations: ticker.iterations(),
@@ -370,6 +391,54 @@ pub fn estimate_landmarks(
         part: landmark_part,
         report,
     })
+}
+
+/// The estimate's check of itself (`self_check.rs`) from its landmark-free fit `fine`, the
+/// chosen frame `best`, the template's landmark vertices (at rest, and their indices) and how
+/// far the fine fit moved the template (`moved_mm`).
+fn check_itself(
+    fine: &crate::align::FineAlignResult,
+    best: &crate::mesh::similarity::Similarity,
+    (landmark_rest, landmark_vertices): (&[Point3<f64>], &[u32]),
+    moved_mm: f64,
+    params: &EstimateParams,
+) -> SelfCheck {
+    let estimated: Vec<(usize, Point3<f64>)> = landmark_vertices
+        .iter()
+        .enumerate()
+        .map(|(k, &v)| (k, fine.positions[v as usize]))
+        .collect();
+    let contradicting = judge_given(landmark_rest, &estimated, 1000.0, &CheckParams::default())
+        .flagged
+        .into_iter()
+        .map(|f| f.name)
+        .collect();
+    let evidence = Evidence {
+        fit_rms_mm: fine.report.template_to_scan.rms * 1000.0,
+        stature_m: {
+            let up = best.rotation * nalgebra::Vector3::y();
+            let heights = fine.positions.iter().map(|p| p.coords.dot(&up));
+            heights.clone().fold(f64::NEG_INFINITY, f64::max)
+                - heights.fold(f64::INFINITY, f64::min)
+        },
+        fit_moved_mm: moved_mm,
+        fit_curve_mm: fine.report.curve.iter().map(|c| c.rms * 1000.0).collect(),
+        contradicting,
+    };
+    self_check(&evidence, &params.self_check)
+}
+
+/// RMS (m → mm) of `after − before` over the vertices with a data weight.
+fn moved_rms_mm(before: &[Point3<f64>], after: &[Point3<f64>], weights: &[f64]) -> f64 {
+    let (sum, n) = before
+        .iter()
+        .zip(after)
+        .zip(weights)
+        .filter(|(_, w)| **w > 0.0)
+        .fold((0.0, 0usize), |(s, n), ((b, a), _)| {
+            (s + (a - b).norm_squared(), n + 1)
+        });
+    (sum / n.max(1) as f64).sqrt() * 1000.0
 }
 
 /// The given landmarks (CAESAR index, position in scan units) that look wrong. A nearly full

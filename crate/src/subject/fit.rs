@@ -10,6 +10,7 @@ use super::options::SubjectOptions;
 use super::policy::{subject_landmarks, PriorEstimate};
 use super::report::SubjectReport;
 use crate::align::{align_scan, assess, AlignInput, AlignObserver, Alignment};
+use crate::estimate::Verdict;
 use crate::mesh::units::Units;
 use crate::template::{Resolution, Template};
 
@@ -96,6 +97,13 @@ pub fn fit_subject(
                 .map(|l| l.name.clone())
                 .collect(),
         );
+        if let Some(check) = &landmarks.report.estimate_check {
+            if check.verdict != Verdict::Good {
+                let mut words = vec![format!("the landmark estimate {}", check.verdict.name())];
+                words.extend(check.reasons.iter().cloned());
+                quality.add_landmark_estimate(words);
+            }
+        }
         quality
     });
     let to_m = alignment.scale_to_metres;

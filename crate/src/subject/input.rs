@@ -5,7 +5,9 @@
 //! the scan's.
 
 use crate::align::AlignObserver;
-use crate::estimate::{estimate_landmarks, EstimateInput, EstimateParams, LandmarkEstimate};
+use crate::estimate::{
+    estimate_landmarks, EstimateInput, EstimateParams, LandmarkEstimate, Orientation,
+};
 use crate::io::{landmark_file_units, read_landmarks, read_scan};
 use crate::landmarks::LandmarkSet;
 use crate::mesh::bounding_extent;
@@ -65,11 +67,13 @@ impl SubjectInput {
     }
 
     /// The core's landmark estimate on this scan with its default parameters, keeping `given`
-    /// (the scan's frame and units) as it is. It reports to `observer` (a `Break` cancels).
+    /// (the scan's frame and units) as it is, in the frame a person stated (`orientation`) or
+    /// else the one it finds. It reports to `observer` (a `Break` cancels).
     pub fn estimate_landmarks(
         &self,
         template: &Template,
         given: &LandmarkSet,
+        orientation: Option<Orientation>,
         observer: &mut dyn AlignObserver,
     ) -> Result<LandmarkEstimate, SubjectError> {
         let input = EstimateInput {
@@ -77,6 +81,7 @@ impl SubjectInput {
             scan: &self.scan,
             given,
             units: Some(self.scan_units().0),
+            orientation,
         };
         estimate_landmarks(&input, &EstimateParams::default(), observer).map_err(|e| {
             SubjectError::Estimate {

@@ -6,6 +6,7 @@
 use serde::{Deserialize, Serialize};
 
 use crate::align::{AlignParams, QualityThresholds};
+use crate::estimate::Orientation;
 
 pub use crate::estimate::check::NEARLY_FULL;
 
@@ -22,6 +23,9 @@ pub struct SubjectOptions {
     /// CAESAR file missing a few): it is checked, not filled in, and its missing landmarks stay
     /// absent. Default [`NEARLY_FULL`], 64.
     pub nearly_full: usize,
+    /// Which way is up on the scans (and which way they face), when a person said so; the
+    /// landmark estimate then tries only that frame. Default `None`: the estimate finds it.
+    pub orientation: Option<Orientation>,
 }
 
 impl Default for SubjectOptions {
@@ -31,6 +35,7 @@ impl Default for SubjectOptions {
             check_landmarks: true,
             thresholds: QualityThresholds::default(),
             nearly_full: NEARLY_FULL,
+            orientation: None,
         }
     }
 }

@@ -17,7 +17,7 @@ use super::input::SubjectInput;
 use super::options::SubjectOptions;
 use super::report::LandmarkPolicyReport;
 use crate::align::AlignObserver;
-use crate::estimate::{check_given, given_landmarks, GivenCheck};
+use crate::estimate::{check_given, given_landmarks, GivenCheck, SelfCheck};
 use crate::landmarks::LandmarkSet;
 use crate::template::Template;
 
@@ -90,7 +90,8 @@ pub fn subject_landmarks(
     let prior = match prior {
         Some(prior) => Some(prior),
         None if fill_in => {
-            let estimate = input.estimate_landmarks(template, &trusted, observer)?;
+            let estimate =
+                input.estimate_landmarks(template, &trusted, options.orientation, observer)?;
             let report = serde_json::to_value(&estimate.report).unwrap_or_default();
             Some(PriorEstimate {
                 set: estimate.to_set(),
@@ -102,6 +103,7 @@ pub fn subject_landmarks(
     let mut set = trusted;
     let mut estimated = 0;
     let mut estimate_report = None;
+    let mut estimate_check = None;
     if let Some(prior) = prior {
         for l in prior.set.landmarks {
             if set.get(&l.name).is_none() && !left_out.iter().any(|f| f.name == l.name) {
@@ -110,6 +112,11 @@ pub fn subject_landmarks(
                 estimated += 1;
             }
         }
+        estimate_check = prior
+            .report
+            .get("self_check")
+            .and_then(|c| serde_json::from_value::<SelfCheck>(c.clone()).ok())
+            .filter(|_| estimated > 0);
         estimate_report = Some(prior.report);
     }
     Ok(SubjectLandmarks {
@@ -122,6 +129,7 @@ pub fn subject_landmarks(
             estimated,
             used: given_landmarks(&set).len(),
             estimate: estimate_report,
+            estimate_check,
         },
         set,
     })

@@ -8,7 +8,7 @@ use serde::Serialize;
 use super::frame::ToTemplate;
 use super::policy::LandmarkSource;
 use crate::align::{AlignmentReport, QualityReport};
-use crate::estimate::SuspiciousLandmark;
+use crate::estimate::{SelfCheck, SuspiciousLandmark};
 
 /// How the warp's landmarks were chosen ([`super::policy::subject_landmarks`]).
 #[derive(Debug, Clone, PartialEq, Serialize)]
@@ -30,6 +30,11 @@ pub struct LandmarkPolicyReport {
     /// The landmark estimate's report, when it ran (`estimate/report.rs`).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub estimate: Option<serde_json::Value>,
+    /// The estimate's verdict on itself, when the warp used landmarks it estimated
+    /// (`estimate/self_check.rs`); a doubtful or failed one raises the fit's
+    /// `landmark_estimate` flag.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub estimate_check: Option<SelfCheck>,
 }
 
 /// One subject's report.

@@ -1,15 +1,17 @@
 //! Parameters of the landmark estimate, each with its documented default (the one place they
 //! live): [`EstimateParams`] and the parameter structs it holds for the segment-wise fit
 //! ([`SegmentParams`], `segments.rs`), the limbs' profiles ([`ProfileParams`]) and the hands
-//! ([`HandParams`]). Lengths are metres, angles degrees.
+//! ([`HandParams`]) and the estimate's check of itself ([`SelfCheckParams`]). Lengths are metres, angles degrees.
 
 pub mod hand;
 pub mod profile;
 pub mod segments;
+pub mod self_check;
 
 pub use hand::{HandParams, LaidHandParams, WristProfileParams};
 pub use profile::ProfileParams;
 pub use segments::{ArmSwingParams, BentArmParams, ButtocksParams, SegmentParams};
+pub use self_check::SelfCheckParams;
 
 use serde::{Deserialize, Serialize};
 
@@ -72,6 +74,8 @@ pub struct EstimateParams {
     /// The local residual (m) that lowers the confidence by a further factor e⁻¹. Default 10 mm:
     /// above the fit's usual 3–5 mm, so only a landmark over a hole or a failed fit drops.
     pub confidence_residual: f64,
+    /// When the estimate calls itself doubtful or failed (`self_check.rs`).
+    pub self_check: SelfCheckParams,
 }
 
 impl Default for EstimateParams {
@@ -98,6 +102,7 @@ impl Default for EstimateParams {
             confidence_radius: 0.025,
             confidence_error: 0.03,
             confidence_residual: 0.01,
+            self_check: SelfCheckParams::default(),
         }
     }
 }

@@ -1,0 +1,214 @@
+//! The estimate's check of itself: every estimate says whether it can be trusted, and why not, in
+//! words. A wrong answer presented as right is the worst bug the product can have, so an
+//! estimate whose template had to be bent far out of shape to meet the scan, whose fitted body is
+//! no person's height, whose fit lies far from the scan or drifted away from it, or whose
+//! landmarks contradict each other is `doubtful` or `failed`, and its confidences are lowered to say so
+//! ([`SelfCheck::confidence_factor`]).
+
+use serde::{Deserialize, Serialize};
+
+use super::params::SelfCheckParams;
+
+/// The estimate's verdict on itself.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Verdict {
+    Good,
+    Doubtful,
+    Failed,
+}
+
+impl Verdict {
+    pub fn name(self) -> &'static str {
+        match self {
+            Verdict::Good => "good",
+            Verdict::Doubtful => "doubtful",
+            Verdict::Failed => "failed",
+        }
+    }
+}
+
+/// The verdict and its reasons, each a sentence for a person.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct SelfCheck {
+    pub verdict: Verdict,
+    pub reasons: Vec<String>,
+    /// What the confidences were multiplied by (1 for a good estimate).
+    pub confidence_factor: f64,
+    /// What the verdict was drawn from.
+    pub evidence: Evidence,
+}
+
+/// What the check looks at, from the estimate's steps.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct Evidence {
+    /// RMS (mm) of the landmark-free fit, template → scan (holes and a limb fitted wrongly weigh
+    /// in it).
+    pub fit_rms_mm: f64,
+    /// RMS (mm) of how far the landmark-free fit moved the weighted template vertices from the
+    /// segment-wise fit: how much the body had to be bent out of shape to meet the scan.
+    pub fit_moved_mm: f64,
+    /// Height (m) of the fitted template along the frame's up: a person's stature, or the sign
+    /// that the frame was wrong (a template shrunk to a body's width when up was taken across it).
+    pub stature_m: f64,
+    /// RMS (mm) after each iteration of that fit (not written to the report).
+    #[serde(skip)]
+    pub fit_curve_mm: Vec<f64>,
+    /// Estimated landmarks the check of a given file flags against their rigid groups (names).
+    pub contradicting: Vec<String>,
+}
+
+/// The estimate's verdict on `evidence` (see the module documentation and [`SelfCheckParams`]).
+pub fn self_check(evidence: &Evidence, params: &SelfCheckParams) -> SelfCheck {
+    let mut failed = Vec::new();
+    let mut doubtful = Vec::new();
+    let (moved, rms, stature) = (
+        evidence.fit_moved_mm,
+        evidence.fit_rms_mm,
+        evidence.stature_m,
+    );
+    let (low, high) = params.stature_m;
+    if !(low..=high).contains(&stature) {
+        failed.push(format!(
+            "the fitted body is {stature:.2} m tall, not a person's stature: the frame is wrong; \
+             choose which way is up"
+        ));
+    }
+    if !moved.is_finite() || moved > params.failed_moved_mm {
+        failed.push(format!(
+            "the template had to be bent {moved:.0} mm out of shape (RMS) to meet the scan: the \
+             body's frame or pose was not found; choose which way is up, or place a few \
+             landmarks by hand"
+        ));
+    } else if moved > params.doubtful_moved_mm {
+        doubtful.push(format!(
+            "the template had to be bent {moved:.0} mm out of shape (RMS) to meet the scan, more \
+             than a good estimate ({:.0} mm): the pose may be wrong",
+            params.doubtful_moved_mm
+        ));
+    }
+    if rms.is_finite() && rms > params.doubtful_rms_mm {
+        doubtful.push(format!(
+            "parts of the template lie far from the scan (RMS {rms:.1} mm): a limb may be posed \
+             wrongly"
+        ));
+    }
+    let lowest = evidence
+        .fit_curve_mm
+        .iter()
+        .copied()
+        .fold(f64::INFINITY, f64::min);
+    if let Some(&last) = evidence.fit_curve_mm.last() {
+        if last > lowest * (1.0 + params.rise) && last - lowest > params.rise_mm {
+            doubtful.push(format!(
+                "the fit moved away from the scan as it went on (RMS {lowest:.1} mm at best, \
+                 {last:.1} mm at the end)"
+            ));
+        }
+    }
+    if evidence.contradicting.len() > params.max_contradicting {
+        doubtful.push(format!(
+            "{} estimated landmarks lie far from where the others of their part put them ({})",
+            evidence.contradicting.len(),
+            evidence.contradicting.join(", ")
+        ));
+    }
+    let (verdict, confidence_factor) = if !failed.is_empty() {
+        (Verdict::Failed, params.failed_factor)
+    } else if !doubtful.is_empty() {
+        (Verdict::Doubtful, params.doubtful_factor)
+    } else {
+        (Verdict::Good, 1.0)
+    };
+    failed.extend(doubtful);
+    SelfCheck {
+        verdict,
+        reasons: failed,
+        confidence_factor,
+        evidence: evidence.clone(),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn good() -> Evidence {
+        Evidence {
+            fit_rms_mm: 4.0,
+            fit_moved_mm: 8.0,
+            stature_m: 1.7,
+            fit_curve_mm: vec![6.0, 3.0, 1.5, 1.2],
+            contradicting: vec!["Rt. Dactylion".into()],
+        }
+    }
+
+    #[test]
+    fn a_good_estimate_says_nothing_and_keeps_its_confidences() {
+        let c = self_check(&good(), &SelfCheckParams::default());
+        assert_eq!(c.verdict, Verdict::Good);
+        assert!(c.reasons.is_empty());
+        assert_eq!(c.confidence_factor, 1.0);
+    }
+
+    #[test]
+    fn each_sign_of_trouble_is_said_in_words() {
+        let p = SelfCheckParams::default();
+        let far = Evidence {
+            fit_moved_mm: 40.0,
+            ..good()
+        };
+        let c = self_check(&far, &p);
+        assert_eq!(c.verdict, Verdict::Failed);
+        assert!(c.reasons[0].contains("40 mm"), "{:?}", c.reasons);
+        assert_eq!(c.reasons.len(), 1, "{:?}", c.reasons);
+        let small = Evidence {
+            stature_m: 0.45,
+            ..good()
+        };
+        let c = self_check(&small, &p);
+        assert_eq!(c.verdict, Verdict::Failed);
+        assert!(c.reasons[0].contains("0.45 m tall"), "{:?}", c.reasons);
+        assert_eq!(c.confidence_factor, p.failed_factor);
+        let nan = Evidence {
+            fit_moved_mm: f64::NAN,
+            ..good()
+        };
+        assert_eq!(self_check(&nan, &p).verdict, Verdict::Failed);
+
+        let cases = [
+            Evidence {
+                fit_moved_mm: 15.0,
+                ..good()
+            },
+            Evidence {
+                fit_rms_mm: 14.0,
+                ..good()
+            },
+            Evidence {
+                fit_curve_mm: vec![6.0, 1.2, 2.5],
+                ..good()
+            },
+            Evidence {
+                contradicting: (0..7).map(|i| format!("L{i}")).collect(),
+                ..good()
+            },
+        ];
+        for (k, e) in cases.iter().enumerate() {
+            let c = self_check(e, &p);
+            assert_eq!(c.verdict, Verdict::Doubtful, "case {k}: {c:?}");
+            assert_eq!(c.reasons.len(), 1, "case {k}: {c:?}");
+            assert_eq!(c.confidence_factor, p.doubtful_factor);
+        }
+        // A failed estimate lists its doubts after the failure.
+        let both = Evidence {
+            fit_moved_mm: 35.0,
+            fit_rms_mm: 30.0,
+            ..good()
+        };
+        let c = self_check(&both, &p);
+        assert_eq!(c.verdict, Verdict::Failed);
+        assert_eq!(c.reasons.len(), 2);
+        assert!(c.reasons[1].contains("RMS 30.0 mm"), "{:?}", c.reasons);
+    }
+}
