@@ -7,6 +7,8 @@
 //! * [`body`] — [`BodyMeasurer`]: every measurement of a body
 //! * [`upright`] — a body in any frame moved rigidly onto the template's
 //! * [`params`] — [`MeasureParams`], the plane offsets and up axis with their defaults
+//! * [`tolerance`] — ISO 20685-1's limit per measurement ([`IsoClass`]) and its verdict on a set
+//!   of differences ([`Agreement`])
 //! * [`error`] — [`MeasureError`]
 //!
 //! Volume and surface area are [`crate::mesh::volume`].
@@ -17,6 +19,7 @@ pub mod error;
 pub mod params;
 pub mod section;
 pub mod tape;
+pub mod tolerance;
 pub mod upright;
 
 pub use body::{BodyMeasurer, Measurements, Reading, TapePath};
@@ -24,4 +27,5 @@ pub use definitions::{Definition, Kind, Measure};
 pub use error::MeasureError;
 pub use params::MeasureParams;
 pub use section::{plane_section, Plane, SectionLoop};
+pub use tolerance::{Agreement, IsoClass};
 pub use upright::upright;
