@@ -245,11 +245,12 @@ fn every_measurement_of_a_cylinder_body() {
         (Measure::KneeHeight, height(5)),
         (Measure::ShoulderBreadth, 2.0 * r),
         (Measure::ArmLength, height(16) - height(10) + 2.0 * r),
-        // Waist: midway between 10th Ribs and Iliocristales; hip: the Trochanterions, which sit
-        // more than 2 cm above the crotch.
+        // Waist: midway between 10th Ribs and Iliocristales; hip: the greatest buttock
+        // prominence from 6 cm under to 10 cm over the Trochanterions (ring 9): on a cylinder
+        // rings 9 and 10 are equally prominent, and the prominence's cap is centred between them.
         (
             Measure::WaistToHipBack,
-            (height(12) + height(10)) / 2.0 - height(9),
+            (height(12) + height(10)) / 2.0 - (height(9) + height(10)) / 2.0,
         ),
         (Measure::Volume, section * h),
         (Measure::SurfaceArea, polygon * h + 2.0 * section),

@@ -3,6 +3,8 @@
 //!
 //! * [`definitions`] — the [`Measure`] table: names, kinds, sources, landmarks
 //! * [`section`] — plane sections of a triangle mesh ([`Plane`], [`plane_section`])
+//! * [`surface`] — body points found on the surface around a landmark's guess: the prominence,
+//!   the buttocks' level, the neck's narrowest level
 //! * [`tape`] — a tape around a section: convex-hull perimeter of the chosen loop
 //! * [`body`] — [`BodyMeasurer`]: every measurement of a body
 //! * [`upright`] — a body in any frame moved rigidly onto the template's
@@ -18,6 +20,7 @@ pub mod definitions;
 pub mod error;
 pub mod params;
 pub mod section;
+pub mod surface;
 pub mod tape;
 pub mod tolerance;
 pub mod upright;
