@@ -5,7 +5,10 @@
 
 use bodyspace::measure::tape::{tape, LoopChoice};
 use bodyspace::measure::{plane_section, BodyMeasurer, Measure, MeasureParams, Plane};
-use std::f64::consts::{PI, TAU};
+use std::f64::consts::PI;
+
+mod measure_support;
+use measure_support::ring_surface;
 
 const STEP: f64 = 0.005;
 const RINGS: usize = 361;
@@ -59,31 +62,18 @@ fn radii(y: f64) -> (f64, f64, f64) {
 /// (rx·cos t, r·sin t) with r the back radius where sin t > 0 (back is +z), else the front's;
 /// closed by two poles. Every vertex is torso. Returns positions and triangles.
 fn body() -> (Vec<f32>, Vec<[u32; 3]>) {
-    let mut p = Vec::new();
-    for i in 0..RINGS {
-        let y = height(i);
-        let (x, front, back) = radii(y);
-        for a in 0..AROUND {
-            let t = TAU * a as f64 / AROUND as f64;
+    ring_surface(
+        RINGS,
+        AROUND,
+        |i, t| {
+            let y = height(i);
+            let (x, front, back) = radii(y);
             let z = if t.sin() > 0.0 { back } else { front };
-            p.extend([(x * t.cos()) as f32, y as f32, (z * t.sin()) as f32]);
-        }
-    }
-    let (b, t) = ((RINGS * AROUND) as u32, (RINGS * AROUND + 1) as u32);
-    p.extend([0.0, 0.0, 0.0, 0.0, height(RINGS - 1) as f32, 0.0]);
-    let v = |i: usize, a: usize| (i * AROUND + a % AROUND) as u32;
-    let mut tri = Vec::new();
-    for i in 0..RINGS - 1 {
-        for a in 0..AROUND {
-            tri.push([v(i, a), v(i + 1, a), v(i + 1, a + 1)]);
-            tri.push([v(i, a), v(i + 1, a + 1), v(i, a + 1)]);
-        }
-    }
-    for a in 0..AROUND {
-        tri.push([b, v(0, a), v(0, a + 1)]);
-        tri.push([t, v(RINGS - 1, a + 1), v(RINGS - 1, a)]);
-    }
-    (p, tri)
+            [x * t.cos(), y, z * t.sin()]
+        },
+        [0.0; 3],
+        [0.0, height(RINGS - 1), 0.0],
+    )
 }
 
 /// The ring vertex at height `y` (nearest ring) and angle index `a` (0: +x, the subject's right

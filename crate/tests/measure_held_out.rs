@@ -10,11 +10,9 @@
 
 mod synth_support;
 
-use bodyspace::align::{align_scan, AlignInput, AlignParams};
-use bodyspace::measure::{upright, BodyMeasurer, Measure, MeasureParams};
-use bodyspace::mesh::units::Units as ScanUnits;
+use bodyspace::measure::{BodyMeasurer, Measure, MeasureParams};
 use bodyspace::synth::*;
-use synth_support::{base_template_and_data, subject_in_metres};
+use synth_support::{base_template_and_data, fitted_and_true_measurements};
 
 /// Largest difference of one subject's measurement from its truth: 4 × the ISO 20685-1 limit
 /// (16 mm for heights, breadths and small girths, 20 mm segment lengths, 36 mm large girths,
@@ -43,7 +41,6 @@ const WITHIN: [Measure; 10] = [
 fn held_out_fits_measure_like_their_truth() {
     let (template, data) = base_template_and_data();
     let measurer = BodyMeasurer::of_template(&template, MeasureParams::default()).unwrap();
-    let reference = &template.mesh().positions;
     let mut differences = vec![Vec::new(); Measure::ALL.len()];
     let mut failures = Vec::new();
     for index in [0u64, 1, 2] {
@@ -52,22 +49,8 @@ fn held_out_fits_measure_like_their_truth() {
             seed: 4343,
             index,
         };
-        let (scan, landmarks, truth) =
-            subject_in_metres(&data, &template, id, &id.profile.scanner());
-        let input = AlignInput {
-            template: &template,
-            base_template: None,
-            scan: &scan,
-            landmarks: &landmarks,
-            units: Some(ScanUnits::Metres),
-        };
-        let fit = align_scan(&input, &AlignParams::default(), &mut ()).unwrap();
-        let got = measurer
-            .measure(&upright(&fit.positions, reference).unwrap())
-            .unwrap();
-        let want = measurer
-            .measure(&upright(&truth, reference).unwrap())
-            .unwrap();
+        let (got, want) =
+            fitted_and_true_measurements(&data, &template, &measurer, id, &id.profile.scanner());
         for m in Measure::ALL {
             let Some(class) = m.iso_class() else {
                 continue;

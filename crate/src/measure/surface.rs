@@ -211,8 +211,8 @@ mod tests {
             let got = prominence(&p, all, d, 0.01).unwrap();
             // The pole c + r·d, the extent d·c + r (to the grid's sampling).
             let want = [0.1 + 0.06, 1.0, -0.2 + 0.08];
-            for k in 0..3 {
-                assert!((got.point[k] - want[k]).abs() < 2e-3, "{got:?}");
+            for (k, w) in want.iter().enumerate() {
+                assert!((got.point[k] - w).abs() < 2e-3, "{got:?}");
             }
             assert!((got.extent - (0.06 - 0.16 + 0.1)).abs() < 1e-3, "{got:?}");
         }
