@@ -13,14 +13,18 @@
 #          and natively: bodies from measurements (random targets inside the 5–95 % range;
 #          held-out subjects), distributions and boundary manikins
 #          (crate/examples/anthropometry_bench.rs)
+#   measure measurements of fitted held-out subjects against their truth and the ISO 20685-1
+#          verdict: `bodyspace synth --profile held-out` (MEASURE_N subjects, default 8, seed
+#          MEASURE_SEED, default 6161), each fitted at `base` from its true landmarks and without
+#          landmarks, fit and truth measured by the same code (crate/examples/measure_accuracy.rs)
 #   batch  20 synthetic subjects (`bodyspace synth --n 20 --seed 7`, as the CLI batch benchmark)
 #          picked at once in the app: wall time to the built model with the worker pool and with
 #          one worker (bench/batch-bench.mjs; BATCH_RUNS rounds, default 2)
-# BENCH_PARTS picks some (default: "parse shape anthro align batch"); RUNS / SHAPE_RUNS set the repetitions.
+# BENCH_PARTS picks some (default: "parse shape anthro measure align batch"); RUNS / SHAPE_RUNS set the repetitions.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 export PATH="$HOME/.cargo/bin:$PATH"
-parts="${BENCH_PARTS:-parse shape anthro align batch}"
+parts="${BENCH_PARTS:-parse shape anthro measure align batch}"
 runs="${RUNS:-7}"
 port="${BENCH_PORT:-4179}"
 work="$(mktemp -d)"
@@ -71,6 +75,17 @@ if wants anthro; then
   cargo run --quiet --release --manifest-path crate/Cargo.toml --example anthropometry_bench
 fi
 echo "load average after: $(cut -d' ' -f1-3 /proc/loadavg)"
+if wants measure; then
+  echo
+  echo "== measurements of fits against the truth, ISO 20685-1 (held-out, base)"
+  cargo build --quiet --release --manifest-path crate/Cargo.toml --bin bodyspace
+  crate/target/release/bodyspace synth --n "${MEASURE_N:-8}" --seed "${MEASURE_SEED:-6161}" \
+    --profile held-out --out "$work/measure" >/dev/null
+  echo "load average before: $(cut -d' ' -f1-3 /proc/loadavg)"
+  cargo run --quiet --release --manifest-path crate/Cargo.toml --example measure_accuracy -- \
+    "$work/measure"
+  echo "load average after: $(cut -d' ' -f1-3 /proc/loadavg)"
+fi
 if wants align; then
   echo
   echo "== alignment vs trimesh nricp_amberg"

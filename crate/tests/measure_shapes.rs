@@ -7,6 +7,9 @@ use bodyspace::measure::{plane_section, BodyMeasurer, Measure, MeasureParams, Pl
 use bodyspace::mesh::volume::volume_and_area_flat;
 use std::f64::consts::{PI, TAU};
 
+mod measure_support;
+use measure_support::ring_surface;
+
 /// A closed surface of revolution around y: `rings` rings of `around` vertices, ring `i` at
 /// height `y(i)` with radii `(rx(i), rz(i))`, plus a bottom and a top pole. Outward triangles.
 fn revolution(
@@ -16,29 +19,16 @@ fn revolution(
     bottom: f64,
     top: f64,
 ) -> (Vec<f32>, Vec<[u32; 3]>) {
-    let mut p = Vec::new();
-    for i in 0..rings {
-        let (y, rx, rz) = ring(i);
-        for a in 0..around {
-            let t = TAU * a as f64 / around as f64;
-            p.extend([(rx * t.cos()) as f32, y as f32, (rz * t.sin()) as f32]);
-        }
-    }
-    let (b, t) = ((rings * around) as u32, (rings * around + 1) as u32);
-    p.extend([0.0, bottom as f32, 0.0, 0.0, top as f32, 0.0]);
-    let v = |i: usize, a: usize| (i * around + a % around) as u32;
-    let mut tri = Vec::new();
-    for i in 0..rings - 1 {
-        for a in 0..around {
-            tri.push([v(i, a), v(i + 1, a), v(i + 1, a + 1)]);
-            tri.push([v(i, a), v(i + 1, a + 1), v(i, a + 1)]);
-        }
-    }
-    for a in 0..around {
-        tri.push([b, v(0, a), v(0, a + 1)]);
-        tri.push([t, v(rings - 1, a + 1), v(rings - 1, a)]);
-    }
-    (p, tri)
+    ring_surface(
+        rings,
+        around,
+        |i, t| {
+            let (y, rx, rz) = ring(i);
+            [rx * t.cos(), y, rz * t.sin()]
+        },
+        [0.0, bottom, 0.0],
+        [0.0, top, 0.0],
+    )
 }
 
 fn cylinder(r: f64, h: f64, around: usize) -> (Vec<f32>, Vec<[u32; 3]>) {
@@ -245,11 +235,12 @@ fn every_measurement_of_a_cylinder_body() {
         (Measure::KneeHeight, height(5)),
         (Measure::ShoulderBreadth, 2.0 * r),
         (Measure::ArmLength, height(16) - height(10) + 2.0 * r),
-        // Waist: midway between 10th Ribs and Iliocristales; hip: the Trochanterions, which sit
-        // more than 2 cm above the crotch.
+        // Waist: midway between 10th Ribs and Iliocristales; hip: the greatest buttock
+        // prominence from 6 cm under to 10 cm over the Trochanterions (ring 9): on a cylinder
+        // rings 9 and 10 are equally prominent, and the prominence's cap is centred between them.
         (
             Measure::WaistToHipBack,
-            (height(12) + height(10)) / 2.0 - height(9),
+            (height(12) + height(10)) / 2.0 - (height(9) + height(10)) / 2.0,
         ),
         (Measure::Volume, section * h),
         (Measure::SurfaceArea, polygon * h + 2.0 * section),

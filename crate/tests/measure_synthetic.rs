@@ -11,23 +11,21 @@
 
 mod synth_support;
 
-use bodyspace::align::{align_scan, AlignInput, AlignParams};
-use bodyspace::measure::{upright, BodyMeasurer, Kind, Measure, MeasureParams};
-use bodyspace::mesh::units::Units as ScanUnits;
+use bodyspace::measure::{BodyMeasurer, Kind, Measure, MeasureParams};
 use bodyspace::synth::*;
-use synth_support::{base_template_and_data, subject_in_metres};
+use synth_support::{base_template_and_data, fitted_and_true_measurements};
 
 #[test]
 fn a_fitted_subject_measures_like_its_truth() {
     let (template, data) = base_template_and_data();
     let measurer = BodyMeasurer::of_template(&template, MeasureParams::default()).unwrap();
-    let reference = &template.mesh().positions;
     let mut failures = Vec::new();
     let mut worst = [0.0f64; 4];
     for index in [8u64, 9, 10] {
-        let (scan, landmarks, truth) = subject_in_metres(
+        let (fit, want) = fitted_and_true_measurements(
             &data,
             &template,
+            &measurer,
             SubjectId {
                 profile: PopulationProfile::Tuning,
                 seed: 2026,
@@ -35,20 +33,6 @@ fn a_fitted_subject_measures_like_its_truth() {
             },
             &ScannerParams::default(),
         );
-        let input = AlignInput {
-            template: &template,
-            base_template: None,
-            scan: &scan,
-            landmarks: &landmarks,
-            units: Some(ScanUnits::Metres),
-        };
-        let result = align_scan(&input, &AlignParams::default(), &mut ()).unwrap();
-        let fit = measurer
-            .measure(&upright(&result.positions, reference).unwrap())
-            .unwrap();
-        let want = measurer
-            .measure(&upright(&truth, reference).unwrap())
-            .unwrap();
         let (mut sum, mut count) = (0.0, 0);
         for m in Measure::ALL {
             let d = m.definition();

@@ -9,11 +9,17 @@
 //! the crotch splits its section between the two. A triangle belongs
 //! to the segment with the largest blend weight summed over its corners, which partitions the
 //! overlap bands.
+//!
+//! Two levels are found on the surface around their landmarks' guesses rather than taken from
+//! the landmarks' vertices ([`super::surface`], parameters in [`MeasureParams`]): the hip level
+//! (greatest buttock prominence) and the neck girth's level (the neck's least girth); a landmark
+//! a few centimetres off then names the same level.
 
 use super::definitions::Measure;
 use super::error::MeasureError;
 use super::params::MeasureParams;
 use super::section::{plane_section, Plane, SectionLoop};
+use super::surface::{buttock_level, narrowest_neck};
 use super::tape::{closed_length, convex_hull, tape, LoopChoice};
 use crate::mesh::volume::volume_and_area_flat;
 use crate::template::Segment;
@@ -94,6 +100,9 @@ pub struct BodyMeasurer {
     anchors: Vec<Vec<u32>>,
     /// Triangle indices per [`Region`] (by `Region as usize`).
     regions: [Vec<u32>; 5],
+    /// Vertices whose largest blend weight is the torso's or a leg's (where the buttocks are
+    /// sought).
+    trunk_vertices: Vec<u32>,
     params: MeasureParams,
 }
 
@@ -120,6 +129,25 @@ impl BodyMeasurer {
                 "up axis {} (0, 1 or 2)",
                 params.up_axis
             )));
+        }
+        let positive = [
+            ("neck_step", params.neck_step),
+            ("prominence_depth", params.prominence_depth),
+        ];
+        let non_negative = [
+            ("neck_band", params.neck_band),
+            ("hip_band_below", params.hip_band_below),
+            ("hip_band_above", params.hip_band_above),
+        ];
+        for (name, value) in positive {
+            if !(value > 0.0 && value.is_finite()) {
+                return Err(MeasureError::BadParameter(format!("{name} {value} (> 0)")));
+            }
+        }
+        for (name, value) in non_negative {
+            if !(value >= 0.0 && value.is_finite()) {
+                return Err(MeasureError::BadParameter(format!("{name} {value} (≥ 0)")));
+            }
         }
         let in_range = |what: &str, v: u32| {
             if (v as usize) < vertex_count {
@@ -174,11 +202,24 @@ impl BodyMeasurer {
                 Segment::LeftArm => {}
             }
         }
+        let trunk_vertices = segment_weights
+            .iter()
+            .enumerate()
+            .filter(|(_, w)| {
+                let dominant = (0..6).max_by(|&a, &b| w[a].total_cmp(&w[b])).unwrap_or(0);
+                matches!(
+                    Segment::ALL[dominant],
+                    Segment::Torso | Segment::LeftLeg | Segment::RightLeg
+                )
+            })
+            .map(|(v, _)| v as u32)
+            .collect();
         Ok(BodyMeasurer {
             triangles: triangles.to_vec(),
             vertex_count,
             anchors,
             regions,
+            trunk_vertices,
             params,
         })
     }
@@ -316,7 +357,15 @@ impl BodyMeasurer {
                 let base = midpoint(a(0), a(1));
                 let ears = midpoint(a(2), a(3));
                 let axis = sub(ears, base);
-                let at = [0, 1, 2].map(|k| base[k] + p.neck_fraction * axis[k]);
+                let f = narrowest_neck(
+                    b.positions,
+                    &self.triangles,
+                    &self.regions[Region::HeadAndTorso as usize],
+                    base,
+                    axis,
+                    p,
+                );
+                let at = [0, 1, 2].map(|k| base[k] + f * axis[k]);
                 around(Plane::new(at, axis)?, Region::HeadAndTorso, at)
             }
             Measure::HeadGirth => {
@@ -368,6 +417,8 @@ struct Body<'a> {
     positions: &'a [f32],
     floor: f64,
     top: f64,
+    /// The hip level, computed once for hip girth and waist-to-hip.
+    hip_level: std::cell::OnceCell<f64>,
     /// Volume and area, computed once for both measurements (one pass over every triangle).
     volume_and_area: std::cell::OnceCell<(f64, f64)>,
 }
@@ -385,6 +436,7 @@ impl<'a> Body<'a> {
             positions,
             floor,
             top,
+            hip_level: std::cell::OnceCell::new(),
             volume_and_area: std::cell::OnceCell::new(),
         }
     }
@@ -413,12 +465,38 @@ impl<'a> Body<'a> {
         self.mean_height(Measure::WaistGirth)
     }
 
-    /// The hip plane: the Trochanterions' mean height, at least `hip_above_crotch` over the Crotch.
-    fn hip_level(&self) -> f64 {
+    /// The landmarks' guess of the hip level: the Trochanterions' mean height, at least
+    /// `hip_above_crotch` over the Crotch.
+    fn hip_guess(&self) -> f64 {
         let up = self.measurer.params.up_axis;
         let m = Measure::HipGirth;
         let trochanters = (self.anchor(m, 0)[up] + self.anchor(m, 1)[up]) / 2.0;
         trochanters.max(self.anchor(m, 2)[up] + self.measurer.params.hip_above_crotch)
+    }
+
+    /// ISO 8559-1 5.3.13's hip level, the level of greatest buttock prominence
+    /// ([`buttock_level`]) from `hip_band_below` under to `hip_band_above` over
+    /// [`Body::hip_guess`], never under `hip_above_crotch` over the Crotch; backward is
+    /// Suprasternale → Cervicale. The guess when nothing is found.
+    fn hip_level(&self) -> f64 {
+        *self.hip_level.get_or_init(|| {
+            let p = &self.measurer.params;
+            let up = p.up_axis;
+            let guess = self.hip_guess();
+            let crotch = self.anchor(Measure::HipGirth, 2)[up];
+            let neck = Measure::NeckGirth;
+            let backward = sub(self.anchor(neck, 0), self.anchor(neck, 1));
+            let band = (guess - p.hip_band_below).max(crotch + p.hip_above_crotch)
+                ..=guess + p.hip_band_above;
+            buttock_level(
+                self.positions,
+                &self.measurer.trunk_vertices,
+                backward,
+                band,
+                p,
+            )
+            .unwrap_or(guess)
+        })
     }
 
     fn volume_and_area(&self) -> (f64, f64) {

@@ -3,10 +3,14 @@
 //!
 //! * [`definitions`] — the [`Measure`] table: names, kinds, sources, landmarks
 //! * [`section`] — plane sections of a triangle mesh ([`Plane`], [`plane_section`])
+//! * [`surface`] — body points found on the surface around a landmark's guess: the prominence,
+//!   the buttocks' level, the neck's narrowest level
 //! * [`tape`] — a tape around a section: convex-hull perimeter of the chosen loop
 //! * [`body`] — [`BodyMeasurer`]: every measurement of a body
 //! * [`upright`] — a body in any frame moved rigidly onto the template's
 //! * [`params`] — [`MeasureParams`], the plane offsets and up axis with their defaults
+//! * [`tolerance`] — ISO 20685-1's limit per measurement ([`IsoClass`]) and its verdict on a set
+//!   of differences ([`Agreement`])
 //! * [`error`] — [`MeasureError`]
 //!
 //! Volume and surface area are [`crate::mesh::volume`].
@@ -16,7 +20,9 @@ pub mod definitions;
 pub mod error;
 pub mod params;
 pub mod section;
+pub mod surface;
 pub mod tape;
+pub mod tolerance;
 pub mod upright;
 
 pub use body::{BodyMeasurer, Measurements, Reading, TapePath};
@@ -24,4 +30,5 @@ pub use definitions::{Definition, Kind, Measure};
 pub use error::MeasureError;
 pub use params::MeasureParams;
 pub use section::{plane_section, Plane, SectionLoop};
+pub use tolerance::{Agreement, IsoClass};
 pub use upright::upright;

@@ -2,7 +2,8 @@
 
 use serde::{Deserialize, Serialize};
 
-/// Offsets that place section planes where the template has no landmark, and the up axis.
+/// Offsets that place section planes where the template has no landmark, the up axis, and the
+/// search for the body-defined points around their landmarks' guesses (`surface.rs`).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct MeasureParams {
     /// Index of the up axis (0 = x, 1 = y, 2 = z); default 1 (y up: the template's frame).
@@ -20,6 +21,21 @@ pub struct MeasureParams {
     /// (Tragions, 1), perpendicular to that axis: ISO 8559-1 neck girth is taken just below the
     /// Adam's apple; default 0.25.
     pub neck_fraction: f64,
+    /// The neck girth is the least girth perpendicular to the neck axis over fractions
+    /// `neck_fraction ± neck_band` of the axis, sampled every `neck_step` and refined by a parabola
+    /// through the least sample and its neighbours (ISO 8559-1 5.3.2: just below the Adam's
+    /// apple, where the neck is narrowest); defaults 0.2 and 0.025.
+    pub neck_band: f64,
+    pub neck_step: f64,
+    /// The hip level is the level of greatest buttock prominence (ISO 8559-1 5.3.13) among the
+    /// torso's and legs' vertices from `hip_band_below` under to `hip_band_above` over the
+    /// landmarks' guess (never under `hip_above_crotch` over the Crotch); defaults 0.06 m and
+    /// 0.10 m.
+    pub hip_band_below: f64,
+    pub hip_band_above: f64,
+    /// Cap depth δ of a prominence (`surface.rs`): the vertices within δ of the extreme one make
+    /// its point; default 0.005 m.
+    pub prominence_depth: f64,
 }
 
 impl Default for MeasureParams {
@@ -30,6 +46,11 @@ impl Default for MeasureParams {
             thigh_below_crotch: 0.03,
             head_above_sellion: 0.015,
             neck_fraction: 0.25,
+            neck_band: 0.2,
+            neck_step: 0.025,
+            hip_band_below: 0.06,
+            hip_band_above: 0.10,
+            prominence_depth: 0.005,
         }
     }
 }

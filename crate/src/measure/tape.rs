@@ -9,8 +9,10 @@ use super::section::SectionLoop;
 pub enum LoopChoice {
     /// The loop enclosing the largest area (a torso section: the body, not a hand beside it).
     Largest,
-    /// The loop containing this in-plane point, or else the loop whose centroid is nearest to it
-    /// (a limb, the neck or the head, around an anchor between its landmarks).
+    /// The loop containing this in-plane point — of several (a body with inner surfaces, such as
+    /// the mouth, cut inside its skin), the one enclosing the largest area — or else the loop
+    /// whose centroid is nearest to it (a limb, the neck or the head, around an anchor between
+    /// its landmarks).
     Around([f64; 2]),
 }
 
@@ -110,7 +112,8 @@ pub fn tape(loops: &[SectionLoop], choice: LoopChoice) -> Option<Tape> {
             let closed: Vec<&SectionLoop> = closed.collect();
             closed
                 .iter()
-                .find(|l| contains(&l.points, q))
+                .filter(|l| contains(&l.points, q))
+                .max_by(|a, b| polygon_area(&a.points).total_cmp(&polygon_area(&b.points)))
                 .or_else(|| {
                     closed.iter().min_by(|a, b| {
                         centroid_distance(&a.points, q).total_cmp(&centroid_distance(&b.points, q))
@@ -178,6 +181,10 @@ mod tests {
         assert!((inside.girth - 4.0).abs() < 1e-12);
         let nearest = tape(&loops, LoopChoice::Around([4.0, 1.0])).unwrap();
         assert!((nearest.girth - 8.0).abs() < 1e-12);
+        // A loop inside another (the mouth inside the head's skin): the outer one is measured.
+        let nested = [square([0.4, 0.4], 0.2), square([0.0, 0.0], 1.0)];
+        let outer = tape(&nested, LoopChoice::Around([0.5, 0.5])).unwrap();
+        assert!((outer.girth - 4.0).abs() < 1e-12);
         let open = SectionLoop {
             closed: false,
             ..square([0.0, 0.0], 1.0)

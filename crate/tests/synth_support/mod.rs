@@ -5,7 +5,10 @@
 
 use std::path::Path;
 
+use bodyspace::align::{align_scan, AlignInput, AlignParams};
 use bodyspace::landmarks::LandmarkSet;
+use bodyspace::measure::{upright, BodyMeasurer, Measurements};
+use bodyspace::mesh::units::Units as ScanUnits;
 use bodyspace::mesh::Mesh;
 use bodyspace::synth::output::{mesh_to_output_frame, truth_points};
 use bodyspace::synth::{
@@ -48,4 +51,31 @@ pub fn subject_in_metres(
     let scan = mesh_to_output_frame(&subject.scan.mesh, Units::Metres);
     let truth = truth_points(&subject, Units::Metres).positions;
     (scan, landmarks, truth)
+}
+
+/// Subject `id` fitted at `base` with the defaults from its true landmarks (`align_scan`), and
+/// its truth, each moved rigidly onto the template and measured: (fit's, truth's).
+pub fn fitted_and_true_measurements(
+    data: &MakeHumanData,
+    template: &Template,
+    measurer: &BodyMeasurer,
+    id: SubjectId,
+    scanner: &ScannerParams,
+) -> (Measurements, Measurements) {
+    let (scan, landmarks, truth) = subject_in_metres(data, template, id, scanner);
+    let input = AlignInput {
+        template,
+        base_template: None,
+        scan: &scan,
+        landmarks: &landmarks,
+        units: Some(ScanUnits::Metres),
+    };
+    let fit = align_scan(&input, &AlignParams::default(), &mut ()).unwrap();
+    let reference = &template.mesh().positions;
+    let measure = |body: &[Point3<f64>]| {
+        measurer
+            .measure(&upright(body, reference).unwrap())
+            .unwrap()
+    };
+    (measure(&fit.positions), measure(&truth))
 }

@@ -1,0 +1,285 @@
+//! Measurement benchmark against ISO 20685-1 (docs/measurements.md#accuracy-against-iso-20685-1):
+//! synthetic subjects with ground truth (`bodyspace synth`), each fitted by the one path
+//! (`subject::fit_subject_files`, `base`, the defaults) from its true landmarks and without
+//! landmarks, every fit and the true body measured by the same code (`bodyspace measure`'s:
+//! moved rigidly onto the template, then `BodyMeasurer`), never tuned on.
+//!
+//! `cargo run --release --example measure_accuracy -- DIR [--n N] [--fits CACHE]
+//!  [--from landmarks|free|both]`
+//!
+//! DIR holds `scan_XXX.ply`, `landmarks_XXX.lnd` and `truth_XXX.ply`. `--fits CACHE` keeps each
+//! fit (`CACHE/{landmarks,free}_XXX.ply`, template frame, metres) and reuses it when it is there,
+//! so the measurements of one set of fits can be compared before and after a change of the
+//! measurements alone. Prints per kind of fit and measurement: the mean difference (fit − truth),
+//! sd, MAE, the 95 % interval of the mean (mean ± 1.96·sd/√n), the ISO 20685-1 limit and
+//! verdict; then how many of the judged measurements are within the standard and the mean MAE
+//! over them (each subject's differences go to stderr); and per subject how far below the true crown the scan's highest point lies (the
+//! scanner's cut: the fit's crown there is the alignment's extrapolation), and the time to
+//! measure one fit natively.
+
+#[cfg(not(target_arch = "wasm32"))]
+mod native {
+    use bodyspace::cli::model::{measure_any_frame, read_fit};
+    use bodyspace::io::{read_scan, write_ply};
+    use bodyspace::measure::{
+        upright, Agreement, BodyMeasurer, Measure, MeasureParams, Measurements,
+    };
+    use bodyspace::mesh::similarity::similarity;
+    use bodyspace::mesh::units::detect_units;
+    use bodyspace::mesh::{bounding_extent, Mesh};
+    use bodyspace::subject::{fit_subject_files, SubjectOptions};
+    use bodyspace::template::Template;
+    use std::path::{Path, PathBuf};
+
+    #[derive(Clone, Copy, PartialEq)]
+    enum From {
+        Landmarks,
+        Free,
+    }
+
+    impl From {
+        fn name(self) -> &'static str {
+            match self {
+                From::Landmarks => "landmarks",
+                From::Free => "free",
+            }
+        }
+        fn title(self) -> &'static str {
+            match self {
+                From::Landmarks => "fit from the true landmarks",
+                From::Free => "landmark-free fit",
+            }
+        }
+    }
+
+    struct Options {
+        dir: PathBuf,
+        n: Option<usize>,
+        cache: Option<PathBuf>,
+        from: Vec<From>,
+    }
+
+    fn parse() -> Result<Options, String> {
+        let mut args = std::env::args().skip(1);
+        let dir = PathBuf::from(args.next().ok_or("usage: measure_accuracy DIR [options]")?);
+        let mut o = Options {
+            dir,
+            n: None,
+            cache: None,
+            from: vec![From::Landmarks, From::Free],
+        };
+        while let Some(flag) = args.next() {
+            let value = args.next().ok_or(format!("{flag} needs a value"))?;
+            match flag.as_str() {
+                "--n" => o.n = Some(value.parse().map_err(|e| format!("--n: {e}"))?),
+                "--fits" => o.cache = Some(PathBuf::from(value)),
+                "--from" => {
+                    o.from = match value.as_str() {
+                        "landmarks" => vec![From::Landmarks],
+                        "free" => vec![From::Free],
+                        "both" => vec![From::Landmarks, From::Free],
+                        _ => return Err(format!("--from {value}: landmarks, free or both")),
+                    }
+                }
+                _ => return Err(format!("unknown option {flag}")),
+            }
+        }
+        Ok(o)
+    }
+
+    fn bytes(path: &Path) -> Result<Vec<u8>, String> {
+        std::fs::read(path).map_err(|e| format!("{}: {e}", path.display()))
+    }
+
+    /// The fit of subject `id` (template frame, metres), from the cache or fitted now.
+    fn fit(
+        o: &Options,
+        template: &Template,
+        id: usize,
+        from: From,
+    ) -> Result<Vec<nalgebra::Point3<f64>>, String> {
+        let cached = o
+            .cache
+            .as_ref()
+            .map(|c| c.join(format!("{}_{id:03}.ply", from.name())));
+        if let Some(path) = cached.as_ref().filter(|p| p.exists()) {
+            return Ok(read_fit(path)?.positions);
+        }
+        let scan_path = o.dir.join(format!("scan_{id:03}.ply"));
+        let lnd_path = o.dir.join(format!("landmarks_{id:03}.lnd"));
+        let scan = bytes(&scan_path)?;
+        let lnd = bytes(&lnd_path)?;
+        let landmarks = (from == From::Landmarks).then(|| (&lnd[..], "landmarks.lnd"));
+        let fitted = fit_subject_files(
+            template,
+            None,
+            (&scan, &scan_path.display().to_string()),
+            landmarks,
+            None,
+            &SubjectOptions::default(),
+            &mut (),
+        )
+        .map_err(|e| e.to_string())?;
+        let positions = fitted.positions_in_template_frame();
+        if let Some(path) = cached {
+            let mesh = Mesh::new(positions.clone(), template.mesh().triangles.clone());
+            std::fs::write(&path, write_ply(&mesh))
+                .map_err(|e| format!("{}: {e}", path.display()))?;
+        }
+        Ok(positions)
+    }
+
+    /// How far below the true crown the scan's highest point lies (mm): both moved by the rigid
+    /// motion that brings the truth onto the template (y up).
+    fn crown_cut_mm(o: &Options, template: &Template, id: usize) -> Result<f64, String> {
+        let read = |stem: &str| {
+            let path = o.dir.join(format!("{stem}_{id:03}.ply"));
+            read_scan(&bytes(&path)?, &path.display().to_string()).map_err(|e| e.to_string())
+        };
+        let (truth, scan) = (read("truth")?, read("scan")?);
+        // The scan is in its truth's units.
+        let to_m = detect_units(bounding_extent(&truth.positions)).scale_to_metres();
+        let base: Vec<_> = truth.positions[..template.mesh().vertex_count()]
+            .iter()
+            .map(|p| p * to_m)
+            .collect();
+        let rigid =
+            similarity(&base, &template.mesh().positions, false).ok_or("degenerate truth")?;
+        let top = |ps: &mut dyn Iterator<Item = nalgebra::Point3<f64>>| {
+            ps.map(|p| rigid.apply(&p).y)
+                .fold(f64::NEG_INFINITY, f64::max)
+        };
+        let truth_top = top(&mut base.iter().copied());
+        let scan_top = top(&mut scan.positions.iter().map(|p| p * to_m));
+        Ok((truth_top - scan_top) * 1e3)
+    }
+
+    fn table(title: &str, rows: &[(Measurements, Measurements)]) {
+        // Each subject's differences, for finding the one behind a large sd.
+        for (i, (fit, truth)) in rows.iter().enumerate() {
+            let d: Vec<String> = Measure::ALL
+                .iter()
+                .filter(|m| m.iso_class().is_some())
+                .map(|&m| match (fit.get(m), truth.get(m)) {
+                    (Some(f), Some(t)) => format!("{:+.1}", (f - t) * 1e3),
+                    _ => "—".into(),
+                })
+                .collect();
+            eprintln!("{title}, subject {:03} (mm): {}", i + 1, d.join(" "));
+        }
+        println!("\n{title}: {} subjects", rows.len());
+        println!(
+            "| measurement | limit (mm) | mean (mm) | sd (mm) | MAE (mm) | 95 % interval (mm) | ISO 20685-1 |"
+        );
+        println!("| --- | ---: | ---: | ---: | ---: | ---: | --- |");
+        let (mut within, mut judged, mut mae_sum) = (0, 0, 0.0);
+        for m in Measure::ALL {
+            let Some(class) = m.iso_class() else {
+                continue;
+            };
+            let d: Vec<f64> = rows
+                .iter()
+                .filter_map(|(fit, truth)| Some(fit.get(m)? - truth.get(m)?))
+                .collect();
+            let Some(a) = Agreement::of(&d) else {
+                println!("| {} | — | not taken | | | | |", m.definition().name);
+                continue;
+            };
+            let limit = class.limit();
+            let ok = a.within(limit) && a.n == rows.len();
+            judged += 1;
+            within += usize::from(ok);
+            mae_sum += a.mae;
+            println!(
+                "| {} | {:.0} | {:+.1} | {:.1} | {:.1} | {:+.1} … {:+.1} | {} |",
+                m.definition().name,
+                limit * 1e3,
+                a.mean * 1e3,
+                a.sd * 1e3,
+                a.mae * 1e3,
+                (a.mean - a.half_interval) * 1e3,
+                (a.mean + a.half_interval) * 1e3,
+                if ok { "within" } else { "**outside**" }
+            );
+        }
+        println!(
+            "{title}: within ISO 20685-1 {within} of {judged}; mean MAE {:.2} mm",
+            mae_sum / judged.max(1) as f64 * 1e3
+        );
+    }
+
+    pub fn main() -> Result<(), String> {
+        let o = parse()?;
+        if let Some(c) = &o.cache {
+            std::fs::create_dir_all(c).map_err(|e| format!("{}: {e}", c.display()))?;
+        }
+        let template = Template::embedded().map_err(|e| e.to_string())?;
+        let measurer = BodyMeasurer::of_template(&template, MeasureParams::default())
+            .map_err(|e| e.to_string())?;
+        let population = std::fs::read_to_string(o.dir.join("subjects.json")).unwrap_or_default();
+        let about: serde_json::Value = serde_json::from_str(&population).unwrap_or_default();
+        println!(
+            "population: profile {}, seed {}",
+            about["profile"], about["seed"]
+        );
+        let found = (1..)
+            .take_while(|id| o.dir.join(format!("truth_{id:03}.ply")).exists())
+            .count();
+        let n = o.n.unwrap_or(found).min(found);
+        if n == 0 {
+            return Err(format!("{}: no truth_001.ply", o.dir.display()));
+        }
+        let mut truths = Vec::with_capacity(n);
+        let mut cuts = Vec::with_capacity(n);
+        for id in 1..=n {
+            let truth = read_fit(&o.dir.join(format!("truth_{id:03}.ply")))?;
+            truths.push(measure_any_frame(&measurer, &template, &truth.positions)?);
+            cuts.push(crown_cut_mm(&o, &template, id)?);
+        }
+        println!(
+            "the scan's highest point below the true crown (mm), per subject: {}",
+            cuts.iter()
+                .map(|c| format!("{c:.1}"))
+                .collect::<Vec<_>>()
+                .join(", ")
+        );
+        let mut times = Vec::new();
+        for &from in &o.from {
+            let mut rows = Vec::with_capacity(n);
+            for (id, truth) in (1..=n).zip(&truths) {
+                let started = std::time::Instant::now();
+                let positions = fit(&o, &template, id, from)?;
+                let stood = upright(&positions, &template.mesh().positions)
+                    .ok_or("the fit could not be brought onto the template")?;
+                let measuring = std::time::Instant::now();
+                let fitted = measurer.measure(&stood).map_err(|e| e.to_string())?;
+                times.push(measuring.elapsed().as_secs_f64() * 1e3);
+                eprintln!(
+                    "{} {id:03}: {:.1} s",
+                    from.name(),
+                    started.elapsed().as_secs_f64()
+                );
+                rows.push((fitted, truth.clone()));
+            }
+            table(from.title(), &rows);
+        }
+        times.sort_by(f64::total_cmp);
+        println!(
+            "\nmeasuring one upright fit (all 19): median {:.2} ms, max {:.2} ms natively",
+            times[times.len() / 2],
+            times[times.len() - 1]
+        );
+        Ok(())
+    }
+}
+
+#[cfg(not(target_arch = "wasm32"))]
+fn main() {
+    if let Err(e) = native::main() {
+        eprintln!("measure_accuracy: {e}");
+        std::process::exit(1);
+    }
+}
+
+#[cfg(target_arch = "wasm32")]
+fn main() {}

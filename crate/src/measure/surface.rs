@@ -1,0 +1,221 @@
+//! A body point found on the surface around a landmark's guess rather than taken from the
+//! landmark's vertex, so that a landmark a few centimetres off names the same point: the
+//! **prominence** of a part along a direction, and with it the hip level ([`buttock_level`]);
+//! and the neck's narrowest level ([`narrowest_neck`]).
+//! Parameters: [`MeasureParams`].
+//!
+//! Of the candidate vertices pᵢ and a unit direction d, the prominence's extent is
+//! s* = maxᵢ d·pᵢ, and its point the centroid c of the cap {pᵢ : d·pᵢ ≥ s* − δ} weighted by
+//! wᵢ = d·pᵢ − (s* − δ), moved along d onto the supporting plane: c + (s* − d·c)·d. The extent moves only to second order when the surface is sampled
+//! differently; the cap's centroid, unlike the single highest vertex, moves continuously with the
+//! surface instead of jumping from vertex to vertex (δ, the cap depth, spans several vertices).
+
+use super::params::MeasureParams;
+use super::section::{plane_section, Plane};
+use super::tape::{tape, LoopChoice};
+use std::ops::RangeInclusive;
+
+/// The prominence of a set of vertices along a direction.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Prominence {
+    /// s* = max d·p over the candidates (metres along d).
+    pub extent: f64,
+    /// The cap's weighted centroid moved along d onto the plane d·p = s* (metres).
+    pub point: [f64; 3],
+}
+
+fn dot(a: [f64; 3], b: [f64; 3]) -> f64 {
+    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+}
+
+fn sub(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
+    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
+}
+
+fn unit(a: [f64; 3]) -> Option<[f64; 3]> {
+    let n = dot(a, a).sqrt();
+    (n > 1e-12 && n.is_finite()).then(|| a.map(|x| x / n))
+}
+
+fn vertex(positions: &[f32], v: u32) -> [f64; 3] {
+    let i = 3 * v as usize;
+    [0, 1, 2].map(|k| positions[i + k] as f64)
+}
+
+/// The prominence along unit `direction` of `candidates` (vertex indices into flat `#V·3`
+/// `positions`), with cap depth `depth` (metres, > 0). `None` when there is no candidate.
+pub fn prominence(
+    positions: &[f32],
+    candidates: impl IntoIterator<Item = u32>,
+    direction: [f64; 3],
+    depth: f64,
+) -> Option<Prominence> {
+    let scored: Vec<([f64; 3], f64)> = candidates
+        .into_iter()
+        .filter_map(|v| {
+            let i = 3 * v as usize;
+            let p = positions.get(i..i + 3)?;
+            let p = [p[0] as f64, p[1] as f64, p[2] as f64];
+            Some((p, dot(p, direction)))
+        })
+        .collect();
+    let extent = scored
+        .iter()
+        .map(|&(_, s)| s)
+        .fold(f64::NEG_INFINITY, f64::max);
+    if !extent.is_finite() {
+        return None;
+    }
+    let floor = extent - depth.max(f64::MIN_POSITIVE);
+    let (mut sum, mut weight) = ([0.0; 3], 0.0);
+    for (p, s) in scored {
+        let w = s - floor;
+        if w > 0.0 {
+            for k in 0..3 {
+                sum[k] += w * p[k];
+            }
+            weight += w;
+        }
+    }
+    let centroid = sum.map(|x| x / weight);
+    let lift = extent - dot(centroid, direction);
+    Some(Prominence {
+        extent,
+        point: [0, 1, 2].map(|k| centroid[k] + lift * direction[k]),
+    })
+}
+
+/// ISO 8559-1 5.3.13's hip level: the height (along `params.up_axis`) of the prominence along
+/// `backward` made horizontal (Suprasternale → Cervicale) of the vertices `trunk` (the torso's and
+/// legs': never a hand on the hip) whose height is in `band`. `None` when none is.
+pub fn buttock_level(
+    positions: &[f32],
+    trunk: &[u32],
+    backward: [f64; 3],
+    band: RangeInclusive<f64>,
+    params: &MeasureParams,
+) -> Option<f64> {
+    let up = params.up_axis;
+    let mut backward = backward;
+    backward[up] = 0.0;
+    let backward = unit(backward)?;
+    let in_band = trunk
+        .iter()
+        .copied()
+        .filter(|&v| band.contains(&vertex(positions, v)[up]));
+    prominence(positions, in_band, backward, params.prominence_depth).map(|b| b.point[up])
+}
+
+/// Whether `q` lies inside (or on) the counter-clockwise convex polygon `hull`.
+fn hull_contains(hull: &[[f64; 2]], q: [f64; 2]) -> bool {
+    let n = hull.len();
+    n >= 3
+        && (0..n).all(|i| {
+            let (a, b) = (hull[i], hull[(i + 1) % n]);
+            (b[0] - a[0]) * (q[1] - a[1]) - (b[1] - a[1]) * (q[0] - a[0]) >= 0.0
+        })
+}
+
+/// ISO 8559-1 5.3.2's level of the neck girth, where the neck is narrowest: the fraction f of
+/// the neck `axis` (the point base + f·axis) where the tape perpendicular to the axis around the
+/// outermost loop that encloses the axis, cut from `region` (indices into `triangles`), is least,
+/// over `neck_fraction ± neck_band` every `neck_step`, refined by the parabola through the least
+/// sample and its neighbours. `neck_fraction` when no sample has such a loop.
+pub fn narrowest_neck(
+    positions: &[f32],
+    triangles: &[[u32; 3]],
+    region: &[u32],
+    base: [f64; 3],
+    axis: [f64; 3],
+    params: &MeasureParams,
+) -> f64 {
+    let p = params;
+    let n = (2.0 * p.neck_band / p.neck_step).round().max(0.0) as usize;
+    let first = p.neck_fraction - p.neck_step * n as f64 / 2.0;
+    let last = first + p.neck_step * n as f64;
+    let length2 = dot(axis, axis);
+    if length2 <= 0.0 {
+        return p.neck_fraction;
+    }
+    // Only the triangles that straddle the searched stretch of the axis can be cut.
+    let along = |v: u32| dot(sub(vertex(positions, v), base), axis) / length2;
+    let near: Vec<u32> = region
+        .iter()
+        .copied()
+        .filter(|&t| {
+            let s = triangles[t as usize].map(along);
+            let (lo, hi) = (s[0].min(s[1]).min(s[2]), s[0].max(s[1]).max(s[2]));
+            hi >= first && lo <= last
+        })
+        .collect();
+    let girths: Vec<f64> = (0..=n)
+        .map(|i| {
+            let f = first + p.neck_step * i as f64;
+            let at = [0, 1, 2].map(|k| base[k] + f * axis[k]);
+            Plane::new(at, axis)
+                .and_then(|plane| {
+                    let loops = plane_section(positions, triangles, &near, &plane);
+                    tape(&loops, LoopChoice::Around(plane.to_plane(at)))
+                })
+                // Only a loop around the axis is the neck (not the chin, or a shoulder beside a
+                // tilted head's axis).
+                .filter(|t| hull_contains(&t.hull, [0.0, 0.0]))
+                .map_or(f64::INFINITY, |t| t.girth)
+        })
+        .collect();
+    let Some(i) = (0..=n)
+        .filter(|&i| girths[i].is_finite())
+        .min_by(|&x, &y| girths[x].total_cmp(&girths[y]))
+    else {
+        return p.neck_fraction;
+    };
+    let mut f = first + p.neck_step * i as f64;
+    if i > 0 && i < n && girths[i - 1].is_finite() && girths[i + 1].is_finite() {
+        let (l, c, r) = (girths[i - 1], girths[i], girths[i + 1]);
+        let curvature = l - 2.0 * c + r;
+        if curvature > 0.0 {
+            f += p.neck_step * (0.5 * (l - r) / curvature).clamp(-0.5, 0.5);
+        }
+    }
+    f
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A sphere of radius r sampled on a latitude–longitude grid, centred at `c`.
+    fn sphere(c: [f64; 3], r: f64, offset: f64) -> Vec<f32> {
+        let mut p = Vec::new();
+        for i in 1..40 {
+            let phi = std::f64::consts::PI * i as f64 / 40.0;
+            for j in 0..80 {
+                let t = std::f64::consts::TAU * (j as f64 + offset) / 80.0;
+                let q = [
+                    c[0] + r * phi.sin() * t.cos(),
+                    c[1] + r * phi.cos(),
+                    c[2] + r * phi.sin() * t.sin(),
+                ];
+                p.extend(q.map(|x| x as f32));
+            }
+        }
+        p
+    }
+
+    #[test]
+    fn the_prominence_of_a_sphere_is_its_pole_whatever_the_sampling() {
+        let d = [0.6, 0.0, 0.8];
+        for offset in [0.0, 0.25, 0.5] {
+            let p = sphere([0.1, 1.0, -0.2], 0.1, offset);
+            let all = 0..(p.len() / 3) as u32;
+            let got = prominence(&p, all, d, 0.01).unwrap();
+            // The pole c + r·d, the extent d·c + r (to the grid's sampling).
+            let want = [0.1 + 0.06, 1.0, -0.2 + 0.08];
+            for (k, w) in want.iter().enumerate() {
+                assert!((got.point[k] - w).abs() < 2e-3, "{got:?}");
+            }
+            assert!((got.extent - (0.06 - 0.16 + 0.1)).abs() < 1e-3, "{got:?}");
+        }
+        assert!(prominence(&[], [], d, 0.01).is_none());
+    }
+}
