@@ -9,8 +9,8 @@ use bodyspace::landmarks::{Landmark, LandmarkSet};
 use bodyspace::mesh::Mesh;
 use bodyspace::synth::output::to_output_frame;
 use bodyspace::synth::{
-    make_subject, subject_rng, MakeHumanData, PopulationProfile, PoseParams, ScannerParams,
-    Subject, SubjectId, Units,
+    make_subject, subject_rng, zoo_subject, LandmarkParams, MakeHumanData, PopulationProfile,
+    PoseParams, ScannerClass, ScannerParams, Subject, SubjectId, Units, ZooParams,
 };
 use bodyspace::template::Template;
 use nalgebra::{Matrix3, Point3, Rotation3, Vector3};
@@ -186,6 +186,58 @@ pub fn case_scanned(
         params.pose = pose.pose;
     }
     let subject = make_subject(data, &params, scanner, &mut rng).unwrap();
+    placed(template, subject, frame)
+}
+
+/// The frames of the scanner zoo's measurement and tests: z up in mm (CAESAR's), y up in metres,
+/// z up in metres turned 130° about the vertical, and −x up in mm (facing +z).
+pub fn zoo_frames() -> Vec<Frame> {
+    let all = frames();
+    let named = |name: &str| *all.iter().find(|f| f.name == name).unwrap();
+    let axes =
+        |x: Vector3<f64>, y: Vector3<f64>, z: Vector3<f64>| Matrix3::from_columns(&[x, y, z]);
+    vec![
+        named("z-up-mm"),
+        named("y-up-m-facing-+z"),
+        named("z-up-m-turned-130deg"),
+        Frame {
+            name: "minus-x-up-mm-facing-+z",
+            // z (up) → −x, −y (facing) → +z.
+            rotation: axes(Vector3::y(), -Vector3::z(), -Vector3::x()),
+            per_metre: 1000.0,
+            shift: Vector3::new(700.0, -150.0, 40.0),
+        },
+    ]
+}
+
+/// Subject `id` of its profile in its own pose, as scanner class `class` delivers it (the
+/// profile's scanner changed by the class, `zoo` its settings); place it in a frame with
+/// [`placed`].
+pub fn zoo_scanned(
+    data: &MakeHumanData,
+    template: &Template,
+    id: SubjectId,
+    class: ScannerClass,
+    zoo: &ZooParams,
+) -> Subject {
+    let scanner = id.profile.scanner();
+    let landmarks = LandmarkParams::default();
+    zoo_subject(
+        data,
+        template,
+        id,
+        class,
+        &scanner,
+        zoo,
+        &landmarks,
+        Units::Metres,
+    )
+    .unwrap()
+    .0
+}
+
+/// `subject` (template frame) in `frame`: its scan, true landmarks and truth.
+pub fn placed(template: &Template, subject: Subject, frame: &Frame) -> Case {
     let place = |p: &Point3<f64>| frame.apply(&to_output_frame(p, Units::Metres));
     let scan = Mesh::new(
         subject.scan.mesh.positions.iter().map(place).collect(),
