@@ -3,7 +3,12 @@
 //! the `held-out` profile in their own poses with the landmark files withheld.
 //!
 //! `cargo run --release --example zoo_estimate -- [--n N] [--seed S] [--first K]
-//!  [--class NAME[,NAME…]] [--frame NAME[,NAME…]] [--quiet]`
+//!  [--class NAME[,NAME…]] [--frame NAME[,NAME…]] [--params JSON] [--quiet]`
+//!
+//! `--params JSON` sets any of the estimate's parameters (`EstimateParams` fields, the rest
+//! default), e.g. `--params '{"head_end_decisive": 0}'` (the frame from nearest points alone).
+//! Each subject line also gives the shape's verdict on the head's end (`estimate::up`) and its
+//! width ratios, whether or not it is decisive.
 //!
 //! Subjects `first..first + N` (default 1..=3) of seed `S` (default 4242); every class of
 //! `ScannerClass::ALL` and every frame of `zoo_frames()` unless named. The frame is right when
@@ -19,6 +24,7 @@ mod support;
 #[cfg(not(target_arch = "wasm32"))]
 mod native {
     use super::support::{load, placed, zoo_frames, zoo_scanned};
+    use bodyspace::estimate::up::head_end;
     use bodyspace::estimate::{estimate_landmarks, EstimateInput, EstimateParams};
     use bodyspace::landmarks::LandmarkSet;
     use bodyspace::synth::population::A_POSE_ARM_DEG;
@@ -32,6 +38,7 @@ mod native {
         let (mut n, mut seed, mut first, mut quiet) = (3u64, 4242u64, 1u64, false);
         let mut classes: Vec<ScannerClass> = ScannerClass::ALL.to_vec();
         let mut frame_names: Option<Vec<String>> = None;
+        let mut params = EstimateParams::default();
         let mut args = std::env::args().skip(1);
         while let Some(a) = args.next() {
             match a.as_str() {
@@ -56,6 +63,10 @@ mod native {
                     )
                 }
                 "--quiet" => quiet = true,
+                "--params" => {
+                    params = serde_json::from_str(&args.next().expect("--params JSON"))
+                        .expect("EstimateParams JSON")
+                }
                 other => panic!("unknown argument {other}"),
             }
         }
@@ -69,7 +80,6 @@ mod native {
             })
             .collect();
         let zoo = ZooParams::default();
-        let params = EstimateParams::default();
         let mut table: Vec<(ScannerClass, &str, Row)> = Vec::new();
         for &class in &classes {
             let mut rows: Vec<Row> = vec![Vec::new(); frames.len()];
@@ -79,7 +89,8 @@ mod native {
                     seed,
                     index: i,
                 };
-                let subject = zoo_scanned(&data, &template, id, class, &zoo);
+                let scanner = id.profile.scanner();
+                let subject = zoo_scanned(&data, &template, id, class, &scanner, &zoo);
                 let q = subject.params.pose;
                 let pose = format!(
                     "arms {:.0}°/{:.0}°, elbows {:.0}°/{:.0}°",
@@ -116,6 +127,22 @@ mod native {
                     let right = up.dot(&(frame.rotation * Vector3::z())) > 0.9
                         && facing.dot(&(frame.rotation * -Vector3::y())) > 0.9;
                     if !quiet {
+                        // The shape's verdict on the head's end (`estimate::up`), decisive or not.
+                        let shape = head_end(&c.scan.positions, &c.scan.triangles, 1.0).map_or(
+                            "none".to_string(),
+                            |h| {
+                                format!(
+                                    "head {} ratio {:.2} / feet {:.2}",
+                                    if h.up.dot(&(frame.rotation * Vector3::z())) > 0.0 {
+                                        "right"
+                                    } else {
+                                        "WRONG"
+                                    },
+                                    h.head_ratio,
+                                    h.feet_ratio
+                                )
+                            },
+                        );
                         let energies: Vec<String> = r
                             .candidates
                             .iter()
@@ -130,7 +157,7 @@ mod native {
                             })
                             .collect();
                         println!(
-                            "{:10} {:24} subject {i} ({pose}) {:7} vertices: frame {} (up {} facing {}), mean {mean:6.1} mm, fit RMS {:.2} mm, {:6.0} ms; candidates {}",
+                            "{:10} {:24} subject {i} ({pose}) {:7} vertices: frame {} (up {} facing {}), mean {mean:6.1} mm, fit RMS {:.2} mm, {:6.0} ms; shape: {shape}; candidates {}",
                             class.name(),
                             frame.name,
                             c.scan.positions.len(),

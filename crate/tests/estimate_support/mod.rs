@@ -210,24 +210,23 @@ pub fn zoo_frames() -> Vec<Frame> {
     ]
 }
 
-/// Subject `id` of its profile in its own pose, as scanner class `class` delivers it (the
-/// profile's scanner changed by the class, `zoo` its settings); place it in a frame with
-/// [`placed`].
+/// Subject `id` of its profile in its own pose, as scanner class `class` delivers it (`scanner`
+/// changed by the class, `zoo` its settings); place it in a frame with [`placed`].
 pub fn zoo_scanned(
     data: &MakeHumanData,
     template: &Template,
     id: SubjectId,
     class: ScannerClass,
+    scanner: &ScannerParams,
     zoo: &ZooParams,
 ) -> Subject {
-    let scanner = id.profile.scanner();
     let landmarks = LandmarkParams::default();
     zoo_subject(
         data,
         template,
         id,
         class,
-        &scanner,
+        scanner,
         zoo,
         &landmarks,
         Units::Metres,
