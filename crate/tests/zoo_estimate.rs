@@ -18,13 +18,14 @@ use nalgebra::Vector3;
 /// A seed neither tuned on nor reported in the measurement.
 const SEED: u64 = 5757;
 
-/// Mean landmark error allowed per class (mm). Measured on held-out seed 4242 (docs): 13–24 mm
-/// per subject on every class at the profile's scanner; the coarse scanner of this test adds a
-/// little.
+/// Mean landmark error allowed per class (mm). Measured on held-out seed 4242 (3 subjects, four
+/// frames, the profile's scanner; docs/landmarks-estimate.md): worst subject 16–24 mm on every
+/// class, 25.4 mm with the feet cut; on this test's seed and coarse scanner 9.0–19.7 mm. A scan
+/// estimated upside down or back to front is 250–800 mm off.
 fn tolerance_mm(class: ScannerClass) -> f64 {
     match class {
-        ScannerClass::Raw | ScannerClass::CrownCut | ScannerClass::Blob => 40.0,
-        _ => 32.0,
+        ScannerClass::Raw | ScannerClass::CrownCut | ScannerClass::FeetCut => 30.0,
+        _ => 25.0,
     }
 }
 

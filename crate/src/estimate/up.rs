@@ -10,7 +10,8 @@
 //! extent from that end, the width is the larger of the `WIDTH_PERCENTILE`–`(1 −
 //! WIDTH_PERCENTILE)` ranges of the slab's points along the other two principal axes, and
 //! `ratio = width(end) / width(below)`. The head's end is the one with the smaller ratio, when
-//! it is below `decisive` times the other's; otherwise the shape does not say.
+//! it is below `decisive` times the other's; otherwise the shape does not say. It assumes the
+//! hands below the top of the head (arms raised above it would widen the head's end).
 
 use nalgebra::{Matrix3, Point3, Vector3};
 
