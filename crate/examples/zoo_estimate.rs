@@ -23,7 +23,7 @@ mod support;
 
 #[cfg(not(target_arch = "wasm32"))]
 mod native {
-    use super::support::{load, placed, zoo_frames, zoo_scanned};
+    use super::support::{frame_cosines, landmark_errors, load, placed, zoo_frames, zoo_scanned};
     use bodyspace::estimate::up::head_end;
     use bodyspace::estimate::{estimate_landmarks, EstimateInput, EstimateParams};
     use bodyspace::landmarks::LandmarkSet;
@@ -110,22 +110,10 @@ mod native {
                     let e = estimate_landmarks(&input, &params, &mut ()).unwrap();
                     let r = &e.report;
                     let to_mm = e.scale_to_metres * 1000.0;
-                    let errors: Vec<f64> = c
-                        .landmarks
-                        .landmarks
-                        .iter()
-                        .enumerate()
-                        .map(|(k, l)| {
-                            e.positions[k]
-                                .map(|p| (p - l.position).norm() * to_mm)
-                                .unwrap_or(f64::INFINITY)
-                        })
-                        .collect();
+                    let errors = landmark_errors(&c, &e.positions, to_mm);
                     let mean = errors.iter().sum::<f64>() / errors.len() as f64;
-                    let up = Vector3::from(r.frame.up);
-                    let facing = Vector3::from(r.frame.facing);
-                    let right = up.dot(&(frame.rotation * Vector3::z())) > 0.9
-                        && facing.dot(&(frame.rotation * -Vector3::y())) > 0.9;
+                    let (up, facing) = frame_cosines(frame, r.frame.up, r.frame.facing);
+                    let right = up > 0.9 && facing > 0.9;
                     if !quiet {
                         // The shape's verdict on the head's end (`estimate::up`), decisive or not.
                         let shape = head_end(&c.scan.positions, &c.scan.triangles, 1.0).map_or(

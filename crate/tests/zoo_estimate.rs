@@ -12,8 +12,7 @@ use bodyspace::landmarks::LandmarkSet;
 use bodyspace::mesh::topology::{component_labels, components};
 use bodyspace::synth::zoo::parts::scan_labels;
 use bodyspace::synth::{PopulationProfile, ScannerClass, ScannerParams, SubjectId, ZooParams};
-use estimate_support::{load, placed, zoo_frames, zoo_scanned};
-use nalgebra::Vector3;
+use estimate_support::{frame_cosines, landmark_errors, load, placed, zoo_frames, zoo_scanned};
 
 /// A seed neither tuned on nor reported in the measurement.
 const SEED: u64 = 5757;
@@ -66,18 +65,9 @@ fn every_scanner_class_comes_out_the_right_way_up_in_two_frames() {
             let e = estimate_landmarks(&input, &EstimateParams::default(), &mut ()).unwrap();
             let r = &e.report;
             let to_mm = e.scale_to_metres * 1000.0;
-            let errors: Vec<f64> = c
-                .landmarks
-                .landmarks
-                .iter()
-                .enumerate()
-                .map(|(k, l)| {
-                    e.positions[k].map_or(f64::INFINITY, |p| (p - l.position).norm() * to_mm)
-                })
-                .collect();
+            let errors = landmark_errors(&c, &e.positions, to_mm);
             let mean = errors.iter().sum::<f64>() / errors.len() as f64;
-            let up = Vector3::from(r.frame.up).dot(&(frame.rotation * Vector3::z()));
-            let facing = Vector3::from(r.frame.facing).dot(&(frame.rotation * -Vector3::y()));
+            let (up, facing) = frame_cosines(frame, r.frame.up, r.frame.facing);
             eprintln!(
                 "{} / {}: {} vertices, up {up:.2}, facing {facing:.2}, mean {mean:.1} mm, {:.0} ms",
                 class.name(),

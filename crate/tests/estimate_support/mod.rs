@@ -262,3 +262,23 @@ pub fn placed(template: &Template, subject: Subject, frame: &Frame) -> Case {
         subject,
     }
 }
+
+/// The distance (in `c`'s units × `to_mm`) of each of the 73 estimated landmarks from the true
+/// ones; infinite where none was estimated.
+pub fn landmark_errors(c: &Case, positions: &[Option<Point3<f64>>], to_mm: f64) -> Vec<f64> {
+    c.landmarks
+        .landmarks
+        .iter()
+        .zip(positions)
+        .map(|(l, p)| p.map_or(f64::INFINITY, |p| (p - l.position).norm() * to_mm))
+        .collect()
+}
+
+/// The cosines between an estimate's up and facing (scan directions) and the true ones in
+/// `frame` (the generator's z up and −y facing, turned by the frame).
+pub fn frame_cosines(frame: &Frame, up: [f64; 3], facing: [f64; 3]) -> (f64, f64) {
+    (
+        Vector3::from(up).dot(&(frame.rotation * Vector3::z())),
+        Vector3::from(facing).dot(&(frame.rotation * -Vector3::y())),
+    )
+}

@@ -300,33 +300,6 @@ mod tests {
     use rand::SeedableRng;
     use rand_chacha::ChaCha8Rng;
 
-    /// An outward cube of side 0.3 m made of 12 triangles.
-    fn cube() -> Mesh {
-        let s = 0.3;
-        let positions: Vec<Point3<f64>> = (0..8)
-            .map(|b| {
-                Point3::new(
-                    s * (b & 1) as f64,
-                    s * ((b >> 1) & 1) as f64,
-                    s * ((b >> 2) & 1) as f64,
-                )
-            })
-            .collect();
-        let quads = [
-            [0, 2, 3, 1],
-            [4, 5, 7, 6],
-            [0, 1, 5, 4],
-            [2, 6, 7, 3],
-            [0, 4, 6, 2],
-            [1, 3, 7, 5],
-        ];
-        let triangles = quads
-            .iter()
-            .flat_map(|q| [[q[0], q[1], q[2]], [q[0], q[2], q[3]]])
-            .collect();
-        Mesh::new(positions, triangles)
-    }
-
     #[test]
     fn a_cube_becomes_one_closed_rounded_outward_surface() {
         let params = BlobParams {
@@ -337,7 +310,8 @@ mod tests {
             bump_height: 0.0,
             sigma: 0.0,
         };
-        let s = blob_scan(&cube(), &params, &mut ChaCha8Rng::seed_from_u64(1));
+        let cube = crate::mesh::topology::tests::cube().scaled(0.3);
+        let s = blob_scan(&cube, &params, &mut ChaCha8Rng::seed_from_u64(1));
         let m = &s.mesh;
         assert!(m.positions.len() > 2000, "{}", m.positions.len());
         assert_eq!(components(m), 1);

@@ -43,7 +43,7 @@ pub fn append(scan: &mut Scan, positions: &[Point3<f64>], triangles: &[[u32; 3]]
     scan.mesh.positions.extend_from_slice(positions);
     scan.clean.extend_from_slice(positions);
     scan.head
-        .extend(std::iter::repeat(NOT_BODY).take(positions.len()));
+        .extend(std::iter::repeat_n(NOT_BODY, positions.len()));
     scan.mesh
         .triangles
         .extend(triangles.iter().map(|t| t.map(|v| v + base)));
