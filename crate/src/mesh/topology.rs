@@ -161,7 +161,7 @@ pub fn components(mesh: &Mesh) -> usize {
 }
 
 #[cfg(test)]
-mod tests {
+pub(crate) mod tests {
     use super::*;
     use nalgebra::Point3;
 

@@ -11,7 +11,9 @@
 //! * [`population_run`] — subject `i` of seed `S`, deterministic;
 //! * [`output`] — the output frame and the files written per subject;
 //! * [`bvh`] — ray casting against a triangle mesh;
-//! * [`scanner`] — the virtual CAESAR-like scanner.
+//! * [`scanner`] — the virtual CAESAR-like scanner;
+//! * [`zoo`] — the scanner zoo: what other scanners deliver (parts, cuts, floors, slices, blobs,
+//!   densities, strays).
 
 pub mod bvh;
 pub mod data;
@@ -25,11 +27,13 @@ pub mod scanner;
 pub mod skeleton;
 pub mod subject;
 pub mod targets;
+pub mod zoo;
 
 pub use data::MakeHumanData;
 pub use error::SynthError;
 pub use output::{LandmarkParams, Units};
 pub use population::{sample_subject, PopulationProfile, PoseParams, SubjectParams};
-pub use population_run::{population_subject, subject_rng, SubjectId};
+pub use population_run::{population_subject, subject_rng, zoo_subject, SubjectId};
 pub use scanner::{scan, Scan, ScannerParams};
 pub use subject::{make_subject, Subject};
+pub use zoo::{ScannerClass, ZooParams};

@@ -13,6 +13,7 @@ use super::output::{subject_landmarks, LandmarkParams, Units};
 use super::population::PopulationProfile;
 use super::scanner::ScannerParams;
 use super::subject::{make_subject, Subject};
+use super::zoo::{zoo_rng, ScannerClass, ZooParams};
 
 /// The random stream of subject `index` under `seed` (ChaCha8, stream = index).
 pub fn subject_rng(seed: u64, index: u64) -> ChaCha8Rng {
@@ -50,5 +51,27 @@ pub fn population_subject(
         units,
         &mut rng,
     );
+    Ok((subject, set))
+}
+
+/// Subject `id` as scanner class `class` delivers it (`scanner` the profile's, changed by the
+/// class; `zoo` the class's settings), with its landmark set in the output frame. The shape, the
+/// pose and the landmark noise are those of [`population_subject`]; the class's edits draw from
+/// [`zoo_rng`].
+#[allow(clippy::too_many_arguments)]
+pub fn zoo_subject(
+    data: &MakeHumanData,
+    template: &Template,
+    id: SubjectId,
+    class: ScannerClass,
+    scanner: &ScannerParams,
+    zoo: &ZooParams,
+    landmarks: &LandmarkParams,
+    units: Units,
+) -> Result<(Subject, LandmarkSet), SynthError> {
+    let scanner = class.scanner(scanner, zoo);
+    let (mut subject, set) = population_subject(data, template, id, &scanner, landmarks, units)?;
+    let mut rng = zoo_rng(id.seed, id.index);
+    subject.scan = class.finish(&subject, template, &scanner, zoo, &mut rng);
     Ok((subject, set))
 }

@@ -9,8 +9,8 @@ use bodyspace::landmarks::{Landmark, LandmarkSet};
 use bodyspace::mesh::Mesh;
 use bodyspace::synth::output::to_output_frame;
 use bodyspace::synth::{
-    make_subject, subject_rng, MakeHumanData, PopulationProfile, PoseParams, ScannerParams,
-    Subject, SubjectId, Units,
+    make_subject, subject_rng, zoo_subject, LandmarkParams, MakeHumanData, PopulationProfile,
+    PoseParams, ScannerClass, ScannerParams, Subject, SubjectId, Units, ZooParams,
 };
 use bodyspace::template::Template;
 use nalgebra::{Matrix3, Point3, Rotation3, Vector3};
@@ -186,6 +186,57 @@ pub fn case_scanned(
         params.pose = pose.pose;
     }
     let subject = make_subject(data, &params, scanner, &mut rng).unwrap();
+    placed(template, subject, frame)
+}
+
+/// The frames of the scanner zoo's measurement and tests: z up in mm (CAESAR's), y up in metres,
+/// z up in metres turned 130° about the vertical, and −x up in mm (facing +z).
+pub fn zoo_frames() -> Vec<Frame> {
+    let all = frames();
+    let named = |name: &str| *all.iter().find(|f| f.name == name).unwrap();
+    let axes =
+        |x: Vector3<f64>, y: Vector3<f64>, z: Vector3<f64>| Matrix3::from_columns(&[x, y, z]);
+    vec![
+        named("z-up-mm"),
+        named("y-up-m-facing-+z"),
+        named("z-up-m-turned-130deg"),
+        Frame {
+            name: "minus-x-up-mm-facing-+z",
+            // z (up) → −x, −y (facing) → +z.
+            rotation: axes(Vector3::y(), -Vector3::z(), -Vector3::x()),
+            per_metre: 1000.0,
+            shift: Vector3::new(700.0, -150.0, 40.0),
+        },
+    ]
+}
+
+/// Subject `id` of its profile in its own pose, as scanner class `class` delivers it (`scanner`
+/// changed by the class, `zoo` its settings); place it in a frame with [`placed`].
+pub fn zoo_scanned(
+    data: &MakeHumanData,
+    template: &Template,
+    id: SubjectId,
+    class: ScannerClass,
+    scanner: &ScannerParams,
+    zoo: &ZooParams,
+) -> Subject {
+    let landmarks = LandmarkParams::default();
+    zoo_subject(
+        data,
+        template,
+        id,
+        class,
+        scanner,
+        zoo,
+        &landmarks,
+        Units::Metres,
+    )
+    .unwrap()
+    .0
+}
+
+/// `subject` (template frame) in `frame`: its scan, true landmarks and truth.
+pub fn placed(template: &Template, subject: Subject, frame: &Frame) -> Case {
     let place = |p: &Point3<f64>| frame.apply(&to_output_frame(p, Units::Metres));
     let scan = Mesh::new(
         subject.scan.mesh.positions.iter().map(place).collect(),
@@ -210,4 +261,24 @@ pub fn case_scanned(
         truth,
         subject,
     }
+}
+
+/// The distance (in `c`'s units × `to_mm`) of each of the 73 estimated landmarks from the true
+/// ones; infinite where none was estimated.
+pub fn landmark_errors(c: &Case, positions: &[Option<Point3<f64>>], to_mm: f64) -> Vec<f64> {
+    c.landmarks
+        .landmarks
+        .iter()
+        .zip(positions)
+        .map(|(l, p)| p.map_or(f64::INFINITY, |p| (p - l.position).norm() * to_mm))
+        .collect()
+}
+
+/// The cosines between an estimate's up and facing (scan directions) and the true ones in
+/// `frame` (the generator's z up and −y facing, turned by the frame).
+pub fn frame_cosines(frame: &Frame, up: [f64; 3], facing: [f64; 3]) -> (f64, f64) {
+    (
+        Vector3::from(up).dot(&(frame.rotation * Vector3::z())),
+        Vector3::from(facing).dot(&(frame.rotation * -Vector3::y())),
+    )
 }

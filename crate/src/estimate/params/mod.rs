@@ -35,6 +35,11 @@ pub struct EstimateParams {
     /// energies lie within this fraction of each other, the one whose torso matches better goes
     /// first (arms and legs pose freely, the torso does not). Default 0.1.
     pub torso_close: f64,
+    /// Without given landmarks, when the scan's shape says which end is the head (`up.rs`: the
+    /// head's end narrower than the shoulders below it, its width ratio below this fraction of
+    /// the feet's end's), only the candidates with that end up are fitted; 0 turns it off.
+    /// Default 0.75.
+    pub head_end_decisive: f64,
     /// With given landmarks, the segment-wise fit runs from this many of the best candidates and
     /// the one whose landmarks lie nearer the given ones is kept. Default 2.
     pub segment_starts: usize,
@@ -85,6 +90,7 @@ impl Default for EstimateParams {
             candidate_iterations: 12,
             same_frame_deg: 60.0,
             torso_close: 0.1,
+            head_end_decisive: 0.75,
             segment_starts: 2,
             segment_iterations: 20,
             segments: SegmentParams::default(),
