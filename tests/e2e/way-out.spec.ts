@@ -1,8 +1,9 @@
-// A way out of a wrong estimate in the app (issue 31): the sample scan (z up, millimetres) estimated
-// with Up = −z chosen — a body standing on its head — says its estimate failed and why, its
-// confidences say so, the fit made from it is flagged and Keep asks first; the person picks Up = +z,
-// estimates again (a landmark moved by hand stays where it was put) and aligns: the fit is as good
-// as the sample's (≤ 2 mm RMS) and nothing is flagged about the estimate.
+// A way out of a wrong estimate in the app (issue 31): the sample scan (z up, facing −y,
+// millimetres) estimated with Up = −z chosen — a body standing on its head — says its estimate
+// failed and why, its confidences say so, the fit made from it is flagged and Keep asks first; the
+// person picks Up = +z and Facing = −y, estimates again (a landmark moved by hand stays where it
+// was put) and aligns: the fit is as good as the sample's (≤ 2 mm RMS) and nothing is flagged
+// about the estimate.
 import { expect, test, type Page } from '@playwright/test';
 import { sampleFile } from './samples';
 import { openWithSample } from './steps';
@@ -81,11 +82,12 @@ test('an estimate in a wrong frame says it failed; choosing up and estimating ag
   // The right way up, a landmark moved by hand, and the estimate again: the move is kept as placed.
   await page.getByTestId('estimate-up').selectOption('+z');
   await expect(body(page)).toHaveAttribute('data-orientation', '+z auto');
+  await page.getByTestId('estimate-facing').selectOption('-y');
+  await expect(body(page)).toHaveAttribute('data-orientation', '+z -y');
   await estimate(page, 'Estimate again, keeping my edits', 3);
   await expect(body(page)).toHaveAttribute('data-estimate-verdict', 'good');
   await expect(page.getByTestId('estimate-check')).toHaveCount(0);
-  await expect(page.getByTestId('estimate-assumed')).toContainText("up is the scan's +z axis (as chosen)");
-  await expect(page.getByTestId('estimate-assumed')).toContainText('faces -y;');
+  await expect(page.getByTestId('estimate-assumed')).toContainText("up is the scan's +z axis (as chosen) and it faces -y (as chosen)");
   expect(Math.max(...(await confidences(page)))).toBeGreaterThan(10);
 
   await expect(body(page)).toHaveAttribute('data-rbf-state', 'done', { timeout: 60_000 });

@@ -179,7 +179,6 @@ export class LandmarkStep {
   /** Up and Facing chosen: remembered for the next estimate and the fit (nothing runs by itself). */
   private orient(orientation: Orientation | null): void {
     this.session.orientation = orientation;
-    document.body.dataset.orientation = orientation ? `${orientation.up} ${orientation.facing ?? 'auto'}` : 'auto';
     this.render();
   }
 
@@ -283,6 +282,8 @@ export class LandmarkStep {
     const edits = this.session.edits ?? (this.empty ??= new LandmarkEdits(this.caesarNames()));
     const entries = edits.all;
     const selected = this.selected ? (edits.entry(this.selected) ?? null) : null;
+    const o = this.session.orientation;
+    document.body.dataset.orientation = o ? `${o.up} ${o.facing ?? 'auto'}` : 'auto';
     this.panel.render(this.facts, {
       entries,
       selected: this.selected,
