@@ -1,9 +1,9 @@
 // A way out of a wrong estimate in the app (issue 31): the sample scan (z up, facing −y,
 // millimetres) estimated with Up = −z chosen — a body standing on its head — says its estimate
-// failed and why, its confidences say so, the fit made from it is flagged and Keep asks first; the
-// person picks Up = +z and Facing = −y, estimates again (a landmark moved by hand stays where it
-// was put) and aligns: the fit is as good as the sample's (≤ 2 mm RMS) and nothing is flagged
-// about the estimate.
+// failed and why, its confidences say so, the fit made from it is flagged and Keep asks first
+// (kept only when confirmed); the person picks Up = +z and Facing = −y, estimates again (a
+// landmark moved by hand stays where it was put) and aligns: the fit is as good as the sample's
+// (≤ 2 mm RMS) and nothing is flagged about the estimate.
 import { expect, test, type Page } from '@playwright/test';
 import { sampleFile } from './samples';
 import { openWithSample } from './steps';
@@ -78,6 +78,11 @@ test('an estimate in a wrong frame says it failed; choosing up and estimating ag
   await page.getByTestId('align-keep-cancel').click();
   await expect(question).toHaveCount(0);
   await expect(body(page)).not.toHaveAttribute('data-subjects', /./);
+  // Asked again and confirmed, it is kept.
+  await page.getByTestId('align-keep').click();
+  await page.getByTestId('align-keep-confirm').click();
+  await expect(body(page)).toHaveAttribute('data-subjects', '1');
+  await expect(page.getByTestId('align-keep')).toHaveText('Kept ✓');
 
   // The right way up, a landmark moved by hand, and the estimate again: the move is kept as placed.
   await page.getByTestId('estimate-up').selectOption('+z');
