@@ -1,13 +1,17 @@
-// The TypeScript mirrors of the core's JSON (web/shared/align-types.ts) held to the JSON the core
-// really writes: `bodyspace align`'s report of a synthetic subject, field by field. Each list
-// below must name exactly the keys of its TypeScript type (tsc refuses a missing or extra one), and
-// the test fails when the core writes a field the type lacks or lacks one the type requires.
+// The TypeScript mirrors of the core's JSON (web/shared/align-types.ts, landmark-entry.ts) held to
+// the JSON the core really writes: `bodyspace align`'s report of a synthetic subject, field by
+// field — with its landmark file, and without one in a wrong frame forced (the estimate's report
+// and its failed self-check). Each list below must name exactly the keys of its TypeScript type
+// (tsc refuses a missing or extra one), and the test fails when the core writes a field the type
+// lacks or lacks one the type requires. The estimate's report is mirrored only in the fields the
+// page reads: those must be there.
 import { execFileSync } from 'node:child_process';
 import { mkdtempSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { expect, test } from '@playwright/test';
 import type { DistanceStatsMm, FineReport, LandmarkPolicyReport, QualityReport, SubjectReport, ToTemplate, WarpReport } from '../../web/shared/align-types';
+import type { EstimateReport, SelfCheck, SelfCheckEvidence } from '../../web/shared/landmark-entry';
 import { bodyspaceBinary, synthSubjects } from './synth';
 
 /** Every key of `T`: `true` where the core always writes it, `false` where it may leave it out. */
@@ -32,7 +36,19 @@ const subject: Keys<SubjectReport> = {
   index_ms: true,
   total_ms: true,
 };
-const landmarks: Keys<LandmarkPolicyReport> = { source: true, file: true, given: true, left_out: true, unjudged: true, estimated: true, used: true, estimate: false };
+const landmarks: Keys<LandmarkPolicyReport> = {
+  source: true,
+  file: true,
+  given: true,
+  left_out: true,
+  unjudged: true,
+  estimated: true,
+  used: true,
+  estimate: false,
+  estimate_check: false,
+};
+/** With no landmark file the warp uses the estimate: its report and its verdict are written. */
+const estimatedLandmarks: Keys<LandmarkPolicyReport> = { ...landmarks, estimate: true, estimate_check: true };
 const quality: Keys<QualityReport> = {
   rms_mm: true,
   weighted_vertices: true,
@@ -42,9 +58,13 @@ const quality: Keys<QualityReport> = {
   folded_triangles: true,
   folded_fraction: true,
   suspicious_landmarks: true,
+  landmark_estimate: true,
   flags: true,
   thresholds: true,
 };
+const selfCheck: Keys<SelfCheck> = { verdict: true, reasons: true, confidence_factor: true, evidence: true };
+const evidence: Keys<SelfCheckEvidence> = { fit_rms_mm: true, fit_moved_mm: true, stature_m: true, contradicting: true };
+const estimateRead: Keys<EstimateReport> = { landmarks: true, frame: true, given: true, estimated: true, flagged: true, self_check: true, fit_rms_mm: true, total_ms: true };
 const toTemplate: Keys<ToTemplate> = { scale_to_metres: true, rotation: true, translation: true };
 const warp: Keys<WarpReport> = {
   kernel: true,
@@ -86,18 +106,30 @@ function expectKeys(what: string, json: Record<string, unknown>, keys: Record<st
   expect(missing, `${what}: fields the TypeScript type requires that the core does not write`).toEqual([]);
 }
 
+/** The fields of `keys` the core must write are all in `json` (it may write more). */
+function expectRequired(what: string, json: Record<string, unknown>, keys: Record<string, boolean>): void {
+  const missing = Object.entries(keys)
+    .filter(([k, required]) => required && !(k in json))
+    .map(([k]) => k);
+  expect(missing, `${what}: fields the page reads that the core does not write`).toEqual([]);
+}
+
+/** `bodyspace align` of the synthetic subject in `dir` with `args`, 20 iterations: its report. */
+function align(dir: string, args: string[]): Record<string, Record<string, unknown>> {
+  const out = execFileSync(bodyspaceBinary(), ['align', '--scan', join(dir, 'scan_001.ply'), '--out', join(dir, 'fit.ply'), '--max-iterations', '20', ...args], {
+    encoding: 'utf8',
+    maxBuffer: 64 << 20,
+  });
+  return JSON.parse(out) as Record<string, Record<string, unknown>>;
+}
+
 test('the TypeScript report types name exactly the fields the core writes', () => {
   test.setTimeout(180_000);
   const files = synthSubjects(1, 41);
   const dir = mkdtempSync(join(tmpdir(), 'bodyspace-contract-'));
   try {
     for (const f of files) writeFileSync(join(dir, f.name), f.bytes);
-    const out = execFileSync(
-      bodyspaceBinary(),
-      ['align', '--scan', join(dir, 'scan_001.ply'), '--landmarks', join(dir, 'landmarks_001.lnd'), '--out', join(dir, 'fit.ply'), '--max-iterations', '20'],
-      { encoding: 'utf8', maxBuffer: 64 << 20 },
-    );
-    const report = JSON.parse(out) as Record<string, Record<string, unknown>>;
+    const report = align(dir, ['--landmarks', join(dir, 'landmarks_001.lnd')]);
     expectKeys('SubjectReport', report, subject);
     expectKeys('LandmarkPolicyReport', report.landmarks!, landmarks);
     expectKeys('QualityReport', report.quality!, quality);
@@ -105,6 +137,22 @@ test('the TypeScript report types name exactly the fields the core writes', () =
     expectKeys('WarpReport', report.warp!, warp);
     expectKeys('FineReport', report.fine!, fine);
     expectKeys('DistanceStatsMm', report.fine!.scan_to_template as Record<string, unknown>, distance);
+
+    // No landmark file, and up stated as −z on this z-up scan: the estimate runs in a wrong frame,
+    // says it failed and why, and the fit's quality carries it.
+    const wrong = align(dir, ['--up=-z']);
+    expectKeys('LandmarkPolicyReport (estimated)', wrong.landmarks!, estimatedLandmarks);
+    expectKeys('QualityReport (estimated)', wrong.quality!, quality);
+    const check = wrong.landmarks!.estimate_check as Record<string, unknown>;
+    expectKeys('SelfCheck', check, selfCheck);
+    expectKeys('SelfCheck.evidence', check.evidence as Record<string, unknown>, evidence);
+    expectRequired('EstimateReport', wrong.landmarks!.estimate as Record<string, unknown>, estimateRead);
+    expectKeys('EstimateReport.self_check', (wrong.landmarks!.estimate as Record<string, unknown>).self_check as Record<string, unknown>, selfCheck);
+    const typed = wrong as unknown as SubjectReport;
+    expect(typed.landmarks.estimate_check?.verdict).toBe('failed');
+    expect(typed.landmarks.estimate_check?.reasons.length).toBeGreaterThan(0);
+    expect(typed.quality?.flags).toContain('landmark_estimate');
+    expect(typed.quality?.landmark_estimate.length).toBeGreaterThan(0);
   } finally {
     rmSync(dir, { recursive: true, force: true });
   }

@@ -92,7 +92,7 @@ export class AlignStep {
     try {
       const posted = performance.now();
       const result = await this.client.call(
-        { type: 'align', subject: input, options: { params: { rbf: rbfParams(rbf) } } },
+        { type: 'align', subject: input, options: { params: { rbf: rbfParams(rbf) }, orientation: this.session.orientation } },
         { transfer: subjectTransfer(input), onEvent },
       );
       recordTimings(result, performance.now() - posted);

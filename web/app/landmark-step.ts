@@ -3,13 +3,16 @@
 // in the list and clicking on the scan to place it, dragging markers along the surface, marking
 // one absent, undo / redo (buttons, Ctrl+Z, Ctrl+Shift+Z), export by the core's writers. A scan
 // without landmarks gets the core's estimate, in a worker of its own (Cancel stops that worker
-// alone); the set is checked for suspicious landmarks there after every change, against the
-// estimate's prediction (no new fit). Every committed
+// alone), in the frame the person chose (Up / Facing; auto: the core finds it); the estimate's
+// verdict on itself is shown in words, and "Estimate again" re-runs it keeping what was given,
+// placed or moved by hand. The set is checked for suspicious landmarks there after every change,
+// against the estimate's prediction (no new fit). Every committed
 // change is reported through `onEdited`, which invalidates the warp and the fit as a new landmark
 // file does.
 import { CancelledError, type CoreClient } from '../client/core-client';
 import { baseName } from '../shared/file-kind';
 import type { EstimateReport, LandmarkEntry, LandmarkPrediction, Point, Sharpness, SuspiciousLandmark } from '../shared/landmark-entry';
+import type { Orientation } from '../shared/orientation';
 import { METRES_PER_UNIT } from '../shared/results';
 import type { TemplateData } from '../shared/template-data';
 import { download } from '../ui/download';
@@ -69,6 +72,7 @@ export class LandmarkStep {
       onHover: (name) => this.panel.guide.show(name ?? this.selected),
       onEstimate: () => void this.estimateLandmarks(),
       onCancelEstimate: () => this.estimator.cancel(),
+      onOrientation: (orientation) => this.orient(orientation),
       onUndo: () => this.step(() => this.session.edits?.undo() ?? null),
       onRedo: () => this.step(() => this.session.edits?.redo() ?? null),
       onAbsent: () => this.markAbsent(),
@@ -103,6 +107,7 @@ export class LandmarkStep {
     this.suspicious = null;
     this.prediction = null;
     this.estimate = { state: 'none' };
+    delete document.body.dataset.estimateVerdict;
     this.panel.guide.show(null);
     this.panel.scrollListToTop();
   }
@@ -120,7 +125,11 @@ export class LandmarkStep {
     else void this.estimateLandmarks();
   }
 
-  /** Estimates every landmark neither given nor edited, in the landmark worker. */
+  /**
+   * Estimates every landmark neither given nor edited (again, after an estimate: what it placed
+   * is replaced, what a person gave, placed or moved is kept as given), in the landmark worker, in
+   * the frame the person chose.
+   */
   async estimateLandmarks(): Promise<void> {
     const edits = this.session.edits;
     const input = estimateInput(this.session);
@@ -131,7 +140,7 @@ export class LandmarkStep {
     this.render();
     try {
       const result = await this.estimator.call(
-        { type: 'estimateLandmarks', scan: input },
+        { type: 'estimateLandmarks', scan: input, orientation: this.session.orientation },
         {
           transfer: scanTransfer(input),
           onProgress: (fraction, label) => {
@@ -147,8 +156,11 @@ export class LandmarkStep {
       this.suspicious = result.report.flagged;
       this.sharpness = new Map(result.report.landmarks.map((l) => [l.name, l.sharpness]));
       this.prediction = { ...result.prediction, scale: this.session.scanScale };
-      this.estimate = { state: 'done', assumed: this.assumed(result.report), seconds: result.workerMs / 1000 };
-      document.body.dataset.estimateWorkerMs = result.workerMs.toFixed(0);
+      this.estimate = { state: 'done', assumed: this.assumed(result.report), seconds: result.workerMs / 1000, check: result.report.self_check };
+      const data = document.body.dataset;
+      data.estimateWorkerMs = result.workerMs.toFixed(0);
+      data.estimateVerdict = result.report.self_check.verdict;
+      data.estimates = String(Number(data.estimates ?? '0') + 1);
       this.showMarkers();
       this.render();
       this.onEdited(false);
@@ -164,12 +176,21 @@ export class LandmarkStep {
     }
   }
 
+  /** Up and Facing chosen: remembered for the next estimate and the fit (nothing runs by itself). */
+  private orient(orientation: Orientation | null): void {
+    this.session.orientation = orientation;
+    this.render();
+  }
+
   /** What the estimate assumed of the scan, in words. */
   private assumed(report: EstimateReport): string {
     const s = this.session;
     const units = s.scan && s.scanUnits === s.scan.summary.units_detected ? `${s.scanUnits} (detected)` : `${s.scanUnits} (as chosen)`;
+    const o = s.orientation;
+    const up = o ? ' (as chosen)' : '';
+    const facing = o?.facing ? ' (as chosen)' : '';
     return (
-      `the body's up is the scan's ${report.frame.up_axis} axis and it faces ${report.frame.facing_axis}; units ${units}. ` +
+      `the body's up is the scan's ${report.frame.up_axis} axis${up} and it faces ${report.frame.facing_axis}${facing}; units ${units}. ` +
       `${report.given} landmarks kept as given, ${report.estimated} estimated (markers from red, low confidence, to green, high); ` +
       `the landmark-free fit is ${report.fit_rms_mm.toFixed(1)} mm RMS from the scan.`
     );
@@ -230,7 +251,7 @@ export class LandmarkStep {
     const input = scanInput(this.session, 'base');
     if (!input) throw new Error('no scan or no landmark to check');
     const generation = this.generation;
-    const fit = await this.estimator.call({ type: 'estimateLandmarks', scan: input }, { transfer: scanTransfer(input) });
+    const fit = await this.estimator.call({ type: 'estimateLandmarks', scan: input, orientation: this.session.orientation }, { transfer: scanTransfer(input) });
     if (generation === this.generation) this.prediction = { ...fit.prediction, scale: this.session.scanScale };
     return fit.report.flagged;
   }
@@ -261,6 +282,8 @@ export class LandmarkStep {
     const edits = this.session.edits ?? (this.empty ??= new LandmarkEdits(this.caesarNames()));
     const entries = edits.all;
     const selected = this.selected ? (edits.entry(this.selected) ?? null) : null;
+    const o = this.session.orientation;
+    document.body.dataset.orientation = o ? `${o.up} ${o.facing ?? 'auto'}` : 'auto';
     this.panel.render(this.facts, {
       entries,
       selected: this.selected,
@@ -270,6 +293,8 @@ export class LandmarkStep {
       tools: {
         estimate: this.estimate,
         absent: entries.filter((e) => !e.position).length,
+        estimated: entries.filter((e) => e.state === 'estimated').length,
+        orientation: this.session.orientation,
         hasScan: Boolean(this.session.scan),
         selected,
         canUndo: edits.canUndo,

@@ -2,6 +2,7 @@
 // (which the warp and the alignment use). Derives what the view and the panels show; a failed load
 // never touches it.
 import type { EstimateReport } from '../shared/landmark-entry';
+import type { Orientation } from '../shared/orientation';
 import { METRES_PER_UNIT, type MeshSummary, type ParsedLandmarks, type ParsedScan, type Units } from '../shared/results';
 import { LandmarkEdits } from './landmark-edits';
 
@@ -26,6 +27,12 @@ export class Session {
   edits: LandmarkEdits | null = null;
   /** The report of the landmark estimate that filled in the set's estimated landmarks, if one did. */
   estimateReport: EstimateReport | null = null;
+  /**
+   * Which way is up on the scan, as the person chose it (null: auto, the estimate finds it): the
+   * landmark estimate and the fit's own estimate use it. A new scan starts at auto, as its units
+   * start at the detected ones.
+   */
+  orientation: Orientation | null = null;
 
   private readonly listeners: ((change: SessionChange) => void)[] = [];
 
@@ -57,6 +64,7 @@ export class Session {
   setScan(scan: ParsedScan): void {
     this.scan = scan;
     this.scanUnits = scan.summary.units_detected;
+    this.orientation = null;
     this.estimateReport = null;
     if (!this.landmarks || !this.edits) this.edits = new LandmarkEdits(this.caesarNames());
   }

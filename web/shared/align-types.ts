@@ -1,5 +1,7 @@
 // Inputs and results of the RBF warp (paper §3.1) and fine alignment (§3.2). No DOM here.
 import type { DistanceHeat } from './heat-scale';
+import type { SelfCheck } from './landmark-entry';
+import type { Orientation } from './orientation';
 import type { TemplateResolution } from './template-data';
 import type { Units } from './results';
 
@@ -82,6 +84,8 @@ export interface SubjectOptions {
   check_landmarks?: boolean;
   thresholds?: Partial<QualityReport['thresholds']>;
   nearly_full?: number;
+  /** Which way is up on the scan, when a person said so (null: the estimate finds the frame). */
+  orientation?: Orientation | null;
 }
 
 /** A file's bytes and name, as the batch hands a subject's files to the core. */
@@ -202,6 +206,8 @@ export interface LandmarkPolicyReport {
   estimated: number;
   used: number;
   estimate?: unknown;
+  /** The estimate's verdict on itself, when the warp used landmarks it estimated. */
+  estimate_check?: SelfCheck;
 }
 
 /** From the scan's frame and units into the template's: x_t = R·(s·x) + t (`subject/frame.rs`). */
@@ -235,7 +241,7 @@ export interface AlignResult {
 }
 
 /** A reason to look at a fit again (`align/quality.rs` `QualityFlag`, docs/batch.md). */
-export type QualityFlag = 'high_rms' | 'unmatched' | 'fold_overs' | 'suspicious_landmarks';
+export type QualityFlag = 'high_rms' | 'unmatched' | 'fold_overs' | 'suspicious_landmarks' | 'landmark_estimate';
 
 /** The core's `QualityReport`: the measures behind the flags and the flags raised. */
 export interface QualityReport {
@@ -247,6 +253,8 @@ export interface QualityReport {
   folded_triangles: number;
   folded_fraction: number;
   suspicious_landmarks: string[];
+  /** Why the landmark estimate the warp used doubts itself, in words (empty: it did not, or none ran). */
+  landmark_estimate: string[];
   flags: QualityFlag[];
   thresholds: { max_rms_mm: number; max_unmatched_fraction: number; max_folded_fraction: number };
 }

@@ -32,6 +32,32 @@ export interface SuspiciousLandmark {
  */
 export type Sharpness = 'point' | 'prominence' | 'level';
 
+/** The estimate's verdict on itself (`Verdict`, crate/src/estimate/self_check.rs). */
+export type Verdict = 'good' | 'doubtful' | 'failed';
+
+/**
+ * The estimate's check of itself (`SelfCheck`): its verdict, the reasons in sentences for a
+ * person, the factor its confidences were multiplied by (1 when good), and what it judged.
+ */
+export interface SelfCheck {
+  verdict: Verdict;
+  reasons: string[];
+  confidence_factor: number;
+  evidence: SelfCheckEvidence;
+}
+
+/** What the self-check looks at (`Evidence`): lengths in mm, the stature in metres. */
+export interface SelfCheckEvidence {
+  /** RMS (mm) of the landmark-free fit, template → scan. */
+  fit_rms_mm: number;
+  /** RMS (mm) of how far that fit bent the template from the segment-wise fit. */
+  fit_moved_mm: number;
+  /** Height (m) of the fitted template along the frame's up. */
+  stature_m: number;
+  /** Estimated landmarks far from where the others of their rigid part put them. */
+  contradicting: string[];
+}
+
 /** The core's report of a landmark estimate (`EstimateReport`; the fields the page uses). */
 export interface EstimateReport {
   /** The 73 CAESAR landmarks in file order. */
@@ -41,6 +67,8 @@ export interface EstimateReport {
   given: number;
   estimated: number;
   flagged: SuspiciousLandmark[];
+  /** The estimate's verdict on itself; its confidences already carry the verdict's factor. */
+  self_check: SelfCheck;
   /** RMS distance (mm) of the fitted template to the scan after the landmark-free fit. */
   fit_rms_mm: number;
   total_ms: number;

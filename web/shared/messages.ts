@@ -2,6 +2,7 @@
 import type { Bounds } from './bounds';
 import type { AlignDefaults, AlignParams, AlignProgress, AlignResult, FileBytes, ScanInput, SubjectInput, SubjectOptions, WarpResult } from './align-types';
 import type { LandmarkEstimate, LandmarkPrediction, SuspiciousLandmark } from './landmark-entry';
+import type { Orientation } from './orientation';
 import type { ParsedLandmarks, ParsedScan, SubjectPairing } from './results';
 import type { TemplateData, TemplateResolution } from './template-data';
 import type { FoundBody, ManikinDefaults, ManikinSet, MeasurementDistribution, Targets } from './anthropometry';
@@ -27,8 +28,11 @@ export type CoreRequestBody =
   | { type: 'align'; subject: SubjectInput; options: SubjectOptions }
   /** The same path on a subject's files (the batch): `bytes` are transferred. */
   | { type: 'alignFiles'; scan: FileBytes; landmarks: FileBytes | null; resolution: TemplateResolution; options: SubjectOptions }
-  /** The 73 CAESAR landmarks of a scan with a partial or empty set (kept as given); replies with progress. */
-  | { type: 'estimateLandmarks'; scan: ScanInput }
+  /**
+   * The 73 CAESAR landmarks of a scan with a partial or empty set (kept as given), in the frame a
+   * person stated (`orientation`; null: the core finds it); replies with progress.
+   */
+  | { type: 'estimateLandmarks'; scan: ScanInput; orientation: Orientation | null }
   /** The suspicious landmarks of a set (`positions` `#names·3`, metres) against an estimate's prediction. */
   | { type: 'checkLandmarks'; names: string[]; positions: Float64Array; prediction: LandmarkPrediction }
   | { type: 'exportMesh'; positions: Float32Array; triangles: Uint32Array; format: 'ply' | 'obj' }

@@ -1,11 +1,13 @@
 // The Align step (paper §3.1 + §3.2): Align / Cancel, progress, the live E/RMS chart, and the
-// result — the paper's Table 1 numbers, the heat-map legend, export and "keep as aligned subject".
+// result — the paper's Table 1 numbers, the fit's own check, the heat-map legend, export and
+// "keep as aligned subject" (asking first when the fit is flagged).
 import type { AlignReport, AlignStage, SubjectReport } from '../shared/align-types';
 import type { TemplateResolution } from '../shared/template-data';
 import { button, byId, h } from './dom';
 import { EnergyChart } from './energy-chart';
 import { formatCount, qualityText } from './format';
 import { heatLegend } from './heat-legend';
+import { keepControl } from './keep-button';
 
 export interface AlignControls {
   onAlign: () => void;
@@ -88,8 +90,6 @@ export class AlignPanel {
     const s = r.fine.scan_to_template;
     const t = r.fine.template_to_scan;
     const mm = (v: number) => v.toFixed(2);
-    const keep = button('align-keep', kept ? 'Kept ✓' : 'Keep as aligned subject', 'button', () => this.controls.onKeep());
-    keep.disabled = kept;
     return [
       h('h2', {}, 'Scan → template (paper Table 1)'),
       h(
@@ -118,7 +118,7 @@ export class AlignPanel {
         button('export-ply', 'Export PLY', 'button', () => this.controls.onExport('ply')),
         button('export-obj', 'Export OBJ', 'button', () => this.controls.onExport('obj')),
       ),
-      h('div', { class: 'actions' }, keep),
+      keepControl(r.quality, kept, () => this.controls.onKeep()),
       h('p', { class: 'note' }, 'Exports are in metres, in the scan’s frame, in template vertex order.'),
     ];
   }

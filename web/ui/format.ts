@@ -1,6 +1,6 @@
 // How numbers are written in the panels.
 
-import type { QualityReport } from '../shared/align-types';
+import type { QualityFlag, QualityReport } from '../shared/align-types';
 import type { Reading } from '../shared/shape-results';
 
 const integer = new Intl.NumberFormat('en-GB', { maximumFractionDigits: 0 });
@@ -42,5 +42,18 @@ export function qualityText(q: QualityReport): string {
   if (q.flags.includes('unmatched')) parts.push(`${(q.unmatched_fraction * 100).toFixed(0)} % unmatched > ${t.max_unmatched_fraction * 100} %`);
   if (q.flags.includes('fold_overs')) parts.push(`${(q.folded_fraction * 100).toFixed(1)} % folded > ${t.max_folded_fraction * 100} %`);
   if (q.flags.includes('suspicious_landmarks')) parts.push(`suspicious landmarks left out: ${q.suspicious_landmarks.join(', ')}`);
+  if (q.flags.includes('landmark_estimate')) parts.push(`landmark estimate: ${q.landmark_estimate.join('; ')}`);
   return parts.join('; ');
+}
+
+/** A quality flag's short name, for a button or a list: `landmark_estimate` → "doubtful landmark estimate". */
+export function flagName(flag: QualityFlag): string {
+  const names: Record<QualityFlag, string> = {
+    high_rms: 'high RMS',
+    unmatched: 'unmatched template',
+    fold_overs: 'fold-overs',
+    suspicious_landmarks: 'suspicious landmarks',
+    landmark_estimate: 'doubtful landmark estimate',
+  };
+  return names[flag];
 }

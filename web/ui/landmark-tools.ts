@@ -1,15 +1,18 @@
-// The landmark editor's controls: the estimate (progress, Cancel, the frame and units assumed, or
-// what went wrong), the picked landmark's position, Undo / Redo / Mark absent, export as .lnd, CSV
-// or JSON, and the landmarks the core finds suspicious.
-import type { LandmarkEntry, SuspiciousLandmark } from '../shared/landmark-entry';
+// The landmark editor's controls: the estimate (which way is up, progress, Cancel, the frame and
+// units assumed, its verdict on itself in words, or what went wrong; "Estimate again, keeping my
+// edits" once it has run), the picked landmark's position, Undo / Redo / Mark absent, export as
+// .lnd, CSV or JSON, and the landmarks the core finds suspicious.
+import type { LandmarkEntry, SelfCheck, SuspiciousLandmark } from '../shared/landmark-entry';
+import type { Orientation } from '../shared/orientation';
 import { button, h } from './dom';
+import { orientationControl } from './orientation-control';
 
 export type LandmarkFormat = 'lnd' | 'csv' | 'json';
 
 export type EstimateView =
   | { state: 'none' }
   | { state: 'running'; fraction: number; label: string }
-  | { state: 'done'; assumed: string; seconds: number }
+  | { state: 'done'; assumed: string; seconds: number; check: SelfCheck }
   | { state: 'cancelled' }
   | { state: 'error'; message: string };
 
@@ -17,6 +20,10 @@ export interface ToolsView {
   estimate: EstimateView;
   /** Landmarks without a position (what an estimate would fill in). */
   absent: number;
+  /** Landmarks the estimate placed (what "Estimate again" places anew). */
+  estimated: number;
+  /** Which way is up, as the person chose it (null: the estimate finds it). */
+  orientation: Orientation | null;
   /** A scan is loaded: landmarks can be estimated and placed. */
   hasScan: boolean;
   selected: LandmarkEntry | null;
@@ -29,6 +36,7 @@ export interface ToolsView {
 export interface ToolsActions {
   onEstimate: () => void;
   onCancelEstimate: () => void;
+  onOrientation: (orientation: Orientation | null) => void;
   onUndo: () => void;
   onRedo: () => void;
   onAbsent: () => void;
@@ -53,9 +61,10 @@ export class LandmarkTools {
     this.live = null;
     const a = this.actions;
     const running = e.state === 'running';
-    const estimate = button('landmarks-estimate', view.absent === 73 ? 'Estimate landmarks' : `Estimate the ${view.absent} absent`, 'button', a.onEstimate);
+    const estimate = button('landmarks-estimate', estimateLabel(view), 'button', a.onEstimate);
     estimate.disabled = running || !view.hasScan;
-    estimate.hidden = view.absent === 0;
+    estimate.hidden = view.absent === 0 && view.estimated === 0;
+    estimate.title = 'Landmarks given in a file, placed or moved by hand are kept as they are; the others are estimated (again), in the frame chosen by Up and Facing.';
     const undo = button('landmarks-undo', 'Undo', 'button', a.onUndo);
     undo.disabled = running || !view.canUndo;
     undo.title = 'Ctrl+Z';
@@ -71,11 +80,12 @@ export class LandmarkTools {
     });
     this.element.replaceChildren(
       ...this.estimateParts(e),
+      orientationControl(view.orientation, running || !view.hasScan, a.onOrientation),
       h('div', { class: 'actions' }, estimate),
       h('p', { class: 'note', 'data-testid': 'landmarks-selected' }, selectedText(view)),
       h('div', { class: 'actions' }, undo, redo, absent),
       h('div', { class: 'actions export' }, h('span', { class: 'label' }, 'Export'), ...exports),
-      ...suspiciousParts(view.suspicious),
+      ...suspiciousParts(view.suspicious, e.state !== 'done' || e.check.verdict === 'good'),
     );
   }
 
@@ -88,13 +98,46 @@ export class LandmarkTools {
       return [bar, h('div', { class: 'actions estimate-running' }, label, cancel)];
     }
     if (e.state === 'done')
-      return [h('p', { class: 'note', 'data-testid': 'estimate-assumed' }, `Estimated in ${e.seconds.toFixed(1)} s. Assumed: ${e.assumed}`)];
+      return [h('p', { class: 'note', 'data-testid': 'estimate-assumed' }, `Estimated in ${e.seconds.toFixed(1)} s. Assumed: ${e.assumed}`), ...checkParts(e.check)];
     if (e.state === 'cancelled')
       return [h('p', { class: 'warn-note', 'data-testid': 'estimate-cancelled' }, 'Estimate cancelled: the scan and the landmarks placed so far are kept.')];
     if (e.state === 'error')
       return [h('p', { class: 'error-note', 'data-testid': 'estimate-error' }, `The estimate failed: ${sentence(e.message)} The scan and the landmarks placed so far are kept; place the landmarks by hand or try again.`)];
     return [];
   }
+}
+
+/** "Estimate landmarks" on a bare set; once an estimate placed some, "Estimate again, keeping my edits". */
+function estimateLabel(view: ToolsView): string {
+  if (view.absent === 73) return 'Estimate landmarks';
+  if (view.estimated > 0) return 'Estimate again, keeping my edits';
+  return `Estimate the ${view.absent} absent`;
+}
+
+/**
+ * The estimate's verdict on itself in words: nothing for a good one; a warning with its reasons
+ * for a doubtful one, an error for a failed one (its landmarks must not be trusted).
+ */
+function checkParts(check: SelfCheck): HTMLElement[] {
+  if (check.verdict === 'good') return [];
+  const failed = check.verdict === 'failed';
+  const headline = failed
+    ? 'The estimate failed its own check: do not trust these landmarks.'
+    : 'The estimate doubts itself: check these landmarks before you trust them.';
+  const confidence = `Their confidences are lowered to ${(check.confidence_factor * 100).toFixed(0)} % of what they would be.`;
+  return [
+    h(
+      'div',
+      { class: failed ? 'error-note' : 'warn-note', 'data-testid': 'estimate-check', 'data-verdict': check.verdict },
+      h('p', {}, `${headline} ${confidence}`),
+      h('ul', { class: 'check-reasons' }, ...check.reasons.map((r) => h('li', {}, sentence(capitalised(r))))),
+      h('p', {}, 'Choose which way is up (and the facing) below, or place a few landmarks by hand, then estimate again.'),
+    ),
+  ];
+}
+
+function capitalised(text: string): string {
+  return text.charAt(0).toUpperCase() + text.slice(1);
 }
 
 function selectedText(view: ToolsView): string {
@@ -105,8 +148,12 @@ function selectedText(view: ToolsView): string {
   return `${s.name}: ${where}. Click on the scan to place it.`;
 }
 
-function suspiciousParts(list: SuspiciousLandmark[] | null): HTMLElement[] {
-  if (!list) return [];
+/**
+ * The suspicious landmarks; none is said only while the prediction they are checked against is
+ * `trusted` (an estimate that doubts itself predicts nothing worth agreeing with).
+ */
+function suspiciousParts(list: SuspiciousLandmark[] | null, trusted: boolean): HTMLElement[] {
+  if (!list || (list.length === 0 && !trusted)) return [];
   if (list.length === 0) return [h('p', { class: 'note', 'data-testid': 'landmarks-suspicious-none' }, 'No landmark is far from where the others predict it.')];
   return [
     h('h2', {}, `Suspicious (${list.length})`),

@@ -108,7 +108,7 @@ self.onmessage = async (event: MessageEvent<CoreRequest>) => {
       case 'estimateLandmarks': {
         const id = request.id;
         post({ id, type: 'progress', fraction: 0, label: 'Estimating the landmarks: finding the frame' });
-        const estimate = runEstimate(request.scan, (fraction, label) => post({ id, type: 'progress', fraction, label }));
+        const estimate = runEstimate(request.scan, request.orientation, (fraction, label) => post({ id, type: 'progress', fraction, label }));
         const transfer = [estimate.positions.buffer, estimate.confidence.buffer, estimate.given.buffer, estimate.prediction.positions.buffer, estimate.prediction.parts.buffer];
         post({ id, type: 'result', result: estimate }, transfer);
         break;

@@ -3,17 +3,21 @@
 import { checkLandmarks, estimateLandmarks } from '../pkg/bodyspace.js';
 import type { AlignProgress, ScanInput } from '../shared/align-types';
 import type { EstimateReport, LandmarkEstimate, LandmarkPrediction, SuspiciousLandmark } from '../shared/landmark-entry';
+import { orientationArgument, type Orientation } from '../shared/orientation';
 import { withScan } from './align-handlers';
 import { templateHandle } from './template-handlers';
 
-/** Estimates the landmarks `scan` lacks; `onProgress(fraction, label)` after every iteration. */
-export function runEstimate(scan: ScanInput, onProgress: (fraction: number, label: string) => void): LandmarkEstimate {
+/**
+ * Estimates the landmarks `scan` lacks, in the frame `orientation` states (null: the core finds
+ * it); `onProgress(fraction, label)` after every iteration.
+ */
+export function runEstimate(scan: ScanInput, orientation: Orientation | null, onProgress: (fraction: number, label: string) => void): LandmarkEstimate {
   const t0 = performance.now();
   const progress = (p: AlignProgress): boolean => {
     onProgress(p.max_iterations > 0 ? Math.min(p.iteration / p.max_iterations, 1) : 0, `Estimating the landmarks: iteration ${p.iteration} of at most ${p.max_iterations}`);
     return true;
   };
-  const estimate = withScan(scan, (input) => estimateLandmarks(templateHandle(scan.resolution), input, progress));
+  const estimate = withScan(scan, (input) => estimateLandmarks(templateHandle(scan.resolution), input, orientationArgument(orientation), progress));
   try {
     return {
       names: estimate.names(),

@@ -1,0 +1,116 @@
+// A way out of a wrong estimate in the app (issue 31): the sample scan (z up, facing −y,
+// millimetres) estimated with Up = −z chosen — a body standing on its head — says its estimate
+// failed and why, its confidences say so, the fit made from it is flagged and Keep asks first
+// (kept only when confirmed); the person picks Up = +z and Facing = −y, estimates again (a
+// landmark moved by hand stays where it was put) and aligns: the fit is as good as the sample's
+// (≤ 2 mm RMS) and nothing is flagged about the estimate.
+import { expect, test, type Page } from '@playwright/test';
+import { sampleFile } from './samples';
+import { openWithSample } from './steps';
+
+const body = (page: Page) => page.locator('body');
+const row = (page: Page, name: string) => page.getByTestId('landmark-list').locator(`li[data-name="${name}"]`);
+
+/** Clicks the estimate button (its label is checked) and waits for estimate number `n` of the page. */
+async function estimate(page: Page, label: string, n: number): Promise<void> {
+  await expect(page.getByTestId('landmarks-estimate')).toHaveText(label);
+  await page.getByTestId('landmarks-estimate').click();
+  await expect(body(page)).toHaveAttribute('data-estimates', String(n), { timeout: 120_000 });
+  await expect(body(page)).toHaveAttribute('data-estimate-state', 'done');
+}
+
+/** Aligns once the warp of the current set is done; returns the fit's RMS (mm) and quality flags. */
+async function align(page: Page): Promise<{ rms: number; flags: string }> {
+  await expect(body(page)).toHaveAttribute('data-rbf-state', 'done', { timeout: 60_000 });
+  await page.getByTestId('align-run').click();
+  await expect(body(page)).toHaveAttribute('data-align-state', 'done', { timeout: 240_000 });
+  const rms = Number(await page.getByTestId('align-rms').getAttribute('data-rms-mm'));
+  return { rms, flags: (await page.getByTestId('align-check').getAttribute('data-flags')) ?? '' };
+}
+
+/** The confidences (%) the list shows for the estimated landmarks. */
+async function confidences(page: Page): Promise<number[]> {
+  const texts = await page.getByTestId('landmark-list').locator('li[data-state="estimated"] .confidence').allTextContents();
+  return texts.map((t) => parseInt(t, 10));
+}
+
+test('an estimate in a wrong frame says it failed; choosing up and estimating again gives a good fit', async ({ page }) => {
+  test.setTimeout(600_000);
+  await openWithSample(page, [sampleFile('scan_001.ply.gz')]);
+  // The frame found by itself: a good estimate stays quiet, and Estimate stays on offer.
+  await expect(body(page)).toHaveAttribute('data-estimates', '1', { timeout: 120_000 });
+  await expect(body(page)).toHaveAttribute('data-estimate-verdict', 'good');
+  await expect(page.getByTestId('estimate-check')).toHaveCount(0);
+  await expect(page.getByTestId('estimate-up')).toHaveValue('auto');
+  await expect(page.getByTestId('estimate-facing')).toBeDisabled();
+
+  // The body stood on its head: Up = −z.
+  await page.getByTestId('estimate-up').selectOption('-z');
+  await expect(body(page)).toHaveAttribute('data-orientation', '-z auto');
+  await expect(page.getByTestId('estimate-facing')).toBeEnabled();
+  // Only the axes across −z can be the facing.
+  expect(await page.getByTestId('estimate-facing').locator('option').allTextContents()).toEqual(['auto', '+x', '−x', '+y', '−y']);
+  await estimate(page, 'Estimate again, keeping my edits', 2);
+  await expect(body(page)).toHaveAttribute('data-estimate-verdict', 'failed');
+  await expect(page.getByTestId('estimate-assumed')).toContainText("up is the scan's -z axis (as chosen)");
+  const check = page.getByTestId('estimate-check');
+  await expect(check).toHaveAttribute('data-verdict', 'failed');
+  await expect(check).toContainText('The estimate failed its own check');
+  await expect(check).toContainText('choose which way is up');
+  expect(await check.locator('li').count()).toBeGreaterThan(0);
+  // Nothing says all is well, and no estimated landmark keeps a confidence above 10 %.
+  await expect(page.getByTestId('landmarks-suspicious-none')).toHaveCount(0);
+  const failedConfidences = await confidences(page);
+  expect(failedConfidences).toHaveLength(73);
+  expect(Math.max(...failedConfidences)).toBeLessThanOrEqual(10);
+
+  // Aligned from the failed estimate: flagged in words, and Keep asks first.
+  const wrong = await align(page);
+  expect(wrong.flags.split(' ')).toContain('landmark_estimate');
+  await expect(page.getByTestId('align-check')).toContainText('landmark estimate: ');
+  await expect(page.getByTestId('align-keep')).toContainText('flagged: ');
+  await expect(page.getByTestId('align-keep')).toContainText('doubtful landmark estimate');
+  await page.getByTestId('align-keep').click();
+  const question = page.getByTestId('align-keep-question');
+  await expect(question).toContainText('This fit is flagged: ');
+  await expect(question).toContainText('landmark estimate: the landmark estimate failed');
+  await expect(question).toContainText('Keep it all the same?');
+  await page.getByTestId('align-keep-cancel').click();
+  await expect(question).toHaveCount(0);
+  await expect(body(page)).not.toHaveAttribute('data-subjects', /./);
+  // Asked again and confirmed, it is kept.
+  await page.getByTestId('align-keep').click();
+  await page.getByTestId('align-keep-confirm').click();
+  await expect(body(page)).toHaveAttribute('data-subjects', '1');
+  await expect(page.getByTestId('align-keep')).toHaveText('Kept ✓');
+
+  // The right way up, a landmark moved by hand, and the estimate again: the move is kept as placed.
+  await page.getByTestId('estimate-up').selectOption('+z');
+  await expect(body(page)).toHaveAttribute('data-orientation', '+z auto');
+  await page.getByTestId('estimate-facing').selectOption('-y');
+  await expect(body(page)).toHaveAttribute('data-orientation', '+z -y');
+  await estimate(page, 'Estimate again, keeping my edits', 3);
+  await expect(body(page)).toHaveAttribute('data-estimate-verdict', 'good');
+  await expect(page.getByTestId('estimate-check')).toHaveCount(0);
+  await expect(page.getByTestId('estimate-assumed')).toContainText("up is the scan's +z axis (as chosen) and it faces -y (as chosen)");
+  expect(Math.max(...(await confidences(page)))).toBeGreaterThan(10);
+
+  await expect(body(page)).toHaveAttribute('data-rbf-state', 'done', { timeout: 60_000 });
+  await row(page, 'Substernale').click();
+  const [x, y] = (await body(page).getAttribute('data-selected-marker-px'))!.split(',').map(Number);
+  const canvas = (await page.getByTestId('viewport-canvas').boundingBox())!;
+  await page.mouse.click(canvas.x + x! + 9, canvas.y + y! + 7);
+  await expect(row(page, 'Substernale')).toHaveAttribute('data-state', 'edited');
+  const placed = await row(page, 'Substernale').getAttribute('data-position-mm');
+  await estimate(page, 'Estimate again, keeping my edits', 4);
+  await expect(row(page, 'Substernale')).toHaveAttribute('data-state', 'edited');
+  await expect(row(page, 'Substernale')).toHaveAttribute('data-position-mm', placed!);
+  await expect(page.getByTestId('landmark-list').locator('li[data-state="estimated"]')).toHaveCount(72);
+  await expect(body(page)).toHaveAttribute('data-estimate-verdict', 'good');
+
+  // Aligned: as good as the sample fits (0.92 mm with its true landmarks), nothing about the estimate.
+  const right = await align(page);
+  expect(right.rms).toBeLessThanOrEqual(2);
+  expect(right.flags.split(' ')).not.toContain('landmark_estimate');
+  await expect(page.getByTestId('align-check')).not.toContainText('landmark estimate');
+});
