@@ -7,7 +7,7 @@
 
 mod estimate_support;
 
-use bodyspace::estimate::{estimate_landmarks, EstimateInput, EstimateParams};
+use bodyspace::estimate::{estimate_landmarks, EstimateInput, EstimateParams, Verdict};
 use bodyspace::landmarks::LandmarkSet;
 use bodyspace::mesh::topology::{component_labels, components};
 use bodyspace::synth::zoo::parts::scan_labels;
@@ -82,11 +82,18 @@ fn every_scanner_class_comes_out_the_right_way_up_in_two_frames() {
                 check.evidence.stature_m,
                 check.evidence.contradicting.len()
             );
-            if !(up > 0.9 && facing > 0.9 && mean < tolerance_mm(class)) {
+            // A right estimate never calls itself failed (doubtful is allowed: a scan with its
+            // feet cut off has template feet far from anything).
+            if !(up > 0.9
+                && facing > 0.9
+                && mean < tolerance_mm(class)
+                && check.verdict != Verdict::Failed)
+            {
                 failures.push(format!(
-                    "{} / {}: up {up:.2}, facing {facing:.2}, mean {mean:.1} mm",
+                    "{} / {}: up {up:.2}, facing {facing:.2}, mean {mean:.1} mm, self-check {:?}",
                     class.name(),
-                    frame.name
+                    frame.name,
+                    check
                 ));
             }
         }

@@ -42,8 +42,8 @@ pub struct SelfCheck {
 /// What the check looks at, from the estimate's steps.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct Evidence {
-    /// RMS (mm) of the landmark-free fit, template → scan (holes and a limb fitted wrongly weigh
-    /// in it).
+    /// RMS (mm) of the landmark-free fit, template → scan, over the 95 % of the weighted template
+    /// vertices nearest the scan (a limb fitted wrongly weighs in it, a cut crown or feet not).
     pub fit_rms_mm: f64,
     /// RMS (mm) of how far the landmark-free fit moved the weighted template vertices from the
     /// segment-wise fit: how much the body had to be bent out of shape to meet the scan.
@@ -90,7 +90,7 @@ pub fn self_check(evidence: &Evidence, params: &SelfCheckParams) -> SelfCheck {
     if rms.is_finite() && rms > params.doubtful_rms_mm {
         doubtful.push(format!(
             "parts of the template lie far from the scan (RMS {rms:.1} mm): a limb may be posed \
-             wrongly"
+             wrongly, or part of the body is missing from the scan"
         ));
     }
     let lowest = evidence
@@ -178,7 +178,7 @@ mod tests {
 
         let cases = [
             Evidence {
-                fit_moved_mm: 15.0,
+                fit_moved_mm: 22.0,
                 ..good()
             },
             Evidence {
@@ -190,7 +190,7 @@ mod tests {
                 ..good()
             },
             Evidence {
-                contradicting: (0..7).map(|i| format!("L{i}")).collect(),
+                contradicting: (0..8).map(|i| format!("L{i}")).collect(),
                 ..good()
             },
         ];

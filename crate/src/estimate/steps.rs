@@ -323,6 +323,7 @@ pub fn estimate_landmarks(
         &fine,
         &best,
         (&landmark_rest, &landmark_vertices),
+        &weights,
         moved_rms_mm(&posed, &fine.positions, &weights),
         params,
     );
@@ -409,6 +410,7 @@ fn check_itself(
     fine: &crate::align::FineAlignResult,
     best: &crate::mesh::similarity::Similarity,
     (landmark_rest, landmark_vertices): (&[Point3<f64>], &[u32]),
+    weights: &[f64],
     moved_mm: f64,
     params: &EstimateParams,
 ) -> SelfCheck {
@@ -423,7 +425,7 @@ fn check_itself(
         .map(|f| f.name)
         .collect();
     let evidence = Evidence {
-        fit_rms_mm: fine.report.template_to_scan.rms * 1000.0,
+        fit_rms_mm: trimmed_rms_mm(&fine.report.per_vertex_distance, weights, 0.95),
         stature_m: {
             let up = best.rotation * nalgebra::Vector3::y();
             let heights = fine.positions.iter().map(|p| p.coords.dot(&up));
@@ -435,6 +437,20 @@ fn check_itself(
         contradicting,
     };
     self_check(&evidence, &params.self_check)
+}
+
+/// RMS (m → mm) of `distance` over the `share` of the vertices with a data weight that lie
+/// nearest.
+fn trimmed_rms_mm(distance: &[f64], weights: &[f64], share: f64) -> f64 {
+    let mut d: Vec<f64> = distance
+        .iter()
+        .zip(weights)
+        .filter(|(_, w)| **w > 0.0)
+        .map(|(d, _)| d * d)
+        .collect();
+    d.sort_by(f64::total_cmp);
+    let kept = ((d.len() as f64 * share).ceil() as usize).clamp(1, d.len().max(1));
+    (d.iter().take(kept).sum::<f64>() / kept as f64).sqrt() * 1000.0
 }
 
 /// RMS (m → mm) of `after − before` over the vertices with a data weight.
