@@ -32,7 +32,7 @@ fn the_estimate_in_the_browser_equals_the_native_one() {
     )
     .unwrap();
     let on_progress = js_sys::Function::new_no_args("return true;");
-    let estimate = estimate_landmarks_js(&template, &scan, &on_progress).unwrap();
+    let estimate = estimate_landmarks_js(&template, &scan, "", &on_progress).unwrap();
     assert_eq!(estimate.names().len(), 73);
     let confidence = estimate.confidence().to_vec();
     assert!(confidence.iter().all(|c| (0.0..=1.0).contains(c)));

@@ -103,7 +103,8 @@ fn close(a: &Similarity, b: &Similarity, axis: Vector3<f64>, max_deg: f64) -> bo
     (a.rotation * axis).angle(&(b.rotation * axis)) <= max_deg.to_radians()
 }
 
-fn extent_along(points: &[Point3<f64>], axis: &Vector3<f64>) -> f64 {
+/// The extent of `points` along the unit `axis`.
+pub(super) fn extent_along(points: &[Point3<f64>], axis: &Vector3<f64>) -> f64 {
     let (lo, hi) = points
         .iter()
         .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), p| {
@@ -115,7 +116,7 @@ fn extent_along(points: &[Point3<f64>], axis: &Vector3<f64>) -> f64 {
 
 /// The point whose coordinates along each axis (columns of `axes`) are the middles of the
 /// extents of `points` along it.
-fn mid_of_extents(points: &[Point3<f64>], axes: &Matrix3<f64>) -> Vector3<f64> {
+pub(super) fn mid_of_extents(points: &[Point3<f64>], axes: &Matrix3<f64>) -> Vector3<f64> {
     let mut mid = Vector3::zeros();
     for k in 0..3 {
         let axis = axes.column(k).into_owned();

@@ -5,7 +5,7 @@
 use nalgebra::{Matrix3, Point3, Vector3};
 use serde::{Deserialize, Serialize};
 
-use super::frame::{frame_candidates, FrameCandidate};
+use super::frame::{extent_along, frame_candidates, mid_of_extents, FrameCandidate};
 
 /// A scan direction named by its coordinate axis.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
@@ -102,23 +102,23 @@ pub fn orientation_candidates(
                 .collect();
             let depth = across
                 .iter()
-                .min_by(|a, b| extent(scan, a).total_cmp(&extent(scan, b)))
+                .min_by(|a, b| extent_along(scan, a).total_cmp(&extent_along(scan, b)))
                 .copied()?;
             vec![depth, -depth]
         }
     };
-    let template_height = extent(template, &Vector3::y());
-    let scan_height = extent(scan, &up);
+    let template_height = extent_along(template, &Vector3::y());
+    let scan_height = extent_along(scan, &up);
     if !(template_height > 0.0 && scan_height > 0.0) {
         return None;
     }
     let scale = scan_height / template_height;
-    let template_mid = mid(template, &Matrix3::identity());
+    let template_mid = mid_of_extents(template, &Matrix3::identity());
     let candidates = facings
         .into_iter()
         .map(|facing| {
             let rotation = Matrix3::from_columns(&[up.cross(&facing), up, facing]);
-            let translation = mid(scan, &rotation) - scale * (rotation * template_mid);
+            let translation = mid_of_extents(scan, &rotation) - scale * (rotation * template_mid);
             FrameCandidate {
                 start: crate::mesh::similarity::Similarity {
                     scale,
@@ -142,31 +142,6 @@ pub fn candidates_for(
         Some(o) => orientation_candidates(template, scan, o),
         None => frame_candidates(template, scan),
     }
-}
-
-fn extent(points: &[Point3<f64>], axis: &Vector3<f64>) -> f64 {
-    let (lo, hi) = range(points, axis);
-    hi - lo
-}
-
-fn range(points: &[Point3<f64>], axis: &Vector3<f64>) -> (f64, f64) {
-    points
-        .iter()
-        .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), p| {
-            let t = p.coords.dot(axis);
-            (lo.min(t), hi.max(t))
-        })
-}
-
-/// The point at the middle of the extents of `points` along each column of `axes` (orthonormal).
-fn mid(points: &[Point3<f64>], axes: &Matrix3<f64>) -> Vector3<f64> {
-    (0..3)
-        .map(|k| {
-            let axis = axes.column(k).into_owned();
-            let (lo, hi) = range(points, &axis);
-            axis * (0.5 * (lo + hi))
-        })
-        .sum()
 }
 
 #[cfg(test)]
@@ -224,8 +199,8 @@ mod tests {
             assert!((t.rotation * Vector3::z()).x.abs() > 0.999);
             assert!((t.rotation.determinant() - 1.0).abs() < 1e-12);
             assert!((t.scale - 1000.0).abs() < 1e-9, "{}", t.scale);
-            // The template's middle lands on the scan's.
-            let top = t.apply(&Point3::new(0.0, 1.8, 0.0));
+            // The template's top (its box sits at (3, 4, 5) + y·[0, 1.8]) lands on the scan's.
+            let top = t.apply(&Point3::new(3.0, 5.8, 5.0));
             assert!((top.z - (5000.0 + 1800.0)).abs() < 1e-6, "{top}");
         }
         let facing = Orientation {
