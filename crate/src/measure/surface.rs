@@ -119,8 +119,8 @@ fn hull_contains(hull: &[[f64; 2]], q: [f64; 2]) -> bool {
 /// ISO 8559-1 5.3.2's level of the neck girth, where the neck is narrowest: the fraction f of
 /// the neck `axis` (the point base + f·axis) where the tape perpendicular to the axis around the
 /// outermost loop that encloses the axis, cut from `region` (indices into `triangles`), is least,
-/// over `neck_fraction ± neck_band` every `neck_step`, refined by the parabola through the least
-/// sample and its neighbours. `neck_fraction` when no sample has such a loop.
+/// over `neck_fraction ± neck_band` every `neck_step` (every other step first, then downhill
+/// beside the least), refined by the parabola through the least sample and its neighbours. `neck_fraction` when no sample has such a loop.
 pub fn narrowest_neck(
     positions: &[f32],
     triangles: &[[u32; 3]],
@@ -148,27 +148,49 @@ pub fn narrowest_neck(
             hi >= first && lo <= last
         })
         .collect();
-    let girths: Vec<f64> = (0..=n)
-        .map(|i| {
-            let f = first + p.neck_step * i as f64;
-            let at = [0, 1, 2].map(|k| base[k] + f * axis[k]);
-            Plane::new(at, axis)
-                .and_then(|plane| {
-                    let loops = plane_section(positions, triangles, &near, &plane);
-                    tape(&loops, LoopChoice::Around(plane.to_plane(at)))
-                })
-                // Only a loop around the axis is the neck (not the chin, or a shoulder beside a
-                // tilted head's axis).
-                .filter(|t| hull_contains(&t.hull, [0.0, 0.0]))
-                .map_or(f64::INFINITY, |t| t.girth)
-        })
-        .collect();
-    let Some(i) = (0..=n)
+    let girth_at = |i: usize| {
+        let f = first + p.neck_step * i as f64;
+        let at = [0, 1, 2].map(|k| base[k] + f * axis[k]);
+        Plane::new(at, axis)
+            .and_then(|plane| {
+                let loops = plane_section(positions, triangles, &near, &plane);
+                tape(&loops, LoopChoice::Around(plane.to_plane(at)))
+            })
+            // Only a loop around the axis is the neck (not the chin, or a shoulder beside a
+            // tilted head's axis).
+            .filter(|t| hull_contains(&t.hull, [0.0, 0.0]))
+            .map_or(f64::INFINITY, |t| t.girth)
+    };
+    // Every other sample first (and the last), then downhill through the skipped samples beside
+    // the least: the same least sample as taking them all where the girth has one valley near
+    // its least, in about two thirds of the sections. NaN: not yet taken.
+    let mut girths = vec![f64::NAN; n + 1];
+    for i in (0..=n).step_by(2).chain(std::iter::once(n)) {
+        girths[i] = girth_at(i);
+    }
+    let Some(mut i) = (0..=n)
         .filter(|&i| girths[i].is_finite())
         .min_by(|&x, &y| girths[x].total_cmp(&girths[y]))
     else {
         return p.neck_fraction;
     };
+    loop {
+        let beside = [i.checked_sub(1), (i < n).then_some(i + 1)];
+        for j in beside.into_iter().flatten() {
+            if girths[j].is_nan() {
+                girths[j] = girth_at(j);
+            }
+        }
+        let lower = beside
+            .into_iter()
+            .flatten()
+            .filter(|&j| girths[j] < girths[i])
+            .min_by(|&x, &y| girths[x].total_cmp(&girths[y]));
+        match lower {
+            Some(j) => i = j,
+            None => break,
+        }
+    }
     let mut f = first + p.neck_step * i as f64;
     if i > 0 && i < n && girths[i - 1].is_finite() && girths[i + 1].is_finite() {
         let (l, c, r) = (girths[i - 1], girths[i], girths[i + 1]);
