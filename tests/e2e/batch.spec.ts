@@ -221,3 +221,59 @@ test('the folder bodyspace synth writes gives one subject per scan; its ground t
   await expect(page.getByTestId('batch-panel')).toContainText('6 meshes that are not scans of a body were left out');
   await page.getByTestId('batch-cancel-all').click();
 });
+
+test('scans without landmarks aligned with a wrong up are flagged; the orientation is kept and aligns them again after asking', async ({ page }) => {
+  test.setTimeout(420_000);
+  // Two z-up scans without their landmark files: the estimate finds the frame by itself (on
+  // these 20 mm-step scans it may doubt itself, but it does not fail).
+  const scans = synthSubjects(2, 18).filter((f) => f.name.startsWith('scan_'));
+  const flagsOf = (s: string) => row(page, s).locator('.batch-flags');
+  await openApp(page);
+  await dropFiles(page, scans);
+  await waitForLoads(page, 1);
+  await waitForBatch(page, 2);
+  await expect(body(page)).toHaveAttribute('data-batch-orientation', 'auto');
+  for (const s of ['scan_001', 'scan_002']) {
+    await expect(flagsOf(s)).not.toHaveAttribute('title', /landmark estimate failed/);
+    await expect(row(page, s).getByTestId('batch-row-orientation')).toHaveCount(0);
+  }
+  await expect(page.getByTestId('batch-align-again')).toHaveCount(0);
+
+  // The person says up is the scan's −x (wrong: the body lies on its side there).
+  await page.getByTestId('batch-up').selectOption('-x');
+  await expect(body(page)).toHaveAttribute('data-batch-orientation', 'up −x, facing auto');
+  await expect(page.getByTestId('batch-facing')).toBeEnabled();
+  await expect(page.getByTestId('batch-align-again')).toHaveText('Align again with it (2)');
+  // Asked first: declined, nothing changes.
+  let asked = '';
+  page.once('dialog', (dialog) => {
+    asked = dialog.message();
+    void dialog.dismiss();
+  });
+  await page.getByTestId('batch-align-again').click();
+  await expect.poll(() => asked).toBe('Align 2 subjects again with up −x, facing auto? Their fits are replaced by the new ones.');
+  await expect(body(page)).toHaveAttribute('data-batch-running', '0');
+  await expect(page.getByTestId('batch-summary')).toHaveText(/^2 of 2 finished,/);
+  // Accepted: both align again with up −x, and the failed estimate flags their fits in words.
+  page.once('dialog', (dialog) => void dialog.accept());
+  await page.getByTestId('batch-align-again').click();
+  await expect(page.getByTestId('batch-summary')).not.toHaveText(/^2 of 2 finished,/);
+  await waitForBatch(page, 2);
+  for (const s of ['scan_001', 'scan_002']) {
+    await expect(row(page, s)).toHaveAttribute('data-status', 'flagged');
+    await expect(flagsOf(s)).toContainText('landmark estimate');
+    await expect(flagsOf(s)).toHaveAttribute('title', /landmark estimate failed/);
+    await expect(row(page, s).getByTestId('batch-row-orientation')).toHaveText('up −x, facing auto');
+  }
+  await expect(page.getByTestId('batch-align-again')).toHaveCount(0);
+
+  // A reload keeps the batch's orientation and what each subject was aligned with.
+  await expect(body(page)).toHaveAttribute('data-batch-saving', '0');
+  await page.reload();
+  await expect(body(page)).toHaveAttribute('data-template-ready', 'true', { timeout: 60_000 });
+  await expect(page.getByTestId('batch-up')).toHaveValue('-x');
+  await expect(row(page, 'scan_001').getByTestId('batch-row-orientation')).toHaveText('up −x, facing auto');
+  // Back to auto: both are offered again.
+  await page.getByTestId('batch-up').selectOption('auto');
+  await expect(page.getByTestId('batch-align-again')).toHaveText('Align again with it (2)');
+});
