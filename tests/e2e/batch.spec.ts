@@ -23,6 +23,18 @@ async function setBatchWorkers(page: Page, n: number | null): Promise<void> {
   await page.evaluate((k) => (window as unknown as { bodyspaceDebug: { setBatchWorkers: (n: number | null) => void } }).bodyspaceDebug.setBatchWorkers(k), n);
 }
 
+/** Clicks `testid`, declines the question it asks and returns the question. */
+async function declined(page: Page, testid: string): Promise<string> {
+  const asked = new Promise<string>((resolve) =>
+    page.once('dialog', (dialog) => {
+      resolve(dialog.message());
+      void dialog.dismiss();
+    }),
+  );
+  await page.getByTestId(testid).click();
+  return asked;
+}
+
 async function waitForBatch(page: Page, total: number): Promise<void> {
   await expect(body(page)).toHaveAttribute('data-batch-total', String(total));
   await expect(body(page)).toHaveAttribute('data-batch-finished', String(total), { timeout: 300_000 });
@@ -100,13 +112,7 @@ test('six subjects dropped at once are aligned, come back after a reload and bui
   await shapeReady(page);
 
   // Clear batch asks first: declined, nothing goes; accepted, the batch goes.
-  let asked = '';
-  page.once('dialog', (dialog) => {
-    asked = dialog.message();
-    void dialog.dismiss();
-  });
-  await page.getByTestId('batch-clear').click();
-  await expect.poll(() => asked).toContain('Clear the batch? Its 7 subjects and 7 fits are forgotten');
+  expect(await declined(page, 'batch-clear')).toContain('Clear the batch? Its 7 subjects and 7 fits are forgotten');
   await expect(body(page)).toHaveAttribute('data-batch-total', '7');
   page.once('dialog', (dialog) => void dialog.accept());
   await page.getByTestId('batch-clear').click();
@@ -245,13 +251,7 @@ test('scans without landmarks aligned with a wrong up are flagged; the orientati
   await expect(page.getByTestId('batch-facing')).toBeEnabled();
   await expect(page.getByTestId('batch-align-again')).toHaveText('Align again with it (2)');
   // Asked first: declined, nothing changes.
-  let asked = '';
-  page.once('dialog', (dialog) => {
-    asked = dialog.message();
-    void dialog.dismiss();
-  });
-  await page.getByTestId('batch-align-again').click();
-  await expect.poll(() => asked).toBe('Align 2 subjects again with up −x, facing auto? Their fits are replaced by the new ones.');
+  expect(await declined(page, 'batch-align-again')).toBe('Align 2 subjects again with up −x, facing auto? Their fits are replaced by the new ones.');
   await expect(body(page)).toHaveAttribute('data-batch-running', '0');
   await expect(page.getByTestId('batch-summary')).toHaveText(/^2 of 2 finished,/);
   // Accepted: both align again with up −x, and the failed estimate flags their fits in words.
