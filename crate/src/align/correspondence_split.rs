@@ -218,8 +218,11 @@ mod tests {
         }
     }
 
+    /// A subject's fitted and true vertices.
+    type Pair = (Vec<Point3<f64>>, Vec<Point3<f64>>);
+
     /// Three subjects whose truth is the rest shape, each fitted with `error_mm`.
-    fn fits() -> Vec<(Vec<Point3<f64>>, Vec<Point3<f64>>)> {
+    fn fits() -> Vec<Pair> {
         let truth = rest();
         (0..3)
             .map(|s| {
@@ -233,7 +236,7 @@ mod tests {
             .collect()
     }
 
-    fn split_of(fits: &[(Vec<Point3<f64>>, Vec<Point3<f64>>)]) -> CorrespondenceSplit {
+    fn split_of(fits: &[Pair]) -> CorrespondenceSplit {
         let subjects: Vec<FitAndTruth> = fits
             .iter()
             .map(|(fitted, truth)| FitAndTruth { fitted, truth })
