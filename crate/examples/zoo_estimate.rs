@@ -13,7 +13,8 @@
 //! Subjects `first..first + N` (default 1..=3) of seed `S` (default 4242); every class of
 //! `ScannerClass::ALL` and every frame of `zoo_frames()` unless named. The frame is right when
 //! the estimate's up is within 25.8° (cos 0.9) of the true up and its facing within 25.8° of the
-//! true facing. Prints one line per subject and frame, then a Markdown table: class, frame,
+//! true facing. Prints one line per subject and frame (with the self-check's verdict and its
+//! reasons), then a Markdown table: class, frame,
 //! subjects, frames right, mean landmark error (mean over subjects, worst subject), estimate time
 //! (mean, worst) and the scans' vertex counts.
 
@@ -145,8 +146,9 @@ mod native {
                                 )
                             })
                             .collect();
+                        let check = &r.self_check;
                         println!(
-                            "{:10} {:24} subject {i} ({pose}) {:7} vertices: frame {} (up {} facing {}), mean {mean:6.1} mm, fit RMS {:.2} mm, {:6.0} ms; shape: {shape}; candidates {}",
+                            "{:10} {:24} subject {i} ({pose}) {:7} vertices: frame {} (up {} facing {}), mean {mean:6.1} mm, fit RMS {:.2} mm, {:6.0} ms; self-check {} ({}); shape: {shape}; candidates {}",
                             class.name(),
                             frame.name,
                             c.scan.positions.len(),
@@ -155,6 +157,8 @@ mod native {
                             r.frame.facing_axis,
                             r.fit_rms_mm,
                             r.total_ms,
+                            check.verdict.name(),
+                            check.reasons.join("; "),
                             energies.join(", ")
                         );
                     }
