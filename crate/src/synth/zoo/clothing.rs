@@ -41,17 +41,17 @@ pub struct ClothingParams {
     pub hem_above_ankle: f64,
 }
 
-/// Per vertex of `surface`, how far the layer lies out from the skin along the vertex normal
-/// (m; see the module documentation); `cover[i]` ∈ [0, 1] how much vertex `i` is clothed.
-pub fn layer_lift(
-    surface: &Mesh,
+/// Per vertex of `surface` (positions `p`, one-rings `rings`, smoothed normals `n`), how far the
+/// layer lies out along `n` (m; see the module documentation); `cover[i]` ∈ [0, 1] how much
+/// vertex `i` is clothed.
+fn layer_lift(
+    p: &[Point3<f64>],
+    rings: &[Vec<u32>],
+    n: &[Vector3<f64>],
     cover: &[f64],
     thickness: f64,
     params: &ClothingParams,
 ) -> Vec<f64> {
-    let p = &surface.positions;
-    let rings = vertex_neighbours(p.len(), &surface.triangles);
-    let n = smoothed_normals(surface, &rings, params.normal_smoothing);
     let mut d = vec![0.0; p.len()];
     for _ in 0..params.sweeps {
         let mut change: f64 = 0.0;
@@ -90,13 +90,14 @@ pub fn smoothed_normals(surface: &Mesh, rings: &[Vec<u32>], rounds: usize) -> Ve
     n
 }
 
-/// `surface` clothed: every vertex moved out along its smoothed normal by its [`layer_lift`].
+/// `surface` clothed (`cover[i]` ∈ [0, 1] how much vertex `i` is, `thickness` in metres): every
+/// vertex moved out along its smoothed normal by the membrane's lift.
 pub fn shrink_wrap(surface: &Mesh, cover: &[f64], thickness: f64, params: &ClothingParams) -> Mesh {
-    let lift = layer_lift(surface, cover, thickness, params);
-    let rings = vertex_neighbours(surface.positions.len(), &surface.triangles);
+    let p = &surface.positions;
+    let rings = vertex_neighbours(p.len(), &surface.triangles);
     let n = smoothed_normals(surface, &rings, params.normal_smoothing);
-    let positions: Vec<Point3<f64>> = surface
-        .positions
+    let lift = layer_lift(p, &rings, &n, cover, thickness, params);
+    let positions: Vec<Point3<f64>> = p
         .iter()
         .zip(n.iter().zip(&lift))
         .map(|(p, (n, d))| p + n * *d)
