@@ -69,6 +69,8 @@ export interface SelfCheckEvidence {
   contradicting: string[];
   /** Limb segments whose left and right lengths disagree. */
   asymmetric: Asymmetry[];
+  /** Limb parts whose fit lies much farther from the scan on one side (`UnevenFit`). */
+  uneven: { part: string; left_rms_mm: number; right_rms_mm: number }[];
 }
 
 /** The core's report of a landmark estimate (`EstimateReport`; the fields the page uses). */

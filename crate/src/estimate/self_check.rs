@@ -9,7 +9,7 @@
 
 use serde::{Deserialize, Serialize};
 
-use super::bilateral::Asymmetry;
+use super::bilateral::{Asymmetry, UnevenFit};
 use super::params::SelfCheckParams;
 
 /// The estimate's verdict on itself.
@@ -64,6 +64,9 @@ pub struct Evidence {
     /// Limb segments much longer on one side than on the other (`bilateral.rs`).
     #[serde(default)]
     pub asymmetric: Vec<Asymmetry>,
+    /// Limb parts whose fit lies much farther from the scan on one side than on the other.
+    #[serde(default)]
+    pub uneven: Vec<UnevenFit>,
 }
 
 impl SelfCheck {
@@ -134,6 +137,9 @@ pub fn self_check(evidence: &Evidence, params: &SelfCheckParams) -> SelfCheck {
     for a in &evidence.asymmetric {
         doubtful.push(a.sentence());
     }
+    for u in &evidence.uneven {
+        doubtful.push(u.sentence());
+    }
     if evidence.contradicting.len() > params.max_contradicting {
         doubtful.push(format!(
             "{} estimated landmarks lie far from where the others of their part put them ({})",
@@ -170,6 +176,7 @@ mod tests {
             fit_curve_mm: vec![6.0, 3.0, 1.5, 1.2],
             contradicting: vec!["Rt. Dactylion".into()],
             asymmetric: Vec::new(),
+            uneven: Vec::new(),
         }
     }
 
@@ -229,6 +236,14 @@ mod tests {
                     left_mm: 440.0,
                     right_mm: 380.0,
                     landmarks: vec!["Rt. Femoral Lateral Epicn".into()],
+                }],
+                ..good()
+            },
+            Evidence {
+                uneven: vec![UnevenFit {
+                    part: "upper arm".into(),
+                    left_rms_mm: 3.0,
+                    right_rms_mm: 25.0,
                 }],
                 ..good()
             },

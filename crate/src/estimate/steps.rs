@@ -21,7 +21,7 @@ use std::borrow::Cow;
 
 use nalgebra::{Point3, Vector3};
 
-use super::bilateral::asymmetries;
+use super::bilateral::{asymmetries, uneven_fits};
 use super::candidates::{even_sample, fit_similarity, prefer_torso, FittedCandidate};
 use super::check::{judge_given, CheckParams, NEARLY_FULL};
 use super::confidence::{confidence, neighbourhoods, residual};
@@ -324,6 +324,7 @@ pub fn estimate_landmarks(
         &fine,
         &best,
         (&landmark_rest, &landmark_vertices),
+        &parts,
         &weights,
         moved_rms_mm(&posed, &fine.positions, &weights),
         params,
@@ -405,16 +406,21 @@ pub fn estimate_landmarks(
 }
 
 /// The estimate's check of itself (`self_check.rs`) from its landmark-free fit `fine`, the
-/// chosen frame `best`, the template's landmark vertices (at rest, and their indices) and how
-/// far the fine fit moved the template (`moved_mm`).
+/// chosen frame `best`, the template's landmark vertices (at rest, and their indices), its
+/// parts, and how far the fine fit moved the template (`moved_mm`).
 fn check_itself(
     fine: &crate::align::FineAlignResult,
     best: &crate::mesh::similarity::Similarity,
     (landmark_rest, landmark_vertices): (&[Point3<f64>], &[u32]),
+    parts: &[crate::template::parts::Part],
     weights: &[f64],
     moved_mm: f64,
     params: &EstimateParams,
 ) -> SelfCheck {
+    let part_of: Vec<usize> = (0..weights.len() as u32)
+        .map(|v| dominant_part(parts, v))
+        .collect();
+    let part_names: Vec<&str> = parts.iter().map(|p| p.name).collect();
     let estimated: Vec<(usize, Point3<f64>)> = landmark_vertices
         .iter()
         .enumerate()
@@ -428,6 +434,13 @@ fn check_itself(
     let positions: Vec<Option<Point3<f64>>> = estimated.iter().map(|&(_, p)| Some(p)).collect();
     let evidence = Evidence {
         asymmetric: asymmetries(&positions, 1000.0, params.self_check.max_bilateral_mm),
+        uneven: uneven_fits(
+            &fine.report.per_vertex_distance,
+            weights,
+            &part_of,
+            &part_names,
+            params.self_check.uneven_fit,
+        ),
         fit_rms_mm: trimmed_rms_mm(&fine.report.per_vertex_distance, weights, 0.95),
         stature_m: {
             let up = best.rotation * nalgebra::Vector3::y();
