@@ -196,14 +196,19 @@ mod tests {
     use crate::align::SurfaceIndex;
     use crate::estimate::params::EstimateParams;
     use crate::mesh::Mesh;
-    use crate::template::parts::{base_parts, blend, dominant_parts};
+    use crate::template::fixture::{base_body, BaseBody};
+    use crate::template::parts::{blend, dominant_parts};
     use nalgebra::{Rotation3, Unit};
 
     #[test]
     fn a_bent_arms_elbow_is_placed_where_its_axes_meet() {
-        let (template, parts) = base_parts();
-        let rest = &template.mesh().positions;
-        let triangles = &template.mesh().triangles;
+        let BaseBody {
+            template,
+            rest,
+            triangles,
+            parts,
+            ..
+        } = base_body();
         let identity = PartPose::identity();
         // The "scan": the template with each upper arm 15% longer and its forearm bent 90° at
         // the elbow; the start: the same bend at the template's elbow.
@@ -225,7 +230,7 @@ mod tests {
             scan_poses[arm.lower].transform = bent_at(elbow);
             start[arm.lower].transform = bent_at(lower.joint);
         }
-        let scan = Mesh::new(blend(&parts, &scan_poses, rest), triangles.clone());
+        let scan = Mesh::new(blend(&parts, &scan_poses, &rest), triangles.clone());
         let index = SurfaceIndex::new(&scan).unwrap();
         let matching = Matching::new(&index, &EstimateParams::default());
         let vertices: Vec<u32> = (0..rest.len() as u32).step_by(2).collect();
