@@ -225,6 +225,27 @@ impl SubjectFiles {
     }
 }
 
+/// The JSON report of `align` and `landmarks`: printed, and also written to a file when asked.
+#[derive(clap::Args, Debug, Clone)]
+pub struct ReportArgs {
+    /// Also write the JSON report to this file.
+    #[arg(long)]
+    pub report: Option<PathBuf>,
+}
+
+impl ReportArgs {
+    /// Prints `report` as indented JSON on stdout, after writing the same text to `--report`.
+    pub fn print(&self, report: &impl serde::Serialize) -> Result<(), String> {
+        let text = serde_json::to_string_pretty(report).map_err(|e| e.to_string())?;
+        if let Some(path) = &self.report {
+            std::fs::write(path, &text)
+                .map_err(|e| format!("{}: cannot write the report: {e}", path.display()))?;
+        }
+        println!("{text}");
+        Ok(())
+    }
+}
+
 /// A subject read from its files by the core's rule (`subject/input.rs`): the scan and, when
 /// there is one, its landmark file.
 pub fn read_subject_files(
