@@ -26,7 +26,7 @@ use rand::Rng;
 use rand_chacha::ChaCha8Rng;
 
 use self::blob::{blob_scan, BlobParams};
-use super::population_run::subject_rng;
+use super::random_stream::subject_rng;
 use super::scanner::{Scan, ScannerParams};
 use super::subject::Subject;
 use crate::template::{Segment, Template};
