@@ -201,8 +201,7 @@ mod tests {
     use super::*;
     use crate::align::SurfaceIndex;
     use crate::estimate::params::EstimateParams;
-    use crate::mesh::Mesh;
-    use crate::template::fixture::{base_body, BaseBody};
+    use crate::template::fixture::base_body;
     use crate::template::parts::dominant_parts;
 
     #[test]
@@ -214,18 +213,14 @@ mod tests {
     /// The template with both arms turned `deg` towards the body as the "scan": the swing finds
     /// the turn and lays the arms on the scan's.
     fn arms_turned_by(deg: f64) {
-        let BaseBody {
-            rest,
-            triangles,
-            parts,
-            ..
-        } = base_body();
+        let body = base_body();
+        let (rest, parts) = (&body.rest, &body.parts);
         let identity = PartPose::identity();
         // The "scan": the template with both arms turned `deg` towards the body, the pivots and
         // directions as `swing_arms` finds them at rest.
-        let arms = arms(&parts);
+        let arms = arms(parts);
         assert_eq!(arms.len(), 2);
-        let front = Unit::new_normalize(front_axis(&parts, &arms, &rest).unwrap());
+        let front = Unit::new_normalize(front_axis(parts, &arms, rest).unwrap());
         let head = parts.iter().find(|p| p.name == "head").unwrap().joint;
         let mut scan_poses = vec![identity; parts.len()];
         for arm in &arms {
@@ -238,19 +233,19 @@ mod tests {
                 scan_poses[k].transform = turned(&identity.transform, &r, &shoulder);
             }
         }
-        let scan = Mesh::new(blend(&parts, &scan_poses, &rest), triangles.clone());
+        let scan = body.posed(&scan_poses);
         let index = SurfaceIndex::new(&scan).unwrap();
         let matching = Matching::new(&index, &EstimateParams::default());
         let vertices: Vec<u32> = (0..rest.len() as u32).step_by(2).collect();
-        let dominant = dominant_parts(&parts, rest.len());
+        let dominant = dominant_parts(parts, rest.len());
         // From the template's pose, the refinement (here none, or cancelled) given.
         let swing = |refine: fn(&mut [PartPose]) -> Option<()>| {
             let mut poses = vec![identity; parts.len()];
             let kept = swing_arms(
-                &parts,
+                parts,
                 &mut poses,
-                &rest,
-                &triangles,
+                rest,
+                &body.triangles,
                 &vertices,
                 &dominant,
                 &matching,
@@ -262,7 +257,7 @@ mod tests {
         let (kept, poses) = swing(|_| Some(())).unwrap();
         assert_eq!(kept, vec![deg, deg]);
         // The turned arms now lie on the scan's.
-        let fitted = blend(&parts, &poses, &rest);
+        let fitted = blend(parts, &poses, rest);
         let worst = fitted
             .iter()
             .zip(&scan.positions)

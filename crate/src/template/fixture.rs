@@ -3,8 +3,9 @@
 
 use nalgebra::Point3;
 
+use crate::mesh::Mesh;
 use crate::template::hand::{hands, Hand};
-use crate::template::parts::{parts, Part};
+use crate::template::parts::{blend, parts, Part, PartPose};
 use crate::template::{Resolution, Template};
 
 /// The embedded template at base resolution with what the tests read from it.
@@ -31,5 +32,16 @@ pub(crate) fn base_body() -> BaseBody {
         parts: parts(&template),
         hands: hands(&template),
         template,
+    }
+}
+
+impl BaseBody {
+    /// The template's surface with its parts placed by `poses` (one per part, blended as
+    /// [`blend`] does): a made-up scan of a posed body.
+    pub fn posed(&self, poses: &[PartPose]) -> Mesh {
+        Mesh::new(
+            blend(&self.parts, poses, &self.rest),
+            self.triangles.clone(),
+        )
     }
 }
