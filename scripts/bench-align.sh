@@ -2,7 +2,9 @@
 # Accuracy and speed of alignment (RBF warp + fine alignment) against the peer,
 # trimesh.registration.nricp_amberg, on the same N synthetic subjects (default 2; the peer takes
 # ~1–2 min per subject on the 2-core machine). The peer starts from OUR RBF-warped template with
-# the same landmark anchors (see bench/peer/nricp.py). Python packages go into a venv under
+# the same landmark anchors (see bench/peer/nricp.py); then both fits' correspondence split as a
+# shape model sees it (common to all subjects / each one's own, leave one out;
+# crate/examples/correspondence_split.rs, the same code for both). Python packages go into a venv under
 # .bodyspace-cache/venv, installed here (never at test time).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -11,7 +13,7 @@ n="${ALIGN_BENCH_N:-2}"
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
 
-cargo build --quiet --release --manifest-path crate/Cargo.toml --bin bodyspace --example align_accuracy
+cargo build --quiet --release --manifest-path crate/Cargo.toml --bin bodyspace --example align_accuracy --example correspondence_split
 crate/target/release/bodyspace synth --n "$n" --seed 1 --out "$work/synth" >/dev/null
 mkdir -p "$work/export"
 
@@ -37,3 +39,8 @@ printf '%-32s %14s %22s %12s\n' "method" "scan→tmpl RMS" "correspondence (mean
 printf '%-32s %11.3f mm %19.2f mm %10.2f s\n' "bodyspace (RBF + fine)" "$ours_rms" "$ours_corr" "$(awk "BEGIN{print $ours_ms/1000}")"
 printf '%-32s %11.3f mm %19.2f mm %10.2f s\n' "trimesh nricp_amberg" "$peer_rms" "$peer_corr" "$peer_s"
 awk "BEGIN{printf \"speed-up: %.0fx\n\", $peer_s*1000/$ours_ms}"
+
+echo
+echo "== correspondence as the shape model sees it: ours, then the peer ($n subjects)"
+crate/target/release/examples/correspondence_split "$work/synth" "$work/export" --n "$n" --prefix fitted
+crate/target/release/examples/correspondence_split "$work/synth" "$work/export" --n "$n" --prefix peer

@@ -15,8 +15,10 @@
 #          (crate/examples/anthropometry_bench.rs)
 #   measure measurements of fitted held-out subjects against their truth and the ISO 20685-1
 #          verdict: `bodyspace synth --profile held-out` (MEASURE_N subjects, default 8, seed
-#          MEASURE_SEED, default 6161), each fitted at `base` from its true landmarks and without
-#          landmarks, fit and truth measured by the same code (crate/examples/measure_accuracy.rs)
+#          MEASURE_SEED, default 6161), each fitted from its true landmarks, from ten of them and
+#          without landmarks, at `base` and then at `fine` (MEASURE_FINE=0 skips it), and the
+#          scanner zoo (`--zoo`, 12 subjects, seed MEASURE_ZOO_SEED, default 6868) at `base`; fit
+#          and truth measured by the same code (crate/examples/measure_accuracy.rs)
 #   batch  20 synthetic subjects (`bodyspace synth --n 20 --seed 7`, as the CLI batch benchmark)
 #          picked at once in the app: wall time to the built model with the worker pool and with
 #          one worker (bench/batch-bench.mjs; BATCH_RUNS rounds, default 2)
@@ -77,13 +79,18 @@ fi
 echo "load average after: $(cut -d' ' -f1-3 /proc/loadavg)"
 if wants measure; then
   echo
-  echo "== measurements of fits against the truth, ISO 20685-1 (held-out, base)"
-  cargo build --quiet --release --manifest-path crate/Cargo.toml --bin bodyspace
+  echo "== measurements of fits against the truth, ISO 20685-1 (held-out; base, fine; the zoo)"
+  cargo build --quiet --release --manifest-path crate/Cargo.toml --bin bodyspace --example measure_accuracy
   crate/target/release/bodyspace synth --n "${MEASURE_N:-8}" --seed "${MEASURE_SEED:-6161}" \
     --profile held-out --out "$work/measure" >/dev/null
+  crate/target/release/bodyspace synth --n 12 --zoo --seed "${MEASURE_ZOO_SEED:-6868}" \
+    --profile held-out --out "$work/measure-zoo" >/dev/null
   echo "load average before: $(cut -d' ' -f1-3 /proc/loadavg)"
-  cargo run --quiet --release --manifest-path crate/Cargo.toml --example measure_accuracy -- \
-    "$work/measure"
+  crate/target/release/examples/measure_accuracy "$work/measure" --from all
+  if [ "${MEASURE_FINE:-1}" != 0 ]; then
+    crate/target/release/examples/measure_accuracy "$work/measure" --from all --resolution fine
+  fi
+  crate/target/release/examples/measure_accuracy "$work/measure-zoo" --from all
   echo "load average after: $(cut -d' ' -f1-3 /proc/loadavg)"
 fi
 if wants align; then

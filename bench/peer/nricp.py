@@ -8,6 +8,9 @@ template vertex indices as `source_landmarks`, their targets in metres as `targe
 Frame and units: the scan's frame, metres (scans and truth are read in mm and scaled).
 Metrics, as ours: RMS of the scan-to-template distance (every scan vertex to the fitted template
 surface) and mean correspondence error (fitted vertex vs truth), mm; time of the nricp call.
+Writes each fit as EXPORT_DIR/peer_XXX.ply (the template's triangles, metres), so that the
+common / own split of its correspondence error is computed by our code
+(crate/examples/correspondence_split.rs), the same way as for ours.
 
 usage: nricp.py DATA_DIR EXPORT_DIR N
 """
@@ -45,6 +48,7 @@ def main():
         )
         seconds = time.perf_counter() - t0
         fit_mesh = trimesh.Trimesh(fitted, start.faces, process=False)
+        fit_mesh.export(f"{export}/peer_{i:03}.ply", encoding="binary")
         _, dist, _ = trimesh.proximity.closest_point(fit_mesh, scan.vertices)
         rms = float(np.sqrt(np.mean(dist**2))) * 1e3
         corr = float(np.mean(np.linalg.norm(fitted - truth, axis=1))) * 1e3

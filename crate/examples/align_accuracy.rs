@@ -20,7 +20,8 @@
 //! mean over subjects of each subject's mean, 95th percentile and largest error, and the largest
 //! of all. The first line names the population (`subjects.json`'s profile and seed, if present). Unset options keep the library defaults. `--export DIR` also writes each subject's
 //! RBF-warped template (`warped_XXX.ply`, metres) and landmark anchors (`anchors_XXX.json`) so
-//! the peer (`bench/peer/nricp.py`) starts from the same place. `--resolution fine` aligns the
+//! the peer (`bench/peer/nricp.py`) starts from the same place, and the fit's base vertices
+//! (`fitted_XXX.ply`, metres) for `correspondence_split`. `--resolution fine` aligns the
 //! `fine` template coarse to fine (`coarse_to_fine_align`; the options set its base stage, the
 //! `--fine-*` ones its fine stage) and measures the correspondence error on the base vertices,
 //! which come first; the RMS column is then the fine fit's, and the times are base stage +
@@ -216,7 +217,8 @@ mod native {
         if let Some(dir) = &options.export {
             let anchors =
                 landmark_anchors(base, &alignment.warped, &alignment.report.warp.pairing.used);
-            export_start(dir, id, &alignment.warped, base, &anchors)?;
+            let fitted = &alignment.positions[..base.mesh().positions.len()];
+            export_start(dir, id, &alignment.warped, fitted, base, &anchors)?;
         }
         // The ground truth's own distance to the scan: the noise floor of the RMS column.
         let scan_m = Mesh::new(
@@ -263,17 +265,22 @@ mod native {
     }
 
     /// For the peer (bench/peer/nricp.py): the RBF-warped template (PLY, metres) and the landmark
-    /// anchors (template vertex, target in metres) of subject `id`.
+    /// anchors (template vertex, target in metres) of subject `id`; for the common / own split
+    /// (`correspondence_split`), our fit's base vertices (`fitted_XXX.ply`, metres).
     fn export_start(
         dir: &Path,
         id: usize,
         warped: &[Point3<f64>],
+        fitted: &[Point3<f64>],
         template: &Template,
         anchors: &[(u32, Point3<f64>)],
     ) -> Result<(), String> {
-        let mesh = Mesh::new(warped.to_vec(), template.mesh().triangles.clone());
-        let ply = dir.join(format!("warped_{id:03}.ply"));
-        std::fs::write(&ply, write_ply(&mesh)).map_err(|e| format!("{}: {e}", ply.display()))?;
+        for (stem, positions) in [("warped", warped), ("fitted", fitted)] {
+            let mesh = Mesh::new(positions.to_vec(), template.mesh().triangles.clone());
+            let ply = dir.join(format!("{stem}_{id:03}.ply"));
+            std::fs::write(&ply, write_ply(&mesh))
+                .map_err(|e| format!("{}: {e}", ply.display()))?;
+        }
         let json = serde_json::json!({
             "vertices": anchors.iter().map(|(v, _)| *v).collect::<Vec<_>>(),
             "targets": anchors.iter().map(|(_, p)| [p.x, p.y, p.z]).collect::<Vec<_>>(),

@@ -14,29 +14,30 @@
 //! 2. With `--fine 1`, the same subjects at `fine` (coarse to fine), compared on the base
 //!    vertices: mean per body part and flag at each resolution, and where the vertices that got
 //!    worse by more than 2 mm are.
-//! 3. **Common and subject-specific error**: each subject's error vectors (fitted − truth) are
-//!    turned into the template's frame by the rotation of the similarity that maps the subject's
-//!    truth onto the template (lengths stay the subject's); the common part is the mean vector per template vertex over the subjects, the
-//!    rest is the subject's own. Printed per body part (mean and 95th percentile over the
-//!    vertices, averaged over the subjects) for the common part estimated on all subjects and on
-//!    the others only (leave one out: what a bias learnt elsewhere would remove from a new
-//!    subject of this generator).
+//! 3. **Common and subject-specific error**: the split of `align::correspondence_split` (the
+//!    part common to all subjects, each subject's own, and both leave one out), per body part
+//!    and over all vertices (`support/split_table.rs`).
 
 #[cfg(not(target_arch = "wasm32"))]
 #[path = "support/subject_files.rs"]
 mod subject_files;
 
 #[cfg(not(target_arch = "wasm32"))]
+#[path = "support/split_table.rs"]
+mod split_table;
+
+#[cfg(not(target_arch = "wasm32"))]
 mod native {
+    use super::split_table::print_split;
     use super::subject_files::{read_subject, SubjectFiles};
     use bodyspace::align::{
-        align_scan, AlignInput, CorrespondenceMode, MatchQuery, Preset, SurfaceIndex,
+        align_scan, correspondence_split, AlignInput, CorrespondenceMode, FitAndTruth, MatchQuery,
+        Preset, SurfaceIndex,
     };
     use bodyspace::mesh::normals::vertex_normals;
-    use bodyspace::mesh::similarity::similarity;
     use bodyspace::mesh::Mesh;
     use bodyspace::template::{body_parts, BodyPart, RegionFlags, Resolution, Template};
-    use nalgebra::{Point3, Vector3};
+    use nalgebra::Point3;
     use std::collections::BTreeMap;
     use std::path::{Path, PathBuf};
 
@@ -126,17 +127,6 @@ mod native {
             .join(", ")
     }
 
-    /// Mean and 95th percentile of `values`.
-    fn mean_p95(values: &mut [f64]) -> (f64, f64) {
-        if values.is_empty() {
-            return (0.0, 0.0);
-        }
-        values.sort_by(f64::total_cmp);
-        let mean = values.iter().sum::<f64>() / values.len() as f64;
-        let p95 = values[((values.len() - 1) as f64 * 0.95).round() as usize];
-        (mean, p95)
-    }
-
     /// What the worst 1 % of the vertices of `fit` are (section 1).
     fn worst_vertices(id: usize, fit: &Fit, template: &Template, parts: &[BodyPart]) {
         let n = fit.truth.len();
@@ -217,52 +207,16 @@ mod native {
 
     /// Section 3: the common and the subject-specific part of the error, per body part.
     fn common_and_specific(fits: &[Fit], template: &Template, parts: &[BodyPart]) {
-        let rest = &template.mesh().positions;
-        let n = rest.len();
-        // Each subject's error vectors turned into the template's frame (mm, unscaled).
-        let errors: Vec<Vec<Vector3<f64>>> = fits
+        let subjects: Vec<FitAndTruth> = fits
             .iter()
-            .map(|fit| {
-                let s = similarity(&fit.truth, rest, true).expect("truth and template");
-                (0..n)
-                    .map(|i| s.rotation * (fit.fitted[i] - fit.truth[i]) * 1e3)
-                    .collect()
+            .map(|f| FitAndTruth {
+                fitted: &f.fitted,
+                truth: &f.truth,
             })
             .collect();
-        let m = errors.len() as f64;
-        let sum: Vec<Vector3<f64>> = (0..n).map(|i| errors.iter().map(|e| e[i]).sum()).collect();
-        println!(
-            "part     total mean/p95 | common (all) mean/p95 | specific (all) mean/p95 | common (others) mean/p95 | specific (others) mean/p95   (mm, mean over {} subjects)",
-            errors.len()
-        );
-        for part in BodyPart::ALL {
-            let vertices: Vec<usize> = (0..n).filter(|i| parts[*i] == part).collect();
-            let mut acc = [[0.0; 2]; 5];
-            for e in &errors {
-                let mut columns: [Vec<f64>; 5] = Default::default();
-                for &i in &vertices {
-                    let all = sum[i] / m;
-                    let others = (sum[i] - e[i]) / (m - 1.0);
-                    columns[0].push(e[i].norm());
-                    columns[1].push(all.norm());
-                    columns[2].push((e[i] - all).norm());
-                    columns[3].push(others.norm());
-                    columns[4].push((e[i] - others).norm());
-                }
-                for (a, c) in acc.iter_mut().zip(columns.iter_mut()) {
-                    let (mean, p95) = mean_p95(c);
-                    a[0] += mean / m;
-                    a[1] += p95 / m;
-                }
-            }
-            println!(
-                "{:<8} {}",
-                part.name(),
-                acc.iter()
-                    .map(|[mean, p95]| format!("{mean:>6.2} / {p95:>5.1}"))
-                    .collect::<Vec<_>>()
-                    .join(" | ")
-            );
+        match correspondence_split(&subjects, &template.mesh().positions, parts) {
+            Ok(split) => print_split(&split),
+            Err(e) => println!("no split: {e}"),
         }
     }
 

@@ -1,14 +1,18 @@
 //! Measurement benchmark against ISO 20685-1 (docs/measurements.md#accuracy-against-iso-20685-1):
 //! synthetic subjects with ground truth (`bodyspace synth`), each fitted by the one path
-//! (`subject::fit_subject_files`, `base`, the defaults) from its true landmarks and without
-//! landmarks, every fit and the true body measured by the same code (`bodyspace measure`'s:
-//! moved rigidly onto the template, then `BodyMeasurer`), never tuned on.
+//! (`subject::fit_subject`, the defaults, at `base` or `fine`) from its true landmarks, from ten
+//! of them (the partial file of issue 31: Sellion, Suprasternale and the pairs of Acromions,
+//! Dactylions, ASIS and Lateral Malleoli; the estimate fills in the rest) and without landmarks,
+//! every fit and the true body measured by the same code (`bodyspace measure`'s: moved rigidly
+//! onto the template, then `BodyMeasurer`), never tuned on.
 //!
 //! `cargo run --release --example measure_accuracy -- DIR [--n N] [--fits CACHE]
-//!  [--from landmarks|free|both]`
+//!  [--from landmarks|given10|free|both|all] [--resolution base|fine]`
 //!
-//! DIR holds `scan_XXX.ply`, `landmarks_XXX.lnd` and `truth_XXX.ply`. `--fits CACHE` keeps each
-//! fit (`CACHE/{landmarks,free}_XXX.ply`, template frame, metres) and reuses it when it is there,
+//! `both` (the default) is `landmarks` and `free`; `all` adds `given10`. DIR holds
+//! `scan_XXX.ply`, `landmarks_XXX.lnd` and `truth_XXX.ply` (any `bodyspace synth` output, the
+//! scanner zoo's too). `--fits CACHE` keeps each fit (`CACHE/{landmarks,given10,free}_XXX.ply` at
+//! `base`, `…_fine_XXX.ply` at `fine`; template frame, metres) and reuses it when it is there,
 //! so the measurements of one set of fits can be compared before and after a change of the
 //! measurements alone. Prints per kind of fit and measurement: the mean difference (fit − truth),
 //! sd, MAE, the 95 % interval of the mean (mean ± 1.96·sd/√n), the ISO 20685-1 limit and
@@ -27,13 +31,28 @@ mod native {
     use bodyspace::mesh::similarity::similarity;
     use bodyspace::mesh::units::detect_units;
     use bodyspace::mesh::{bounding_extent, Mesh};
-    use bodyspace::subject::{fit_subject_files, SubjectOptions};
-    use bodyspace::template::Template;
+    use bodyspace::subject::{fit_subject, read_subject, SubjectOptions};
+    use bodyspace::template::{Resolution, Template};
     use std::path::{Path, PathBuf};
+
+    /// The ten landmarks of the `given10` fits (issue 31's partial file).
+    const GIVEN10: [&str; 10] = [
+        "Sellion",
+        "Suprasternale",
+        "Rt. Acromion",
+        "Lt. Acromion",
+        "Rt. Dactylion",
+        "Lt. Dactylion",
+        "Rt. ASIS",
+        "Lt. ASIS",
+        "Rt. Lateral Malleolus",
+        "Lt. Lateral Malleolus",
+    ];
 
     #[derive(Clone, Copy, PartialEq)]
     enum From {
         Landmarks,
+        Given10,
         Free,
     }
 
@@ -41,12 +60,14 @@ mod native {
         fn name(self) -> &'static str {
             match self {
                 From::Landmarks => "landmarks",
+                From::Given10 => "given10",
                 From::Free => "free",
             }
         }
         fn title(self) -> &'static str {
             match self {
                 From::Landmarks => "fit from the true landmarks",
+                From::Given10 => "fit from 10 true landmarks (the rest estimated)",
                 From::Free => "landmark-free fit",
             }
         }
@@ -57,6 +78,7 @@ mod native {
         n: Option<usize>,
         cache: Option<PathBuf>,
         from: Vec<From>,
+        resolution: Resolution,
     }
 
     fn parse() -> Result<Options, String> {
@@ -67,6 +89,7 @@ mod native {
             n: None,
             cache: None,
             from: vec![From::Landmarks, From::Free],
+            resolution: Resolution::Base,
         };
         while let Some(flag) = args.next() {
             let value = args.next().ok_or(format!("{flag} needs a value"))?;
@@ -76,11 +99,18 @@ mod native {
                 "--from" => {
                     o.from = match value.as_str() {
                         "landmarks" => vec![From::Landmarks],
+                        "given10" => vec![From::Given10],
                         "free" => vec![From::Free],
                         "both" => vec![From::Landmarks, From::Free],
-                        _ => return Err(format!("--from {value}: landmarks, free or both")),
+                        "all" => vec![From::Landmarks, From::Given10, From::Free],
+                        _ => {
+                            return Err(format!(
+                                "--from {value}: landmarks, given10, free, both or all"
+                            ))
+                        }
                     }
                 }
+                "--resolution" => o.resolution = value.parse().map_err(|e| format!("{e}"))?,
                 _ => return Err(format!("unknown option {flag}")),
             }
         }
@@ -91,17 +121,19 @@ mod native {
         std::fs::read(path).map_err(|e| format!("{}: {e}", path.display()))
     }
 
-    /// The fit of subject `id` (template frame, metres), from the cache or fitted now.
+    /// The fit of subject `id` at `template`'s resolution (`base` given at `fine`; template
+    /// frame, metres), from the cache or fitted now.
     fn fit(
         o: &Options,
-        template: &Template,
+        (template, base): (&Template, Option<&Template>),
         id: usize,
         from: From,
     ) -> Result<Vec<nalgebra::Point3<f64>>, String> {
+        let fine = if base.is_some() { "_fine" } else { "" };
         let cached = o
             .cache
             .as_ref()
-            .map(|c| c.join(format!("{}_{id:03}.ply", from.name())));
+            .map(|c| c.join(format!("{}{fine}_{id:03}.ply", from.name())));
         if let Some(path) = cached.as_ref().filter(|p| p.exists()) {
             return Ok(read_fit(path)?.positions);
         }
@@ -109,12 +141,19 @@ mod native {
         let lnd_path = o.dir.join(format!("landmarks_{id:03}.lnd"));
         let scan = bytes(&scan_path)?;
         let lnd = bytes(&lnd_path)?;
-        let landmarks = (from == From::Landmarks).then(|| (&lnd[..], "landmarks.lnd"));
-        let fitted = fit_subject_files(
+        let landmarks = (from != From::Free).then(|| (&lnd[..], "landmarks.lnd"));
+        let mut input = read_subject((&scan, &scan_path.display().to_string()), landmarks, None)
+            .map_err(|e| e.to_string())?;
+        if let (From::Given10, Some(given)) = (from, input.given.as_mut()) {
+            given
+                .set
+                .landmarks
+                .retain(|l| GIVEN10.contains(&l.name.as_str()));
+        }
+        let fitted = fit_subject(
             template,
-            None,
-            (&scan, &scan_path.display().to_string()),
-            landmarks,
+            base,
+            &input,
             None,
             &SubjectOptions::default(),
             &mut (),
@@ -214,13 +253,21 @@ mod native {
             std::fs::create_dir_all(c).map_err(|e| format!("{}: {e}", c.display()))?;
         }
         let template = Template::embedded().map_err(|e| e.to_string())?;
+        let fine =
+            (o.resolution == Resolution::Fine).then(|| template.at_resolution(Resolution::Fine));
+        let fitting = match &fine {
+            Some(f) => (f, Some(&template)),
+            None => (&template, None),
+        };
         let measurer = BodyMeasurer::of_template(&template, MeasureParams::default())
             .map_err(|e| e.to_string())?;
         let population = std::fs::read_to_string(o.dir.join("subjects.json")).unwrap_or_default();
         let about: serde_json::Value = serde_json::from_str(&population).unwrap_or_default();
         println!(
-            "population: profile {}, seed {}",
-            about["profile"], about["seed"]
+            "population: profile {}, seed {}; fits at {}",
+            about["profile"],
+            about["seed"],
+            o.resolution.name()
         );
         let found = (1..)
             .take_while(|id| o.dir.join(format!("truth_{id:03}.ply")).exists())
@@ -248,8 +295,10 @@ mod native {
             let mut rows = Vec::with_capacity(n);
             for (id, truth) in (1..=n).zip(&truths) {
                 let started = std::time::Instant::now();
-                let positions = fit(&o, &template, id, from)?;
-                let stood = upright(&positions, &template.mesh().positions)
+                let positions = fit(&o, fitting, id, from)?;
+                // The base vertices come first at `fine`: measured on them, as `bodyspace measure` does.
+                let positions = &positions[..template.mesh().vertex_count()];
+                let stood = upright(positions, &template.mesh().positions)
                     .ok_or("the fit could not be brought onto the template")?;
                 let measuring = std::time::Instant::now();
                 let fitted = measurer.measure(&stood).map_err(|e| e.to_string())?;

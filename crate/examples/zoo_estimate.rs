@@ -3,7 +3,9 @@
 //! the `held-out` profile in their own poses with the landmark files withheld.
 //!
 //! `cargo run --release --example zoo_estimate -- [--n N] [--seed S] [--first K]
-//!  [--class NAME[,NAME…]] [--frame NAME[,NAME…]] [--params JSON] [--quiet]`
+//!  [--class NAME[,NAME…]] [--frame NAME[,NAME…]] [--params JSON] [--worst K] [--quiet]`
+//!
+//! `--worst K` names each subject's K landmarks farthest from the truth, with their distances.
 //!
 //! `--params JSON` sets any of the estimate's parameters (`EstimateParams` fields, the rest
 //! default), e.g. `--params '{"head_end_decisive": 0}'` (the frame from nearest points alone).
@@ -13,7 +15,8 @@
 //! Subjects `first..first + N` (default 1..=3) of seed `S` (default 4242); every class of
 //! `ScannerClass::ALL` and every frame of `zoo_frames()` unless named. The frame is right when
 //! the estimate's up is within 25.8° (cos 0.9) of the true up and its facing within 25.8° of the
-//! true facing. Prints one line per subject and frame, then a Markdown table: class, frame,
+//! true facing. Prints one line per subject and frame (with the self-check's verdict and its
+//! reasons), then a Markdown table: class, frame,
 //! subjects, frames right, mean landmark error (mean over subjects, worst subject), estimate time
 //! (mean, worst) and the scans' vertex counts.
 
@@ -37,6 +40,7 @@ mod native {
 
     pub fn main() {
         let (mut n, mut seed, mut first, mut quiet) = (3u64, 4242u64, 1u64, false);
+        let mut worst = 0usize;
         let mut classes: Vec<ScannerClass> = ScannerClass::ALL.to_vec();
         let mut frame_names: Option<Vec<String>> = None;
         let mut params = EstimateParams::default();
@@ -64,6 +68,7 @@ mod native {
                     )
                 }
                 "--quiet" => quiet = true,
+                "--worst" => worst = args.next().and_then(|v| v.parse().ok()).expect("--worst K"),
                 "--params" => {
                     params = serde_json::from_str(&args.next().expect("--params JSON"))
                         .expect("EstimateParams JSON")
@@ -143,8 +148,9 @@ mod native {
                                 )
                             })
                             .collect();
+                        let check = &r.self_check;
                         println!(
-                            "{:10} {:24} subject {i} ({pose}) {:7} vertices: frame {} (up {} facing {}), mean {mean:6.1} mm, fit RMS {:.2} mm, {:6.0} ms; shape: {shape}; candidates {}",
+                            "{:10} {:24} subject {i} ({pose}) {:7} vertices: frame {} (up {} facing {}), mean {mean:6.1} mm, fit RMS {:.2} mm, {:6.0} ms; self-check {} ({}); shape: {shape}; candidates {}",
                             class.name(),
                             frame.name,
                             c.scan.positions.len(),
@@ -153,8 +159,26 @@ mod native {
                             r.frame.facing_axis,
                             r.fit_rms_mm,
                             r.total_ms,
+                            check.verdict.name(),
+                            check.reasons.join("; "),
                             energies.join(", ")
                         );
+                    }
+                    if worst > 0 {
+                        let mut named: Vec<(&str, f64)> = c
+                            .landmarks
+                            .landmarks
+                            .iter()
+                            .zip(&errors)
+                            .map(|(l, e)| (l.name.as_str(), *e))
+                            .collect();
+                        named.sort_by(|a, b| b.1.total_cmp(&a.1));
+                        let listed: Vec<String> = named
+                            .iter()
+                            .take(worst)
+                            .map(|(name, e)| format!("{name} {e:.0}"))
+                            .collect();
+                        println!("    worst landmarks (mm): {}", listed.join(", "));
                     }
                     rows[f].push((right, mean, r.total_ms, c.scan.positions.len()));
                 }

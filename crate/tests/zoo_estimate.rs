@@ -1,8 +1,11 @@
 //! The landmark estimate on the scanner zoo (issue 31): every scanner class of
 //! `synth::zoo` (parts, cut crown and feet, floor, turntable, slices, blob, decimated, dense,
-//! strays, raw) in two frames each, the frame right (up and facing) and the landmarks within the
-//! tolerances the measurement supports (docs/landmarks-estimate.md, "Scanner zoo"). Held-out
-//! subjects in their own poses, at a coarse scanner step so the test stays fast. Native only.
+//! strays, raw) in two frames each and the classes of what people bring (arms touching, an arm
+//! raised, hair, tight clothing) in one, the frame right (up and facing) and the landmarks within
+//! the tolerances the measurement supports (docs/landmarks-estimate.md, "Scanner zoo"), or — for
+//! the raised arm, which the estimate does not find — the failure flagged by the self-check.
+//! Held-out subjects in their own poses, at a coarse scanner step so the test stays fast. Native
+//! only.
 #![cfg(not(target_arch = "wasm32"))]
 
 mod estimate_support;
@@ -27,6 +30,17 @@ fn tolerance_mm(class: ScannerClass) -> f64 {
         ScannerClass::Raw | ScannerClass::CrownCut | ScannerClass::FeetCut => 30.0,
         _ => 25.0,
     }
+}
+
+/// The classes of what people bring to the scanner (poses, hair, clothing), not the scanner's.
+fn people(class: ScannerClass) -> bool {
+    matches!(
+        class,
+        ScannerClass::ArmsTouching
+            | ScannerClass::ArmRaised
+            | ScannerClass::Hair
+            | ScannerClass::TightClothing
+    )
 }
 
 #[test]
@@ -56,7 +70,9 @@ fn every_scanner_class_comes_out_the_right_way_up_in_two_frames() {
             index: i as u64,
         };
         let subject = zoo.scanned(id, class);
-        for frame in [&frames[i % frames.len()], &frames[(i + 1) % frames.len()]] {
+        // The people's classes in one frame each: CI's time is short.
+        let frame_count = if people(class) { 1 } else { 2 };
+        for frame in (i..i + frame_count).map(|f| &frames[f % frames.len()]) {
             let c = placed(&template, subject.clone(), frame);
             if class == ScannerClass::Parts || class == ScannerClass::Raw {
                 assert!(components(&c.scan) >= 5, "{}", class.name());
@@ -81,12 +97,15 @@ fn every_scanner_class_comes_out_the_right_way_up_in_two_frames() {
                 check.evidence.contradicting.len()
             );
             // A right estimate never calls itself failed (doubtful is allowed: a scan with its
-            // feet cut off has template feet far from anything).
-            if !(up > 0.9
-                && facing > 0.9
-                && mean < tolerance_mm(class)
-                && check.verdict != Verdict::Failed)
-            {
+            // feet cut off has template feet far from anything). With an arm raised the
+            // estimate may fail, but never silently.
+            let right = up > 0.9 && facing > 0.9 && mean < tolerance_mm(class);
+            let fine = if class == ScannerClass::ArmRaised {
+                right || check.verdict != Verdict::Good
+            } else {
+                right && check.verdict != Verdict::Failed
+            };
+            if !fine {
                 failures.push(format!(
                     "{} / {}: up {up:.2}, facing {facing:.2}, mean {mean:.1} mm, self-check {:?}",
                     class.name(),

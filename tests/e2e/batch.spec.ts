@@ -23,6 +23,18 @@ async function setBatchWorkers(page: Page, n: number | null): Promise<void> {
   await page.evaluate((k) => (window as unknown as { bodyspaceDebug: { setBatchWorkers: (n: number | null) => void } }).bodyspaceDebug.setBatchWorkers(k), n);
 }
 
+/** Clicks `testid`, declines the question it asks and returns the question. */
+async function declined(page: Page, testid: string): Promise<string> {
+  const asked = new Promise<string>((resolve) =>
+    page.once('dialog', (dialog) => {
+      resolve(dialog.message());
+      void dialog.dismiss();
+    }),
+  );
+  await page.getByTestId(testid).click();
+  return asked;
+}
+
 async function waitForBatch(page: Page, total: number): Promise<void> {
   await expect(body(page)).toHaveAttribute('data-batch-total', String(total));
   await expect(body(page)).toHaveAttribute('data-batch-finished', String(total), { timeout: 300_000 });
@@ -100,13 +112,7 @@ test('six subjects dropped at once are aligned, come back after a reload and bui
   await shapeReady(page);
 
   // Clear batch asks first: declined, nothing goes; accepted, the batch goes.
-  let asked = '';
-  page.once('dialog', (dialog) => {
-    asked = dialog.message();
-    void dialog.dismiss();
-  });
-  await page.getByTestId('batch-clear').click();
-  await expect.poll(() => asked).toContain('Clear the batch? Its 7 subjects and 7 fits are forgotten');
+  expect(await declined(page, 'batch-clear')).toContain('Clear the batch? Its 7 subjects and 7 fits are forgotten');
   await expect(body(page)).toHaveAttribute('data-batch-total', '7');
   page.once('dialog', (dialog) => void dialog.accept());
   await page.getByTestId('batch-clear').click();
@@ -220,4 +226,54 @@ test('the folder bodyspace synth writes gives one subject per scan; its ground t
   await expect(page.getByTestId('error-banner')).toContainText('not scans of a body');
   await expect(page.getByTestId('batch-panel')).toContainText('6 meshes that are not scans of a body were left out');
   await page.getByTestId('batch-cancel-all').click();
+});
+
+test('scans without landmarks aligned with a wrong up are flagged; the orientation is kept and aligns them again after asking', async ({ page }) => {
+  test.setTimeout(420_000);
+  // Two z-up scans without their landmark files: the estimate finds the frame by itself (on
+  // these 20 mm-step scans it may doubt itself, but it does not fail).
+  const scans = synthSubjects(2, 18).filter((f) => f.name.startsWith('scan_'));
+  const flagsOf = (s: string) => row(page, s).locator('.batch-flags');
+  await openApp(page);
+  await dropFiles(page, scans);
+  await waitForLoads(page, 1);
+  await waitForBatch(page, 2);
+  await expect(body(page)).toHaveAttribute('data-batch-orientation', 'auto');
+  for (const s of ['scan_001', 'scan_002']) {
+    await expect(flagsOf(s)).not.toHaveAttribute('title', /landmark estimate failed/);
+    await expect(row(page, s).getByTestId('batch-row-orientation')).toHaveCount(0);
+  }
+  await expect(page.getByTestId('batch-align-again')).toHaveCount(0);
+
+  // The person says up is the scan's −x (wrong: the body lies on its side there).
+  await page.getByTestId('batch-up').selectOption('-x');
+  await expect(body(page)).toHaveAttribute('data-batch-orientation', 'up −x, facing auto');
+  await expect(page.getByTestId('batch-facing')).toBeEnabled();
+  await expect(page.getByTestId('batch-align-again')).toHaveText('Align again with it (2)');
+  // Asked first: declined, nothing changes.
+  expect(await declined(page, 'batch-align-again')).toBe('Align 2 subjects again with up −x, facing auto? Their fits are replaced by the new ones.');
+  await expect(body(page)).toHaveAttribute('data-batch-running', '0');
+  await expect(page.getByTestId('batch-summary')).toHaveText(/^2 of 2 finished,/);
+  // Accepted: both align again with up −x, and the failed estimate flags their fits in words.
+  page.once('dialog', (dialog) => void dialog.accept());
+  await page.getByTestId('batch-align-again').click();
+  await expect(page.getByTestId('batch-summary')).not.toHaveText(/^2 of 2 finished,/);
+  await waitForBatch(page, 2);
+  for (const s of ['scan_001', 'scan_002']) {
+    await expect(row(page, s)).toHaveAttribute('data-status', 'flagged');
+    await expect(flagsOf(s)).toContainText('landmark estimate');
+    await expect(flagsOf(s)).toHaveAttribute('title', /landmark estimate failed/);
+    await expect(row(page, s).getByTestId('batch-row-orientation')).toHaveText('up −x, facing auto');
+  }
+  await expect(page.getByTestId('batch-align-again')).toHaveCount(0);
+
+  // A reload keeps the batch's orientation and what each subject was aligned with.
+  await expect(body(page)).toHaveAttribute('data-batch-saving', '0');
+  await page.reload();
+  await expect(body(page)).toHaveAttribute('data-template-ready', 'true', { timeout: 60_000 });
+  await expect(page.getByTestId('batch-up')).toHaveValue('-x');
+  await expect(row(page, 'scan_001').getByTestId('batch-row-orientation')).toHaveText('up −x, facing auto');
+  // Back to auto: both are offered again.
+  await page.getByTestId('batch-up').selectOption('auto');
+  await expect(page.getByTestId('batch-align-again')).toHaveText('Align again with it (2)');
 });

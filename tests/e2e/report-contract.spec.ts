@@ -62,8 +62,8 @@ const quality: Keys<QualityReport> = {
   flags: true,
   thresholds: true,
 };
-const selfCheck: Keys<SelfCheck> = { verdict: true, reasons: true, confidence_factor: true, evidence: true };
-const evidence: Keys<SelfCheckEvidence> = { fit_rms_mm: true, fit_moved_mm: true, stature_m: true, contradicting: true };
+const selfCheck: Keys<SelfCheck> = { verdict: true, reasons: true, confidence_factor: true, lopsided_factor: true, evidence: true };
+const evidence: Keys<SelfCheckEvidence> = { fit_rms_mm: true, fit_moved_mm: true, stature_m: true, contradicting: true, asymmetric: true };
 const estimateRead: Keys<EstimateReport> = { landmarks: true, frame: true, given: true, estimated: true, flagged: true, self_check: true, fit_rms_mm: true, total_ms: true };
 const toTemplate: Keys<ToTemplate> = { scale_to_metres: true, rotation: true, translation: true };
 const warp: Keys<WarpReport> = {

@@ -2,6 +2,7 @@
 // with its state, its input files (File objects are stored as blobs) and, once fitted, its fit
 // (positions and distances as Float32Array, the core's report and quality flags).
 import type { AlignReport, QualityReport } from '../shared/align-types';
+import type { Orientation } from '../shared/orientation';
 import type { TemplateResolution } from '../shared/template-data';
 
 /** Where a subject stands. `interrupted`: it was queued or aligning when the page went away. */
@@ -30,6 +31,12 @@ export interface BatchRecord {
   rmsMm: number | null;
   seconds: number | null;
   resolution: TemplateResolution;
+  /**
+   * Which way is up as the person said it for this subject's last alignment (null: auto; absent
+   * in records stored before the batch took an orientation). Used only where the landmarks are
+   * estimated: a scan without a landmark file.
+   */
+  orientation?: Orientation | null;
   scan: File | null;
   landmarks: File | null;
   fit: BatchFit | null;

@@ -3,12 +3,13 @@
 // with its distance heat map.
 import type { CoreClient } from '../client/core-client';
 import { rbfParams } from '../shared/align-types';
+import { orientationText } from '../shared/orientation';
 import { BatchPanel } from '../ui/batch-panel';
 import type { ErrorBanner } from '../ui/error-banner';
 import { distanceHeat } from '../view/heat-colours';
 import type { Viewer } from '../view/viewer';
 import { FITTED_COLOUR } from './align-step';
-import { Batch } from './batch';
+import { Batch, type BatchSettings } from './batch';
 import { uprightTransform } from './display-frame';
 import type { Session } from './session';
 import type { ShapeSpace } from './shape-space';
@@ -30,13 +31,13 @@ export interface BatchPage {
 export function startBatch(page: BatchPage): Batch {
   const { viewer, templateView, banner } = page;
   let drawScheduled = false;
-  const draw = () => panel.render(batch.all, batch.summary());
-  const batch = new Batch(
+  const draw = () => panel.render(batch.all, batch.summary(), { orientation: batch.orientation, alignableAgain: batch.alignableAgain().length });
+  const batch: Batch = new Batch(
     page.client,
-    () => {
+    (): BatchSettings | null => {
       const resolution = templateView.data?.resolution;
       const rbf = page.warpStep.panel.current;
-      return resolution ? { resolution, options: { params: rbf ? { rbf: rbfParams(rbf) } : {} } } : null;
+      return resolution ? { resolution, options: { params: rbf ? { rbf: rbfParams(rbf) } : {}, orientation: batch.orientation } } : null;
     },
     (progress) => {
       if (!progress) return draw();
@@ -54,6 +55,12 @@ export function startBatch(page: BatchPage): Batch {
     onCancel: (subject) => batch.cancel(subject),
     onRetry: (subject) => batch.retry(subject),
     onExclude: (subject, excluded) => batch.setExcluded(subject, excluded),
+    onOrientation: (orientation) => batch.setOrientation(orientation),
+    onAlignAgain: () => {
+      const again = batch.alignableAgain();
+      const question = `Align ${again.length} subject${again.length === 1 ? '' : 's'} again with ${orientationText(batch.orientation)}? ${again.length === 1 ? 'Its fit is' : 'Their fits are'} replaced by the new ones.`;
+      if (again.length && window.confirm(question)) batch.alignAgain();
+    },
     onCancelAll: () => batch.cancelAll(),
     onRetryAll: () => batch.retryAll(),
     onBuild: () => void page.shapeSpace.buildFrom(batch.kept(), (text) => panel.showBuildStatus(text)),

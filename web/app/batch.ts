@@ -5,6 +5,7 @@
 import { CancelledError, type CoreClient } from '../client/core-client';
 import { browserPoolSize, WorkerPool } from '../client/worker-pool';
 import type { SubjectOptions } from '../shared/align-types';
+import { sameOrientation, type Orientation } from '../shared/orientation';
 import type { SubjectPairing } from '../shared/results';
 import type { TemplateResolution } from '../shared/template-data';
 import { qualityText } from '../ui/format';
@@ -56,6 +57,18 @@ interface Job {
 
 const FINISHED = new Set(['ok', 'flagged', 'failed']);
 const STOPPED = new Set(['cancelled', 'interrupted']);
+/** Where the batch's orientation is kept between visits. */
+const ORIENTATION_KEY = 'bodyspace-batch-orientation';
+
+/** The stored orientation; null (auto) when none or unreadable. */
+function storedOrientation(): Orientation | null {
+  try {
+    const text = localStorage.getItem(ORIENTATION_KEY);
+    return text ? (JSON.parse(text) as Orientation) : null;
+  } catch {
+    return null;
+  }
+}
 
 export class Batch {
   private readonly rows = new Map<string, BatchRow>();
@@ -78,6 +91,11 @@ export class Batch {
   trapNext = false;
   /** Subjects whose job was trapped on purpose: a failure, not an unreadable file. */
   private readonly trapped = new Set<string>();
+  /**
+   * Which way is up in the batch's scans as the person said it (null: the estimate finds it);
+   * every alignment that starts takes it. Kept in the browser between visits.
+   */
+  private orientationNow: Orientation | null = storedOrientation();
 
   constructor(
     private readonly pairing: CoreClient<'core'>,
@@ -112,6 +130,38 @@ export class Batch {
     }
     this.onChange();
     this.pump();
+  }
+
+  get orientation(): Orientation | null {
+    return this.orientationNow;
+  }
+
+  /** States which way is up for the alignments that start from now on (see `alignAgain`). */
+  setOrientation(orientation: Orientation | null): void {
+    this.orientationNow = orientation;
+    try {
+      if (orientation) localStorage.setItem(ORIENTATION_KEY, JSON.stringify(orientation));
+      else localStorage.removeItem(ORIENTATION_KEY);
+    } catch {
+      // Not kept between visits (storage refused); this visit still uses it.
+    }
+    this.onChange();
+  }
+
+  /**
+   * The subjects a change of orientation concerns: finished (ok, flagged or failed), not
+   * excluded, aligned without a landmark file (a given file fixes the frame) with another
+   * orientation than the batch's now, and with their scan stored.
+   */
+  alignableAgain(): BatchRow[] {
+    return this.all.filter(
+      (r) => FINISHED.has(r.status) && !r.excluded && !r.landmarks && r.scan && !sameOrientation(r.orientation ?? null, this.orientationNow),
+    );
+  }
+
+  /** Aligns `alignableAgain()` again with the batch's orientation; their fits are replaced. */
+  alignAgain(): void {
+    for (const row of this.alignableAgain()) this.retry(row.subject);
   }
 
   /** Whether `files` make a batch: more than one scan dropped or picked at once. */
@@ -286,7 +336,7 @@ export class Batch {
 
   private async runJob(row: BatchRow, job: Job, settings: BatchSettings): Promise<void> {
     this.running.set(row.subject, job);
-    Object.assign(row, { status: 'aligning', progress: 0, progressLabel: 'reading', resolution: settings.resolution });
+    Object.assign(row, { status: 'aligning', progress: 0, progressLabel: 'reading', resolution: settings.resolution, orientation: settings.options.orientation ?? null });
     void this.save(row);
     this.onChange();
     const t0 = performance.now();

@@ -43,7 +43,18 @@ export interface SelfCheck {
   verdict: Verdict;
   reasons: string[];
   confidence_factor: number;
+  /** The factor of the landmarks of a lopsided segment (`evidence.asymmetric`) instead. */
+  lopsided_factor: number;
   evidence: SelfCheckEvidence;
+}
+
+/** A limb segment much longer on one side than on the other (`Asymmetry`, estimate/bilateral.rs). */
+export interface Asymmetry {
+  segment: string;
+  left_mm: number;
+  right_mm: number;
+  /** The four landmarks that make its two lengths. */
+  landmarks: string[];
 }
 
 /** What the self-check looks at (`Evidence`): lengths in mm, the stature in metres. */
@@ -56,6 +67,8 @@ export interface SelfCheckEvidence {
   stature_m: number;
   /** Estimated landmarks far from where the others of their rigid part put them. */
   contradicting: string[];
+  /** Limb segments whose left and right lengths disagree. */
+  asymmetric: Asymmetry[];
 }
 
 /** The core's report of a landmark estimate (`EstimateReport`; the fields the page uses). */

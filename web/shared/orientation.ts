@@ -26,3 +26,19 @@ export function axesAcross(up: Axis): Axis[] {
 export function orientationArgument(orientation: Orientation | null): string {
   return orientation ? JSON.stringify({ up: orientation.up, facing: orientation.facing }) : '';
 }
+
+/** `+x` as a person reads it: `+x`, `−x` (a true minus sign). */
+export function axisLabel(axis: Axis): string {
+  return axis.replace('-', '−');
+}
+
+/** The orientation as the app writes it for a person: `up +z, facing auto`, or `auto`. */
+export function orientationText(orientation: Orientation | null): string {
+  if (!orientation) return 'auto';
+  return `up ${axisLabel(orientation.up)}, facing ${orientation.facing ? axisLabel(orientation.facing) : 'auto'}`;
+}
+
+/** Whether two orientations are the same statement (null: auto). */
+export function sameOrientation(a: Orientation | null, b: Orientation | null): boolean {
+  return (a?.up ?? null) === (b?.up ?? null) && (a?.facing ?? null) === (b?.facing ?? null);
+}

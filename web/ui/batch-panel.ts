@@ -1,15 +1,22 @@
 // The Batch panel: one row per subject (status with progress, RMS, flags, time), sortable by any
 // column; a click on a row shows that fit; overall progress with the ETA; cancel, retry, exclude,
-// build the model, clear the batch.
+// build the model, clear the batch; which way is up in scans without a landmark file, and their
+// alignment again once it is said.
 import type { BatchRow, BatchSummary } from '../app/batch';
+import { orientationText, type Orientation } from '../shared/orientation';
 import { byId, h } from './dom';
 import { heatLegend } from './heat-legend';
+import { orientationControl } from './orientation-control';
 
 export interface BatchActions {
   onSelect(subject: string): void;
   onCancel(subject: string): void;
   onRetry(subject: string): void;
   onExclude(subject: string, excluded: boolean): void;
+  /** The batch's orientation, said by the person (null: auto). */
+  onOrientation(orientation: Orientation | null): void;
+  /** Aligns again, after asking, the finished subjects whose orientation was another. */
+  onAlignAgain(): void;
   onCancelAll(): void;
   /** Retries every cancelled or interrupted subject whose scan is stored. */
   onRetryAll(): void;
@@ -61,12 +68,18 @@ function formatSeconds(s: number): string {
   return s < 90 ? `${Math.round(s)} s` : `${Math.floor(s / 60)} min ${Math.round(s % 60)} s`;
 }
 
+/** The batch's orientation and how many finished subjects were aligned with another one. */
+export interface BatchOrientation {
+  orientation: Orientation | null;
+  alignableAgain: number;
+}
+
 export class BatchPanel {
   private readonly root = byId('batch-panel');
   private sort: { column: Column; descending: boolean } = { column: 'subject', descending: false };
   private selected: { subject: string; legendMaxMm: number } | null = null;
   private buildStatus = '';
-  private last: { rows: BatchRow[]; summary: BatchSummary } | null = null;
+  private last: { rows: BatchRow[]; summary: BatchSummary; orientation: BatchOrientation } | null = null;
 
   constructor(private readonly actions: BatchActions) {}
 
@@ -81,9 +94,10 @@ export class BatchPanel {
     this.redraw();
   }
 
-  render(rows: BatchRow[], summary: BatchSummary): void {
-    this.last = { rows, summary };
+  render(rows: BatchRow[], summary: BatchSummary, orientation: BatchOrientation): void {
+    this.last = { rows, summary, orientation };
     const data = document.body.dataset;
+    data.batchOrientation = orientationText(orientation.orientation);
     data.batchTotal = String(summary.total);
     data.batchFinished = String(summary.finished);
     data.batchStopped = String(summary.stopped);
@@ -99,7 +113,7 @@ export class BatchPanel {
       this.root.replaceChildren();
       return;
     }
-    const { rows, summary } = last;
+    const { rows, summary, orientation } = last;
     const button = (text: string, testid: string, run: () => void, disabled = false) => {
       const b = h('button', { class: 'button', type: 'button', 'data-testid': testid, disabled: disabled ? '' : undefined }, text);
       b.addEventListener('click', (e) => {
@@ -128,6 +142,7 @@ export class BatchPanel {
         build,
         button('Clear batch', 'batch-clear', () => this.actions.onClear()),
       ),
+      this.orientationRow(orientation, button),
       h(
         'p',
         { class: 'note', 'data-testid': 'batch-build-status' },
@@ -135,6 +150,26 @@ export class BatchPanel {
       ),
       this.table(rows, button),
       ...(this.selected ? [heatLegend(0, this.selected.legendMaxMm, `${this.selected.subject}: distance of each template vertex to its scan`)] : []),
+    );
+  }
+
+  /**
+   * Up and Facing for the scans that come without a landmark file (their landmarks are
+   * estimated), and "Align again" for the finished ones aligned with another orientation.
+   */
+  private orientationRow(o: BatchOrientation, button: (text: string, testid: string, run: () => void) => HTMLButtonElement): HTMLElement {
+    const control = orientationControl(o.orientation, false, (next) => this.actions.onOrientation(next), {
+      id: 'batch',
+      title: 'Which way the body stands in scans dropped without a landmark file: auto lets the estimate find it; alignments that start from now on use what is chosen here',
+    });
+    const again = button(`Align again with it (${o.alignableAgain})`, 'batch-align-again', () => this.actions.onAlignAgain());
+    again.title = `Aligns again, after asking, the ${o.alignableAgain} finished subject${o.alignableAgain === 1 ? '' : 's'} without a landmark file that were aligned with another orientation than ${orientationText(o.orientation)}`;
+    return h(
+      'div',
+      { class: 'batch-orientation' },
+      h('span', { class: 'label' }, 'Scans without landmarks:'),
+      control,
+      ...(o.alignableAgain > 0 ? [again] : []),
     );
   }
 
@@ -168,7 +203,13 @@ export class BatchPanel {
           'data-status': row.excluded ? 'excluded' : row.status,
           class: this.selected?.subject === row.subject ? 'selected' : undefined,
         },
-        h('td', { class: 'batch-subject' }, h('div', {}, row.subject), h('div', { class: 'batch-actions' }, ...this.rowActions(row, button))),
+        h(
+          'td',
+          { class: 'batch-subject' },
+          h('div', {}, row.subject),
+          ...(row.orientation ? [h('div', { class: 'note', 'data-testid': 'batch-row-orientation', title: 'Which way is up, as said for its alignment' }, orientationText(row.orientation))] : []),
+          h('div', { class: 'batch-actions' }, ...this.rowActions(row, button)),
+        ),
         status,
         h('td', { 'data-testid': 'batch-rms' }, row.rmsMm === null ? '—' : row.rmsMm.toFixed(2)),
         h('td', { class: 'batch-flags', title: row.reason }, flags),

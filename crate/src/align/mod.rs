@@ -18,6 +18,8 @@
 //! * [`report`] — the paper's Table 1 statistics, per-vertex distances, the convergence curve.
 //! * [`alignment_report`] — the pipeline's serialisable report (lengths in mm).
 //! * [`correspondence`] — correspondence error against a ground truth.
+//! * [`correspondence_split`] — that error over many subjects split as a shape model sees it:
+//!   the part common to all subjects and each subject's own (leave one out).
 //! * [`quality`] — quality flags of a finished alignment (RMS, unmatched vertices, fold-overs).
 //! * [`FineAlignInput`] (`fine_input.rs`) — what fine alignment works on.
 //! * [`AlignParams`], [`FineAlignParams`], [`FineStageParams`] (`params.rs`) — every parameter
@@ -27,6 +29,7 @@ pub mod alignment_report;
 pub mod anchors;
 pub mod coarse_to_fine;
 pub mod correspondence;
+pub mod correspondence_split;
 pub mod energy;
 pub mod error;
 pub mod fine_align;
@@ -49,6 +52,9 @@ pub use anchors::landmark_anchors;
 pub use coarse_to_fine::{coarse_to_fine_align, CoarseToFineInput, CoarseToFineResult};
 pub use correspondence::{
     correspondence_report, CorrespondenceReport, ErrorSummaryMm, PartError, SegmentError,
+};
+pub use correspondence_split::{
+    correspondence_split, CorrespondenceSplit, CorrespondenceSplitError, FitAndTruth, PartSplit,
 };
 pub use error::AlignError;
 pub use fine_align::{fine_align, FineAlignResult};

@@ -53,10 +53,11 @@ pub struct SynthArgs {
     #[arg(long)]
     pub gzip: bool,
     /// Scanner class (the scanner zoo, docs/synthetic-population.md): clean, parts, crown-cut,
-    /// feet-cut, floor, turntable, slices, blob, decimated, dense, stray, raw.
+    /// feet-cut, floor, turntable, slices, blob, decimated, dense, stray, raw, arms-touching,
+    /// arm-raised, hair, tight-clothing.
     #[arg(long, default_value = "clean")]
     pub scanner_class: String,
-    /// Cycle the scanner classes over the subjects (subject i gets class i mod 12, in the order
+    /// Cycle the scanner classes over the subjects (subject i gets class i mod 16, in the order
     /// above); overrides --scanner-class.
     #[arg(long)]
     pub zoo: bool,

@@ -23,7 +23,8 @@
 //!   [`check`] — [`check_given`]: a nearly full given file judged on its own, each landmark
 //!   against the other given landmarks of its rigid groups (no fit).
 //! * [`confidence`] — the typical error of each landmark (`typical_error`) and the fit's residual.
-//! * [`self_check`] — the estimate's verdict on itself (good, doubtful, failed) and why.
+//! * [`self_check`] — the estimate's verdict on itself (good, doubtful, failed) and why;
+//!   [`bilateral`] — limb segments compared between the body's sides.
 //! * [`tick`] — progress and cancel through the caller's `AlignObserver`.
 //! * [`params`] — [`EstimateParams`] and the parameter structs it holds (every tuning number,
 //!   with its documented default); [`EstimateReport`] (`report.rs`), [`EstimateError`]
@@ -31,6 +32,7 @@
 
 pub mod arm_swing;
 pub mod bent_arm;
+pub mod bilateral;
 pub mod buttocks;
 pub mod candidates;
 pub mod check;

@@ -2,11 +2,14 @@
 //! words. A wrong answer presented as right is the worst bug the product can have, so an
 //! estimate whose template had to be bent far out of shape to meet the scan, whose fitted body is
 //! no person's height, whose fit lies far from the scan or drifted away from it, or whose
-//! landmarks contradict each other is `doubtful` or `failed`, and its confidences are lowered to say so
-//! ([`SelfCheck::confidence_factor`]).
+//! landmarks contradict each other (against their rigid groups, or a limb's segment much longer
+//! on one side than on the other: `bilateral.rs`) is `doubtful` or `failed`, and its confidences
+//! are lowered to say so ([`SelfCheck::confidence_factor`]; the landmarks of a lopsided segment
+//! to [`SelfCheckParams::failed_factor`], [`SelfCheck::factor_for`]).
 
 use serde::{Deserialize, Serialize};
 
+use super::bilateral::Asymmetry;
 use super::params::SelfCheckParams;
 
 /// The estimate's verdict on itself.
@@ -35,6 +38,8 @@ pub struct SelfCheck {
     pub reasons: Vec<String>,
     /// What the confidences were multiplied by (1 for a good estimate).
     pub confidence_factor: f64,
+    /// What the confidences of the landmarks of a lopsided segment were multiplied by instead.
+    pub lopsided_factor: f64,
     /// What the verdict was drawn from.
     pub evidence: Evidence,
 }
@@ -56,6 +61,26 @@ pub struct Evidence {
     pub fit_curve_mm: Vec<f64>,
     /// Estimated landmarks the check of a given file flags against their rigid groups (names).
     pub contradicting: Vec<String>,
+    /// Limb segments much longer on one side than on the other (`bilateral.rs`).
+    #[serde(default)]
+    pub asymmetric: Vec<Asymmetry>,
+}
+
+impl SelfCheck {
+    /// What the confidence of landmark `name` is multiplied by: the lopsided factor for an end of
+    /// an asymmetric segment, the verdict's factor for the others.
+    pub fn factor_for(&self, name: &str) -> f64 {
+        let lopsided = self
+            .evidence
+            .asymmetric
+            .iter()
+            .any(|a| a.landmarks.iter().any(|l| l == name));
+        if lopsided {
+            self.lopsided_factor.min(self.confidence_factor)
+        } else {
+            self.confidence_factor
+        }
+    }
 }
 
 /// The estimate's verdict on `evidence` (see the module documentation and [`SelfCheckParams`]).
@@ -106,6 +131,9 @@ pub fn self_check(evidence: &Evidence, params: &SelfCheckParams) -> SelfCheck {
             ));
         }
     }
+    for a in &evidence.asymmetric {
+        doubtful.push(a.sentence());
+    }
     if evidence.contradicting.len() > params.max_contradicting {
         doubtful.push(format!(
             "{} estimated landmarks lie far from where the others of their part put them ({})",
@@ -125,6 +153,7 @@ pub fn self_check(evidence: &Evidence, params: &SelfCheckParams) -> SelfCheck {
         verdict,
         reasons: failed,
         confidence_factor,
+        lopsided_factor: params.failed_factor,
         evidence: evidence.clone(),
     }
 }
@@ -140,6 +169,7 @@ mod tests {
             stature_m: 1.7,
             fit_curve_mm: vec![6.0, 3.0, 1.5, 1.2],
             contradicting: vec!["Rt. Dactylion".into()],
+            asymmetric: Vec::new(),
         }
     }
 
@@ -201,12 +231,32 @@ mod tests {
                 contradicting: (0..8).map(|i| format!("L{i}")).collect(),
                 ..good()
             },
+            Evidence {
+                asymmetric: vec![Asymmetry {
+                    segment: "thigh".into(),
+                    left_mm: 440.0,
+                    right_mm: 380.0,
+                    landmarks: vec!["Rt. Femoral Lateral Epicn".into()],
+                }],
+                ..good()
+            },
         ];
         for (k, e) in cases.iter().enumerate() {
             let c = self_check(e, &p);
             assert_eq!(c.verdict, Verdict::Doubtful, "case {k}: {c:?}");
             assert_eq!(c.reasons.len(), 1, "case {k}: {c:?}");
             assert_eq!(c.confidence_factor, p.doubtful_factor);
+            let lopsided = !e.asymmetric.is_empty();
+            assert_eq!(
+                c.factor_for("Rt. Femoral Lateral Epicn"),
+                if lopsided {
+                    p.failed_factor
+                } else {
+                    p.doubtful_factor
+                },
+                "case {k}"
+            );
+            assert_eq!(c.factor_for("Sellion"), p.doubtful_factor);
         }
         // A failed estimate lists its doubts after the failure.
         let both = Evidence {

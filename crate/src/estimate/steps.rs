@@ -21,6 +21,7 @@ use std::borrow::Cow;
 
 use nalgebra::{Point3, Vector3};
 
+use super::bilateral::asymmetries;
 use super::candidates::{even_sample, fit_similarity, prefer_torso, FittedCandidate};
 use super::check::{judge_given, CheckParams, NEARLY_FULL};
 use super::confidence::{confidence, neighbourhoods, residual};
@@ -348,7 +349,7 @@ pub fn estimate_landmarks(
                     params.outlier_distance,
                 );
                 let c = confidence(typical_error_mm(k) / 1000.0, sharpness.spread(), r, params)
-                    * checked.confidence_factor;
+                    * checked.factor_for(name);
                 (finite.then(|| p / to_m), if finite { c } else { 0.0 })
             }
         };
@@ -424,7 +425,9 @@ fn check_itself(
         .into_iter()
         .map(|f| f.name)
         .collect();
+    let positions: Vec<Option<Point3<f64>>> = estimated.iter().map(|&(_, p)| Some(p)).collect();
     let evidence = Evidence {
+        asymmetric: asymmetries(&positions, 1000.0, params.self_check.max_bilateral_mm),
         fit_rms_mm: trimmed_rms_mm(&fine.report.per_vertex_distance, weights, 0.95),
         stature_m: {
             let up = best.rotation * nalgebra::Vector3::y();

@@ -7,6 +7,7 @@
 //! * [`population`] — the distributions subjects are drawn from (population profiles);
 //! * [`skeleton`] — joints on the morphed body and linear-blend skinning;
 //! * [`subject`] — morph, pose, floor and scan one subject;
+//! * [`arm_contact`] — arms hanging against the body (the abduction where the skin meets the torso);
 //! * [`hand_on_hip`] — hands on hips as a real arm lays them (the elbow's hinge, the hand on the hip);
 //! * [`population_run`] — subject `i` of seed `S`, deterministic;
 //! * [`random_stream`] — each subject's own random stream;
@@ -14,8 +15,10 @@
 //! * [`bvh`] — ray casting against a triangle mesh;
 //! * [`scanner`] — the virtual CAESAR-like scanner;
 //! * [`zoo`] — the scanner zoo: what other scanners deliver (parts, cuts, floors, slices, blobs,
-//!   densities, strays).
+//!   densities, strays) and what people bring to it (arms against the body, an arm raised, hair,
+//!   tight clothing).
 
+pub mod arm_contact;
 pub mod bvh;
 pub mod data;
 pub mod error;

@@ -11,7 +11,7 @@ use super::data::MakeHumanData;
 use super::error::SynthError;
 use super::hand_on_hip::{arm_bones, bend_elbow, lay_hand, wrist_clearance, ArmBones};
 use super::macros::macro_target_weights;
-use super::population::{PoseParams, SubjectParams};
+use super::population::{PoseParams, SubjectParams, A_POSE_ARM_DEG};
 use super::scanner::{scan, Scan, ScannerParams};
 use super::skeleton::{bone_transforms, joint_positions, skin};
 
@@ -36,6 +36,23 @@ const TRUNK_BONE: &str = "spine04";
 const HEAD_BONE: &str = "neck01";
 const LEFT_THIGH_BONE: &str = "upperleg01.L";
 const RIGHT_THIGH_BONE: &str = "upperleg01.R";
+const LEFT_CLAVICLE_BONE: &str = "clavicle.L";
+const RIGHT_CLAVICLE_BONE: &str = "clavicle.R";
+
+/// The arm's angle from the body (degrees) beyond which the shoulder girdle rises with it.
+pub const GIRDLE_FROM_DEG: f64 = 60.0;
+
+/// The share of the arm's angle beyond [`GIRDLE_FROM_DEG`] the clavicle takes (a raised arm
+/// lifts the shoulder: the scapula turns up about a third as far as the humerus, the
+/// scapulohumeral rhythm); the humerus takes the rest, so the arm's angle is the pose's.
+pub const GIRDLE_SHARE: f64 = 1.0 / 3.0;
+
+/// The clavicle's elevation (degrees, ≥ 0) for a shoulder abduction of `abduction` degrees from
+/// the model's A-pose: [`GIRDLE_SHARE`] of the arm's angle from the body beyond
+/// [`GIRDLE_FROM_DEG`], 0 below it (so arms up to 60° from the body move the humerus alone).
+pub fn shoulder_girdle_share(abduction: f64) -> f64 {
+    GIRDLE_SHARE * (abduction + A_POSE_ARM_DEG - GIRDLE_FROM_DEG).max(0.0)
+}
 
 /// Morphs, poses and scans one subject; the scanner noise comes from `rng`.
 pub fn make_subject<R: Rng>(
@@ -44,11 +61,27 @@ pub fn make_subject<R: Rng>(
     scanner: &ScannerParams,
     rng: &mut R,
 ) -> Result<Subject, SynthError> {
+    make_covered_subject(data, params, scanner, |_| None, rng)
+}
+
+/// [`make_subject`] with what the scanner sees over the body: `cover` of the posed body surface
+/// (hair, clothing; the same triangles on moved vertices), or the body itself when it gives
+/// `None`. The subject's `surface` (the truth) stays the body's.
+pub fn make_covered_subject<R: Rng>(
+    data: &MakeHumanData,
+    params: &SubjectParams,
+    scanner: &ScannerParams,
+    cover: impl FnOnce(&Mesh) -> Option<Mesh>,
+    rng: &mut R,
+) -> Result<Subject, SynthError> {
     let params = &fit_elbows(data, &fit_height(data, params))?;
     let (rest, posed) = shape_and_pose(data, params)?;
     let stature = extent_y(&rest);
     let surface = Mesh::new(posed, data.skin.triangles.clone());
-    let scan = scan(&surface, scanner, rng);
+    let scan = match cover(&surface) {
+        Some(covered) => scan(&covered, scanner, rng),
+        None => scan(&surface, scanner, rng),
+    };
     Ok(Subject {
         params: params.clone(),
         stature,
@@ -100,7 +133,8 @@ pub fn rest_stature(data: &MakeHumanData, params: &SubjectParams) -> f64 {
     extent_y(&skin)
 }
 
-fn morphed(data: &MakeHumanData, params: &SubjectParams) -> Vec<Point3<f64>> {
+/// Every model vertex (skin and helpers) of the morphed, unposed body.
+pub(super) fn morphed(data: &MakeHumanData, params: &SubjectParams) -> Vec<Point3<f64>> {
     let mut full: Vec<Vector3<f64>> = data.model.positions.iter().map(|p| p.coords).collect();
     let mut weights = macro_target_weights(&params.shape);
     weights.extend(params.local_target_weights());
@@ -126,7 +160,8 @@ pub fn shape_and_pose(
     Ok((rest, posed))
 }
 
-fn pose_rotations(
+/// The pose's bone rotations (bone index → rotation about its rest head, template axes).
+pub(super) fn pose_rotations(
     data: &MakeHumanData,
     heads: &[Point3<f64>],
     pose: &PoseParams,
@@ -163,9 +198,22 @@ fn pose_rotations(
     for (name, degrees) in limbs {
         out.insert(bone(name)?, frontal(degrees));
     }
-    let abductions = [pose.left_shoulder_abduction, -pose.right_shoulder_abduction];
-    for ((arm, flexion), abduction) in bent_arms(data, pose)?.into_iter().zip(abductions) {
-        out.insert(arm.upper, frontal(abduction));
+    // Per side: the abduction from the A-pose and the turn's sign (left +z, right −z).
+    let abductions = [
+        (pose.left_shoulder_abduction, 1.0),
+        (pose.right_shoulder_abduction, -1.0),
+    ];
+    let clavicles = [bone(LEFT_CLAVICLE_BONE)?, bone(RIGHT_CLAVICLE_BONE)?];
+    for (((arm, flexion), (abduction, sign)), clavicle) in bent_arms(data, pose)?
+        .into_iter()
+        .zip(abductions)
+        .zip(clavicles)
+    {
+        let girdle = shoulder_girdle_share(abduction);
+        if girdle != 0.0 {
+            out.insert(clavicle, frontal(sign * girdle));
+        }
+        out.insert(arm.upper, frontal(sign * (abduction - girdle)));
         if flexion == 0.0 {
             continue;
         }

@@ -33,6 +33,13 @@ pub struct SelfCheckParams {
     /// estimates of clean synthetic scans have 0–1, of scans with a floor or a photogrammetry-like
     /// blob up to 5; wrong frames 0–19 (the bend and the height catch those).
     pub max_contradicting: usize,
+    /// A limb segment on one bone (`bilateral.rs`: thigh, lower leg, upper arm, forearm, foot)
+    /// longer on one side than on the other by more than this (mm) makes the estimate doubtful,
+    /// and its four landmarks' confidences drop to `failed_factor`. Default 40 mm: the synthetic
+    /// bodies' own sides differ by at most 14 mm; good estimates of the tuning seeds by up to
+    /// 35 mm; a right knee misplaced 71 mm up the leg gave 68 and 93 mm, a radiale misplaced
+    /// 99 mm gave 52 mm (docs/landmarks-estimate.md, "Self-check").
+    pub max_bilateral_mm: f64,
     /// The confidences of a doubtful estimate are multiplied by this. Default 0.5.
     pub doubtful_factor: f64,
     /// The same for a failed one: none stays above 10 %. Default 0.1.
@@ -49,6 +56,7 @@ impl Default for SelfCheckParams {
             rise: 0.25,
             rise_mm: 0.5,
             max_contradicting: 6,
+            max_bilateral_mm: 40.0,
             doubtful_factor: 0.5,
             failed_factor: 0.1,
         }
