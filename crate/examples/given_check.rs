@@ -18,10 +18,10 @@ use std::collections::BTreeMap;
 use std::path::Path;
 use std::time::Instant;
 
+use bodyspace::estimate::caesar_points::{given_landmarks, landmark_rest};
 use bodyspace::estimate::check::{
     judge_given, predict_given, rigid_groups, tolerance_mm, CheckParams,
 };
-use bodyspace::estimate::steps::{given_landmarks, landmark_rest};
 use bodyspace::estimate::suspicious::partner_of;
 use bodyspace::estimate::SuspicionKind;
 use bodyspace::io::read_landmarks;

@@ -26,10 +26,11 @@ mod support;
 
 #[cfg(not(target_arch = "wasm32"))]
 mod native {
-    use super::support::{frame_cosines, landmark_errors, load, placed, zoo_frames, zoo_scanned};
+    use super::support::{
+        estimate_bare, frame_cosines, landmark_errors, load, placed, zoo_frames, Zoo,
+    };
     use bodyspace::estimate::up::head_end;
-    use bodyspace::estimate::{estimate_landmarks, EstimateInput, EstimateParams};
-    use bodyspace::landmarks::LandmarkSet;
+    use bodyspace::estimate::EstimateParams;
     use bodyspace::synth::population::A_POSE_ARM_DEG;
     use bodyspace::synth::{PopulationProfile, ScannerClass, SubjectId, ZooParams};
     use nalgebra::Vector3;
@@ -84,7 +85,12 @@ mod native {
                     .is_none_or(|names| names.iter().any(|x| x == f.name))
             })
             .collect();
-        let zoo = ZooParams::default();
+        let zoo = Zoo {
+            data: &data,
+            template: &template,
+            scanner: PopulationProfile::HeldOut.scanner(),
+            params: ZooParams::default(),
+        };
         let mut table: Vec<(ScannerClass, &str, Row)> = Vec::new();
         for &class in &classes {
             let mut rows: Vec<Row> = vec![Vec::new(); frames.len()];
@@ -94,8 +100,7 @@ mod native {
                     seed,
                     index: i,
                 };
-                let scanner = id.profile.scanner();
-                let subject = zoo_scanned(&data, &template, id, class, &scanner, &zoo);
+                let subject = zoo.scanned(id, class);
                 let q = subject.params.pose;
                 let pose = format!(
                     "arms {:.0}°/{:.0}°, elbows {:.0}°/{:.0}°",
@@ -106,14 +111,7 @@ mod native {
                 );
                 for (f, frame) in frames.iter().enumerate() {
                     let c = placed(&template, subject.clone(), frame);
-                    let input = EstimateInput {
-                        template: &template,
-                        scan: &c.scan,
-                        given: &LandmarkSet::default(),
-                        units: None,
-                        orientation: None,
-                    };
-                    let e = estimate_landmarks(&input, &params, &mut ()).unwrap();
+                    let e = estimate_bare(&template, &c, &params);
                     let r = &e.report;
                     let to_mm = e.scale_to_metres * 1000.0;
                     let errors = landmark_errors(&c, &e.positions, to_mm);

@@ -10,12 +10,13 @@
 
 mod estimate_support;
 
-use bodyspace::estimate::{estimate_landmarks, EstimateInput, EstimateParams, Verdict};
-use bodyspace::landmarks::LandmarkSet;
+use bodyspace::estimate::{EstimateParams, Verdict};
 use bodyspace::mesh::topology::{component_labels, components};
 use bodyspace::synth::zoo::parts::scan_labels;
 use bodyspace::synth::{PopulationProfile, ScannerClass, ScannerParams, SubjectId, ZooParams};
-use estimate_support::{frame_cosines, landmark_errors, load, placed, zoo_frames, zoo_scanned};
+use estimate_support::{
+    estimate_bare, frame_cosines, landmark_errors, load, placed, zoo_frames, Zoo,
+};
 
 /// A seed neither tuned on nor reported in the measurement.
 const SEED: u64 = 5757;
@@ -47,15 +48,19 @@ fn every_scanner_class_comes_out_the_right_way_up_in_two_frames() {
     let (template, data) = load();
     let frames = zoo_frames();
     // A coarse scanner (6 mm) and a dense class at 2 mm keep the test fast.
-    let scanner = ScannerParams {
-        vertical_step: 0.006,
-        horizontal_step: 0.006,
-        ..PopulationProfile::HeldOut.scanner()
-    };
-    let zoo = ZooParams {
-        dense_step: 0.002,
-        slice_ring_step: 0.002,
-        ..ZooParams::default()
+    let zoo = Zoo {
+        data: &data,
+        template: &template,
+        scanner: ScannerParams {
+            vertical_step: 0.006,
+            horizontal_step: 0.006,
+            ..PopulationProfile::HeldOut.scanner()
+        },
+        params: ZooParams {
+            dense_step: 0.002,
+            slice_ring_step: 0.002,
+            ..ZooParams::default()
+        },
     };
     let mut failures = Vec::new();
     for (i, class) in ScannerClass::ALL.into_iter().enumerate() {
@@ -64,7 +69,7 @@ fn every_scanner_class_comes_out_the_right_way_up_in_two_frames() {
             seed: SEED,
             index: i as u64,
         };
-        let subject = zoo_scanned(&data, &template, id, class, &scanner, &zoo);
+        let subject = zoo.scanned(id, class);
         // The people's classes in one frame each: CI's time is short.
         let frame_count = if people(class) { 1 } else { 2 };
         for frame in (i..i + frame_count).map(|f| &frames[f % frames.len()]) {
@@ -72,14 +77,7 @@ fn every_scanner_class_comes_out_the_right_way_up_in_two_frames() {
             if class == ScannerClass::Parts || class == ScannerClass::Raw {
                 assert!(components(&c.scan) >= 5, "{}", class.name());
             }
-            let input = EstimateInput {
-                template: &template,
-                scan: &c.scan,
-                given: &LandmarkSet::default(),
-                units: None,
-                orientation: None,
-            };
-            let e = estimate_landmarks(&input, &EstimateParams::default(), &mut ()).unwrap();
+            let e = estimate_bare(&template, &c, &EstimateParams::default());
             let r = &e.report;
             let to_mm = e.scale_to_metres * 1000.0;
             let errors = landmark_errors(&c, &e.positions, to_mm);
@@ -123,12 +121,16 @@ fn every_scanner_class_comes_out_the_right_way_up_in_two_frames() {
 #[test]
 fn a_parts_scan_is_split_and_a_crown_cut_scan_has_nothing_above_the_cut() {
     let (template, data) = load();
-    let scanner = ScannerParams {
-        vertical_step: 0.008,
-        horizontal_step: 0.008,
-        ..PopulationProfile::HeldOut.scanner()
+    let zoo = Zoo {
+        data: &data,
+        template: &template,
+        scanner: ScannerParams {
+            vertical_step: 0.008,
+            horizontal_step: 0.008,
+            ..PopulationProfile::HeldOut.scanner()
+        },
+        params: ZooParams::default(),
     };
-    let zoo = ZooParams::default();
     let id = |index| SubjectId {
         profile: PopulationProfile::HeldOut,
         seed: SEED,
@@ -136,14 +138,7 @@ fn a_parts_scan_is_split_and_a_crown_cut_scan_has_nothing_above_the_cut() {
     };
     // Every component of a parts scan lies in one of the template's six segments, and every
     // segment has a component.
-    let parts = zoo_scanned(
-        &data,
-        &template,
-        id(20),
-        ScannerClass::Parts,
-        &scanner,
-        &zoo,
-    );
+    let parts = zoo.scanned(id(20), ScannerClass::Parts);
     let weights = template.segment_weight_table();
     let segment: Vec<u8> = (0..parts.surface.positions.len())
         .map(|v| {
@@ -169,14 +164,7 @@ fn a_parts_scan_is_split_and_a_crown_cut_scan_has_nothing_above_the_cut() {
             "segment {s} has no component"
         );
     }
-    let crown = zoo_scanned(
-        &data,
-        &template,
-        id(21),
-        ScannerClass::CrownCut,
-        &scanner,
-        &zoo,
-    );
+    let crown = zoo.scanned(id(21), ScannerClass::CrownCut);
     let top = crown
         .surface
         .positions
@@ -189,15 +177,11 @@ fn a_parts_scan_is_split_and_a_crown_cut_scan_has_nothing_above_the_cut() {
         .iter()
         .map(|p| p.y)
         .fold(f64::MIN, f64::max);
-    assert!(highest <= top - zoo.crown_cut.0, "{highest} vs top {top}");
-    let decimated = zoo_scanned(
-        &data,
-        &template,
-        id(22),
-        ScannerClass::Decimated,
-        &scanner,
-        &zoo,
+    assert!(
+        highest <= top - zoo.params.crown_cut.0,
+        "{highest} vs top {top}"
     );
+    let decimated = zoo.scanned(id(22), ScannerClass::Decimated);
     let n = decimated.scan.mesh.positions.len();
     assert!((7_000..=14_000).contains(&n), "decimated to {n} vertices");
 }

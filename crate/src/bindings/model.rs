@@ -24,7 +24,7 @@ use crate::pca::{
 };
 use crate::template::{Resolution, Segment, Template};
 
-use super::template::TemplateHandle;
+use super::template::{normals_of, TemplateHandle};
 
 pub(super) fn js(e: impl std::fmt::Display) -> JsError {
     JsError::new(&e.to_string())
@@ -311,17 +311,7 @@ impl ShapeSpace {
     /// shown, e.g. of a body from `reconstruct` (computed now, copied out).
     #[wasm_bindgen(js_name = normalsOf)]
     pub fn normals_of(&self, positions: &[f32]) -> Result<Float32Array, JsError> {
-        let n = 3 * self.topology.vertex_count();
-        if positions.len() != n {
-            return Err(js(format!(
-                "positions hold {} values; the body shown has {} vertices ({n} values)",
-                positions.len(),
-                n / 3
-            )));
-        }
-        let mut out = vec![0.0f32; n];
-        self.topology.vertex_normals_into(positions, &mut out);
-        Ok(Float32Array::from(out.as_slice()))
+        normals_of(&self.topology, positions, "the body shown")
     }
 
     /// A body for export, without touching the one shown: same arguments as `morph`, positions

@@ -98,17 +98,7 @@ impl TemplateHandle {
     /// hands the arrays to the view.
     #[wasm_bindgen(js_name = normalsOf)]
     pub fn normals_of(&self, positions: &[f32]) -> Result<Float32Array, JsError> {
-        let n = 3 * self.topology.vertex_count();
-        if positions.len() != n {
-            return Err(JsError::new(&format!(
-                "positions hold {} values; the template has {} vertices ({n} values)",
-                positions.len(),
-                n / 3
-            )));
-        }
-        let mut out = vec![0.0f32; n];
-        self.topology.vertex_normals_into(positions, &mut out);
-        Ok(Float32Array::from(out.as_slice()))
+        normals_of(&self.topology, positions, "the template")
     }
 
     /// Landmark names, one per line: the 73 CAESAR names in `.lnd` order, then the 12 virtual.
@@ -157,4 +147,24 @@ impl TemplateHandle {
         let flat: Vec<u8> = (0..n).map(|v| self.template.flags(v).0).collect();
         Uint8Array::from(flat.as_slice())
     }
+}
+
+/// `#V·3` unit vertex normals of `positions` (`#V·3`) over `topology`'s triangles, copied out;
+/// an error naming `mesh` (what the triangles belong to) when `positions` is not `#V·3` long.
+pub(super) fn normals_of(
+    topology: &NormalTopology,
+    positions: &[f32],
+    mesh: &str,
+) -> Result<Float32Array, JsError> {
+    let n = 3 * topology.vertex_count();
+    if positions.len() != n {
+        return Err(JsError::new(&format!(
+            "positions hold {} values; {mesh} has {} vertices ({n} values)",
+            positions.len(),
+            n / 3
+        )));
+    }
+    let mut out = vec![0.0f32; n];
+    topology.vertex_normals_into(positions, &mut out);
+    Ok(Float32Array::from(out.as_slice()))
 }

@@ -7,7 +7,9 @@
 
 use std::path::PathBuf;
 
-use super::subject_args::{compare_with_truth_file, fit_ply, SubjectArgs, SubjectFiles};
+use super::subject_args::{
+    compare_with_truth_file, fit_ply, ReportArgs, SubjectArgs, SubjectFiles,
+};
 use crate::subject::fit_subject;
 use crate::template::{Resolution, Template};
 
@@ -21,9 +23,8 @@ pub struct AlignArgs {
     pub out: PathBuf,
     #[command(flatten)]
     pub subject: SubjectArgs,
-    /// Also write the JSON report to this file.
-    #[arg(long)]
-    pub report: Option<PathBuf>,
+    #[command(flatten)]
+    pub report: ReportArgs,
     /// Ground truth for a synthetic subject: PLY whose vertex i is template (base) vertex i on
     /// the subject, scan frame and units; adds the correspondence error to the report (at
     /// `fine`, over the base vertices, which come first).
@@ -51,11 +52,5 @@ pub fn run(args: &AlignArgs) -> Result<(), String> {
             args.out.display()
         )
     })?;
-    let text = serde_json::to_string_pretty(&fit.report).map_err(|e| e.to_string())?;
-    if let Some(path) = &args.report {
-        std::fs::write(path, &text)
-            .map_err(|e| format!("{}: cannot write the report: {e}", path.display()))?;
-    }
-    println!("{text}");
-    Ok(())
+    args.report.print(&fit.report)
 }

@@ -6,7 +6,7 @@
 
 use std::path::PathBuf;
 
-use super::subject_args::{OrientationArgs, SubjectFiles};
+use super::subject_args::{OrientationArgs, ReportArgs, SubjectFiles};
 use crate::io::write_landmarks;
 use crate::template::Template;
 
@@ -22,9 +22,8 @@ pub struct LandmarksArgs {
     /// Where to write the landmarks: .csv or .json (the scan's frame and units) or .lnd (mm).
     #[arg(long)]
     pub out: PathBuf,
-    /// Also write the JSON report to this file.
-    #[arg(long)]
-    pub report: Option<PathBuf>,
+    #[command(flatten)]
+    pub report: ReportArgs,
 }
 
 /// Runs `bodyspace landmarks`; the error is the one-line message for stderr.
@@ -54,11 +53,5 @@ pub fn run(args: &LandmarksArgs) -> Result<(), String> {
     )?;
     std::fs::write(&args.out, bytes)
         .map_err(|e| format!("{name}: cannot write the landmarks: {e}"))?;
-    let text = serde_json::to_string_pretty(&estimate.report).map_err(|e| e.to_string())?;
-    if let Some(path) = &args.report {
-        std::fs::write(path, &text)
-            .map_err(|e| format!("{}: cannot write the report: {e}", path.display()))?;
-    }
-    println!("{text}");
-    Ok(())
+    args.report.print(&estimate.report)
 }

@@ -34,9 +34,10 @@ impl Status {
     }
 }
 
-/// One subject of a batch, as its report's `batch` object and its manifest row.
+/// One subject of a batch, as its report's `batch` object (`Flags` = `Vec<String>`, one name a
+/// flag) and its manifest row ([`ManifestRow`]: `Flags` = `String`, the names separated by `;`).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-pub struct SubjectRecord {
+pub struct SubjectRecord<Flags = Vec<String>> {
     /// The scan's file name without its extensions (`scan_001.ply.gz` → `scan_001`).
     pub subject: String,
     pub status: Status,
@@ -45,7 +46,7 @@ pub struct SubjectRecord {
     /// Scan → template RMS (mm) of the fit.
     pub rms_mm: Option<f64>,
     /// Quality flag names (docs/batch.md).
-    pub flags: Vec<String>,
+    pub flags: Flags,
     /// Wall time of this subject (read, align, assess, write), s.
     pub seconds: f64,
     /// Template resolution of the fit ("base" or "fine").
@@ -55,20 +56,9 @@ pub struct SubjectRecord {
     pub landmarks: String,
 }
 
-/// One CSV row of the manifest.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-pub struct ManifestRow {
-    pub subject: String,
-    pub status: Status,
-    pub reason: String,
-    pub rms_mm: Option<f64>,
-    /// Flag names separated by `;`.
-    pub flags: String,
-    pub seconds: f64,
-    pub resolution: String,
-    pub scan: String,
-    pub landmarks: String,
-}
+/// One CSV row of the manifest: the record with its flags joined by `;`, the RMS rounded to
+/// 0.1 µm and the time to 1 ms.
+pub type ManifestRow = SubjectRecord<String>;
 
 impl From<&SubjectRecord> for ManifestRow {
     fn from(r: &SubjectRecord) -> Self {

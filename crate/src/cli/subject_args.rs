@@ -4,7 +4,7 @@
 use std::path::{Path, PathBuf};
 use std::str::FromStr;
 
-use crate::align::{AlignParams, FineStageParams, Preset, QualityThresholds};
+use crate::align::{AlignParams, FineAlignParams, FineStageParams, Preset, QualityThresholds};
 use crate::estimate::{Axis, Orientation};
 use crate::rbf::{Kernel, RbfParams};
 use crate::subject::options::NEARLY_FULL;
@@ -35,6 +35,31 @@ pub struct SubjectArgs {
     /// Stop after the RBF rough deformation (paper §3.1).
     #[arg(long)]
     pub rough_only: bool,
+    #[command(flatten)]
+    pub rbf: RbfArgs,
+    #[command(flatten)]
+    pub fine: FineArgs,
+    /// Take given landmark files as they are: no check for suspicious landmarks (the check is
+    /// cheap; docs/batch.md).
+    #[arg(long)]
+    pub no_landmark_check: bool,
+    /// A landmark file with at least this many of the 73 CAESAR landmarks is checked, not filled
+    /// in by the estimate; its missing landmarks stay absent.
+    #[arg(long, default_value_t = NEARLY_FULL)]
+    pub nearly_full: usize,
+    #[command(flatten)]
+    pub quality: QualityArgs,
+    /// The frame the fit is written in: scan (its scan's frame and units) or template (upright,
+    /// y up, metres, facing +z). The report records the motion between the two either way.
+    #[arg(long, value_enum, default_value = "scan")]
+    pub frame: Frame,
+    #[command(flatten)]
+    pub orientation: OrientationArgs,
+}
+
+/// The RBF warp's flags (paper §3.1; [`RbfParams`]).
+#[derive(clap::Args, Debug, Clone)]
+pub struct RbfArgs {
     /// Radial basis function: thin-plate, gaussian or multiquadric (docs/rbf.md).
     #[arg(long, default_value = RbfParams::default().kernel.name())]
     pub kernel: String,
@@ -51,6 +76,36 @@ pub struct SubjectArgs {
     /// Leave out the 12 virtual landmarks.
     #[arg(long)]
     pub no_virtual: bool,
+}
+
+impl RbfArgs {
+    /// The preset's RBF parameters `defaults` with what the flags set, checked.
+    pub fn params(&self, defaults: RbfParams) -> Result<RbfParams, String> {
+        let kernel = Kernel::from_name(&self.kernel, self.kernel_param).ok_or_else(|| {
+            format!(
+                "--kernel {}: unknown kernel; use gaussian, thin-plate or multiquadric",
+                self.kernel
+            )
+        })?;
+        kernel
+            .validate()
+            .map_err(|e| format!("--kernel-param: {e}"))?;
+        if !(self.lambda.is_finite() && self.lambda >= 0.0) {
+            return Err(format!("--lambda {}: must be finite and >= 0", self.lambda));
+        }
+        Ok(RbfParams {
+            kernel,
+            affine: !self.no_affine,
+            lambda: self.lambda,
+            virtual_landmarks: !self.no_virtual,
+            ..defaults
+        })
+    }
+}
+
+/// Fine alignment's flags (paper §3.2; [`FineAlignParams`], [`FineStageParams`]).
+#[derive(clap::Args, Debug, Clone)]
+pub struct FineArgs {
     /// Weight a of the data error in fine alignment (paper Fig. 9; default: the preset's, 0.96).
     #[arg(long)]
     pub a: Option<f64>,
@@ -74,14 +129,25 @@ pub struct SubjectArgs {
     /// preset's, 1).
     #[arg(long)]
     pub scan_term_weight: Option<f64>,
-    /// Take given landmark files as they are: no check for suspicious landmarks (the check is
-    /// cheap; docs/batch.md).
-    #[arg(long)]
-    pub no_landmark_check: bool,
-    /// A landmark file with at least this many of the 73 CAESAR landmarks is checked, not filled
-    /// in by the estimate; its missing landmarks stay absent.
-    #[arg(long, default_value_t = NEARLY_FULL)]
-    pub nearly_full: usize,
+}
+
+impl FineArgs {
+    /// The preset's fine-alignment parameters `defaults` with what the flags set.
+    pub fn params(&self, defaults: &FineAlignParams) -> FineAlignParams {
+        FineAlignParams {
+            a: self.a.unwrap_or(defaults.a),
+            b: self.b.unwrap_or(defaults.b),
+            max_iterations: self.max_iterations.unwrap_or(defaults.max_iterations),
+            landmark_weight: self.landmark_weight.unwrap_or(defaults.landmark_weight),
+            scan_term_weight: self.scan_term_weight.unwrap_or(defaults.scan_term_weight),
+            ..defaults.clone()
+        }
+    }
+}
+
+/// The quality check's flags ([`QualityThresholds`]; docs/batch.md).
+#[derive(clap::Args, Debug, Clone)]
+pub struct QualityArgs {
     /// Flag fits whose scan → template RMS exceeds this (mm).
     #[arg(long, default_value_t = QualityThresholds::default().max_rms_mm)]
     pub max_rms_mm: f64,
@@ -91,12 +157,26 @@ pub struct SubjectArgs {
     /// Flag fits where more than this fraction of template triangles folded over.
     #[arg(long, default_value_t = QualityThresholds::default().max_folded_fraction)]
     pub max_folded: f64,
-    /// The frame the fit is written in: scan (its scan's frame and units) or template (upright,
-    /// y up, metres, facing +z). The report records the motion between the two either way.
-    #[arg(long, value_enum, default_value = "scan")]
-    pub frame: Frame,
-    #[command(flatten)]
-    pub orientation: OrientationArgs,
+}
+
+impl QualityArgs {
+    /// The thresholds the flags set, checked (each a finite number ≥ 0).
+    pub fn thresholds(&self) -> Result<QualityThresholds, String> {
+        for (flag, value) in [
+            ("--max-rms-mm", self.max_rms_mm),
+            ("--max-unmatched", self.max_unmatched),
+            ("--max-folded", self.max_folded),
+        ] {
+            if !(value.is_finite() && value >= 0.0) {
+                return Err(format!("{flag} {value}: must be a finite number ≥ 0"));
+            }
+        }
+        Ok(QualityThresholds {
+            max_rms_mm: self.max_rms_mm,
+            max_unmatched_fraction: self.max_unmatched,
+            max_folded_fraction: self.max_folded,
+        })
+    }
 }
 
 /// Which way is up on a scan, when a person knows it.
@@ -143,49 +223,18 @@ impl SubjectArgs {
 
     /// The core's options with what the command line sets.
     pub fn options(&self) -> Result<SubjectOptions, String> {
-        let kernel = Kernel::from_name(&self.kernel, self.kernel_param).ok_or_else(|| {
-            format!(
-                "--kernel {}: unknown kernel; use gaussian, thin-plate or multiquadric",
-                self.kernel
-            )
-        })?;
-        kernel
-            .validate()
-            .map_err(|e| format!("--kernel-param: {e}"))?;
-        if !(self.lambda.is_finite() && self.lambda >= 0.0) {
-            return Err(format!("--lambda {}: must be finite and >= 0", self.lambda));
-        }
-        for (flag, value) in [
-            ("--max-rms-mm", self.max_rms_mm),
-            ("--max-unmatched", self.max_unmatched),
-            ("--max-folded", self.max_folded),
-        ] {
-            if !(value.is_finite() && value >= 0.0) {
-                return Err(format!("{flag} {value}: must be a finite number ≥ 0"));
-            }
-        }
         let preset = Preset::from_name(&self.preset)
             .ok_or_else(|| format!("--preset {}: paper or anchored", self.preset))?;
         let defaults = preset.params();
-        let mut fine = defaults.fine.clone();
-        fine.a = self.a.unwrap_or(fine.a);
-        fine.b = self.b.unwrap_or(fine.b);
-        fine.max_iterations = self.max_iterations.unwrap_or(fine.max_iterations);
-        fine.landmark_weight = self.landmark_weight.unwrap_or(fine.landmark_weight);
-        fine.scan_term_weight = self.scan_term_weight.unwrap_or(fine.scan_term_weight);
+        let rbf = self.rbf.params(defaults.rbf)?;
+        let thresholds = self.quality.thresholds()?;
         let params = AlignParams {
             preset,
             pose_parts: defaults.pose_parts,
-            rbf: RbfParams {
-                kernel,
-                affine: !self.no_affine,
-                lambda: self.lambda,
-                virtual_landmarks: !self.no_virtual,
-                ..defaults.rbf
-            },
-            fine,
+            rbf,
+            fine: self.fine.params(&defaults.fine),
             fine_stage: FineStageParams {
-                max_iterations: self.fine_iterations,
+                max_iterations: self.fine.fine_iterations,
                 ..defaults.fine_stage
             },
             rough_only: self.rough_only,
@@ -194,11 +243,7 @@ impl SubjectArgs {
         Ok(SubjectOptions {
             params,
             check_landmarks: !self.no_landmark_check,
-            thresholds: QualityThresholds {
-                max_rms_mm: self.max_rms_mm,
-                max_unmatched_fraction: self.max_unmatched,
-                max_folded_fraction: self.max_folded,
-            },
+            thresholds,
             nearly_full: self.nearly_full,
             orientation: self.orientation.orientation()?,
         })
@@ -222,6 +267,27 @@ impl SubjectFiles {
     /// The subject read by the core's rule (`subject/input.rs`).
     pub fn read(&self) -> Result<crate::subject::SubjectInput, String> {
         read_subject_files(&self.scan, self.landmarks.as_deref())
+    }
+}
+
+/// The JSON report of `align` and `landmarks`: printed, and also written to a file when asked.
+#[derive(clap::Args, Debug, Clone)]
+pub struct ReportArgs {
+    /// Also write the JSON report to this file.
+    #[arg(long)]
+    pub report: Option<PathBuf>,
+}
+
+impl ReportArgs {
+    /// Prints `report` as indented JSON on stdout, after writing the same text to `--report`.
+    pub fn print(&self, report: &impl serde::Serialize) -> Result<(), String> {
+        let text = serde_json::to_string_pretty(report).map_err(|e| e.to_string())?;
+        if let Some(path) = &self.report {
+            std::fs::write(path, &text)
+                .map_err(|e| format!("{}: cannot write the report: {e}", path.display()))?;
+        }
+        println!("{text}");
+        Ok(())
     }
 }
 

@@ -201,8 +201,8 @@ mod tests {
     use super::*;
     use crate::align::SurfaceIndex;
     use crate::estimate::params::EstimateParams;
-    use crate::mesh::Mesh;
-    use crate::template::parts::{base_parts, dominant_parts};
+    use crate::template::fixture::base_body;
+    use crate::template::parts::dominant_parts;
 
     #[test]
     fn arms_held_down_along_the_body_or_raised_are_found() {
@@ -213,15 +213,14 @@ mod tests {
     /// The template with both arms turned `deg` towards the body as the "scan": the swing finds
     /// the turn and lays the arms on the scan's.
     fn arms_turned_by(deg: f64) {
-        let (template, parts) = base_parts();
-        let rest = &template.mesh().positions;
-        let triangles = &template.mesh().triangles;
+        let body = base_body();
+        let (rest, parts) = (&body.rest, &body.parts);
         let identity = PartPose::identity();
         // The "scan": the template with both arms turned `deg` towards the body, the pivots and
         // directions as `swing_arms` finds them at rest.
-        let arms = arms(&parts);
+        let arms = arms(parts);
         assert_eq!(arms.len(), 2);
-        let front = Unit::new_normalize(front_axis(&parts, &arms, rest).unwrap());
+        let front = Unit::new_normalize(front_axis(parts, &arms, rest).unwrap());
         let head = parts.iter().find(|p| p.name == "head").unwrap().joint;
         let mut scan_poses = vec![identity; parts.len()];
         for arm in &arms {
@@ -234,19 +233,19 @@ mod tests {
                 scan_poses[k].transform = turned(&identity.transform, &r, &shoulder);
             }
         }
-        let scan = Mesh::new(blend(&parts, &scan_poses, rest), triangles.clone());
+        let scan = body.posed(&scan_poses);
         let index = SurfaceIndex::new(&scan).unwrap();
         let matching = Matching::new(&index, &EstimateParams::default());
         let vertices: Vec<u32> = (0..rest.len() as u32).step_by(2).collect();
-        let dominant = dominant_parts(&parts, rest.len());
+        let dominant = dominant_parts(parts, rest.len());
         // From the template's pose, the refinement (here none, or cancelled) given.
         let swing = |refine: fn(&mut [PartPose]) -> Option<()>| {
             let mut poses = vec![identity; parts.len()];
             let kept = swing_arms(
-                &parts,
+                parts,
                 &mut poses,
                 rest,
-                triangles,
+                &body.triangles,
                 &vertices,
                 &dominant,
                 &matching,
@@ -258,7 +257,7 @@ mod tests {
         let (kept, poses) = swing(|_| Some(())).unwrap();
         assert_eq!(kept, vec![deg, deg]);
         // The turned arms now lie on the scan's.
-        let fitted = blend(&parts, &poses, rest);
+        let fitted = blend(parts, &poses, rest);
         let worst = fitted
             .iter()
             .zip(&scan.positions)

@@ -195,19 +195,18 @@ mod tests {
     use super::*;
     use crate::align::SurfaceIndex;
     use crate::estimate::params::EstimateParams;
-    use crate::mesh::Mesh;
-    use crate::template::parts::{base_parts, blend, dominant_parts};
+    use crate::template::fixture::base_body;
+    use crate::template::parts::dominant_parts;
     use nalgebra::{Rotation3, Unit};
 
     #[test]
     fn a_bent_arms_elbow_is_placed_where_its_axes_meet() {
-        let (template, parts) = base_parts();
-        let rest = &template.mesh().positions;
-        let triangles = &template.mesh().triangles;
+        let body = base_body();
+        let (template, rest, parts) = (&body.template, &body.rest, &body.parts);
         let identity = PartPose::identity();
         // The "scan": the template with each upper arm 15% longer and its forearm bent 90° at
         // the elbow; the start: the same bend at the template's elbow.
-        let arms = arms(&parts);
+        let arms = arms(parts);
         assert_eq!(arms.len(), 2);
         let mut scan_poses = vec![identity; parts.len()];
         let mut start = scan_poses.clone();
@@ -225,15 +224,15 @@ mod tests {
             scan_poses[arm.lower].transform = bent_at(elbow);
             start[arm.lower].transform = bent_at(lower.joint);
         }
-        let scan = Mesh::new(blend(&parts, &scan_poses, rest), triangles.clone());
+        let scan = body.posed(&scan_poses);
         let index = SurfaceIndex::new(&scan).unwrap();
         let matching = Matching::new(&index, &EstimateParams::default());
         let vertices: Vec<u32> = (0..rest.len() as u32).step_by(2).collect();
-        let dominant = dominant_parts(&parts, rest.len());
+        let dominant = dominant_parts(parts, rest.len());
         let mut poses = start.clone();
         let placed = place_bent_elbows(
-            &template,
-            &parts,
+            template,
+            parts,
             &mut poses,
             &vertices,
             &dominant,
@@ -253,7 +252,7 @@ mod tests {
             // upper arm and the forearm.
             let t = &poses[arm.upper].transform;
             let u = (t.rotation * parts[arm.upper].axis.unwrap()).normalize();
-            let hinge = t.rotation * hinge(&template, &parts[arm.upper]).unwrap();
+            let hinge = t.rotation * hinge(template, &parts[arm.upper]).unwrap();
             let across = hinge - u * hinge.dot(&u);
             let normal =
                 u.cross(&(poses[arm.lower].transform.rotation * parts[arm.lower].axis.unwrap()));
@@ -263,8 +262,8 @@ mod tests {
         // A straight arm is left alone.
         let mut straight = vec![identity; parts.len()];
         let placed = place_bent_elbows(
-            &template,
-            &parts,
+            template,
+            parts,
             &mut straight,
             &vertices,
             &dominant,

@@ -132,7 +132,7 @@ mod tests {
     use super::*;
 
     use crate::estimate::profile::surface_samples;
-    use crate::template::parts::base_parts;
+    use crate::template::fixture::base_body;
 
     /// Points on the back of a body (facing +z, y up) whose back reaches furthest at `peak`
     /// (m above the origin): a bump of `depth` over a flat back.
@@ -168,10 +168,10 @@ mod tests {
 
     #[test]
     fn a_shorter_torso_is_found_from_its_buttocks() {
-        let (template, parts) = base_parts();
-        let rest = &template.mesh().positions;
-        let surface = surface_samples(rest, &template.mesh().triangles, 0.004);
-        let psis = psis_midpoint(&template).unwrap();
+        let body = base_body();
+        let surface = surface_samples(&body.rest, &body.triangles, 0.004);
+        let psis = psis_midpoint(&body.template).unwrap();
+        let parts = body.parts;
         // The template itself: the torso keeps its length.
         let mut poses = vec![PartPose::identity(); parts.len()];
         place_buttocks(

@@ -129,10 +129,9 @@ mod tests {
 
     #[test]
     fn near_candidates_facing_apart_are_told_by_the_torso() {
-        use crate::template::parts::base_parts;
+        use crate::template::fixture::{base_body, BaseBody};
         use crate::template::Segment;
-        let (template, _) = base_parts();
-        let rest = &template.mesh().positions;
+        let BaseBody { template, rest, .. } = base_body();
         let normals = template.mesh().vertex_normals();
         let index = crate::align::SurfaceIndex::new(template.mesh()).unwrap();
         let matching = Matching::new(&index, &EstimateParams::default());
@@ -163,11 +162,11 @@ mod tests {
         };
         // 5 % apart: the torso decides.
         let mut fitted = [("away", fitted_with(0.002)), ("right", right)];
-        prefer_torso(&mut fitted, rest, &normals, &torso, &matching, 60.0, 0.1);
+        prefer_torso(&mut fitted, &rest, &normals, &torso, &matching, 60.0, 0.1);
         assert_eq!(fitted[0].0, "right");
         // 50 % apart: the whole body's fit stands.
         let mut fitted = [("away", fitted_with(0.0014)), ("right", right)];
-        prefer_torso(&mut fitted, rest, &normals, &torso, &matching, 60.0, 0.1);
+        prefer_torso(&mut fitted, &rest, &normals, &torso, &matching, 60.0, 0.1);
         assert_eq!(fitted[0].0, "away");
     }
 

@@ -29,7 +29,7 @@
 use nalgebra::Point3;
 use serde::{Deserialize, Serialize};
 
-use super::steps::{given_landmarks, landmark_rest};
+use super::caesar_points::{given_landmarks, landmark_rest};
 use super::suspicious::{flag_suspicious, SuspiciousLandmark};
 use crate::landmarks::{definition_sharpness, LandmarkSet, CAESAR_LANDMARKS};
 use crate::mesh::similarity::similarity;

@@ -25,6 +25,8 @@
 //! * [`confidence`] — the typical error of each landmark (`typical_error`) and the fit's residual.
 //! * [`self_check`] — the estimate's verdict on itself (good, doubtful, failed) and why;
 //!   [`bilateral`] — limb segments compared between the body's sides.
+//! * [`caesar_points`] — the template's landmark vertices at rest and a given set's CAESAR
+//!   landmarks, as points in CAESAR order (for the estimate and the checks).
 //! * [`tick`] — progress and cancel through the caller's `AlignObserver`.
 //! * [`params`] — [`EstimateParams`] and the parameter structs it holds (every tuning number,
 //!   with its documented default); [`EstimateReport`] (`report.rs`), [`EstimateError`]
@@ -34,6 +36,7 @@ pub mod arm_swing;
 pub mod bent_arm;
 pub mod bilateral;
 pub mod buttocks;
+pub mod caesar_points;
 pub mod candidates;
 pub mod check;
 pub mod confidence;
@@ -54,6 +57,7 @@ pub mod tick;
 pub mod typical_error;
 pub mod up;
 
+pub use caesar_points::{given_landmarks, landmark_rest};
 pub use check::{check_given, GivenCheck};
 pub use error::EstimateError;
 pub use frame::FrameReport;
@@ -61,7 +65,5 @@ pub use orientation::{Axis, Orientation};
 pub use params::EstimateParams;
 pub use report::EstimateReport;
 pub use self_check::{SelfCheck, Verdict};
-pub use steps::{
-    estimate_landmarks, flag_given, given_landmarks, landmark_rest, EstimateInput, LandmarkEstimate,
-};
+pub use steps::{estimate_landmarks, flag_given, EstimateInput, LandmarkEstimate};
 pub use suspicious::{flag_suspicious, SuspicionKind, SuspiciousLandmark};

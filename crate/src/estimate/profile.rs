@@ -343,6 +343,19 @@ mod tests {
         out
     }
 
+    /// The line of the limbs `limb` makes: from the root at z = 1 to the end at the origin.
+    fn axis() -> LimbLine {
+        LimbLine {
+            root: Point3::new(0.0, 0.0, 1.0),
+            end: Point3::origin(),
+        }
+    }
+
+    /// The width profile of `points` about `limbs[0]` (within 14 cm, default parameters).
+    fn widths(points: &[Point3<f64>], limbs: &[LimbLine]) -> Vec<Option<f64>> {
+        profile(points, limbs, 0, 0.14, &ProfileParams::default())
+    }
+
     /// A leg: wide thigh narrowing to the knee at `k`, a calf bulge below it.
     fn leg(k: f64, girth: f64) -> impl Fn(f64) -> f64 {
         move |u: f64| {
@@ -358,25 +371,10 @@ mod tests {
 
     #[test]
     fn the_knee_is_found_where_the_profile_puts_it() {
-        let line = [LimbLine {
-            root: Point3::new(0.0, 0.0, 1.0),
-            end: Point3::origin(),
-        }];
-        let template = profile(
-            &limb(leg(0.5, 1.0)),
-            &line,
-            0,
-            0.14,
-            &ProfileParams::default(),
-        );
+        let line = [axis()];
+        let template = widths(&limb(leg(0.5, 1.0)), &line);
         // The scan's knee sits lower (0.55) and its leg is thicker; the fit put it at 0.5.
-        let scan = profile(
-            &limb(leg(0.55, 1.2)),
-            &line,
-            0,
-            0.14,
-            &ProfileParams::default(),
-        );
+        let scan = widths(&limb(leg(0.55, 1.2)), &line);
         let f = register(&template, &scan, 0.5, 0.5, &ProfileParams::default()).unwrap();
         assert!((f - 0.55).abs() < 0.01, "{f}");
         // Points nearer another limb's line are not this limb's.
@@ -384,13 +382,7 @@ mod tests {
             root: Point3::new(0.02, 0.0, 1.0),
             end: Point3::new(0.02, 0.0, 0.0),
         };
-        let half = profile(
-            &limb(leg(0.5, 1.0)),
-            &[line[0], other],
-            0,
-            0.14,
-            &ProfileParams::default(),
-        );
+        let half = widths(&limb(leg(0.5, 1.0)), &[line[0], other]);
         assert!(half.iter().flatten().count() > 0);
         assert_ne!(half, template);
     }
@@ -414,25 +406,10 @@ mod tests {
 
     #[test]
     fn the_wrist_is_found_by_the_forearm_and_the_hand_around_it() {
-        let line = [LimbLine {
-            root: Point3::new(0.0, 0.0, 1.0),
-            end: Point3::origin(),
-        }];
-        let template = profile(
-            &limb(forearm(0.6, 1.0)),
-            &line,
-            0,
-            0.14,
-            &ProfileParams::default(),
-        );
+        let line = [axis()];
+        let template = widths(&limb(forearm(0.6, 1.0)), &line);
         for (w, girth) in [(0.68, 1.1), (0.6, 0.9), (0.55, 1.0)] {
-            let scan = profile(
-                &limb(forearm(w, girth)),
-                &line,
-                0,
-                0.14,
-                &ProfileParams::default(),
-            );
+            let scan = widths(&limb(forearm(w, girth)), &line);
             let shift = register_shift(
                 &template,
                 &scan,
@@ -480,10 +457,7 @@ mod tests {
             }
             out
         };
-        let line = [LimbLine {
-            root: Point3::new(0.0, 0.0, 1.0),
-            end: Point3::origin(),
-        }];
+        let line = [axis()];
         let ahead = -Vector3::x();
         let template = reach(
             &rings(0.45),

@@ -361,7 +361,7 @@ fn place_joints(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::template::parts::base_parts;
+    use crate::template::fixture::base_body;
 
     const RANGE: (f64, f64) = (0.75, 1.33);
 
@@ -410,7 +410,7 @@ mod tests {
 
     #[test]
     fn a_limb_folded_back_is_straightened_and_a_bent_one_kept() {
-        let (_, parts) = base_parts();
+        let parts = base_body().parts;
         let identity = PartPose::identity();
         let (k, lower) = parts
             .iter()

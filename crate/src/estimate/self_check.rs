@@ -191,22 +191,30 @@ mod tests {
     #[test]
     fn each_sign_of_trouble_is_said_in_words() {
         let p = SelfCheckParams::default();
-        let far = Evidence {
-            fit_moved_mm: 40.0,
-            ..good()
-        };
-        let c = self_check(&far, &p);
-        assert_eq!(c.verdict, Verdict::Failed);
-        assert!(c.reasons[0].contains("40 mm"), "{:?}", c.reasons);
-        assert_eq!(c.reasons.len(), 1, "{:?}", c.reasons);
-        let small = Evidence {
-            stature_m: 0.45,
-            ..good()
-        };
-        let c = self_check(&small, &p);
-        assert_eq!(c.verdict, Verdict::Failed);
-        assert!(c.reasons[0].contains("0.45 m tall"), "{:?}", c.reasons);
-        assert_eq!(c.confidence_factor, p.failed_factor);
+        // Bent too far, and too small: each fails with its one reason.
+        let failing = [
+            (
+                Evidence {
+                    fit_moved_mm: 40.0,
+                    ..good()
+                },
+                "40 mm",
+            ),
+            (
+                Evidence {
+                    stature_m: 0.45,
+                    ..good()
+                },
+                "0.45 m tall",
+            ),
+        ];
+        for (e, reason) in &failing {
+            let c = self_check(e, &p);
+            assert_eq!(c.verdict, Verdict::Failed);
+            assert_eq!(c.reasons.len(), 1, "{:?}", c.reasons);
+            assert!(c.reasons[0].contains(reason), "{:?}", c.reasons);
+            assert_eq!(c.confidence_factor, p.failed_factor);
+        }
         let nan = Evidence {
             fit_moved_mm: f64::NAN,
             ..good()

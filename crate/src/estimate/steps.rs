@@ -22,6 +22,7 @@ use std::borrow::Cow;
 use nalgebra::{Point3, Vector3};
 
 use super::bilateral::{asymmetries, uneven_fits};
+use super::caesar_points::{given_landmarks, landmark_rest};
 use super::candidates::{even_sample, fit_similarity, prefer_torso, FittedCandidate};
 use super::check::{judge_given, CheckParams, NEARLY_FULL};
 use super::confidence::{confidence, neighbourhoods, residual};
@@ -525,30 +526,4 @@ pub fn flag_given(
         .copied()
         .collect();
     flag(&trusted)
-}
-
-/// The template's landmark vertices at rest, CAESAR order: what [`flag_given`] predicts the
-/// given landmarks from (`template` at base resolution, as the estimate fits it).
-pub fn landmark_rest(template: &Template) -> Vec<Point3<f64>> {
-    let rest = &template.mesh().positions;
-    template
-        .landmark_vertices()
-        .iter()
-        .map(|(_, v)| rest[*v as usize])
-        .collect()
-}
-
-/// The given landmarks that are CAESAR landmarks, as (CAESAR index, position), first of each
-/// name; positions that are not finite are left out.
-pub fn given_landmarks(set: &LandmarkSet) -> Vec<(usize, Point3<f64>)> {
-    let mut out: Vec<(usize, Point3<f64>)> = Vec::new();
-    for l in &set.landmarks {
-        let Some(i) = CAESAR_LANDMARKS.iter().position(|c| c.name == l.name) else {
-            continue;
-        };
-        if l.position.coords.iter().all(|c| c.is_finite()) && !out.iter().any(|(j, _)| *j == i) {
-            out.push((i, l.position));
-        }
-    }
-    out
 }

@@ -30,5 +30,5 @@ pub use fit::{fit_subject, fit_subject_files, SubjectFit};
 pub use frame::ToTemplate;
 pub use input::{read_subject, GivenLandmarks, SubjectInput};
 pub use options::SubjectOptions;
-pub use policy::{subject_landmarks, LandmarkSource, PriorEstimate, SubjectLandmarks};
-pub use report::{LandmarkPolicyReport, SubjectReport};
+pub use policy::{subject_landmarks, PriorEstimate, SubjectLandmarks};
+pub use report::{LandmarkPolicyReport, LandmarkSource, SubjectReport};

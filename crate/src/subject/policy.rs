@@ -10,30 +10,14 @@
 //!    exactly as given. A caller that already ran that estimate on this scan with these landmarks
 //!    (the app's landmark editor) hands its result in as a [`PriorEstimate`] instead.
 
-use serde::Serialize;
-
 use super::error::SubjectError;
 use super::input::SubjectInput;
 use super::options::SubjectOptions;
-use super::report::LandmarkPolicyReport;
+use super::report::{LandmarkPolicyReport, LandmarkSource};
 use crate::align::AlignObserver;
 use crate::estimate::{check_given, given_landmarks, GivenCheck, SelfCheck};
 use crate::landmarks::LandmarkSet;
 use crate::template::Template;
-
-/// Where a subject's landmarks came from.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
-#[serde(rename_all = "snake_case")]
-pub enum LandmarkSource {
-    /// No landmarks were given: all come from the estimate.
-    Estimated,
-    /// A partial set was given and the estimate filled in the rest.
-    FilledIn,
-    /// A nearly full set was given and checked; suspicious ones were left out.
-    Checked,
-    /// Given landmarks used as they are, unchecked (the options said so).
-    AsGiven,
-}
 
 /// The landmark estimate a caller already ran on this scan with the trusted given landmarks.
 #[derive(Debug, Clone)]

@@ -6,9 +6,22 @@
 use serde::Serialize;
 
 use super::frame::ToTemplate;
-use super::policy::LandmarkSource;
 use crate::align::{AlignmentReport, QualityReport};
 use crate::estimate::{SelfCheck, SuspiciousLandmark};
+
+/// Where a subject's landmarks came from.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum LandmarkSource {
+    /// No landmarks were given: all come from the estimate.
+    Estimated,
+    /// A partial set was given and the estimate filled in the rest.
+    FilledIn,
+    /// A nearly full set was given and checked; suspicious ones were left out.
+    Checked,
+    /// Given landmarks used as they are, unchecked (the options said so).
+    AsGiven,
+}
 
 /// How the warp's landmarks were chosen ([`super::policy::subject_landmarks`]).
 #[derive(Debug, Clone, PartialEq, Serialize)]

@@ -1,7 +1,6 @@
-//! Making a numbered population: per-subject seeded random streams, so subject `i` of seed `S`
-//! is the same whatever the number of subjects or threads.
+//! Making a numbered population: subject `i` of seed `S` from its own random stream
+//! ([`super::random_stream`]), the same whatever the number of subjects or threads.
 
-use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
 
 use crate::landmarks::LandmarkSet;
@@ -12,16 +11,10 @@ use super::data::MakeHumanData;
 use super::error::SynthError;
 use super::output::{subject_landmarks, LandmarkParams, Units};
 use super::population::PopulationProfile;
+use super::random_stream::subject_rng;
 use super::scanner::ScannerParams;
 use super::subject::{make_covered_subject, make_subject, Subject};
 use super::zoo::{zoo_rng, ScannerClass, ZooParams};
-
-/// The random stream of subject `index` under `seed` (ChaCha8, stream = index).
-pub fn subject_rng(seed: u64, index: u64) -> ChaCha8Rng {
-    let mut rng = ChaCha8Rng::seed_from_u64(seed);
-    rng.set_stream(index);
-    rng
-}
 
 /// Which subject: number `index` of the population `seed` drawn from `profile`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

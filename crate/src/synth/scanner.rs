@@ -75,6 +75,19 @@ pub struct Scan {
     pub head: Vec<u8>,
 }
 
+#[cfg(test)]
+impl Scan {
+    /// A scan of `positions` (`#V`) over `triangles` without noise, every vertex measured by
+    /// head 0: a made-up surface for the zoo's tests.
+    pub(crate) fn exact(positions: Vec<Point3<f64>>, triangles: Vec<[u32; 3]>) -> Self {
+        Self {
+            head: vec![0; positions.len()],
+            clean: positions.clone(),
+            mesh: Mesh::new(positions, triangles),
+        }
+    }
+}
+
 #[derive(Clone, Copy)]
 struct Sample {
     point: Point3<f64>,

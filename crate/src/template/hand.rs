@@ -198,21 +198,16 @@ pub fn turn_hand_onto(
     true
 }
 
-/// The base template and its two hands, for tests.
-#[cfg(test)]
-pub(crate) fn base_hands() -> (Template, Vec<Hand>) {
-    let (template, _) = crate::template::parts::base_parts();
-    let hands = hands(&template);
-    (template, hands)
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
 
     #[test]
     fn a_hand_is_turned_at_the_wrist_onto_its_landmarks() {
-        let (template, hands) = base_hands();
+        let template = Template::embedded()
+            .unwrap()
+            .at_resolution(crate::template::Resolution::Base);
+        let hands = hands(&template);
         let rest = &template.mesh().positions;
         for hand in &hands {
             // The "scan": the template with this hand bent back 40° at the wrist and turned 20°

@@ -53,16 +53,6 @@ impl PartPose {
     }
 }
 
-/// The base template and its parts, for tests.
-#[cfg(test)]
-pub(crate) fn base_parts() -> (Template, Vec<Part>) {
-    let template = Template::embedded()
-        .unwrap()
-        .at_resolution(crate::template::Resolution::Base);
-    let parts = parts(&template);
-    (template, parts)
-}
-
 impl Part {
     /// `p` (template frame) stretched along the part's axis about its joint.
     pub(crate) fn stretched(&self, p: &Point3<f64>, stretch: f64) -> Point3<f64> {

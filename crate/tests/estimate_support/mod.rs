@@ -5,6 +5,7 @@
 //! node_modules.
 #![allow(dead_code)]
 
+use bodyspace::estimate::{estimate_landmarks, EstimateInput, EstimateParams, LandmarkEstimate};
 use bodyspace::landmarks::{Landmark, LandmarkSet};
 use bodyspace::mesh::Mesh;
 use bodyspace::synth::output::to_output_frame;
@@ -210,29 +211,52 @@ pub fn zoo_frames() -> Vec<Frame> {
     ]
 }
 
-/// Subject `id` of its profile in its own pose, as scanner class `class` delivers it (`scanner`
-/// changed by the class, `zoo` its settings); place it in a frame with [`placed`].
-pub fn zoo_scanned(
-    data: &MakeHumanData,
+/// The scanner zoo as the tests and the benchmark take it: one scanner and the classes'
+/// settings, over the MakeHuman data and the template.
+pub struct Zoo<'a> {
+    pub data: &'a MakeHumanData,
+    pub template: &'a Template,
+    /// The scanner before a class changes it.
+    pub scanner: ScannerParams,
+    /// The classes' settings.
+    pub params: ZooParams,
+}
+
+impl Zoo<'_> {
+    /// Subject `id` of its profile in its own pose, as scanner class `class` delivers it, in
+    /// metres and the template frame; place it in a frame with [`placed`].
+    pub fn scanned(&self, id: SubjectId, class: ScannerClass) -> Subject {
+        let landmarks = LandmarkParams::default();
+        let (subject, _) = zoo_subject(
+            self.data,
+            self.template,
+            id,
+            class,
+            &self.scanner,
+            &self.params,
+            &landmarks,
+            Units::Metres,
+        )
+        .unwrap();
+        subject
+    }
+}
+
+/// The landmark estimate of `case`'s bare scan: no landmark given, the units and the frame
+/// found by the estimate.
+pub fn estimate_bare(
     template: &Template,
-    id: SubjectId,
-    class: ScannerClass,
-    scanner: &ScannerParams,
-    zoo: &ZooParams,
-) -> Subject {
-    let landmarks = LandmarkParams::default();
-    zoo_subject(
-        data,
+    case: &Case,
+    params: &EstimateParams,
+) -> LandmarkEstimate {
+    let input = EstimateInput {
         template,
-        id,
-        class,
-        scanner,
-        zoo,
-        &landmarks,
-        Units::Metres,
-    )
-    .unwrap()
-    .0
+        scan: &case.scan,
+        given: &LandmarkSet::default(),
+        units: None,
+        orientation: None,
+    };
+    estimate_landmarks(&input, params, &mut ()).unwrap()
 }
 
 /// `subject` (template frame) in `frame`: its scan, true landmarks and truth.

@@ -159,12 +159,11 @@ mod tests {
     use super::*;
     use crate::estimate::hand::laid_wrist::laid_wrist;
     use crate::estimate::hand::P;
-    use crate::template::hand::base_hands;
+    use crate::template::fixture::{base_body, BaseBody};
 
     #[test]
     fn a_hand_on_a_surface_is_laid_along_it() {
-        let (template, hands) = base_hands();
-        let rest = &template.mesh().positions;
+        let BaseBody { rest, hands, .. } = base_body();
         // The scan's wrist as far along the forearm as the template's, and 3 cm farther.
         for (hand, longer) in hands.iter().flat_map(|h| [(h, 0.0), (h, 0.03)]) {
             // The "scan": the template with this hand bent back 45° at the wrist and turned 30°
@@ -244,7 +243,7 @@ mod tests {
             // the styloids, in the code and in this scene, 5.8–16.5° and 17–50 mm).
             let off = pointing(&positions).angle(&direction).to_degrees();
             assert!(off < 20.0, "{}: pointing {off:.1}° off", hand.side);
-            let (before, after) = (farthest(rest), farthest(&positions));
+            let (before, after) = (farthest(&rest), farthest(&positions));
             assert!(
                 after < 0.06 && after < before / 2.0,
                 "{}: {before} → {after} m",
@@ -253,7 +252,7 @@ mod tests {
             // With nothing around the wrist, nothing is done.
             let mut positions = rest.to_vec();
             assert!(laid_hand(hand, &mut positions, None, &[], &P.laid).is_none());
-            assert_eq!(&positions, rest);
+            assert_eq!(positions, rest);
         }
     }
 }

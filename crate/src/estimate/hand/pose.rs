@@ -170,7 +170,7 @@ mod tests {
     use super::*;
     use crate::estimate::hand::P;
     use crate::estimate::params::ProfileParams;
-    use crate::template::hand::base_hands;
+    use crate::template::fixture::{base_body, BaseBody};
     use crate::template::Template;
     use nalgebra::Matrix3;
 
@@ -215,8 +215,12 @@ mod tests {
 
     #[test]
     fn a_turn_that_matches_the_hand_worse_is_not_kept() {
-        let (template, hands) = base_hands();
-        let rest = &template.mesh().positions;
+        let BaseBody {
+            template,
+            rest,
+            hands,
+            ..
+        } = base_body();
         let hand = &hands[0];
         // The scan is the template, its surface beside a strip a third of the hand's area a
         // palm's breadth off the hand's flat side (a thigh's edge, a fold of clothing): the
@@ -234,11 +238,11 @@ mod tests {
             .eigenvectors
             .column(flat_side.eigenvalues.imin())
             .into_owned();
-        let (wrist, axis) = wrist_and_axis(rest, hand.styloids, hand.epicondyles);
+        let (wrist, axis) = wrist_and_axis(&rest, hand.styloids, hand.epicondyles);
         let across = axis.cross(&normal).normalize();
-        let area: f64 = surface(rest, &hand.triangles).iter().map(|(_, a)| a).sum();
+        let area: f64 = surface(&rest, &hand.triangles).iter().map(|(_, a)| a).sum();
         let step = 0.002;
-        let mut scan_surface = surface(rest, &mesh.triangles);
+        let mut scan_surface = surface(&rest, &mesh.triangles);
         let (long, wide) = (0.08, area / 3.0 / 0.08);
         for i in 0..(long / step) as usize {
             for j in 0..(wide / step) as usize {
@@ -250,7 +254,7 @@ mod tests {
             }
         }
         let r = P.reach * own.iter().map(|p| (p - wrist).norm()).fold(0.0, f64::max);
-        let template_hand = surface(rest, &hand.triangles);
+        let template_hand = surface(&rest, &hand.triangles);
         let region = BeyondWrist {
             wrist,
             axis,
@@ -269,9 +273,13 @@ mod tests {
 
     #[test]
     fn a_hand_against_the_thigh_is_slid_along_the_forearm_but_not_turned() {
-        let (template, hands) = base_hands();
-        let rest = &template.mesh().positions;
-        let triangles = &template.mesh().triangles;
+        let BaseBody {
+            template,
+            rest,
+            triangles,
+            hands,
+            ..
+        } = base_body();
         let hand = &hands[0];
         // The "scan": the template with the forearm 3 cm longer, and beside the hand a strip of
         // twice the hand's area (the thigh it hangs against): not hand-like, so not turned, but
@@ -282,7 +290,7 @@ mod tests {
         let (wrist, axis) = wrist_and_axis(&scan, hand.styloids, hand.epicondyles);
         let across = axis.cross(&Vector3::z()).normalize();
         let area: f64 = surface(&scan, &hand.triangles).iter().map(|(_, a)| a).sum();
-        let mut scan_surface = surface(&scan, triangles);
+        let mut scan_surface = surface(&scan, &triangles);
         let (step, long) = (0.002, 0.16);
         let wide = 2.0 * area / long;
         for i in 0..(long / step) as usize {
@@ -294,14 +302,14 @@ mod tests {
                 scan_surface.push((p, step * step));
             }
         }
-        let (at, along) = wrist_and_axis(rest, hand.styloids, hand.epicondyles);
+        let (at, along) = wrist_and_axis(&rest, hand.styloids, hand.epicondyles);
         let r = P.reach
             * hand
                 .share
                 .iter()
                 .map(|(v, _)| (rest[*v as usize] - at).norm())
                 .fold(0.0, f64::max);
-        let template_hand = surface(rest, &hand.triangles);
+        let template_hand = surface(&rest, &hand.triangles);
         let region = BeyondWrist {
             wrist: at,
             axis: along,

@@ -72,13 +72,16 @@ pub(super) fn wrist_from_profile(
 mod tests {
     use super::*;
     use crate::estimate::hand::slide_wrist;
-    use crate::template::hand::base_hands;
+    use crate::template::fixture::{base_body, BaseBody};
 
     #[test]
     fn a_longer_forearm_is_found_from_where_it_widens_into_the_hand() {
-        let (template, hands) = base_hands();
-        let rest = &template.mesh().positions;
-        let triangles = &template.mesh().triangles;
+        let BaseBody {
+            rest,
+            triangles,
+            hands,
+            ..
+        } = base_body();
         for hand in &hands {
             for longer in [0.0, 0.03, -0.02] {
                 // The "scan": the template with the forearm 3 cm longer (2 cm shorter), the
@@ -88,12 +91,12 @@ mod tests {
                 slide_wrist(hand, &mut scan, axis, longer);
                 let mesh = Mesh::new(scan, triangles.clone());
                 let profiles = Profiles {
-                    triangles,
+                    triangles: &triangles,
                     scan: &mesh,
                     params: &ProfileParams::default(),
                 };
                 let found =
-                    wrist_from_profile(hand, rest, &profiles, &HandParams::default()).unwrap();
+                    wrist_from_profile(hand, &rest, &profiles, &HandParams::default()).unwrap();
                 assert!(
                     (found - longer).abs() < 0.006,
                     "{} {longer}: {found}",

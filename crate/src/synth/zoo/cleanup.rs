@@ -145,7 +145,6 @@ pub fn add_strays<R: Rng>(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::mesh::Mesh;
     use rand::SeedableRng;
     use rand_chacha::ChaCha8Rng;
 
@@ -160,11 +159,7 @@ mod tests {
         }
         let at: Vec<Option<u32>> = (0..rows * cols).map(|v| Some(v as u32)).collect();
         let triangles = super::super::edit::grid_triangles(rows, cols, &at);
-        Scan {
-            mesh: Mesh::new(positions.clone(), triangles),
-            clean: positions.clone(),
-            head: vec![0; positions.len()],
-        }
+        Scan::exact(positions, triangles)
     }
 
     #[test]

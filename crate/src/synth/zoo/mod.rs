@@ -41,7 +41,7 @@ use self::hair::{add_hair, Hair, HeadFrame};
 use super::data::MakeHumanData;
 use super::error::SynthError;
 use super::population::SubjectParams;
-use super::population_run::subject_rng;
+use super::random_stream::subject_rng;
 use super::scanner::{Scan, ScannerParams};
 use super::subject::Subject;
 use crate::mesh::Mesh;

@@ -67,7 +67,6 @@ pub fn split_parts(scan: &Scan, part: &[u8], gap: f64) -> Scan {
 mod tests {
     use super::*;
     use crate::mesh::topology::components;
-    use crate::mesh::Mesh;
 
     /// A strip of `n` × 2 vertices along x, 1 cm apart, triangulated.
     fn strip(n: usize) -> Scan {
@@ -82,11 +81,7 @@ mod tests {
             triangles.push([2 * i, 2 * i + 2, 2 * i + 3]);
             triangles.push([2 * i, 2 * i + 3, 2 * i + 1]);
         }
-        Scan {
-            mesh: Mesh::new(positions.clone(), triangles),
-            clean: positions.clone(),
-            head: vec![0; positions.len()],
-        }
+        Scan::exact(positions, triangles)
     }
 
     #[test]
