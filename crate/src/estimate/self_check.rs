@@ -44,6 +44,23 @@ pub struct SelfCheck {
     pub evidence: Evidence,
 }
 
+impl SelfCheck {
+    /// What the confidence of landmark `name` is multiplied by: the lopsided factor for an end of
+    /// an asymmetric segment, the verdict's factor for the others.
+    pub fn factor_for(&self, name: &str) -> f64 {
+        let lopsided = self
+            .evidence
+            .asymmetric
+            .iter()
+            .any(|a| a.landmarks.iter().any(|l| l == name));
+        if lopsided {
+            self.lopsided_factor.min(self.confidence_factor)
+        } else {
+            self.confidence_factor
+        }
+    }
+}
+
 /// What the check looks at, from the estimate's steps.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct Evidence {
@@ -67,23 +84,6 @@ pub struct Evidence {
     /// Limb parts whose fit lies much farther from the scan on one side than on the other.
     #[serde(default)]
     pub uneven: Vec<UnevenFit>,
-}
-
-impl SelfCheck {
-    /// What the confidence of landmark `name` is multiplied by: the lopsided factor for an end of
-    /// an asymmetric segment, the verdict's factor for the others.
-    pub fn factor_for(&self, name: &str) -> f64 {
-        let lopsided = self
-            .evidence
-            .asymmetric
-            .iter()
-            .any(|a| a.landmarks.iter().any(|l| l == name));
-        if lopsided {
-            self.lopsided_factor.min(self.confidence_factor)
-        } else {
-            self.confidence_factor
-        }
-    }
 }
 
 /// The estimate's verdict on `evidence` (see the module documentation and [`SelfCheckParams`]).
