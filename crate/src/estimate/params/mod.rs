@@ -1,13 +1,16 @@
 //! Parameters of the landmark estimate, each with its documented default (the one place they
 //! live): [`EstimateParams`] and the parameter structs it holds for the segment-wise fit
 //! ([`SegmentParams`], `segments.rs`), the limbs' profiles ([`ProfileParams`]) and the hands
-//! ([`HandParams`]) and the estimate's check of itself ([`SelfCheckParams`]). Lengths are metres, angles degrees.
+//! ([`HandParams`]), the estimate's check of itself ([`SelfCheckParams`]) and the check of a given
+//! file ([`CheckParams`]). Lengths are metres, angles degrees.
 
+pub mod check;
 pub mod hand;
 pub mod profile;
 pub mod segments;
 pub mod self_check;
 
+pub use check::CheckParams;
 pub use hand::{HandParams, LaidHandParams, WristProfileParams};
 pub use profile::ProfileParams;
 pub use segments::{ArmSwingParams, BentArmParams, ButtocksParams, SegmentParams};
