@@ -46,6 +46,12 @@ pub struct EstimateParams {
     /// With given landmarks, the segment-wise fit runs from this many of the best candidates and
     /// the one whose landmarks lie nearer the given ones is kept. Default 2.
     pub segment_starts: usize,
+    /// A later start of the segment-wise fit is kept only when its landmarks lie nearer the
+    /// given ones than the best candidate's by more than this (m, the mean over the given
+    /// landmarks): a folded limb puts one landmark decimetres off, while a few millimetres
+    /// nearer was a worse fit of the rest (a partial file of correct landmarks then made the fit
+    /// worse than none). Default 10 mm.
+    pub segment_start_margin: f64,
     /// Iterations of the segment-wise (articulated) fit after the best candidate. Default 20.
     pub segment_iterations: usize,
     /// The segment-wise fit's own parameters (stretch, bends, the arms' swing, the bent elbow,
@@ -95,6 +101,7 @@ impl Default for EstimateParams {
             torso_close: 0.1,
             head_end_decisive: 0.75,
             segment_starts: 2,
+            segment_start_margin: 0.01,
             segment_iterations: 20,
             segments: SegmentParams::default(),
             profile: ProfileParams::default(),
