@@ -5,8 +5,10 @@
 //! the truth.
 //!
 //! `cargo run --release --example partial_files -- [--seed S] [--indices 0,1,2] [--step MM]
-//!  [--split] [--params JSON]`
+//!  [--split] [--params JSON] [--first-only]`
 //!
+//! The partial files: the estimate test's ten (`PARTIAL`) and those of
+//! `tests/synth_support/partial.rs` (`PARTIAL_FILES`); `--first-only` tries the first alone.
 //! `--params JSON` also fits with the estimate run with those `EstimateParams` (the rest
 //! default).
 //!
@@ -20,110 +22,15 @@ mod synth_support;
 
 #[cfg(not(target_arch = "wasm32"))]
 mod native {
+    use super::synth_support::partial::{correspondence_mm, only, PARTIAL, PARTIAL_FILES};
     use super::synth_support::{base_template_and_data, subject_in_metres};
     use bodyspace::estimate::{estimate_landmarks, EstimateInput, EstimateParams};
     use bodyspace::landmarks::{Landmark, LandmarkSet};
     use bodyspace::mesh::Mesh;
-    use bodyspace::subject::{
-        fit_subject, GivenLandmarks, PriorEstimate, SubjectInput, SubjectOptions,
-    };
+    use bodyspace::subject::{PriorEstimate, SubjectInput, SubjectOptions};
     use bodyspace::synth::{PopulationProfile, ScannerParams, SubjectId};
     use bodyspace::template::{Resolution, Template};
     use nalgebra::Point3;
-
-    /// The partial files tried: (name, landmarks).
-    pub const PARTIALS: [(&str, &[&str]); 7] = [
-        (
-            "estimate-test-10",
-            &[
-                "Sellion",
-                "Cervicale",
-                "Rt. Acromion",
-                "Lt. Acromion",
-                "Rt. Radial Styloid",
-                "Lt. Radial Styloid",
-                "Rt. Femoral Lateral Epicn",
-                "Lt. Femoral Lateral Epicn",
-                "Rt. Lateral Malleolus",
-                "Lt. Lateral Malleolus",
-            ],
-        ),
-        (
-            "head-shoulders-crotch",
-            &["Sellion", "Rt. Acromion", "Lt. Acromion", "Crotch"],
-        ),
-        (
-            "issue-10",
-            &[
-                "Sellion",
-                "Suprasternale",
-                "Rt. Acromion",
-                "Lt. Acromion",
-                "Rt. Dactylion",
-                "Lt. Dactylion",
-                "Rt. ASIS",
-                "Lt. ASIS",
-                "Rt. Lateral Malleolus",
-                "Lt. Lateral Malleolus",
-            ],
-        ),
-        (
-            "midline-pelvis-ankles",
-            &[
-                "Sellion",
-                "Suprasternale",
-                "Rt. ASIS",
-                "Lt. ASIS",
-                "Rt. Lateral Malleolus",
-                "Lt. Lateral Malleolus",
-            ],
-        ),
-        (
-            "limbs",
-            &[
-                "Rt. Radial Styloid",
-                "Lt. Radial Styloid",
-                "Rt. Femoral Lateral Epicn",
-                "Lt. Femoral Lateral Epicn",
-                "Rt. Lateral Malleolus",
-                "Lt. Lateral Malleolus",
-                "Rt. Acromion",
-                "Lt. Acromion",
-            ],
-        ),
-        (
-            "back-hips",
-            &[
-                "Sellion",
-                "Cervicale",
-                "Crotch",
-                "Rt. Trochanterion",
-                "Lt. Trochanterion",
-            ],
-        ),
-        (
-            "clicked-5",
-            &[
-                "Sellion",
-                "Rt. Acromion",
-                "Lt. Acromion",
-                "Rt. Lateral Malleolus",
-                "Lt. Lateral Malleolus",
-            ],
-        ),
-    ];
-
-    fn only(set: &LandmarkSet, names: &[&str]) -> LandmarkSet {
-        LandmarkSet {
-            landmarks: set
-                .landmarks
-                .iter()
-                .filter(|l| names.contains(&l.name.as_str()))
-                .cloned()
-                .collect(),
-            ..LandmarkSet::default()
-        }
-    }
 
     fn fit(
         template: &Template,
@@ -134,25 +41,7 @@ mod native {
     ) -> f64 {
         let mut options = SubjectOptions::default();
         options.params.fine.max_iterations = 40;
-        let input = SubjectInput {
-            name: "partial".into(),
-            scan: scan.clone(),
-            units: None,
-            given: given.map(|set| GivenLandmarks {
-                set,
-                units: None,
-                file: "partial.csv".into(),
-            }),
-        };
-        let mut fit = fit_subject(template, None, &input, prior, &options, &mut ()).unwrap();
-        fit.compare_with_truth(template, truth);
-        fit.report
-            .alignment
-            .correspondence
-            .as_ref()
-            .unwrap()
-            .fitted
-            .mean_mm
+        correspondence_mm(template, scan, truth, given, prior, &options).0
     }
 
     pub fn main() {
@@ -190,7 +79,10 @@ mod native {
             let (scan, landmarks, truth) = subject_in_metres(&data, &template, id, &scanner);
             let none = fit(&template, &scan, &truth, None, None);
             println!("seed {seed} subject {index}: no file {none:.2} mm");
-            for (name, names) in PARTIALS.iter().take(if first { 1 } else { PARTIALS.len() }) {
+            let partials = [("estimate-test-10", &PARTIAL[..])]
+                .into_iter()
+                .chain(PARTIAL_FILES);
+            for (name, names) in partials.take(if first { 1 } else { PARTIAL_FILES.len() + 1 }) {
                 let given = only(&landmarks, names);
                 let with = fit(&template, &scan, &truth, Some(given.clone()), None);
                 let mut line = format!(

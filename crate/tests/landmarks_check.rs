@@ -10,7 +10,8 @@
 #[path = "synth_support/mod.rs"]
 mod synth_support;
 
-use bodyspace::estimate::{check_given, SuspicionKind};
+use bodyspace::estimate::check::{judge_given, CheckParams};
+use bodyspace::estimate::{check_given, given_landmarks, landmark_rest, SuspicionKind};
 use bodyspace::landmarks::LandmarkSet;
 use bodyspace::synth::{
     population_subject, LandmarkParams, PopulationProfile, ScannerParams, SubjectId, Units,
@@ -118,11 +119,18 @@ fn correct_files_raise_few_flags_and_a_swap_and_a_typo_are_found() {
 
 /// Issue 31: a hand laid on the hip turns the wrist about the forearm, and the rigid forearm's
 /// prediction put the ulnar styloids of such files 28–46 mm off (23 of 30 false alarms on hands
-/// on hips). With the forearm's twist (`estimate/forearm_twist.rs`) they raise no flag, and the
+/// on hips). With the forearm's twist (`estimate/forearm_twist.rs`, turned on here) they raise no flag, and the
 /// styloids swapped between the sides are still found (both flagged).
 #[test]
 fn a_laid_hand_raises_no_flag_on_its_styloids_and_a_swap_there_is_found() {
     let (template, data) = base_template_and_data();
+    let rest = landmark_rest(&template);
+    // The forearm's twist on, as measured (off by default: `CheckParams`).
+    let twist = CheckParams {
+        tolerance_mm: 21.0,
+        twist_min_bend_deg: 60.0,
+        ..CheckParams::default()
+    };
     let mut laid = 0;
     for index in 1..=N {
         let (on_hips, set, to_mm) = subject(&template, &data, index);
@@ -131,7 +139,7 @@ fn a_laid_hand_raises_no_flag_on_its_styloids_and_a_swap_there_is_found() {
         }
         laid += 1;
         let flagged = |set: &LandmarkSet| -> Vec<(String, SuspicionKind)> {
-            check_given(&template, set, to_mm)
+            judge_given(&rest, &given_landmarks(set), to_mm, &twist)
                 .flagged
                 .into_iter()
                 .map(|f| (f.name, f.kind))

@@ -20,6 +20,7 @@ use bodyspace::subject::{
 use bodyspace::synth::{PopulationProfile, ScannerParams, SubjectId};
 use bodyspace::template::Template;
 use nalgebra::{Point3, Rotation3, Vector3};
+use synth_support::partial::{correspondence_mm, only, PARTIAL_FILES};
 use synth_support::{base_template_and_data, subject_in_metres};
 
 /// Held-out subject 0 of a population nothing was tuned on, scanned coarsely (quick to fit), in
@@ -301,51 +302,11 @@ fn any_frame_and_units_give_the_same_fit_in_the_template_frame() {
 /// segment-wise fit where the one without them does, unless the given landmarks show that start
 /// clearly wrong (`EstimateParams::segment_start_margin`). Sellion, both Acromions and Crotch had
 /// given 13.83 mm against 13.04 mm with no file (subject 0), eight landmarks of the limbs 30.99
-/// mm (docs/subject.md, "Partial files"). Partial files of 4–10 correct landmarks, on two
-/// subjects: never worse than no file beyond 0.2 mm.
+/// mm (docs/subject.md, "Partial files"). The partial files of 4–10 correct landmarks of
+/// `PARTIAL_FILES`, on two subjects: never worse than no file beyond 0.2 mm.
 #[test]
 fn a_partial_file_of_correct_landmarks_is_never_worse_than_none() {
     let (template, data) = base_template_and_data();
-    let partials: [&[&str]; 5] = [
-        &["Sellion", "Rt. Acromion", "Lt. Acromion", "Crotch"],
-        &[
-            "Sellion",
-            "Cervicale",
-            "Crotch",
-            "Rt. Trochanterion",
-            "Lt. Trochanterion",
-        ],
-        &[
-            "Sellion",
-            "Suprasternale",
-            "Rt. ASIS",
-            "Lt. ASIS",
-            "Rt. Lateral Malleolus",
-            "Lt. Lateral Malleolus",
-        ],
-        &[
-            "Rt. Radial Styloid",
-            "Lt. Radial Styloid",
-            "Rt. Femoral Lateral Epicn",
-            "Lt. Femoral Lateral Epicn",
-            "Rt. Lateral Malleolus",
-            "Lt. Lateral Malleolus",
-            "Rt. Acromion",
-            "Lt. Acromion",
-        ],
-        &[
-            "Sellion",
-            "Suprasternale",
-            "Rt. Acromion",
-            "Lt. Acromion",
-            "Rt. Dactylion",
-            "Lt. Dactylion",
-            "Rt. ASIS",
-            "Lt. ASIS",
-            "Rt. Lateral Malleolus",
-            "Lt. Lateral Malleolus",
-        ],
-    ];
     for index in [0, 1] {
         let id = SubjectId {
             profile: PopulationProfile::HeldOut,
@@ -358,51 +319,19 @@ fn a_partial_file_of_correct_landmarks_is_never_worse_than_none() {
             ..id.profile.scanner()
         };
         let (scan, landmarks, truth) = subject_in_metres(&data, &template, id, &scanner);
-        let fit_with = |names: &[&str]| {
-            let given = (!names.is_empty()).then(|| GivenLandmarks {
-                set: LandmarkSet {
-                    landmarks: landmarks
-                        .landmarks
-                        .iter()
-                        .filter(|l| names.contains(&l.name.as_str()))
-                        .cloned()
-                        .collect(),
-                    ..LandmarkSet::default()
-                },
-                units: None,
-                file: "partial.csv".into(),
-            });
-            let input = SubjectInput {
-                name: "partial".into(),
-                scan: scan.clone(),
-                units: None,
-                given,
-            };
-            let mut fit = fit_subject(&template, None, &input, None, &options(), &mut ()).unwrap();
-            fit.compare_with_truth(&template, &truth);
-            let error = fit
-                .report
-                .alignment
-                .correspondence
-                .as_ref()
-                .unwrap()
-                .fitted
-                .mean_mm;
-            (error, fit.report)
+        let fit_with = |given: Option<LandmarkSet>| {
+            correspondence_mm(&template, &scan, &truth, given, None, &options())
         };
-        let (none, report) = fit_with(&[]);
+        let (none, report) = fit_with(None);
         assert_eq!(report.landmarks.estimated, 73);
-        for names in partials {
-            let (error, report) = fit_with(names);
-            eprintln!(
-                "subject {index}, {} given: {error:.2} mm, none: {none:.2} mm",
-                names.len()
-            );
+        for (name, names) in PARTIAL_FILES {
+            let (error, report) = fit_with(Some(only(&landmarks, names)));
+            eprintln!("subject {index}, {name}: {error:.2} mm, none: {none:.2} mm");
             assert_eq!(report.landmarks.given, names.len());
             assert_eq!(report.landmarks.used, 73, "{:?}", report.landmarks);
             assert!(
                 error <= none + 0.2,
-                "subject {index}, {names:?}: {error} mm, none {none} mm"
+                "subject {index}, {name}: {error} mm, none {none} mm"
             );
         }
     }

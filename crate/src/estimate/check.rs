@@ -255,14 +255,24 @@ pub fn predict_given(
     params: &CheckParams,
 ) -> Vec<Option<Prediction>> {
     let trusted_at = |j: usize| trusted.iter().find(|(k, _)| *k == j).map(|(_, p)| *p);
+    // A twisting forearm's styloids are not rigid with its other landmarks: they do not predict
+    // them (else a turned wrist spoils the elbow's prediction).
+    let twisting: Vec<Forearm> = Forearm::both()
+        .into_iter()
+        .filter(|f| f.bent(&trusted_at, params))
+        .collect();
     (0..landmark_rest.len())
         .map(|i| {
             let at = given.iter().find(|(j, _)| *j == i).map(|(_, p)| *p);
             let mut best: Option<(f64, Prediction)> = None;
             for (g, group) in groups.iter().enumerate().filter(|(_, g)| g.contains(&i)) {
+                let turned = twisting
+                    .iter()
+                    .find(|f| group.contains(&f.epicondyles[0]) && !f.styloids.contains(&i));
                 let others: Vec<&(usize, Point3<f64>)> = trusted
                     .iter()
                     .filter(|(j, _)| *j != i && group.contains(j))
+                    .filter(|(j, _)| turned.is_none_or(|f| !f.styloids.contains(j)))
                     .collect();
                 if others.len() < MIN_OTHERS {
                     continue;

@@ -10,7 +10,9 @@
 //! twist: a styloid's prediction is turned about that axis to the angle of the given position
 //! (the nearest point on the circle the prediction sweeps about the axis), so what is judged is
 //! its place along the forearm and its distance from the axis — both kept by any twist — and a
-//! swapped pair or a typo along the forearm is still found. A given styloid more than
+//! swapped pair or a typo along the forearm is still found. Nor do the styloids of such a bent
+//! arm ([`Forearm::bent`], by the given landmarks alone) predict the forearm's other landmarks:
+//! turned, they would spoil the elbow's prediction. A given styloid more than
 //! [`CheckParams::twist_max_off_axis`] times as far from the axis as its prediction is not
 //! turned to (a styloid of the other side, across the body, is no twist).
 
@@ -47,6 +49,20 @@ impl Forearm {
                 styloids: [i("Radial Styloid"), i("Ulnar Styloid")],
             }
         })
+    }
+
+    /// Whether the elbow bends more than [`CheckParams::twist_min_bend_deg`] by the trusted
+    /// given landmarks (`at`: a landmark's position, scan units): the acromion → the
+    /// epicondyles' midpoint against that → the styloids' midpoint. Then the styloids do not
+    /// predict the forearm's other landmarks (`check.rs`).
+    pub fn bent(&self, at: &dyn Fn(usize) -> Option<Point3<f64>>, params: &CheckParams) -> bool {
+        let mid = |[a, b]: [usize; 2]| Some(Point3::from((at(a)?.coords + at(b)?.coords) / 2.0));
+        let (Some(acromion), Some(elbow), Some(wrist)) =
+            (at(self.acromion), mid(self.epicondyles), mid(self.styloids))
+        else {
+            return false;
+        };
+        (elbow - acromion).angle(&(wrist - elbow)).to_degrees() > params.twist_min_bend_deg
     }
 
     /// The forearm whose styloid is `i`, if any.
@@ -114,7 +130,10 @@ mod tests {
         rest[forearm.styloids[0]] = Point3::new(0.025, -0.25, 0.0);
         rest[forearm.styloids[1]] = Point3::new(-0.025, -0.25, 0.0);
         let map = Similarity::identity();
-        let params = CheckParams::default();
+        let params = CheckParams {
+            twist_min_bend_deg: 60.0,
+            ..CheckParams::default()
+        };
         let predicted = rest[forearm.styloids[0]];
         let turn = Rotation3::from_axis_angle(&Vector3::y_axis(), 1.2);
         let given = Point3::from(turn * predicted.coords);
