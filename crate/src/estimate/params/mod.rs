@@ -2,7 +2,7 @@
 //! live): [`EstimateParams`] and the parameter structs it holds for the segment-wise fit
 //! ([`SegmentParams`], `segments.rs`), the limbs' profiles ([`ProfileParams`]) and the hands
 //! ([`HandParams`]), the estimate's check of itself ([`SelfCheckParams`]) and the check of a given
-//! file ([`CheckParams`]). Lengths are metres, angles degrees.
+//! file ([`CheckParams`]). Lengths are metres (the check's millimetres), angles degrees.
 
 pub mod check;
 pub mod hand;
