@@ -114,7 +114,7 @@ fn main() {
             }
             let given = given_landmarks(&set);
             if residuals {
-                for (i, p) in predict_given(&rest, &groups, &given, &given)
+                for (i, p) in predict_given(&rest, &groups, &given, &given, &params)
                     .iter()
                     .enumerate()
                 {

@@ -25,11 +25,18 @@
 //! groups' predictions of the others, so the landmark farthest beyond its tolerance stops
 //! predicting, and the rest are predicted again, until every landmark still predicting is
 //! within its tolerance.
+//!
+//! **The forearm's twist** (`forearm_twist.rs`): with the elbow bent (a hand laid on the hip),
+//! the wrist turns about the forearm, and a styloid's prediction from its forearm is turned
+//! about the forearm's axis to the given one's angle: its place along the forearm and its
+//! distance from the axis are judged, not its angle about it.
 
 use nalgebra::Point3;
-use serde::{Deserialize, Serialize};
+use serde::Serialize;
 
 use super::caesar_points::{given_landmarks, landmark_rest};
+use super::forearm_twist::{twisted, Forearm};
+pub use super::params::CheckParams;
 use super::suspicious::{flag_suspicious, SuspiciousLandmark};
 use crate::landmarks::{definition_sharpness, LandmarkSet, CAESAR_LANDMARKS};
 use crate::mesh::similarity::similarity;
@@ -43,31 +50,6 @@ pub const MIN_OTHERS: usize = 3;
 /// [`super::flag_given`] judges it by [`judge_given`] alone, as the app treats it (the app's
 /// `NEARLY_FULL`, web/app/landmark-step.ts).
 pub const NEARLY_FULL: usize = 64;
-
-/// Parameters of [`check_given`], each with its documented default (lengths in mm unless said).
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
-#[serde(default)]
-pub struct CheckParams {
-    /// The body's own variation of a landmark about the prediction from its rigid group (body
-    /// shapes differ within a group, a joint is no exact hinge). Default 22 mm.
-    pub tolerance_mm: f64,
-    /// How many of its definition's spreads (`sharpness.rs`: 5 / 10 / 25 mm) a placed landmark
-    /// may lie off. Default 2.
-    pub spread_factor: f64,
-    /// How many times the RMS misfit of the group's other landmarks (how rigid the group is on
-    /// this body) the prediction may be off. Default 2.5.
-    pub misfit_factor: f64,
-}
-
-impl Default for CheckParams {
-    fn default() -> Self {
-        Self {
-            tolerance_mm: 22.0,
-            spread_factor: 2.0,
-            misfit_factor: 2.5,
-        }
-    }
-}
 
 /// The body's rigid groups of landmarks, by name; `{side}` stands for `Lt.` and `Rt.` (a group
 /// with it is one group per side). Joint landmarks are in both groups they join.
@@ -208,7 +190,7 @@ pub fn judge_given(
 ) -> GivenCheck {
     let groups = rigid_groups();
     let expected_from = |trusted: &[(usize, Point3<f64>)]| -> Vec<Option<(Point3<f64>, f64)>> {
-        predict_given(landmark_rest, &groups, given, trusted)
+        predict_given(landmark_rest, &groups, given, trusted, params)
             .iter()
             .zip(CAESAR_LANDMARKS.iter())
             .map(|(p, l)| {
@@ -263,21 +245,34 @@ pub fn tolerance_mm(name: &str, misfit_mm: f64, params: &CheckParams) -> f64 {
 /// onto their given positions): for a given landmark (in
 /// `given`) the group's prediction nearest its given position, for another the prediction of
 /// the group with the most trusted landmarks. `None` where no group of the landmark has
-/// [`MIN_OTHERS`] trusted others.
+/// [`MIN_OTHERS`] trusted others. A given styloid's prediction from its forearm is turned about
+/// the forearm's axis to its angle when the elbow is bent (`forearm_twist.rs`).
 pub fn predict_given(
     landmark_rest: &[Point3<f64>],
     groups: &[Vec<usize>],
     given: &[(usize, Point3<f64>)],
     trusted: &[(usize, Point3<f64>)],
+    params: &CheckParams,
 ) -> Vec<Option<Prediction>> {
+    let trusted_at = |j: usize| trusted.iter().find(|(k, _)| *k == j).map(|(_, p)| *p);
+    // A twisting forearm's styloids are not rigid with its other landmarks: they do not predict
+    // them (else a turned wrist spoils the elbow's prediction).
+    let twisting: Vec<Forearm> = Forearm::both()
+        .into_iter()
+        .filter(|f| f.bent(&trusted_at, params))
+        .collect();
     (0..landmark_rest.len())
         .map(|i| {
             let at = given.iter().find(|(j, _)| *j == i).map(|(_, p)| *p);
             let mut best: Option<(f64, Prediction)> = None;
             for (g, group) in groups.iter().enumerate().filter(|(_, g)| g.contains(&i)) {
+                let turned = twisting
+                    .iter()
+                    .find(|f| group.contains(&f.epicondyles[0]) && !f.styloids.contains(&i));
                 let others: Vec<&(usize, Point3<f64>)> = trusted
                     .iter()
                     .filter(|(j, _)| *j != i && group.contains(j))
+                    .filter(|(j, _)| turned.is_none_or(|f| !f.styloids.contains(j)))
                     .collect();
                 if others.len() < MIN_OTHERS {
                     continue;
@@ -296,7 +291,14 @@ pub fn predict_given(
                     .sum::<f64>()
                     / from.len() as f64)
                     .sqrt();
-                let position = map.apply(&landmark_rest[i]);
+                let mut position = map.apply(&landmark_rest[i]);
+                if let (Some(p), Some(forearm)) = (at, Forearm::of_styloid(i)) {
+                    if group.contains(&forearm.epicondyles[0]) {
+                        let acromion = trusted_at(forearm.acromion);
+                        position =
+                            twisted(&forearm, &map, landmark_rest, acromion, position, p, params);
+                    }
+                }
                 let rank = match at {
                     Some(p) => (p - position).norm(),
                     None => -(others.len() as f64),

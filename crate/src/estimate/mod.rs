@@ -21,7 +21,8 @@
 //! * [`suspicious`] — [`flag_suspicious`]: given landmarks far from where they are expected;
 //!   [`expected`] — where: from the other given landmarks of the part, or from the fit;
 //!   [`check`] — [`check_given`]: a nearly full given file judged on its own, each landmark
-//!   against the other given landmarks of its rigid groups (no fit).
+//!   against the other given landmarks of its rigid groups (no fit); [`forearm_twist`] — the
+//!   forearm's twist there, for a bent elbow.
 //! * [`confidence`] — the typical error of each landmark (`typical_error`) and the fit's residual.
 //! * [`self_check`] — the estimate's verdict on itself (good, doubtful, failed) and why;
 //!   [`bilateral`] — limb segments compared between the body's sides.
@@ -42,6 +43,7 @@ pub mod check;
 pub mod confidence;
 pub mod error;
 pub mod expected;
+pub mod forearm_twist;
 pub mod frame;
 pub mod hand;
 pub mod matching;

@@ -55,6 +55,9 @@ use crate::template::parts::{dominant_part, parts};
 use crate::template::{Resolution, Segment, Template};
 use crate::utils::now_ms;
 
+/// The source of the frame candidate taken from the given landmarks' own frame.
+const FROM_GIVEN: &str = "given landmarks";
+
 /// What one estimate works on.
 #[derive(Debug, Clone, Copy)]
 pub struct EstimateInput<'a> {
@@ -163,7 +166,7 @@ pub fn estimate_landmarks(
         if let Some(t) =
             similarity(&from, &to, true).filter(|t| t.scale > 0.0 && t.scale.is_finite())
         {
-            starts.push(("given landmarks", t));
+            starts.push((FROM_GIVEN, t));
             given_frame = Some(t);
         }
     }
@@ -241,13 +244,24 @@ pub fn estimate_landmarks(
         .filter(|&v| weights[v as usize] >= 0.5)
         .step_by(2)
         .collect();
-    // With given landmarks the best `params.segment_starts` are fitted, and the one whose landmarks
-    // lie nearest the given ones kept: a limb the fit folds against the body from one start it can find from the
-    // other (held-out seed 4848 subject 21, arms down, 10 given: a wrist 45 cm off).
+    // With given landmarks the best `params.segment_starts` are fitted: first the best candidate
+    // from the scan's own axes (the one the estimate without landmarks fits), and a later one
+    // kept only when its landmarks lie nearer the given ones by more than
+    // `segment_start_margin` on average. A limb the fit folds against the body from one start it
+    // can find from the other (held-out seed 4848 subject 21, arms down, 10 given: a wrist 45 cm
+    // off); but a start nearer by a millimetre or two, or the given landmarks' own frame
+    // winning the similarity fit by a little, fitted the rest of the body worse, and a partial
+    // file of correct landmarks made the fit worse than none (held-out seed 5151 subject 0:
+    // 4–10 given, +0.8 to +3.3 mm of correspondence error).
     let parts = parts(&template);
     let hands = hands(&template);
+    let mut order: Vec<usize> = (0..fitted.len()).collect();
+    if let Some(k) = fitted.iter().position(|(source, _)| *source != FROM_GIVEN) {
+        order.remove(k);
+        order.insert(0, k);
+    }
     let mut posed: Option<(f64, Vec<Point3<f64>>, _)> = None;
-    for (_, candidate) in fitted.iter().take(segment_starts) {
+    for (_, candidate) in order.iter().take(segment_starts).map(|&k| &fitted[k]) {
         let mut fit = fit_segments(
             &template,
             &parts,
@@ -265,10 +279,11 @@ pub fn estimate_landmarks(
         let apart = given_m
             .iter()
             .map(|(i, p)| (fit[landmark_vertices[*i] as usize] - p).norm())
-            .sum::<f64>();
+            .sum::<f64>()
+            / given_m.len().max(1) as f64;
         if posed
             .as_ref()
-            .is_none_or(|(nearest, _, _)| apart < *nearest)
+            .is_none_or(|(nearest, _, _)| apart < *nearest - params.segment_start_margin)
         {
             posed = Some((apart, fit, candidate.transform));
         }

@@ -22,20 +22,9 @@ mod synth_support;
 /// The base template and the MakeHuman data.
 pub use synth_support::base_template_and_data as load;
 
-/// Ten landmarks a person would click first (the partial file of the tests and the benchmark):
-/// head, neck, shoulders, wrists, knees, ankles.
-pub const PARTIAL: [&str; 10] = [
-    "Sellion",
-    "Cervicale",
-    "Rt. Acromion",
-    "Lt. Acromion",
-    "Rt. Radial Styloid",
-    "Lt. Radial Styloid",
-    "Rt. Femoral Lateral Epicn",
-    "Lt. Femoral Lateral Epicn",
-    "Rt. Lateral Malleolus",
-    "Lt. Lateral Malleolus",
-];
+/// Ten landmarks a person would click first (`synth_support/partial.rs`).
+#[allow(unused_imports)]
+pub use synth_support::partial::PARTIAL;
 
 /// A pose people are scanned in, as shoulder abduction relative to the template's A-pose
 /// (degrees) and trunk / head angles.

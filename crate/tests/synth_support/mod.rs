@@ -3,6 +3,8 @@
 //! as the aligner gets it.
 #![allow(dead_code)]
 
+pub mod partial;
+
 use std::path::Path;
 
 use bodyspace::align::{align_scan, AlignInput, AlignParams};

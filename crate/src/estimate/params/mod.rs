@@ -1,13 +1,16 @@
 //! Parameters of the landmark estimate, each with its documented default (the one place they
 //! live): [`EstimateParams`] and the parameter structs it holds for the segment-wise fit
 //! ([`SegmentParams`], `segments.rs`), the limbs' profiles ([`ProfileParams`]) and the hands
-//! ([`HandParams`]) and the estimate's check of itself ([`SelfCheckParams`]). Lengths are metres, angles degrees.
+//! ([`HandParams`]), the estimate's check of itself ([`SelfCheckParams`]) and the check of a given
+//! file ([`CheckParams`]). Lengths are metres (the check's millimetres), angles degrees.
 
+pub mod check;
 pub mod hand;
 pub mod profile;
 pub mod segments;
 pub mod self_check;
 
+pub use check::CheckParams;
 pub use hand::{HandParams, LaidHandParams, WristProfileParams};
 pub use profile::ProfileParams;
 pub use segments::{ArmSwingParams, BentArmParams, ButtocksParams, SegmentParams};
@@ -43,6 +46,12 @@ pub struct EstimateParams {
     /// With given landmarks, the segment-wise fit runs from this many of the best candidates and
     /// the one whose landmarks lie nearer the given ones is kept. Default 2.
     pub segment_starts: usize,
+    /// A later start of the segment-wise fit is kept only when its landmarks lie nearer the
+    /// given ones than the best candidate's by more than this (m, the mean over the given
+    /// landmarks): a folded limb puts one landmark decimetres off, while a few millimetres
+    /// nearer was a worse fit of the rest (a partial file of correct landmarks then made the fit
+    /// worse than none). Default 10 mm.
+    pub segment_start_margin: f64,
     /// Iterations of the segment-wise (articulated) fit after the best candidate. Default 20.
     pub segment_iterations: usize,
     /// The segment-wise fit's own parameters (stretch, bends, the arms' swing, the bent elbow,
@@ -92,6 +101,7 @@ impl Default for EstimateParams {
             torso_close: 0.1,
             head_end_decisive: 0.75,
             segment_starts: 2,
+            segment_start_margin: 0.01,
             segment_iterations: 20,
             segments: SegmentParams::default(),
             profile: ProfileParams::default(),
