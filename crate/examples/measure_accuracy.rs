@@ -22,7 +22,13 @@
 //! measure one fit natively.
 
 #[cfg(not(target_arch = "wasm32"))]
+#[path = "../tests/synth_support/partial.rs"]
+#[allow(dead_code)]
+mod partial;
+
+#[cfg(not(target_arch = "wasm32"))]
 mod native {
+    use super::partial::PARTIAL_FILES;
     use bodyspace::cli::model::{measure_any_frame, read_fit};
     use bodyspace::io::{read_scan, write_ply};
     use bodyspace::measure::{
@@ -35,19 +41,14 @@ mod native {
     use bodyspace::template::{Resolution, Template};
     use std::path::{Path, PathBuf};
 
-    /// The ten landmarks of the `given10` fits (issue 31's partial file).
-    const GIVEN10: [&str; 10] = [
-        "Sellion",
-        "Suprasternale",
-        "Rt. Acromion",
-        "Lt. Acromion",
-        "Rt. Dactylion",
-        "Lt. Dactylion",
-        "Rt. ASIS",
-        "Lt. ASIS",
-        "Rt. Lateral Malleolus",
-        "Lt. Lateral Malleolus",
-    ];
+    /// The ten landmarks of the `given10` fits: issue 31's partial file, as the tests hold it.
+    fn given10() -> &'static [&'static str] {
+        PARTIAL_FILES
+            .iter()
+            .find(|(name, _)| *name == "issue-10")
+            .map(|(_, names)| *names)
+            .expect("the tests' partial files hold issue 31's ten")
+    }
 
     #[derive(Clone, Copy, PartialEq)]
     enum From {
@@ -148,7 +149,7 @@ mod native {
             given
                 .set
                 .landmarks
-                .retain(|l| GIVEN10.contains(&l.name.as_str()));
+                .retain(|l| given10().contains(&l.name.as_str()));
         }
         let fitted = fit_subject(
             template,
