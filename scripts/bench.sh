@@ -17,7 +17,7 @@
 #          verdict: `bodyspace synth --profile held-out` (MEASURE_N subjects, default 8, seed
 #          MEASURE_SEED, default 6161), each fitted from its true landmarks, from ten of them and
 #          without landmarks, at `base` and then at `fine` (MEASURE_FINE=0 skips it), and the
-#          scanner zoo (`--zoo`, 12 subjects, seed MEASURE_ZOO_SEED, default 6868) at `base`; fit
+#          scanner zoo (`--zoo`, 16 subjects: one per class, seed MEASURE_ZOO_SEED, default 6868) at `base`; fit
 #          and truth measured by the same code (crate/examples/measure_accuracy.rs)
 #   batch  20 synthetic subjects (`bodyspace synth --n 20 --seed 7`, as the CLI batch benchmark)
 #          picked at once in the app: wall time to the built model with the worker pool and with
@@ -83,7 +83,7 @@ if wants measure; then
   cargo build --quiet --release --manifest-path crate/Cargo.toml --bin bodyspace --example measure_accuracy
   crate/target/release/bodyspace synth --n "${MEASURE_N:-8}" --seed "${MEASURE_SEED:-6161}" \
     --profile held-out --out "$work/measure" >/dev/null
-  crate/target/release/bodyspace synth --n 12 --zoo --seed "${MEASURE_ZOO_SEED:-6868}" \
+  crate/target/release/bodyspace synth --n 16 --zoo --seed "${MEASURE_ZOO_SEED:-6868}" \
     --profile held-out --out "$work/measure-zoo" >/dev/null
   echo "load average before: $(cut -d' ' -f1-3 /proc/loadavg)"
   crate/target/release/examples/measure_accuracy "$work/measure" --from all
