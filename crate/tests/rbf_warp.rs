@@ -102,12 +102,7 @@ fn the_warp_lands_every_landmark_and_follows_the_subject() {
     let worst_before = w.residuals.iter().map(|r| r.before).fold(0.0, f64::max);
     assert!(worst_before > 30.0, "{worst_before}");
     // The warped template is in the scan's frame (mm, z-up) and close to the truth everywhere.
-    let similarity_only: Vec<_> = c
-        .template
-        .positions
-        .iter()
-        .map(|v| w.similarity.apply(v))
-        .collect();
+    let similarity_only = w.similarity.apply_all(&c.template.positions);
     let before = mean_distance(&similarity_only, &c.truth);
     let after = mean_distance(&w.positions, &c.truth);
     assert!(after < 8.0, "mean vertex error {after} mm");

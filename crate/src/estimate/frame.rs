@@ -191,12 +191,8 @@ mod tests {
     #[test]
     fn one_of_the_candidates_is_the_true_frame() {
         let template = body();
-        let truth = Similarity {
-            scale: 1.1,
-            rotation: *Rotation3::from_euler_angles(1.2, -0.4, 2.5).matrix(),
-            translation: Vector3::new(3.0, -1.0, 0.5),
-        };
-        let scan: Vec<_> = template.iter().map(|p| truth.apply(p)).collect();
+        let truth = Similarity::from_euler_angles(1.1, [1.2, -0.4, 2.5], [3.0, -1.0, 0.5]);
+        let scan = truth.apply_all(&template);
         let candidates = frame_candidates(&template, &scan).unwrap();
         assert_eq!(candidates.len(), 4);
         let best = candidates

@@ -23,15 +23,11 @@ pub fn upright(body: &[Point3<f64>], template: &[Point3<f64>]) -> Option<Vec<f32
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::mesh::test_points::stick_body;
 
     #[test]
     fn a_z_up_body_stands_up() {
-        let template = [
-            Point3::new(0.0, 0.0, 0.0),
-            Point3::new(0.0, 1.7, 0.0),
-            Point3::new(0.3, 1.4, 0.0),
-            Point3::new(0.0, 1.0, 0.1),
-        ];
+        let template = stick_body();
         // (x, y, z) ↦ (x, −z, y) + t, as bodyspace synth writes CAESAR-like scans.
         let body: Vec<Point3<f64>> = template
             .iter()

@@ -9,6 +9,7 @@
 //! * [`units`]: metres or millimetres from a body's extent.
 //! * [`volume`]: enclosed volume and surface area.
 //! * [`summary`]: the one-look summary of a loaded scan.
+//! * `test_points` (tests only): small point sets the unit tests of several modules share.
 
 pub mod bounds;
 pub mod normals;
@@ -16,6 +17,8 @@ pub mod principal_axes;
 pub mod ray;
 pub mod similarity;
 pub mod summary;
+#[cfg(test)]
+pub(crate) mod test_points;
 pub mod topology;
 pub mod trimesh;
 pub mod units;

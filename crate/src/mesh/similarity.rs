@@ -26,9 +26,26 @@ impl Similarity {
         Point3::from(self.scale * (self.rotation * x.coords) + self.translation)
     }
 
+    /// [`Self::apply`] to each of `points` (`#P` in, `#P` out, same order).
+    pub fn apply_all(&self, points: &[Point3<f64>]) -> Vec<Point3<f64>> {
+        points.iter().map(|p| self.apply(p)).collect()
+    }
+
     /// The inverse map Rᵀ·(y − t)/s.
     pub fn apply_inverse(&self, y: &Point3<f64>) -> Point3<f64> {
         Point3::from(self.rotation.transpose() * (y.coords - self.translation) / self.scale)
+    }
+
+    /// x ↦ s·R·x + t with R from the Euler angles `[roll, pitch, yaw]` (radians, as nalgebra's
+    /// `Rotation3::from_euler_angles`): a known transform for tests to recover.
+    #[cfg(test)]
+    pub(crate) fn from_euler_angles(scale: f64, angles: [f64; 3], translation: [f64; 3]) -> Self {
+        let [roll, pitch, yaw] = angles;
+        Self {
+            scale,
+            rotation: *nalgebra::Rotation3::from_euler_angles(roll, pitch, yaw).matrix(),
+            translation: Vector3::from(translation),
+        }
     }
 }
 
@@ -99,20 +116,7 @@ fn reflection_guard(u: &Matrix3<f64>, sigma: &Vector3<f64>, v_t: &Matrix3<f64>) 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use nalgebra::Rotation3;
-
-    fn shape() -> Vec<Point3<f64>> {
-        [
-            [0.0, 0.0, 0.0],
-            [1.0, 0.2, 0.1],
-            [0.3, 1.5, -0.2],
-            [0.1, 0.4, 0.9],
-            [-0.5, 0.7, 0.3],
-        ]
-        .iter()
-        .map(|&a| Point3::from(a))
-        .collect()
-    }
+    use crate::mesh::test_points::scattered;
 
     fn residual(t: &Similarity, from: &[Point3<f64>], to: &[Point3<f64>]) -> f64 {
         from.iter()
@@ -123,13 +127,9 @@ mod tests {
 
     #[test]
     fn recovers_a_known_similarity_and_rigid_fit_keeps_unit_scale() {
-        let truth = Similarity {
-            scale: 2.5,
-            rotation: *Rotation3::from_euler_angles(0.3, -1.1, 2.0).matrix(),
-            translation: Vector3::new(3.0, -4.0, 5.0),
-        };
-        let from = shape();
-        let to: Vec<_> = from.iter().map(|p| truth.apply(p)).collect();
+        let truth = Similarity::from_euler_angles(2.5, [0.3, -1.1, 2.0], [3.0, -4.0, 5.0]);
+        let from = scattered();
+        let to = truth.apply_all(&from);
         let got = similarity(&from, &to, true).unwrap();
         assert!((got.scale - 2.5).abs() < 1e-12);
         assert!((got.rotation - truth.rotation).norm() < 1e-12);
@@ -146,7 +146,7 @@ mod tests {
 
     #[test]
     fn mirrored_set_gets_a_proper_rotation() {
-        let from = shape();
+        let from = scattered();
         let to: Vec<_> = from.iter().map(|p| Point3::new(-p.x, p.y, p.z)).collect();
         let got = similarity(&from, &to, true).unwrap();
         assert!((got.rotation.determinant() - 1.0).abs() < 1e-12);
@@ -160,7 +160,7 @@ mod tests {
     #[test]
     fn reflection_guard_flips_the_smallest_singular_value_in_an_unsorted_svd() {
         // Spread 3 : 2 : 1 along x, y, z, mirrored in z, so the smallest σ belongs to z.
-        let from: Vec<Point3<f64>> = shape()
+        let from: Vec<Point3<f64>> = scattered()
             .iter()
             .map(|p| Point3::new(3.0 * p.x, 2.0 * p.y, p.z))
             .collect();

@@ -100,7 +100,7 @@ pub fn generalised_procrustes(shapes: &[&[Point3<f64>]], params: &GpaParams) -> 
         aligned.clear();
         for (k, shape) in shapes.iter().enumerate() {
             let t = rigid_align(shape, &mean, with_scale);
-            aligned.push(shape.iter().map(|p| t.apply(p)).collect());
+            aligned.push(t.apply_all(shape));
             transforms[k] = t;
         }
         let mut new_mean = mean_shape(&aligned);
@@ -131,7 +131,7 @@ pub fn generalised_procrustes(shapes: &[&[Point3<f64>]], params: &GpaParams) -> 
     aligned.clear();
     for (k, shape) in shapes.iter().enumerate() {
         let t = rigid_align(shape, &mean, with_scale);
-        aligned.push(shape.iter().map(|p| t.apply(p)).collect());
+        aligned.push(t.apply_all(shape));
         transforms[k] = t;
     }
     let mean = mean_shape(&aligned);
@@ -161,21 +161,12 @@ pub fn mean_shape(shapes: &[Vec<Point3<f64>>]) -> Vec<Point3<f64>> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::mesh::test_points::scattered;
     use nalgebra::Rotation3;
-
-    fn shape() -> Vec<Point3<f64>> {
-        vec![
-            Point3::new(0.0, 0.0, 0.0),
-            Point3::new(1.0, 0.0, 0.0),
-            Point3::new(0.0, 2.0, 0.0),
-            Point3::new(0.0, 0.0, 3.0),
-            Point3::new(0.5, 0.7, 0.2),
-        ]
-    }
 
     #[test]
     fn gpa_removes_rigid_pose() {
-        let base = shape();
+        let base = scattered();
         let poses = [(0.0, 0.0, 0.0), (0.2, 0.1, -0.3), (-0.4, 0.9, 0.5)];
         let shapes: Vec<Vec<Point3<f64>>> = poses
             .iter()

@@ -60,27 +60,18 @@ pub fn template_frame_in(
 /// `shape` in the template's frame ([`template_frame`]).
 pub fn into_template_frame(shape: &[Point3<f64>], rest: &[Point3<f64>]) -> Vec<Point3<f64>> {
     let frame = template_frame(shape, rest);
-    shape.iter().map(|p| frame.transform.apply(p)).collect()
+    frame.transform.apply_all(shape)
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::mesh::test_points::stick_body;
     use nalgebra::{Rotation3, Vector3};
-
-    fn rest() -> Vec<Point3<f64>> {
-        vec![
-            Point3::new(0.0, 0.0, 0.0),
-            Point3::new(0.0, 1.7, 0.0),
-            Point3::new(0.3, 1.4, 0.0),
-            Point3::new(-0.3, 1.4, 0.05),
-            Point3::new(0.0, 1.0, 0.12),
-        ]
-    }
 
     #[test]
     fn z_up_millimetres_and_turned_centimetres_come_back_upright_in_metres() {
-        let rest = rest();
+        let rest = stick_body();
         let turn = Rotation3::from_axis_angle(&Vector3::y_axis(), 2.0);
         for (shape, units) in [
             // (x, y, z) ↦ 1000·(x, −z, y) + t: `bodyspace synth`'s CAESAR frame.

@@ -56,19 +56,13 @@ pub fn similarity_named(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use nalgebra::{Rotation3, Vector3};
+    use crate::mesh::test_points::scattered;
 
     #[test]
     fn maps_the_source_onto_a_similar_target() {
-        let source: Vec<Point3<f64>> = (0..6)
-            .map(|i| Point3::new(i as f64, (i * i) as f64 * 0.3, (i % 3) as f64))
-            .collect();
-        let truth = Similarity {
-            scale: 0.001,
-            rotation: *Rotation3::from_euler_angles(0.3, -1.1, 2.0).matrix(),
-            translation: Vector3::new(3.0, -4.0, 5.0),
-        };
-        let target: Vec<_> = source.iter().map(|p| truth.apply(p)).collect();
+        let source = scattered();
+        let truth = Similarity::from_euler_angles(0.001, [0.3, -1.1, 2.0], [3.0, -4.0, 5.0]);
+        let target = truth.apply_all(&source);
         let got = similarity(&source, &target).unwrap();
         assert!((got.scale - truth.scale).abs() < 1e-15);
         assert!((got.rotation - truth.rotation).norm() < 1e-10);
