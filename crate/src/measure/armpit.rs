@@ -75,32 +75,39 @@ pub fn armpit_level(
     let up = params.up_axis;
     let mut joined = guess + params.armpit_band_above;
     let mut alone = guess - params.armpit_band_below;
-    // Only the triangles that straddle the band can be cut.
-    let near: Vec<u32> = region
+    // Only the triangles that straddle the bracket can be cut: (triangle, lowest, highest
+    // corner), narrowed with the bracket, so each halving sections about half as many.
+    let mut near: Vec<(u32, f64, f64)> = region
         .iter()
-        .copied()
-        .filter(|&t| {
+        .map(|&t| {
             let h = triangles[t as usize].map(|v| vertex(positions, v)[up]);
-            h[0].max(h[1]).max(h[2]) >= alone && h[0].min(h[1]).min(h[2]) <= joined
+            (t, h[0].min(h[1]).min(h[2]), h[0].max(h[1]).max(h[2]))
         })
+        .filter(|&(_, lo, hi)| hi >= alone && lo <= joined)
         .collect();
-    let stands_alone = |h: f64| {
+    let stands_alone = |near: &[(u32, f64, f64)], h: f64| {
         let plane = Plane::horizontal(up, h);
-        let loops = plane_section(positions, triangles, &near, &plane);
+        let cut: Vec<u32> = near
+            .iter()
+            .filter(|&&(_, lo, hi)| lo <= h && hi >= h)
+            .map(|&(t, _, _)| t)
+            .collect();
+        let loops = plane_section(positions, triangles, &cut, &plane);
         let c = plane.to_plane(centre);
         let side = plane.to_plane([0, 1, 2].map(|k| centre[k] + lateral[k]));
         torso_alone(&loops, c, [side[0] - c[0], side[1] - c[1]])
     };
-    if stands_alone(joined) || !stands_alone(alone) {
+    if stands_alone(&near, joined) || !stands_alone(&near, alone) {
         return None;
     }
     while joined - alone > params.armpit_resolution {
         let mid = (joined + alone) / 2.0;
-        if stands_alone(mid) {
+        if stands_alone(&near, mid) {
             alone = mid;
         } else {
             joined = mid;
         }
+        near.retain(|&(_, lo, hi)| hi >= alone && lo <= joined);
     }
     Some((joined + alone) / 2.0)
 }
