@@ -236,33 +236,15 @@ fn landmarks(p: &[f32], moved: f64) -> Vec<(String, u32)> {
     .into_iter()
     .map(|(n, v)| (n.to_string(), v))
     .chain(
-        [
-            "Cervicale",
-            "Suprasternale",
-            "Rt. Acromion",
-            "Lt. Acromion",
-            "Crotch",
-            "Rt. Femoral Lateral Epicn",
-            "Rt. Femoral Medial Epicn",
-            "Rt. Thelion/Bustpoint",
-            "Lt. Thelion/Bustpoint",
-            "Substernale",
-            "Rt. 10th Rib",
-            "Lt. 10th Rib",
-            "Rt. Iliocristale",
-            "Lt. Iliocristale",
-            "Rt. Trochanterion",
-            "Lt. Trochanterion",
-            "Rt. Olecranon",
-            "Rt. Radiale",
-            "Rt. Radial Styloid",
-            "Sellion",
-            "Rt. Tragion",
-            "Lt. Tragion",
-        ]
-        .into_iter()
-        .enumerate()
-        .map(|(k, n)| (n.to_string(), on(1.0 + 0.005 * k as f64, k))),
+        // The other measurements' landmarks anywhere on the torso, under the armpits.
+        Measure::ALL
+            .iter()
+            .flat_map(|m| m.definition().landmarks.iter().copied())
+            .filter(|n| !n.contains("Axilla"))
+            .collect::<std::collections::BTreeSet<&str>>()
+            .into_iter()
+            .enumerate()
+            .map(|(k, n)| (n.to_string(), on(1.0 + 0.005 * k as f64, k))),
     )
     .collect()
 }
