@@ -3,18 +3,21 @@
 //!
 //! Heights are above the floor (the lowest vertex) along the up axis. Torso girths are horizontal
 //! and go around the convex hull of everything the plane cuts of the torso's own triangles (arms
-//! never; torso and legs for the hip), so a tape under the armpits spans the chest. Limb, neck and
+//! never; torso and legs for the hip); the chest girth around the torso's own loop. Limb, neck and
 //! head girths go around the loop at their anchor, cut from their own segment (upper arm: right
 //! arm; head: head; neck: head and torso) — the thigh from torso and legs, as the overlap band at
 //! the crotch splits its section between the two. A triangle belongs
 //! to the segment with the largest blend weight summed over its corners, which partitions the
 //! overlap bands.
 //!
-//! Two levels are found on the surface around their landmarks' guesses rather than taken from
-//! the landmarks' vertices ([`super::surface`], parameters in [`MeasureParams`]): the hip level
-//! (greatest buttock prominence) and the neck girth's level (the neck's least girth); a landmark
-//! a few centimetres off then names the same level.
+//! Three levels are found on the surface around their landmarks' guesses rather than taken from
+//! the landmarks' vertices ([`super::surface`], [`super::armpit`], parameters in
+//! [`MeasureParams`]): the hip level (greatest buttock prominence), the neck girth's level (the
+//! neck's least girth) and the chest girth's (under the armpits' apex, around the torso's loop
+//! alone of the torso's and arms' section); a landmark a few centimetres off then names the same
+//! level.
 
+use super::armpit::armpit_level;
 use super::definitions::Measure;
 use super::error::MeasureError;
 use super::params::MeasureParams;
@@ -88,6 +91,7 @@ enum Region {
     RightArm,
     HeadAndTorso,
     Head,
+    TorsoAndArms,
 }
 
 /// The measurer of one template: its triangles, the section regions and the landmark vertices of
@@ -99,7 +103,7 @@ pub struct BodyMeasurer {
     /// Per measurement, the vertices of its definition's landmarks, in the definition's order.
     anchors: Vec<Vec<u32>>,
     /// Triangle indices per [`Region`] (by `Region as usize`).
-    regions: [Vec<u32>; 5],
+    regions: [Vec<u32>; 6],
     /// Vertices whose largest blend weight is the torso's or a leg's (where the buttocks are
     /// sought).
     trunk_vertices: Vec<u32>,
@@ -132,12 +136,16 @@ impl BodyMeasurer {
         }
         let positive = [
             ("neck_step", params.neck_step),
+            ("armpit_resolution", params.armpit_resolution),
             ("prominence_depth", params.prominence_depth),
         ];
         let non_negative = [
             ("neck_band", params.neck_band),
             ("hip_band_below", params.hip_band_below),
             ("hip_band_above", params.hip_band_above),
+            ("armpit_band_above", params.armpit_band_above),
+            ("armpit_band_below", params.armpit_band_below),
+            ("chest_below_armpit", params.chest_below_armpit),
         ];
         for (name, value) in positive {
             if !(value > 0.0 && value.is_finite()) {
@@ -173,7 +181,7 @@ impl BodyMeasurer {
             }
             anchors.push(vs);
         }
-        let mut regions: [Vec<u32>; 5] = Default::default();
+        let mut regions: [Vec<u32>; 6] = Default::default();
         for (i, t) in triangles.iter().enumerate() {
             let mut sum = [0.0f32; 6];
             for &v in t {
@@ -192,14 +200,18 @@ impl BodyMeasurer {
                     add(Region::Torso);
                     add(Region::TorsoAndLegs);
                     add(Region::HeadAndTorso);
+                    add(Region::TorsoAndArms);
                 }
                 Segment::LeftLeg | Segment::RightLeg => add(Region::TorsoAndLegs),
-                Segment::RightArm => add(Region::RightArm),
+                Segment::RightArm => {
+                    add(Region::RightArm);
+                    add(Region::TorsoAndArms);
+                }
                 Segment::Head => {
                     add(Region::Head);
                     add(Region::HeadAndTorso);
                 }
-                Segment::LeftArm => {}
+                Segment::LeftArm => add(Region::TorsoAndArms),
             }
         }
         let trunk_vertices = segment_weights
@@ -333,9 +345,8 @@ impl BodyMeasurer {
         };
         let a = |k: usize| b.anchor(m, k);
         Some(match m {
-            Measure::ChestGirth | Measure::BustGirth | Measure::UnderbustGirth => {
-                at(b.mean_height(m), Region::Torso)
-            }
+            Measure::ChestGirth => self.chest(b),
+            Measure::BustGirth | Measure::UnderbustGirth => at(b.mean_height(m), Region::Torso),
             Measure::WaistGirth => at(b.waist_level(), Region::Torso),
             Measure::HipGirth => at(b.hip_level(), Region::TorsoAndLegs),
             Measure::ThighGirth => {
@@ -376,6 +387,51 @@ impl BodyMeasurer {
             }
             _ => return None,
         })
+    }
+
+    /// ISO 8559-1's chest girth: the tape around the torso's loop alone (of the torso's and arms'
+    /// section), `chest_below_armpit` under the armpits' apex ([`armpit_level`], sought around
+    /// the four axillae's mean level, their centre the torso's point and left → right the side
+    /// direction). Where the band holds no apex (arms joined to the torso all the way down, or
+    /// the guess far off), the tape at the axillae's mean level around every piece the torso's
+    /// own triangles give.
+    fn chest(&self, b: &Body) -> Girth {
+        let m = Measure::ChestGirth;
+        let p = &self.params;
+        let up = p.up_axis;
+        let guess = b.mean_height(m);
+        // AXILLAE: Rt. Ant., Lt. Ant., Rt. Post., Lt. Post.
+        let centre = [0, 1, 2].map(|k| (0..4).map(|i| b.anchor(m, i)[k]).sum::<f64>() / 4.0);
+        let mut lateral = sub(
+            midpoint(b.anchor(m, 0), b.anchor(m, 2)),
+            midpoint(b.anchor(m, 1), b.anchor(m, 3)),
+        );
+        lateral[up] = 0.0;
+        let region = Region::TorsoAndArms;
+        let apex = armpit_level(
+            b.positions,
+            &self.triangles,
+            &self.regions[region as usize],
+            centre,
+            lateral,
+            guess,
+            p,
+        );
+        match apex {
+            Some(apex) => {
+                let plane = Plane::horizontal(up, apex - p.chest_below_armpit);
+                Girth {
+                    plane,
+                    region,
+                    choice: Some(LoopChoice::Around(plane.to_plane(centre))),
+                }
+            }
+            None => Girth {
+                plane: Plane::horizontal(up, guess),
+                region: Region::Torso,
+                choice: None,
+            },
+        }
     }
 
     /// A measurement that is not a girth.

@@ -1,6 +1,7 @@
 //! Anthropometry: standard body measurements after ISO 8559-1 and ISO 7250-1 on a body in
 //! template vertex order, anchored on the template's landmarks (docs/measurements.md).
 //!
+//! * [`armpit`] — the armpits' apex found on the surface (the chest girth's level)
 //! * [`definitions`] — the [`Measure`] table: names, kinds, sources, landmarks
 //! * [`section`] — plane sections of a triangle mesh ([`Plane`], [`plane_section`])
 //! * [`surface`] — body points found on the surface around a landmark's guess: the prominence,
@@ -15,6 +16,7 @@
 //!
 //! Volume and surface area are [`crate::mesh::volume`].
 
+pub mod armpit;
 pub mod body;
 pub mod definitions;
 pub mod error;

@@ -33,6 +33,16 @@ pub struct MeasureParams {
     /// 0.10 m.
     pub hip_band_below: f64,
     pub hip_band_above: f64,
+    /// The chest girth's level (ISO 8559-1 chest girth: under the armpits, the torso alone) is
+    /// `chest_below_armpit` under the armpits' apex, the highest level at which a horizontal
+    /// section of the torso and arms has the torso's loop apart from both arms; the apex is
+    /// sought from `armpit_band_above` over to `armpit_band_below` under the axilla landmarks'
+    /// mean level, by bisection to `armpit_resolution`; defaults 0.05 m, 0.08 m, 0.001 m and
+    /// 0.01 m.
+    pub armpit_band_above: f64,
+    pub armpit_band_below: f64,
+    pub armpit_resolution: f64,
+    pub chest_below_armpit: f64,
     /// Cap depth δ of a prominence (`surface.rs`): the vertices within δ of the extreme one make
     /// its point; default 0.005 m.
     pub prominence_depth: f64,
@@ -50,6 +60,10 @@ impl Default for MeasureParams {
             neck_step: 0.025,
             hip_band_below: 0.06,
             hip_band_above: 0.10,
+            armpit_band_above: 0.05,
+            armpit_band_below: 0.08,
+            armpit_resolution: 0.001,
+            chest_below_armpit: 0.01,
             prominence_depth: 0.005,
         }
     }

@@ -79,7 +79,7 @@ pub fn convex_hull(points: &[[f64; 2]]) -> Vec<[f64; 2]> {
 }
 
 /// Whether `q` lies inside the polygon `points` (even–odd rule).
-fn contains(points: &[[f64; 2]], q: [f64; 2]) -> bool {
+pub fn contains(points: &[[f64; 2]], q: [f64; 2]) -> bool {
     let n = points.len();
     let mut inside = false;
     for i in 0..n {
