@@ -56,7 +56,7 @@ fn spread(a: &[Point3<f64>], b: &[Point3<f64>], parts: &[BodyPart]) -> String {
             d.sort_by(f64::total_cmp);
             let mean = d.iter().sum::<f64>() / d.len().max(1) as f64;
             let (p99, max) = (d[d.len() * 99 / 100], d[d.len() - 1]);
-            format!("{name} {mean:.3}/{p99:.3}/{max:.1}")
+            format!("{name} {mean:.3}/{p99:.3}/{max:.3}")
         })
         .collect::<Vec<_>>()
         .join("  ")
