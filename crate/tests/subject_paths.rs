@@ -290,9 +290,11 @@ fn any_frame_and_units_give_the_same_fit_in_the_template_frame() {
             d[d.len() - 1] * 1e3,
             dh * 1e3
         );
-        // Floating point differs with the frame and a few vertices where the fit has no data
-        // (fingertips, the crown) may settle elsewhere; the body is the same.
-        assert!(mean < 5e-4 && p99 < 2e-3 && dh < 1e-3, "{name}");
+        // Floating point differs with the frame; the fit does not beyond rounding (0.000 mm p99
+        // today: closest points that tie go by the mesh, not by rounding). When rounding chose,
+        // this subject with the forearm's twist was 3.4 mm p99 and 71 mm at worst apart, and
+        // without it 0.3 mm p99 by luck (docs/fine-alignment.md, history 2026-11-27).
+        assert!(mean < 1e-5 && p99 < 1e-4 && dh < 1e-4, "{name}");
     }
 }
 

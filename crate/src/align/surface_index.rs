@@ -15,6 +15,25 @@ use parry3d_f64::shape::TriMesh;
 use std::num::NonZero;
 use std::sync::OnceLock;
 
+/// A candidate of the one-ring search replaces the best one only when it is closer by more than
+/// this share of the squared distance (plus [`TIE_FLOOR_M2`]). A point on an edge two triangles
+/// share, or at the ring's own vertex, is found by several candidates at one distance up to
+/// rounding, and their hole-rim flags differ (a triangle touching a rim, the vertex itself):
+/// rounding must not choose among them, or a fit changes with the scan's frame and units (issue
+/// 31: 2–6 of 12,816 matches flipped by a 1e-16 m change of the scan, the fit 1–3 mm p99 apart).
+/// The first candidate in the ring's fixed order wins a tie.
+pub const TIE_SHARE: f64 = 1e-9;
+
+/// The squared distance (m², (0.1 nm)²) below which candidates of the one-ring search tie
+/// whatever their share ([`TIE_SHARE`]).
+pub const TIE_FLOOR_M2: f64 = 1e-20;
+
+/// Whether a candidate at squared distance `d2` beats the best so far at `best_d2`: closer by
+/// more than rounding ([`TIE_SHARE`]).
+fn closer(d2: f64, best_d2: f64) -> bool {
+    d2 < best_d2 * (1.0 - TIE_SHARE) - TIE_FLOOR_M2
+}
+
 /// A closest point on the scan for one template vertex.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Match {
@@ -296,7 +315,7 @@ impl SurfaceIndex {
             let [a, b, c] = corners.map(|i| self.positions[i as usize]);
             let x = closest_point_on_triangle(p, &a, &b, &c);
             let d2 = (x - p).norm_squared();
-            if d2 < best_d2 {
+            if closer(d2, best_d2) {
                 best_d2 = d2;
                 best = FaceMatch {
                     corners,
@@ -360,5 +379,51 @@ impl SurfaceIndex {
             normal: m.normal,
             on_boundary: m.on_boundary,
         })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A 4 × 4 grid of vertices 1 cm apart in the plane z = 0, turned by `turn` and moved by
+    /// `shift`: only the middle square's two triangles touch no rim vertex.
+    fn grid(turn: &nalgebra::Rotation3<f64>, shift: &Vector3<f64>) -> Mesh {
+        let positions = (0..16)
+            .map(|i| turn * Point3::new(0.01 * (i % 4) as f64, 0.01 * (i / 4) as f64, 0.0) + shift)
+            .collect();
+        let mut triangles = Vec::new();
+        for y in 0..3u32 {
+            for x in 0..3u32 {
+                let v = 4 * y + x;
+                triangles.push([v, v + 1, v + 5]);
+                triangles.push([v, v + 5, v + 4]);
+            }
+        }
+        Mesh::new(positions, triangles)
+    }
+
+    #[test]
+    fn a_point_on_an_edge_two_triangles_share_gets_one_rim_flag_whatever_the_rounding() {
+        // Above the edge (1,1)–(2,1), 30 % along it: the nearest vertex is (1,1); the edge is
+        // shared by the middle square's triangle (no rim vertex) and the one below it (rim
+        // vertices), both at the same distance.
+        let query = MatchQuery {
+            mode: CorrespondenceMode::VertexOneRing,
+            min_cos: None,
+            candidates: 1,
+        };
+        let mut flags = Vec::new();
+        for k in 0..200 {
+            let turn =
+                nalgebra::Rotation3::from_euler_angles(0.37 * k as f64, 0.11 * k as f64, 0.05);
+            let shift = Vector3::new(0.1234567 * k as f64, -0.7654321 * k as f64, 0.31 * k as f64);
+            let index = SurfaceIndex::new(&grid(&turn, &shift)).unwrap();
+            let p = turn * Point3::new(0.013, 0.01, 0.004) + shift;
+            let m = index.closest(&p, None, &query).unwrap();
+            assert!((m.point - (turn * Point3::new(0.013, 0.01, 0.0) + shift)).norm() < 1e-12);
+            flags.push(m.on_boundary);
+        }
+        assert!(flags.iter().all(|f| *f == flags[0]), "{flags:?}");
     }
 }

@@ -8,9 +8,9 @@ use serde::{Deserialize, Serialize};
 #[serde(default)]
 pub struct CheckParams {
     /// The body's own variation of a landmark about the prediction from its rigid group (body
-    /// shapes differ within a group, a joint is no exact hinge). Default 22 mm; with the
-    /// forearm's twist on, 21 mm finds as many typos (docs/landmarks-estimate.md, "False alarms
-    /// and detection").
+    /// shapes differ within a group, a joint is no exact hinge). Default 21 mm: with the
+    /// forearm's twist, the smallest step that finds no fewer typos (docs/landmarks-estimate.md,
+    /// "False alarms and detection"; 22 mm before the twist).
     pub tolerance_mm: f64,
     /// How many of its definition's spreads (`sharpness.rs`: 5 / 10 / 25 mm) a placed landmark
     /// may lie off. Default 2.
@@ -22,10 +22,8 @@ pub struct CheckParams {
     /// against the forearm's axis) lets the forearm twist: its styloids are predicted turned
     /// about the forearm's axis to the given one's angle (`forearm_twist.rs`). A hand laid on
     /// the hip turns the wrist about the forearm (pronation), which no rigid forearm predicts.
-    /// 180 turns it off. Default 180 (off) for now: on, with 60° (straight arms bend 35–43°,
-    /// hands on hips 53–92°), it meets the false-alarm goal on hands on hips, but the fit of a
-    /// held-out body then leaves out other landmarks and is less stable across frames
-    /// (`tests/subject_paths.rs`; docs/landmarks-estimate.md).
+    /// 180 turns it off. Default 60° (straight arms bend 35–43°, hands on hips 53–92°): it
+    /// meets the false-alarm goal on hands on hips (docs/landmarks-estimate.md).
     pub twist_min_bend_deg: f64,
     /// A given styloid more than this many times as far from the forearm's axis as its
     /// prediction is not turned to: it is no turned wrist (a styloid of the other side lies
@@ -36,10 +34,10 @@ pub struct CheckParams {
 impl Default for CheckParams {
     fn default() -> Self {
         Self {
-            tolerance_mm: 22.0,
+            tolerance_mm: 21.0,
             spread_factor: 2.0,
             misfit_factor: 2.5,
-            twist_min_bend_deg: 180.0,
+            twist_min_bend_deg: 60.0,
             twist_max_off_axis: 2.0,
         }
     }
