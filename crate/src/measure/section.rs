@@ -1,6 +1,29 @@
 //! Plane sections of a triangle mesh: the closed loops (and open chains) where a plane cuts it.
 
 use std::collections::HashMap;
+use std::hash::{BuildHasherDefault, Hasher};
+
+/// A hash for edge keys (two vertex indices from the mesh): one multiply and rotate per word.
+/// The standard library's default (SipHash, built to resist chosen keys) cost more than the
+/// section's arithmetic; the chest's apex search sections the torso and arms nine times a body.
+#[derive(Default)]
+struct EdgeHasher(u64);
+
+impl Hasher for EdgeHasher {
+    fn finish(&self) -> u64 {
+        self.0
+    }
+    fn write(&mut self, bytes: &[u8]) {
+        for &b in bytes {
+            self.write_u32(b as u32);
+        }
+    }
+    fn write_u32(&mut self, word: u32) {
+        self.0 = (self.0.rotate_left(5) ^ word as u64).wrapping_mul(0x517c_c1b7_2722_0a95);
+    }
+}
+
+type EdgeMap<V> = HashMap<(u32, u32), V, BuildHasherDefault<EdgeHasher>>;
 
 /// A plane through `origin` with unit `normal`, and two unit in-plane axes `u`, `v`
 /// (`u × v = normal`) for the section's 2-D coordinates.
@@ -102,8 +125,8 @@ pub fn plane_section(
     section_triangles: &[u32],
     plane: &Plane,
 ) -> Vec<SectionLoop> {
-    let mut points: HashMap<(u32, u32), [f64; 2]> = HashMap::new();
-    let mut links: HashMap<(u32, u32), Vec<(u32, u32)>> = HashMap::new();
+    let mut points: EdgeMap<[f64; 2]> = EdgeMap::default();
+    let mut links: EdgeMap<Vec<(u32, u32)>> = EdgeMap::default();
     for &t in section_triangles {
         let Some(tri) = triangles.get(t as usize) else {
             continue;
@@ -139,7 +162,7 @@ pub fn plane_section(
             links.entry(cut[1]).or_default().push(cut[0]);
         }
     }
-    let mut visited: HashMap<(u32, u32), ()> = HashMap::with_capacity(links.len());
+    let mut visited: EdgeMap<()> = EdgeMap::default();
     let mut starts: Vec<(u32, u32)> = links.keys().copied().collect();
     // Open chains must be walked from an end; sorting keeps the result deterministic.
     starts.sort_by_key(|k| (links[k].len() != 1, *k));
