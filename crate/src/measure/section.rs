@@ -114,6 +114,31 @@ fn vertex(positions: &[f32], v: u32) -> Option<[f64; 3]> {
         .map(|p| [p[0] as f64, p[1] as f64, p[2] as f64])
 }
 
+/// One mesh edge the plane crosses: where, the (at most two) crossed edges it is linked to
+/// through a cut triangle, and whether a walk has passed it.
+#[derive(Clone, Copy)]
+struct Crossing {
+    at: [f64; 2],
+    links: [(u32, u32); 2],
+    linked: u8,
+    visited: bool,
+}
+
+impl Crossing {
+    fn links(&self) -> &[(u32, u32)] {
+        &self.links[..self.linked as usize]
+    }
+
+    /// A link to another crossing; an edge of a manifold mesh (the template is one) borders two
+    /// triangles, so a third link (a non-manifold edge) is dropped.
+    fn link(&mut self, to: (u32, u32)) {
+        if (self.linked as usize) < self.links.len() {
+            self.links[self.linked as usize] = to;
+            self.linked += 1;
+        }
+    }
+}
+
 /// The pieces where `plane` cuts the triangles `section_triangles` (indices into `triangles`,
 /// `#F` index triples over flat `#V·3` `positions`). Each cut crosses mesh edges; the cut points
 /// of one triangle are linked, and the links chained into loops through the edges they share.
@@ -125,8 +150,7 @@ pub fn plane_section(
     section_triangles: &[u32],
     plane: &Plane,
 ) -> Vec<SectionLoop> {
-    let mut points: EdgeMap<[f64; 2]> = EdgeMap::default();
-    let mut links: EdgeMap<Vec<(u32, u32)>> = EdgeMap::default();
+    let mut crossings: EdgeMap<Crossing> = EdgeMap::default();
     for &t in section_triangles {
         let Some(tri) = triangles.get(t as usize) else {
             continue;
@@ -141,7 +165,7 @@ pub fn plane_section(
         let p = [p0, p1, p2];
         let d = p.map(|q| plane.distance(q));
         let front = d.map(|x| x >= 0.0);
-        // Most triangles lie wholly on one side: nothing to allocate for them.
+        // Most triangles lie wholly on one side: nothing to record for them.
         if front[0] == front[1] && front[1] == front[2] {
             continue;
         }
@@ -152,38 +176,59 @@ pub fn plane_section(
                 let f = d[a] / (d[a] - d[b]);
                 let key = (tri[a].min(tri[b]), tri[a].max(tri[b]));
                 let at = [0, 1, 2].map(|k| p[a][k] + f * (p[b][k] - p[a][k]));
-                points.insert(key, plane.to_plane(at));
+                let at = plane.to_plane(at);
+                crossings
+                    .entry(key)
+                    .and_modify(|c| c.at = at)
+                    .or_insert(Crossing {
+                        at,
+                        links: [(0, 0); 2],
+                        linked: 0,
+                        visited: false,
+                    });
                 cut[n] = key;
                 n += 1;
             }
         }
         if n == 2 {
-            links.entry(cut[0]).or_default().push(cut[1]);
-            links.entry(cut[1]).or_default().push(cut[0]);
+            for (from, to) in [(cut[0], cut[1]), (cut[1], cut[0])] {
+                if let Some(c) = crossings.get_mut(&from) {
+                    c.link(to);
+                }
+            }
         }
     }
-    let mut visited: EdgeMap<()> = EdgeMap::default();
-    let mut starts: Vec<(u32, u32)> = links.keys().copied().collect();
+    let mut starts: Vec<(u32, u32)> = crossings
+        .iter()
+        .filter(|(_, c)| c.linked > 0)
+        .map(|(k, _)| *k)
+        .collect();
     // Open chains must be walked from an end; sorting keeps the result deterministic.
-    starts.sort_by_key(|k| (links[k].len() != 1, *k));
+    starts.sort_by_key(|k| (crossings[k].linked != 1, *k));
     let mut loops = Vec::new();
     for start in starts {
-        if visited.contains_key(&start) {
+        if crossings[&start].visited {
             continue;
         }
-        let mut chain = vec![points[&start]];
-        visited.insert(start, ());
+        let mut chain = vec![crossings[&start].at];
+        if let Some(c) = crossings.get_mut(&start) {
+            c.visited = true;
+        }
         let mut current = start;
-        while let Some(k) = links[&current]
+        while let Some(k) = crossings[&current]
+            .links()
             .iter()
-            .find(|k| !visited.contains_key(k))
+            .find(|k| !crossings[*k].visited)
             .copied()
         {
-            visited.insert(k, ());
-            chain.push(points[&k]);
+            let c = crossings
+                .get_mut(&k)
+                .expect("a linked crossing is recorded");
+            c.visited = true;
+            chain.push(c.at);
             current = k;
         }
-        let closed = chain.len() > 2 && links[&current].contains(&start);
+        let closed = chain.len() > 2 && crossings[&current].links().contains(&start);
         loops.push(SectionLoop {
             points: chain,
             closed,
