@@ -4,7 +4,7 @@
 //! alone at `chest_below_armpit` under it, and moving the axilla landmarks 2 cm moves the girth
 //! at most 2 mm.
 
-use bodyspace::measure::armpit::armpit_level;
+use bodyspace::measure::parting::{parting_level, torso_alone, PartingSearch};
 use bodyspace::measure::tape::{tape, LoopChoice};
 use bodyspace::measure::{plane_section, BodyMeasurer, Measure, MeasureParams, Plane};
 
@@ -269,6 +269,26 @@ fn tape_at(y: f64) -> f64 {
     tape(&loops, LoopChoice::Around([0.0, 0.0])).unwrap().girth
 }
 
+/// The armpits' apex sought around `centre` from the landmarks' `guess`, as the chest girth does.
+fn armpit_level(
+    p: &[f32],
+    t: &[[u32; 3]],
+    region: &[u32],
+    centre: [f64; 3],
+    guess: f64,
+    params: &MeasureParams,
+) -> Option<f64> {
+    let search = PartingSearch {
+        region,
+        centre,
+        lateral: [1.0, 0.0, 0.0],
+        guess,
+        above: params.armpit_band_above,
+        below: params.armpit_band_below,
+    };
+    parting_level(p, t, &search, torso_alone, params)
+}
+
 fn mm(x: f64) -> f64 {
     x * 1e3
 }
@@ -280,7 +300,7 @@ fn the_armpits_apex_is_where_the_arms_part_from_the_torso() {
     let params = MeasureParams::default();
     for guess in [apex() - 0.03, apex() - 0.01, apex() + 0.01] {
         let centre = [0.0, guess, 0.02];
-        let found = armpit_level(&p, &t, &all, centre, [1.0, 0.0, 0.0], guess, &params).unwrap();
+        let found = armpit_level(&p, &t, &all, centre, guess, &params).unwrap();
         assert!(
             (found - apex()).abs() <= 0.001,
             "guess {guess}: apex found at {found}, it is at {}",
@@ -290,10 +310,7 @@ fn the_armpits_apex_is_where_the_arms_part_from_the_torso() {
     // A band that does not hold the apex finds nothing.
     let low = apex() - params.armpit_band_above - 0.01;
     let centre = [0.0, low, 0.0];
-    assert_eq!(
-        armpit_level(&p, &t, &all, centre, [1.0, 0.0, 0.0], low, &params),
-        None
-    );
+    assert_eq!(armpit_level(&p, &t, &all, centre, low, &params), None);
 }
 
 #[test]

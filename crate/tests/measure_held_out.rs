@@ -21,10 +21,10 @@ use synth_support::{base_template_and_data, fitted_and_true_measurements};
 const BOUND: f64 = 4.0;
 
 /// The measurements within ISO 20685-1 on the benchmark's fits from the true landmarks, whose
-/// mean difference over these subjects must be inside the limit — but crotch height, whose bias
-/// (−2.4 mm on the benchmark) reaches −4.6 mm on these three (the fit's crotch; the landmark-
-/// defined measurement is unchanged).
-const WITHIN: [Measure; 10] = [
+/// mean difference over these subjects must be inside the limit. Crotch height is not among
+/// them: the fit's crotch, where the scanner sees nothing, is shallower than the truth's (+2.8 mm
+/// on the benchmark).
+const WITHIN: [Measure; 11] = [
     Measure::Stature,
     Measure::CervicaleHeight,
     Measure::AcromionHeight,
@@ -32,6 +32,7 @@ const WITHIN: [Measure; 10] = [
     Measure::BustGirth,
     Measure::UnderbustGirth,
     Measure::WaistGirth,
+    Measure::ThighGirth,
     Measure::NeckGirth,
     Measure::ArmLength,
     Measure::WaistToHipBack,

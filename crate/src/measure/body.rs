@@ -10,17 +10,17 @@
 //! to the segment with the largest blend weight summed over its corners, which partitions the
 //! overlap bands.
 //!
-//! Three levels are found on the surface around their landmarks' guesses rather than taken from
-//! the landmarks' vertices ([`super::surface`], [`super::armpit`], parameters in
+//! Four levels are found on the surface around their landmarks' guesses rather than taken from
+//! the landmarks' vertices ([`super::surface`], [`super::parting`], parameters in
 //! [`MeasureParams`]): the hip level (greatest buttock prominence), the neck girth's level (the
-//! neck's least girth) and the chest girth's (under the armpits' apex, around the torso's loop
-//! alone of the torso's and arms' section); a landmark a few centimetres off then names the same
-//! level.
+//! neck's least girth), the chest girth's (under the armpits' apex, around the torso's loop
+//! alone of the torso's and arms' section) and the crotch (where the legs part: crotch height,
+//! and the thigh girth below it); a landmark a few centimetres off then names the same level.
 
-use super::armpit::armpit_level;
 use super::definitions::Measure;
 use super::error::MeasureError;
 use super::params::MeasureParams;
+use super::parting::{legs_apart, parting_level, torso_alone, PartingSearch};
 use super::section::{plane_section, Plane, SectionLoop};
 use super::surface::{buttock_level, narrowest_neck};
 use super::tape::{closed_length, convex_hull, tape, LoopChoice};
@@ -136,7 +136,7 @@ impl BodyMeasurer {
         }
         let positive = [
             ("neck_step", params.neck_step),
-            ("armpit_resolution", params.armpit_resolution),
+            ("parting_resolution", params.parting_resolution),
             ("prominence_depth", params.prominence_depth),
         ];
         let non_negative = [
@@ -146,6 +146,8 @@ impl BodyMeasurer {
             ("armpit_band_above", params.armpit_band_above),
             ("armpit_band_below", params.armpit_band_below),
             ("chest_below_armpit", params.chest_below_armpit),
+            ("crotch_band_above", params.crotch_band_above),
+            ("crotch_band_below", params.crotch_band_below),
         ];
         for (name, value) in positive {
             if !(value > 0.0 && value.is_finite()) {
@@ -352,7 +354,7 @@ impl BodyMeasurer {
             Measure::ThighGirth => {
                 // Both legs and the torso: near the crotch the overlap band splits the thigh's
                 // section between the right leg and the torso; the loop at the hip is the thigh.
-                let plane = Plane::horizontal(up, a(0)[up] - p.thigh_below_crotch);
+                let plane = Plane::horizontal(up, b.crotch_level() - p.thigh_below_crotch);
                 around(plane, Region::TorsoAndLegs, a(1))
             }
             Measure::UpperArmGirth => {
@@ -390,7 +392,7 @@ impl BodyMeasurer {
     }
 
     /// ISO 8559-1's chest girth: the tape around the torso's loop alone (of the torso's and arms'
-    /// section), `chest_below_armpit` under the armpits' apex ([`armpit_level`], sought around
+    /// section), `chest_below_armpit` under the armpits' apex ([`parting_level`] with [`torso_alone`], sought around
     /// the four axillae's mean level, their centre the torso's point and left → right the side
     /// direction). Where the band holds no apex (arms joined to the torso all the way down, or
     /// the guess far off), the tape at the axillae's mean level around every piece the torso's
@@ -408,15 +410,15 @@ impl BodyMeasurer {
         );
         lateral[up] = 0.0;
         let region = Region::TorsoAndArms;
-        let apex = armpit_level(
-            b.positions,
-            &self.triangles,
-            &self.regions[region as usize],
+        let search = PartingSearch {
+            region: &self.regions[region as usize],
             centre,
             lateral,
             guess,
-            p,
-        );
+            above: p.armpit_band_above,
+            below: p.armpit_band_below,
+        };
+        let apex = parting_level(b.positions, &self.triangles, &search, torso_alone, p);
         match apex {
             Some(apex) => {
                 let plane = Plane::horizontal(up, apex - p.chest_below_armpit);
@@ -439,10 +441,10 @@ impl BodyMeasurer {
         let a = |k: usize| b.anchor(m, k);
         match m {
             Measure::Stature => b.top - b.floor,
-            Measure::CervicaleHeight
-            | Measure::AcromionHeight
-            | Measure::CrotchHeight
-            | Measure::KneeHeight => b.mean_height(m) - b.floor,
+            Measure::CervicaleHeight | Measure::AcromionHeight | Measure::KneeHeight => {
+                b.mean_height(m) - b.floor
+            }
+            Measure::CrotchHeight => b.crotch_level() - b.floor,
             Measure::ShoulderBreadth => distance(a(0), a(1)),
             Measure::ArmLength => {
                 let n = self.anchors[m.index()].len();
@@ -475,6 +477,8 @@ struct Body<'a> {
     top: f64,
     /// The hip level, computed once for hip girth and waist-to-hip.
     hip_level: std::cell::OnceCell<f64>,
+    /// The crotch, computed once for crotch height and thigh girth.
+    crotch_level: std::cell::OnceCell<f64>,
     /// Volume and area, computed once for both measurements (one pass over every triangle).
     volume_and_area: std::cell::OnceCell<(f64, f64)>,
 }
@@ -493,6 +497,7 @@ impl<'a> Body<'a> {
             floor,
             top,
             hip_level: std::cell::OnceCell::new(),
+            crotch_level: std::cell::OnceCell::new(),
             volume_and_area: std::cell::OnceCell::new(),
         }
     }
@@ -552,6 +557,37 @@ impl<'a> Body<'a> {
                 p,
             )
             .unwrap_or(guess)
+        })
+    }
+
+    /// ISO 7250-1's crotch: the highest level at which the torso's and legs' section has parted
+    /// into the legs ([`legs_apart`] around the Crotch, Lt. → Rt. Trochanterion the side
+    /// direction), from `crotch_band_above` over to `crotch_band_below` under the Crotch
+    /// landmark's height; that height when the band holds no parting.
+    fn crotch_level(&self) -> f64 {
+        *self.crotch_level.get_or_init(|| {
+            let p = &self.measurer.params;
+            // CROTCH: Crotch, Rt. Trochanterion, Lt. Trochanterion.
+            let m = Measure::CrotchHeight;
+            let crotch = self.anchor(m, 0);
+            let mut lateral = sub(self.anchor(m, 1), self.anchor(m, 2));
+            lateral[p.up_axis] = 0.0;
+            let search = PartingSearch {
+                region: &self.measurer.regions[Region::TorsoAndLegs as usize],
+                centre: crotch,
+                lateral,
+                guess: crotch[p.up_axis],
+                above: p.crotch_band_above,
+                below: p.crotch_band_below,
+            };
+            parting_level(
+                self.positions,
+                &self.measurer.triangles,
+                &search,
+                legs_apart,
+                p,
+            )
+            .unwrap_or(crotch[p.up_axis])
         })
     }
 

@@ -139,7 +139,7 @@ impl Measure {
                 "Crotch height (inseam)",
                 Length,
                 "ISO 7250-1 crotch height; ISO 8559-1 inside leg length",
-                &["Crotch"],
+                &["Crotch", "Rt. Trochanterion", "Lt. Trochanterion"],
             ),
             Measure::KneeHeight => d(
                 "knee_height",

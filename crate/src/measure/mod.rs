@@ -1,8 +1,9 @@
 //! Anthropometry: standard body measurements after ISO 8559-1 and ISO 7250-1 on a body in
 //! template vertex order, anchored on the template's landmarks (docs/measurements.md).
 //!
-//! * [`armpit`] — the armpits' apex found on the surface (the chest girth's level)
 //! * [`definitions`] — the [`Measure`] table: names, kinds, sources, landmarks
+//! * [`parting`] — levels where a section's loops part, found on the surface: the armpits' apex
+//!   (the chest girth's level) and the crotch (crotch height, the thigh girth's level)
 //! * [`section`] — plane sections of a triangle mesh ([`Plane`], [`plane_section`])
 //! * [`surface`] — body points found on the surface around a landmark's guess: the prominence,
 //!   the buttocks' level, the neck's narrowest level
@@ -16,11 +17,11 @@
 //!
 //! Volume and surface area are [`crate::mesh::volume`].
 
-pub mod armpit;
 pub mod body;
 pub mod definitions;
 pub mod error;
 pub mod params;
+pub mod parting;
 pub mod section;
 pub mod surface;
 pub mod tape;

@@ -11,8 +11,9 @@ pub struct MeasureParams {
     /// Least height of the hip plane above the Crotch (the template's Trochanterions sit within
     /// millimetres of the crotch, where a plane may pass between the legs); default 0.02 m.
     pub hip_above_crotch: f64,
-    /// Depth of the thigh plane below the Crotch: ISO 8559-1 takes thigh girth just below the
-    /// gluteal fold, for which the template has no landmark; default 0.03 m.
+    /// Depth of the thigh plane below the crotch (the level found on the surface, below):
+    /// ISO 8559-1 takes thigh girth just below the gluteal fold, for which the template has no
+    /// landmark; default 0.03 m.
     pub thigh_below_crotch: f64,
     /// Height of the head plane above Sellion: ISO 8559-1 passes it above the eyebrows
     /// (glabella); default 0.015 m.
@@ -37,12 +38,19 @@ pub struct MeasureParams {
     /// `chest_below_armpit` under the armpits' apex, the highest level at which a horizontal
     /// section of the torso and arms has the torso's loop apart from both arms; the apex is
     /// sought from `armpit_band_above` over to `armpit_band_below` under the axilla landmarks'
-    /// mean level, by bisection to `armpit_resolution`; defaults 0.05 m, 0.08 m, 0.001 m and
-    /// 0.01 m.
+    /// mean level; defaults 0.05 m, 0.08 m and 0.01 m.
     pub armpit_band_above: f64,
     pub armpit_band_below: f64,
-    pub armpit_resolution: f64,
     pub chest_below_armpit: f64,
+    /// The crotch (ISO 7250-1 crotch height; the thigh girth's level) is the highest level at
+    /// which a horizontal section of the torso and legs has parted into the two legs, sought
+    /// from `crotch_band_above` over to `crotch_band_below` under the Crotch landmark's height;
+    /// defaults 0.05 m and 0.05 m.
+    pub crotch_band_above: f64,
+    pub crotch_band_below: f64,
+    /// The armpits' apex and the crotch are bisected until their bracket is narrower than
+    /// `parting_resolution` (`parting.rs`); default 0.001 m.
+    pub parting_resolution: f64,
     /// Cap depth δ of a prominence (`surface.rs`): the vertices within δ of the extreme one make
     /// its point; default 0.005 m.
     pub prominence_depth: f64,
@@ -62,8 +70,10 @@ impl Default for MeasureParams {
             hip_band_above: 0.10,
             armpit_band_above: 0.05,
             armpit_band_below: 0.08,
-            armpit_resolution: 0.001,
             chest_below_armpit: 0.01,
+            crotch_band_above: 0.05,
+            crotch_band_below: 0.05,
+            parting_resolution: 0.001,
             prominence_depth: 0.005,
         }
     }

@@ -16,11 +16,6 @@ use super::params::MeasureParams;
 use super::section::{plane_section, Plane, SectionLoop};
 use super::tape::{contains, polygon_area};
 
-fn vertex(positions: &[f32], v: u32) -> [f64; 3] {
-    let i = 3 * v as usize;
-    [0, 1, 2].map(|k| positions[i + k] as f64)
-}
-
 fn centroid(points: &[[f64; 2]]) -> [f64; 2] {
     let n = points.len().max(1) as f64;
     points
@@ -28,24 +23,16 @@ fn centroid(points: &[[f64; 2]]) -> [f64; 2] {
         .fold([0.0, 0.0], |s, p| [s[0] + p[0] / n, s[1] + p[1] / n])
 }
 
-/// Whether closed loops, other than `except` and not around `centre`, lie on both sides of
-/// `centre` along `lateral`: a loop's centroid c with (c − centre)·`lateral` > 0, another's < 0.
-/// Loops inside `except` do not count. In-plane coordinates.
-fn both_sides(
-    closed: &[&SectionLoop],
-    except: Option<&SectionLoop>,
+/// Whether of `loops` one's centroid c lies on each side of `centre` along `lateral`:
+/// (c − centre)·`lateral` > 0 for one, < 0 for another. In-plane coordinates.
+fn both_sides<'l>(
+    loops: impl Iterator<Item = &'l SectionLoop>,
     centre: [f64; 2],
     lateral: [f64; 2],
 ) -> bool {
     let (mut right, mut left) = (false, false);
-    for l in closed {
-        if except.is_some_and(|e| std::ptr::eq(*l, e)) || contains(&l.points, centre) {
-            continue;
-        }
+    for l in loops {
         let c = centroid(&l.points);
-        if except.is_some_and(|e| contains(&e.points, c)) {
-            continue;
-        }
         let side = (c[0] - centre[0]) * lateral[0] + (c[1] - centre[1]) * lateral[1];
         right |= side > 0.0;
         left |= side < 0.0;
@@ -66,15 +53,20 @@ pub fn torso_alone(loops: &[SectionLoop], centre: [f64; 2], lateral: [f64; 2]) -
     else {
         return false;
     };
-    both_sides(&closed, Some(torso), centre, lateral)
+    let arms = closed.iter().copied().filter(|l| {
+        !std::ptr::eq(*l, *torso)
+            && !contains(&l.points, centre)
+            && !contains(&torso.points, centroid(&l.points))
+    });
+    both_sides(arms, centre, lateral)
 }
 
-/// Whether the legs stand apart: no closed loop of the section contains `centre` (the point
-/// between the legs) and a closed loop lies on each side of it along `lateral` (one per leg).
-/// In-plane coordinates.
+/// Whether the legs stand apart: the centroids of two closed loops of the section lie on either
+/// side of `centre` (the point between the legs) along `lateral`, one per leg. Above the crotch
+/// the one loop around the pelvis has its centroid on one side only; thighs pressed into each
+/// other are still two loops. In-plane coordinates.
 pub fn legs_apart(loops: &[SectionLoop], centre: [f64; 2], lateral: [f64; 2]) -> bool {
-    let closed: Vec<&SectionLoop> = loops.iter().filter(|l| l.closed).collect();
-    both_sides(&closed, None, centre, lateral)
+    both_sides(loops.iter().filter(|l| l.closed), centre, lateral)
 }
 
 /// Where a parting is sought: the section's triangles, the point between the parting pieces, the
@@ -115,7 +107,7 @@ pub fn parting_level(
         .region
         .iter()
         .map(|&t| {
-            let h = triangles[t as usize].map(|v| vertex(positions, v)[up]);
+            let h = triangles[t as usize].map(|v| positions[3 * v as usize + up] as f64);
             (t, h[0].min(h[1]).min(h[2]), h[0].max(h[1]).max(h[2]))
         })
         .filter(|&(_, lo, hi)| hi >= apart && lo <= joined)
