@@ -7,10 +7,13 @@ use super::error::SubjectError;
 use super::frame::ToTemplate;
 use super::input::{read_subject, SubjectInput};
 use super::options::SubjectOptions;
-use super::policy::{subject_landmarks, PriorEstimate};
+use super::policy::{subject_landmarks, PriorEstimate, SubjectLandmarks};
 use super::report::SubjectReport;
 use crate::align::{align_scan, assess, AlignInput, AlignObserver, Alignment};
-use crate::estimate::Verdict;
+use crate::estimate::typical_error::typical_error_mm;
+use crate::estimate::{given_landmarks, Verdict};
+use crate::landmarks::CAESAR_LANDMARKS;
+use crate::measure::{measurements_trust, Origin};
 use crate::mesh::units::Units;
 use crate::template::{Resolution, Template};
 
@@ -109,13 +112,41 @@ pub fn fit_subject(
     let to_m = alignment.scale_to_metres;
     let in_scan_units: Vec<_> = alignment.positions.iter().map(|p| p / to_m).collect();
     let to_template = ToTemplate::of_fit(&in_scan_units, &base.mesh().positions, units);
+    let origin = landmark_origins(input, &landmarks);
     let report = SubjectReport {
+        measurement_trust: measurements_trust(&|name: &str| {
+            let k = CAESAR_LANDMARKS.iter().position(|l| l.name == name);
+            let typical = k.map_or(f64::NAN, typical_error_mm);
+            (k.map_or(Origin::Absent, |k| origin[k]), typical)
+        }),
         landmarks: landmarks.report,
         quality,
         to_template,
         alignment: alignment.report.clone(),
     };
     Ok(SubjectFit { alignment, report })
+}
+
+/// Where each CAESAR landmark of the fit came from (CAESAR order): given and kept by the check,
+/// left out as suspicious, estimated (in the warp's set and not given), or absent.
+fn landmark_origins(input: &SubjectInput, landmarks: &SubjectLandmarks) -> Vec<Origin> {
+    let given = given_landmarks(&input.given_in_scan_units());
+    let used = given_landmarks(&landmarks.set);
+    let left_out = &landmarks.report.left_out;
+    (0..CAESAR_LANDMARKS.len())
+        .map(|k| {
+            let name = CAESAR_LANDMARKS[k].name;
+            if left_out.iter().any(|l| l.name == name) {
+                Origin::LeftOut
+            } else if given.iter().any(|(i, _)| *i == k) {
+                Origin::Placed
+            } else if used.iter().any(|(i, _)| *i == k) {
+                Origin::Estimated
+            } else {
+                Origin::Absent
+            }
+        })
+        .collect()
 }
 
 /// [`read_subject`] then [`fit_subject`]: the whole path from file bytes (`scan`: bytes and file
