@@ -36,5 +36,7 @@ pub use error::MeasureError;
 pub use params::MeasureParams;
 pub use section::{plane_section, Plane, SectionLoop};
 pub use tolerance::{Agreement, IsoClass};
-pub use trust::{measurement_trust, measurements_trust, MeasurementTrust, Origin, Trust};
+pub use trust::{
+    measurement_trust, measurements_trust, MeasurementTrust, Origin, Trust, TrustParams,
+};
 pub use upright::upright;

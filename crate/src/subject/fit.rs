@@ -13,7 +13,7 @@ use crate::align::{align_scan, assess, AlignInput, AlignObserver, Alignment};
 use crate::estimate::typical_error::typical_error_mm;
 use crate::estimate::{given_landmarks, Verdict};
 use crate::landmarks::CAESAR_LANDMARKS;
-use crate::measure::{measurements_trust, Origin};
+use crate::measure::{measurements_trust, Origin, TrustParams};
 use crate::mesh::units::Units;
 use crate::template::{Resolution, Template};
 
@@ -114,11 +114,14 @@ pub fn fit_subject(
     let to_template = ToTemplate::of_fit(&in_scan_units, &base.mesh().positions, units);
     let origin = landmark_origins(input, &landmarks);
     let report = SubjectReport {
-        measurement_trust: measurements_trust(&|name: &str| {
-            let k = CAESAR_LANDMARKS.iter().position(|l| l.name == name);
-            let typical = k.map_or(f64::NAN, typical_error_mm);
-            (k.map_or(Origin::Absent, |k| origin[k]), typical)
-        }),
+        measurement_trust: measurements_trust(
+            &|name: &str| {
+                let k = CAESAR_LANDMARKS.iter().position(|l| l.name == name);
+                let typical = k.map_or(f64::NAN, typical_error_mm);
+                (k.map_or(Origin::Absent, |k| origin[k]), typical)
+            },
+            &TrustParams::default(),
+        ),
         landmarks: landmarks.report,
         quality,
         to_template,
