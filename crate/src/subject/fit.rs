@@ -1,5 +1,6 @@
 //! [`fit_subject`]: one subject from what was read to a checked fit — the landmark policy, the RBF
-//! warp and fine alignment ([`align_scan`]), the quality check and the frame — and its report.
+//! warp and fine alignment ([`align_scan`]), the quality check, the frame and each measurement's
+//! trust from where its landmarks came (`measure/trust.rs`) — and its report.
 
 use nalgebra::Point3;
 
@@ -54,7 +55,8 @@ impl SubjectFit {
 /// Fits `template` (at `fine`: coarse to fine, from `base_template` when the caller keeps one) to
 /// the subject: its landmarks by the one policy (`policy.rs`; `prior`: an estimate already run on
 /// this scan with these landmarks), then [`align_scan`], the quality check with the options'
-/// thresholds (left-out landmarks raise `suspicious_landmarks`) and the frame. `observer` hears
+/// thresholds (left-out landmarks raise `suspicious_landmarks`), the frame and each measurement's
+/// trust ([`measurements_trust`] from `landmark_origins`). `observer` hears
 /// the estimate and every iteration of the alignment; a `Break` cancels.
 pub fn fit_subject(
     template: &Template,
