@@ -22,5 +22,6 @@ test('a fit from estimated landmarks names its doubtful measurements in words', 
   await expect(note).toHaveClass(/warn-note/);
   await expect(note).toContainText('Measurements not to trust from this fit: ');
   await expect(note).toContainText('shoulder breadth (biacromial): from the estimated Rt. Acromion (typical error');
-  await expect(note).toContainText("against ISO 20685-1's 4 mm — place these landmarks to measure it");
+  // E = √(e_Rt² + e_Lt²) of the acromia's typical errors; P = erfc(4 / (E·√π)).
+  await expect(note).toContainText("expected error ≈ 33 mm against ISO 20685-1's 4 mm (over it on 92 % of bodies) — place these landmarks to measure it");
 });
