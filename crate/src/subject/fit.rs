@@ -169,3 +169,74 @@ pub fn fit_subject_files(
     let input = read_subject(scan, landmarks, units)?;
     fit_subject(template, base_template, &input, None, options, observer)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::estimate::SuspicionKind;
+    use crate::landmarks::{Landmark, LandmarkSet};
+    use crate::mesh::Mesh;
+    use crate::subject::input::GivenLandmarks;
+    use crate::subject::report::{LandmarkPolicyReport, LandmarkSource};
+
+    fn set(names: &[&str]) -> LandmarkSet {
+        LandmarkSet {
+            landmarks: names
+                .iter()
+                .map(|n| Landmark {
+                    name: n.to_string(),
+                    position: Point3::origin(),
+                })
+                .collect(),
+            ..LandmarkSet::default()
+        }
+    }
+
+    #[test]
+    fn each_landmark_is_placed_left_out_estimated_or_absent() {
+        // Given: both Acromions and Sellion; Sellion left out as suspicious. The warp's set: the
+        // Rt. Acromion kept and Cervicale estimated; the Lt. Acromion given and kept too.
+        let input = SubjectInput {
+            name: "s".into(),
+            scan: Mesh::new(vec![Point3::origin()], vec![]),
+            units: Some(Units::Metres),
+            given: Some(GivenLandmarks {
+                set: set(&["Rt. Acromion", "Lt. Acromion", "Sellion"]),
+                units: None,
+                file: "l.csv".into(),
+            }),
+        };
+        let landmarks = SubjectLandmarks {
+            set: set(&["Rt. Acromion", "Lt. Acromion", "Cervicale"]),
+            report: LandmarkPolicyReport {
+                source: LandmarkSource::FilledIn,
+                file: "l.csv".into(),
+                given: 3,
+                left_out: vec![crate::estimate::SuspiciousLandmark {
+                    name: "Sellion".into(),
+                    distance_mm: 40.0,
+                    kind: SuspicionKind::Far,
+                    suggestion: String::new(),
+                    expected: [0.0; 3],
+                }],
+                unjudged: vec![],
+                estimated: 1,
+                used: 3,
+                estimate: None,
+                estimate_check: None,
+            },
+        };
+        let origin = landmark_origins(&input, &landmarks);
+        let of = |name: &str| {
+            origin[CAESAR_LANDMARKS
+                .iter()
+                .position(|l| l.name == name)
+                .unwrap()]
+        };
+        assert_eq!(of("Rt. Acromion"), Origin::Placed);
+        assert_eq!(of("Lt. Acromion"), Origin::Placed);
+        assert_eq!(of("Sellion"), Origin::LeftOut);
+        assert_eq!(of("Cervicale"), Origin::Estimated);
+        assert_eq!(of("Crotch"), Origin::Absent);
+    }
+}
