@@ -204,7 +204,7 @@ fn erfc(x: f64) -> f64 {
 }
 
 /// "shoulder breadth (biacromial): from the estimated Rt. Acromion (typical error 24 mm) and Lt.
-/// Acromion (24 mm), expected error ≈ 33 mm against ISO 20685-1's 4 mm (over it on 93 % of
+/// Acromion (23 mm), expected error ≈ 33 mm against ISO 20685-1's 4 mm (over it on 92 % of
 /// bodies) — place these landmarks to measure it"; `limit`: the limit (mm) and P.
 fn words(
     label: &str,
