@@ -191,8 +191,8 @@ pub fn chance_over(limit: f64, expected: f64) -> f64 {
     erfc(limit / (expected * std::f64::consts::PI.sqrt()))
 }
 
-/// erfc(x) for x ≥ 0 (Abramowitz & Stegun 7.1.26, absolute error < 1.5·10⁻⁷); 1 below 0 is
-/// not needed here (the argument is a ratio of lengths) and is clamped to erfc(0) = 1.
+/// erfc(x) for x ≥ 0 (Abramowitz & Stegun 7.1.26, absolute error < 1.5·10⁻⁷). A negative x
+/// (never here: the argument is a ratio of lengths) is taken as 0, giving erfc(0) = 1.
 fn erfc(x: f64) -> f64 {
     let x = x.max(0.0);
     let t = 1.0 / (1.0 + 0.327_591_1 * x);
