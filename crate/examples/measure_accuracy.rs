@@ -17,7 +17,10 @@
 //! measurements alone. Prints per kind of fit and measurement: the mean difference (fit − truth),
 //! sd, MAE, the 95 % interval of the mean (mean ± 1.96·sd/√n), the ISO 20685-1 limit and
 //! verdict; then how many of the judged measurements are within the standard and the mean MAE
-//! over them (each subject's differences go to stderr); and per subject how far below the true crown the scan's highest point lies (the
+//! over them (each subject's differences go to stderr); then the trust the subject report gives
+//! each measurement (`measure/trust.rs`) against the truth: its verdicts, the mean expected error
+//! against the MAE, the doubtful ones that were within the limit and the trusted ones that were
+//! out (the cache keeps each fit's trust beside it, `….trust.json`); and per subject how far below the true crown the scan's highest point lies (the
 //! scanner's cut: the fit's crown there is the alignment's extrapolation), and the time to
 //! measure one fit natively.
 
@@ -32,7 +35,8 @@ mod native {
     use bodyspace::cli::model::{measure_any_frame, read_fit};
     use bodyspace::io::{read_scan, write_ply};
     use bodyspace::measure::{
-        upright, Agreement, BodyMeasurer, Measure, MeasureParams, Measurements,
+        upright, Agreement, BodyMeasurer, Measure, MeasureParams, MeasurementTrust, Measurements,
+        Trust,
     };
     use bodyspace::mesh::similarity::similarity;
     use bodyspace::mesh::units::detect_units;
@@ -122,21 +126,30 @@ mod native {
         std::fs::read(path).map_err(|e| format!("{}: {e}", path.display()))
     }
 
+    /// One measurement's trust as the report wrote it: (trust, expected error E in mm, chance P
+    /// over the limit, doubtful).
+    type TrustRow = (String, Option<f64>, Option<f64>, bool);
+
     /// The fit of subject `id` at `template`'s resolution (`base` given at `fine`; template
-    /// frame, metres), from the cache or fitted now.
+    /// frame, metres) and its measurements' trust, from the cache or fitted now.
     fn fit(
         o: &Options,
         (template, base): (&Template, Option<&Template>),
         id: usize,
         from: From,
-    ) -> Result<Vec<nalgebra::Point3<f64>>, String> {
+    ) -> Result<(Vec<nalgebra::Point3<f64>>, Vec<TrustRow>), String> {
         let fine = if base.is_some() { "_fine" } else { "" };
         let cached = o
             .cache
             .as_ref()
             .map(|c| c.join(format!("{}{fine}_{id:03}.ply", from.name())));
-        if let Some(path) = cached.as_ref().filter(|p| p.exists()) {
-            return Ok(read_fit(path)?.positions);
+        let trust_path = cached.as_ref().map(|p| p.with_extension("trust.json"));
+        if let (Some(path), Some(trust)) = (
+            cached.as_ref().filter(|p| p.exists()),
+            trust_path.as_ref().filter(|p| p.exists()),
+        ) {
+            let rows = serde_json::from_slice(&bytes(trust)?).map_err(|e| e.to_string())?;
+            return Ok((read_fit(path)?.positions, rows));
         }
         let scan_path = o.dir.join(format!("scan_{id:03}.ply"));
         let lnd_path = o.dir.join(format!("landmarks_{id:03}.lnd"));
@@ -161,12 +174,112 @@ mod native {
         )
         .map_err(|e| e.to_string())?;
         let positions = fitted.positions_in_template_frame();
-        if let Some(path) = cached {
+        let rows: Vec<TrustRow> = fitted
+            .report
+            .measurement_trust
+            .iter()
+            .map(|t: &MeasurementTrust| {
+                (
+                    trust_name(t.trust),
+                    t.expected_error_mm,
+                    t.chance_over_limit,
+                    t.doubtful,
+                )
+            })
+            .collect();
+        if let (Some(path), Some(trust)) = (cached, trust_path) {
             let mesh = Mesh::new(positions.clone(), template.mesh().triangles.clone());
             std::fs::write(&path, write_ply(&mesh))
                 .map_err(|e| format!("{}: {e}", path.display()))?;
+            let text = serde_json::to_vec(&rows).map_err(|e| e.to_string())?;
+            std::fs::write(&trust, text).map_err(|e| format!("{}: {e}", trust.display()))?;
         }
-        Ok(positions)
+        Ok((positions, rows))
+    }
+
+    fn trust_name(t: Trust) -> String {
+        serde_json::to_value(t)
+            .ok()
+            .and_then(|v| v.as_str().map(String::from))
+            .unwrap_or_default()
+    }
+
+    /// The trust the reports gave each measurement against the truth: the verdicts (placed,
+    /// body-defined, estimated; doubtful), the mean expected error E against the MAE, the mean
+    /// chance P of an error over the limit against the share of subjects over it, the doubtful
+    /// ones within the limit (false alarms) and the trusted ones out of it (false trust), counted
+    /// per subject.
+    fn trust_table(title: &str, rows: &[(Measurements, Measurements)], trust: &[Vec<TrustRow>]) {
+        println!("\n{title}: each measurement's trust against the truth");
+        println!(
+            "| measurement | limit (mm) | verdicts | E (mm) | MAE (mm) | P | over the limit | doubtful but within | trusted but out |"
+        );
+        println!("| --- | ---: | --- | ---: | ---: | ---: | ---: | ---: | ---: |");
+        let (mut alarms, mut doubtful_total, mut missed, mut trusted_total) = (0, 0, 0, 0);
+        for m in Measure::ALL {
+            let Some(class) = m.iso_class() else {
+                continue;
+            };
+            let limit = class.limit();
+            let mut verdicts = std::collections::BTreeMap::<String, usize>::new();
+            let (mut e_sum, mut e_n, mut abs_sum, mut n) = (0.0, 0, 0.0, 0);
+            let (mut p_sum, mut p_n, mut over) = (0.0, 0, 0);
+            let (mut alarm, mut miss) = (0, 0);
+            for ((fit, truth), t) in rows.iter().zip(trust) {
+                let (name, e, p, doubtful) = &t[m.index()];
+                if let Some(p) = p {
+                    p_sum += p;
+                    p_n += 1;
+                }
+                let key = if *doubtful {
+                    format!("{name}, doubtful")
+                } else {
+                    name.clone()
+                };
+                *verdicts.entry(key).or_default() += 1;
+                if let Some(e) = e {
+                    e_sum += e;
+                    e_n += 1;
+                }
+                let Some(d) = fit.get(m).zip(truth.get(m)).map(|(f, t)| (f - t).abs()) else {
+                    continue;
+                };
+                abs_sum += d;
+                n += 1;
+                over += usize::from(d > limit);
+                if *doubtful {
+                    doubtful_total += 1;
+                    alarm += usize::from(d <= limit);
+                } else {
+                    trusted_total += 1;
+                    miss += usize::from(d > limit);
+                }
+            }
+            alarms += alarm;
+            missed += miss;
+            let verdicts: Vec<String> = verdicts.iter().map(|(k, c)| format!("{c} {k}")).collect();
+            let e = if e_n > 0 {
+                format!("{:.1}", e_sum / e_n as f64)
+            } else {
+                "—".into()
+            };
+            let p = if p_n > 0 {
+                format!("{:.0} %", 100.0 * p_sum / p_n as f64)
+            } else {
+                "—".into()
+            };
+            println!(
+                "| {} | {:.0} | {} | {e} | {:.1} | {p} | {over} of {n} | {alarm} | {miss} |",
+                m.definition().name,
+                limit * 1e3,
+                verdicts.join("; "),
+                abs_sum / n.max(1) as f64 * 1e3
+            );
+        }
+        println!(
+            "{title}: doubtful {doubtful_total}, of them within the limit {alarms}; trusted \
+             {trusted_total}, of them out of the limit {missed} (subject × measurement)"
+        );
     }
 
     /// How far below the true crown the scan's highest point lies (mm): both moved by the rigid
@@ -294,9 +407,11 @@ mod native {
         let mut times = Vec::new();
         for &from in &o.from {
             let mut rows = Vec::with_capacity(n);
+            let mut trust = Vec::with_capacity(n);
             for (id, truth) in (1..=n).zip(&truths) {
                 let started = std::time::Instant::now();
-                let positions = fit(&o, fitting, id, from)?;
+                let (positions, trusted) = fit(&o, fitting, id, from)?;
+                trust.push(trusted);
                 // The base vertices come first at `fine`: measured on them, as `bodyspace measure` does.
                 let positions = &positions[..template.mesh().vertex_count()];
                 let stood = upright(positions, &template.mesh().positions)
@@ -312,6 +427,7 @@ mod native {
                 rows.push((fitted, truth.clone()));
             }
             table(from.title(), &rows);
+            trust_table(from.title(), &rows, &trust);
         }
         times.sort_by(f64::total_cmp);
         println!(

@@ -166,7 +166,70 @@ fn batch_records_every_subject_resumes_shards_and_pools_fits() {
         } else {
             assert_eq!((given, used + left_out), (73, 73), "{subject}");
         }
+        // Each measurement's trust (`measure/trust.rs`): shoulder breadth from estimated acromia
+        // is doubtful, from placed ones not (unless the check left an acromion out); the chest
+        // girth is found on the body either way.
+        let trust = |name: &str| {
+            report["measurement_trust"]
+                .as_array()
+                .unwrap()
+                .iter()
+                .find(|t| t["name"] == name)
+                .unwrap()
+                .clone()
+        };
+        let acromion_left_out = l["left_out"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .any(|x| x["name"].as_str().unwrap().ends_with("Acromion"));
+        let shoulder = trust("shoulder_breadth");
+        let estimated = subject == "lonely" || acromion_left_out;
+        assert_eq!(shoulder["doubtful"], estimated, "{subject}: {shoulder}");
+        assert_eq!(
+            shoulder["trust"],
+            if estimated { "estimated" } else { "placed" }
+        );
+        if subject == "lonely" {
+            let words = shoulder["words"].as_str().unwrap();
+            assert!(
+                words.starts_with("shoulder breadth (biacromial): from the estimated Rt. Acromion"),
+                "{words}"
+            );
+        }
+        assert_eq!(trust("chest_girth")["trust"], "body_defined");
     }
+    // `measure` reads the reports: one fit with its report, and the folder with a `doubtful`
+    // column naming each fit's doubtful measurements.
+    let run = succeed(&[
+        "measure",
+        "--mesh",
+        path(&out.join("fits").join("lonely.ply")),
+        "--report",
+        path(&out.join("reports").join("lonely.json")),
+    ]);
+    let measured: serde_json::Value = serde_json::from_slice(&run.stdout).unwrap();
+    assert_eq!(measured["trust"]["shoulder_breadth"], "doubtful");
+    assert_eq!(measured["trust"]["chest_girth"], "body_defined");
+    assert!(measured["doubtful"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .any(|w| w.as_str().unwrap().starts_with("shoulder breadth")));
+    let csv = root.join("measured.csv");
+    succeed(&[
+        "measure",
+        "--fits",
+        path(&out.join("fits")),
+        "--csv",
+        path(&csv),
+    ]);
+    let text = std::fs::read_to_string(&csv).unwrap();
+    let mut lines = text.lines();
+    assert!(lines.next().unwrap().ends_with(",doubtful"));
+    let lonely = lines.find(|l| l.starts_with("\"lonely\"")).unwrap();
+    let last = lonely.rsplit(',').next().unwrap();
+    assert!(last.split(' ').any(|n| n == "shoulder_breadth"), "{lonely}");
     // Nothing half-written is left behind.
     for dir in ["fits", "reports"] {
         for entry in std::fs::read_dir(out.join(dir)).unwrap() {

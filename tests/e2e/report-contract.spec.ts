@@ -10,7 +10,7 @@ import { mkdtempSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { expect, test } from '@playwright/test';
-import type { DistanceStatsMm, FineReport, LandmarkPolicyReport, QualityReport, SubjectReport, ToTemplate, WarpReport } from '../../web/shared/align-types';
+import type { DistanceStatsMm, FineReport, LandmarkPolicyReport, MeasurementTrust, QualityReport, SubjectReport, ToTemplate, UnplacedLandmark, WarpReport } from '../../web/shared/align-types';
 import type { EstimateReport, SelfCheck, SelfCheckEvidence } from '../../web/shared/landmark-entry';
 import { bodyspaceBinary, synthSubjects } from './synth';
 
@@ -21,6 +21,7 @@ const subject: Keys<SubjectReport> = {
   landmarks: true,
   quality: true,
   to_template: true,
+  measurement_trust: true,
   template_resolution: true,
   coarse_to_fine: true,
   template_vertices: true,
@@ -65,6 +66,8 @@ const quality: Keys<QualityReport> = {
 const selfCheck: Keys<SelfCheck> = { verdict: true, reasons: true, confidence_factor: true, lopsided_factor: true, evidence: true };
 const evidence: Keys<SelfCheckEvidence> = { fit_rms_mm: true, fit_moved_mm: true, stature_m: true, contradicting: true, asymmetric: true, uneven: true };
 const estimateRead: Keys<EstimateReport> = { landmarks: true, frame: true, given: true, estimated: true, flagged: true, self_check: true, fit_rms_mm: true, total_ms: true };
+const trust: Keys<MeasurementTrust> = { name: true, trust: true, landmarks: true, expected_error_mm: true, limit_mm: true, chance_over_limit: true, doubtful: true, words: true };
+const unplaced: Keys<UnplacedLandmark> = { name: true, origin: true, typical_error_mm: true };
 const toTemplate: Keys<ToTemplate> = { scale_to_metres: true, rotation: true, translation: true };
 const warp: Keys<WarpReport> = {
   kernel: true,
@@ -137,6 +140,9 @@ test('the TypeScript report types name exactly the fields the core writes', () =
     expectKeys('WarpReport', report.warp!, warp);
     expectKeys('FineReport', report.fine!, fine);
     expectKeys('DistanceStatsMm', report.fine!.scan_to_template as Record<string, unknown>, distance);
+    const trusted = report.measurement_trust as unknown as Record<string, unknown>[];
+    expect(trusted).toHaveLength(19);
+    for (const t of trusted) expectKeys(`MeasurementTrust ${String(t.name)}`, t, trust);
 
     // No landmark file, and up stated as −z on this z-up scan: the estimate runs in a wrong frame,
     // says it failed and why, and the fit's quality carries it.
@@ -149,6 +155,13 @@ test('the TypeScript report types name exactly the fields the core writes', () =
     expectRequired('EstimateReport', wrong.landmarks!.estimate as Record<string, unknown>, estimateRead);
     expectKeys('EstimateReport.self_check', (wrong.landmarks!.estimate as Record<string, unknown>).self_check as Record<string, unknown>, selfCheck);
     const typed = wrong as unknown as SubjectReport;
+    // Every landmark estimated: shoulder breadth comes from the estimated acromia, doubtful, in words.
+    const shoulder = typed.measurement_trust.find((t) => t.name === 'shoulder_breadth')!;
+    expectKeys('MeasurementTrust (estimated)', shoulder as unknown as Record<string, unknown>, trust);
+    expectKeys('UnplacedLandmark', shoulder.landmarks[0] as unknown as Record<string, unknown>, unplaced);
+    expect(shoulder.trust).toBe('estimated');
+    expect(shoulder.doubtful).toBe(true);
+    expect(shoulder.words).toContain('Acromion');
     expect(typed.landmarks.estimate_check?.verdict).toBe('failed');
     expect(typed.landmarks.estimate_check?.reasons.length).toBeGreaterThan(0);
     expect(typed.quality?.flags).toContain('landmark_estimate');

@@ -217,11 +217,40 @@ export interface ToTemplate {
   translation: [number, number, number];
 }
 
+/** A defining landmark of a measurement that was not placed (`measure/trust.rs`). */
+export interface UnplacedLandmark {
+  name: string;
+  origin: 'placed' | 'estimated' | 'left_out' | 'absent';
+  /** The estimate's typical error of this landmark (mm). */
+  typical_error_mm: number;
+}
+
+/**
+ * One measurement's trust on a fit, from where its landmarks came (`measure/trust.rs`): placed,
+ * found on the body (`body_defined`), or estimated with its expected error; doubtful when that
+ * error exceeds ISO 20685-1's limit. A per-measurement verdict, not a quality flag.
+ */
+export interface MeasurementTrust {
+  /** The measurement's snake_case name (`shoulder_breadth`). */
+  name: string;
+  trust: 'placed' | 'body_defined' | 'estimated';
+  landmarks: UnplacedLandmark[];
+  expected_error_mm: number | null;
+  limit_mm: number | null;
+  /** The chance that this body's error exceeds the limit, for an estimated measurement with a limit. */
+  chance_over_limit: number | null;
+  doubtful: boolean;
+  /** In words, for an estimated measurement (empty otherwise). */
+  words: string;
+}
+
 /** The core's report of one subject (`SubjectReport`): the alignment's report and what the path added. */
 export interface SubjectReport extends AlignReport {
   landmarks: LandmarkPolicyReport;
   quality: QualityReport | null;
   to_template: ToTemplate;
+  /** Every measurement's trust, in the core's order of measurements. */
+  measurement_trust: MeasurementTrust[];
 }
 
 /** The fitted template and the per-vertex distance (metres) to the scan. */

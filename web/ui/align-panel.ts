@@ -5,7 +5,7 @@ import type { AlignReport, AlignStage, SubjectReport } from '../shared/align-typ
 import type { TemplateResolution } from '../shared/template-data';
 import { button, byId, h } from './dom';
 import { EnergyChart } from './energy-chart';
-import { formatCount, qualityText } from './format';
+import { doubtfulMeasurementsText, formatCount, qualityText } from './format';
 import { heatLegend } from './heat-legend';
 import { keepControl } from './keep-button';
 
@@ -111,6 +111,7 @@ export class AlignPanel {
         h('dd', { 'data-testid': 'align-time' }, `${(r.total_ms / 1000).toFixed(2)} s`),
       ),
       checkNote(r),
+      measurementsNote(r),
       heatLegend(0, legendMaxMm, `Distance of each template vertex to the scan; ≥ ${legendMaxMm.toFixed(1)} mm in yellow`),
       h(
         'div',
@@ -143,6 +144,19 @@ function checkNote(r: SubjectReport): HTMLElement {
   const text = flags.length && r.quality ? `Flagged: ${qualityText(r.quality)}.` : 'No quality flag raised.';
   const leftText = left.length ? ` Left out of the fit: ${left.join('; ')}.` : '';
   return h('p', { class: flags.length ? 'warn-note' : 'note', 'data-testid': 'align-check', 'data-flags': flags.join(' ') }, text + leftText);
+}
+
+/**
+ * Which measurements of this fit cannot be trusted: those defined by landmarks that were
+ * estimated (or left out) whose expected error exceeds ISO 20685-1's limit, in words. Not a
+ * quality flag: a fit can be good for the model and still doubtful for a tape measure.
+ */
+function measurementsNote(r: SubjectReport): HTMLElement {
+  const doubtful = r.measurement_trust.filter((t) => t.doubtful);
+  const text = doubtful.length
+    ? `Measurements not to trust from this fit: ${doubtfulMeasurementsText(r.measurement_trust)}.`
+    : 'Every measurement of this fit is from placed landmarks, found on the body, or within ISO 20685-1 by its expected error.';
+  return h('p', { class: doubtful.length ? 'warn-note' : 'note', 'data-testid': 'align-measurements', 'data-doubtful': doubtful.map((t) => t.name).join(' ') }, text);
 }
 
 /** Which template Align fits, and how: a fine template goes coarse to fine. */

@@ -1,6 +1,6 @@
 // How numbers are written in the panels.
 
-import type { QualityFlag, QualityReport } from '../shared/align-types';
+import type { MeasurementTrust, QualityFlag, QualityReport } from '../shared/align-types';
 import type { Reading } from '../shared/shape-results';
 
 const integer = new Intl.NumberFormat('en-GB', { maximumFractionDigits: 0 });
@@ -44,6 +44,18 @@ export function qualityText(q: QualityReport): string {
   if (q.flags.includes('suspicious_landmarks')) parts.push(`suspicious landmarks left out: ${q.suspicious_landmarks.join(', ')}`);
   if (q.flags.includes('landmark_estimate')) parts.push(`landmark estimate: ${q.landmark_estimate.join('; ')}`);
   return parts.join('; ');
+}
+
+/**
+ * The measurements a fit cannot be trusted for, in words (`measure/trust.rs`): each doubtful one
+ * with the estimated landmarks it comes from and its expected error against ISO 20685-1's limit;
+ * empty when there is none.
+ */
+export function doubtfulMeasurementsText(trust: readonly MeasurementTrust[]): string {
+  return trust
+    .filter((t) => t.doubtful)
+    .map((t) => t.words)
+    .join('; ');
 }
 
 /** A quality flag's short name, for a button or a list: `landmark_estimate` → "doubtful landmark estimate". */

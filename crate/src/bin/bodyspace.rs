@@ -58,8 +58,9 @@ mod native {
         ExportStatismo(bodyspace::cli::export_statismo::ExportStatismoArgs),
         /// Print a fit's whole-body and segment coefficients as JSON.
         Project(bodyspace::cli::project::ProjectArgs),
-        /// Measurements of a fit as JSON (`--mesh FIT [--model MODEL]`), of every fit of a folder
-        /// as CSV (`--fits DIR --csv OUT.csv`), or their distribution in a model (`--model MODEL
+        /// Measurements of a fit as JSON (`--mesh FIT [--model MODEL] [--report R]`: with
+        /// `align`'s report, each value's trust), of every fit of a folder as CSV (`--fits DIR
+        /// --csv OUT.csv`; beside a batch's reports, which measurements are doubtful), or their distribution in a model (`--model MODEL
         /// --distribution [--samples N] [--csv OUT.csv]`); docs/measurements.md.
         Measure(bodyspace::cli::measure::MeasureArgs),
         /// The most likely body of a model with given measurements:

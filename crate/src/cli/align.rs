@@ -52,5 +52,9 @@ pub fn run(args: &AlignArgs) -> Result<(), String> {
             args.out.display()
         )
     })?;
+    // The report carries every measurement's trust; the doubtful ones are also said on stderr.
+    for t in fit.report.doubtful_measurements() {
+        eprintln!("doubtful measurement: {}", t.words);
+    }
     args.report.print(&fit.report)
 }

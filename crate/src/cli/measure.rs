@@ -1,6 +1,8 @@
 //! `bodyspace measure`: the measurements of `crate::measure` (docs/measurements.md) of one fit as
 //! JSON (`--mesh FIT`, with `--model MODEL` also its percentile among the model's training
-//! subjects), of every fit of a folder as one CSV (`--fits DIR --csv OUT.csv`), or their
+//! subjects, with `--report R` each value's trust from the subject report `align` wrote), of
+//! every fit of a folder as one CSV (`--fits DIR --csv OUT.csv`; beside a batch's `reports/`, a
+//! last column `doubtful` names each fit's doubtful measurements), or their
 //! distribution in a model (`--model MODEL --distribution [--samples N] [--csv OUT.csv]`,
 //! [`crate::anthropometry::measurement_distribution`]).
 
@@ -29,6 +31,11 @@ pub struct MeasureArgs {
     /// With --distribution: the model whose distribution is printed.
     #[arg(long)]
     pub model: Option<PathBuf>,
+    /// With --mesh: the subject report `align --report` wrote for this fit; each measurement is
+    /// then printed with its trust (placed, body_defined, estimated or doubtful) and the doubtful
+    /// ones in words.
+    #[arg(long, requires = "mesh")]
+    pub report: Option<PathBuf>,
     /// A folder of fits (`batch`'s OUT/fits): one CSV row per fit, with --csv.
     #[arg(long, requires = "csv", conflicts_with_all = ["distribution", "model"])]
     pub fits: Option<PathBuf>,
@@ -78,6 +85,20 @@ pub fn run(args: &MeasureArgs) -> Result<(), String> {
                 summary["model"] = serde_json::json!(path.display().to_string());
                 summary["percentiles"] = percentiles(&m, &population);
             }
+            if let Some(path) = &args.report {
+                let trust = report_trust(path)?;
+                summary["report"] = serde_json::json!(path.display().to_string());
+                summary["trust"] = trust
+                    .iter()
+                    .map(|t| (t.name.clone(), serde_json::json!(t.verdict())))
+                    .collect::<serde_json::Map<_, _>>()
+                    .into();
+                summary["doubtful"] = trust
+                    .iter()
+                    .filter(|t| t.doubtful)
+                    .map(|t| t.words.clone())
+                    .collect();
+            }
             println!("{summary}");
             Ok(())
         }
@@ -91,14 +112,34 @@ pub fn run(args: &MeasureArgs) -> Result<(), String> {
                 ));
             }
             let mut rows = Vec::with_capacity(fits.len());
+            let reports = dir
+                .parent()
+                .map(|p| p.join("reports"))
+                .filter(|r| r.is_dir());
+            let mut doubtful = Vec::with_capacity(fits.len());
             for fit in &fits {
                 let mesh = read_fit(fit)?;
                 let m = measure_any_frame(&measurer, &base, &mesh.positions)
                     .map_err(|e| format!("{}: {e}", fit.display()))?;
+                if let Some(reports) = &reports {
+                    let report = reports.join(format!("{}.json", subject_of(fit)));
+                    let names: Vec<String> = match report.exists() {
+                        true => report_trust(&report)?
+                            .into_iter()
+                            .filter(|t| t.doubtful)
+                            .map(|t| t.name)
+                            .collect(),
+                        false => Vec::new(),
+                    };
+                    doubtful.push(names.join(" "));
+                }
                 rows.push((subject_of(fit), m));
             }
-            std::fs::write(csv, population_csv(&rows))
-                .map_err(|e| format!("{}: {e}", csv.display()))?;
+            let mut text = population_csv(&rows);
+            if reports.is_some() {
+                text = with_doubtful_column(&text, &doubtful);
+            }
+            std::fs::write(csv, text).map_err(|e| format!("{}: {e}", csv.display()))?;
             println!(
                 "{}",
                 serde_json::json!({ "fits": fits.len(), "csv": csv.display().to_string() })
@@ -127,6 +168,62 @@ pub fn population_csv(rows: &[(String, Measurements)]) -> String {
             }
         }
         out.push('\n');
+    }
+    out
+}
+
+/// One measurement's trust as a subject report wrote it (`measure/trust.rs`).
+struct ReportedTrust {
+    name: String,
+    trust: String,
+    doubtful: bool,
+    words: String,
+}
+
+impl ReportedTrust {
+    /// `placed`, `body_defined`, `estimated`, or `doubtful` for an estimated one over its limit.
+    fn verdict(&self) -> &str {
+        if self.doubtful {
+            "doubtful"
+        } else {
+            &self.trust
+        }
+    }
+}
+
+/// The `measurement_trust` of the subject report at `path` (`align --report`, a batch's
+/// `reports/SUBJECT.json`).
+fn report_trust(path: &Path) -> Result<Vec<ReportedTrust>, String> {
+    let text = std::fs::read(path).map_err(|e| format!("{}: {e}", path.display()))?;
+    let report: serde_json::Value =
+        serde_json::from_slice(&text).map_err(|e| format!("{}: {e}", path.display()))?;
+    let rows = report["measurement_trust"].as_array().ok_or_else(|| {
+        format!(
+            "{}: no measurement_trust (not a subject report, or one from before it: align again)",
+            path.display()
+        )
+    })?;
+    Ok(rows
+        .iter()
+        .map(|t| ReportedTrust {
+            name: t["name"].as_str().unwrap_or_default().to_string(),
+            trust: t["trust"].as_str().unwrap_or_default().to_string(),
+            doubtful: t["doubtful"].as_bool().unwrap_or(false),
+            words: t["words"].as_str().unwrap_or_default().to_string(),
+        })
+        .collect())
+}
+
+/// `csv` (a header and one line per row) with a last column `doubtful`: each row's names,
+/// space-separated.
+fn with_doubtful_column(csv: &str, doubtful: &[String]) -> String {
+    let mut out = String::with_capacity(csv.len());
+    for (i, line) in csv.lines().enumerate() {
+        let last = match i {
+            0 => "doubtful",
+            _ => doubtful.get(i - 1).map_or("", String::as_str),
+        };
+        writeln!(out, "{line},{last}").ok();
     }
     out
 }

@@ -1,6 +1,7 @@
 //! The measurements: name, kind, source and the template landmarks each is anchored on. The one
 //! table the core, the CLI, the app and docs/measurements.md share; how each is taken is in
-//! [`super::body`].
+//! [`super::body`], which of its landmarks define it and which only seed a search is its
+//! [`Anchoring`].
 
 use serde::Serialize;
 
@@ -17,6 +18,24 @@ pub enum Kind {
     Volume,
     /// Surface area (m²).
     Area,
+}
+
+/// How a measurement's landmarks make its value, which fixes what an error in a landmark does to
+/// it (`trust.rs`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Anchoring {
+    /// Found on the body's surface: the landmarks, if any, only seed the search (a landmark moved
+    /// 2 cm moves the value ≤ 2 mm, `crate/tests/measure_body_defined.rs`, `measure_chest.rs`,
+    /// `measure_crotch.rs`),
+    /// or there are none (stature at the crown, volume, area).
+    Surface,
+    /// A level: the mean position of the first `n` landmarks along one direction (a height above
+    /// the floor, the plane of a girth, the midpoint along the upper arm). The landmarks after
+    /// the first `n` only pick the section's loop or seed a surface search.
+    Level(usize),
+    /// A distance or polyline through all the landmarks (a breadth, a segment length).
+    Span,
 }
 
 /// One standard measurement.
@@ -56,6 +75,8 @@ pub struct Definition {
     /// Canonical CAESAR landmark names it is anchored on (resolved through the template's
     /// landmark list, so revised landmark vertices flow through).
     pub landmarks: &'static [&'static str],
+    /// How the landmarks make the value: which of them define it and which only seed a search.
+    pub anchoring: Anchoring,
 }
 
 const AXILLAE: &[&str] = &[
@@ -110,103 +131,93 @@ impl Measure {
 
     /// The description of this measurement.
     pub fn definition(self) -> Definition {
+        use Anchoring::*;
         use Kind::*;
-        let d = |name, label, kind, source, landmarks| Definition {
+        let d = |name, label, kind, source, landmarks, anchoring| Definition {
             name,
             label,
             kind,
             source,
             landmarks,
+            anchoring,
         };
         match self {
-            Measure::Stature => d("stature", "Stature", Length, "ISO 7250-1 stature (body height)", &[]),
+            Measure::Stature => d("stature", "Stature", Length, "ISO 7250-1 stature (body height)", &[], Surface),
             Measure::CervicaleHeight => d(
                 "cervicale_height",
                 "Cervicale height",
                 Length,
                 "ISO 8559-1 cervicale height",
-                &["Cervicale"],
-            ),
+                &["Cervicale"], Level(1)),
             Measure::AcromionHeight => d(
                 "acromion_height",
                 "Acromion height",
                 Length,
                 "ISO 7250-1 shoulder (acromion) height",
-                &["Rt. Acromion", "Lt. Acromion"],
-            ),
+                &["Rt. Acromion", "Lt. Acromion"], Level(2)),
             Measure::CrotchHeight => d(
                 "crotch_height",
                 "Crotch height (inseam)",
                 Length,
                 "ISO 7250-1 crotch height; ISO 8559-1 inside leg length",
-                &["Crotch", "Rt. Trochanterion", "Lt. Trochanterion"],
-            ),
+                &["Crotch", "Rt. Trochanterion", "Lt. Trochanterion"], Surface),
             Measure::KneeHeight => d(
                 "knee_height",
                 "Knee height",
                 Length,
                 "ISO 8559-1 knee height",
-                &["Rt. Femoral Lateral Epicn", "Rt. Femoral Medial Epicn"],
-            ),
+                &["Rt. Femoral Lateral Epicn", "Rt. Femoral Medial Epicn"], Level(2)),
             Measure::ShoulderBreadth => d(
                 "shoulder_breadth",
                 "Shoulder breadth (biacromial)",
                 Length,
                 "ISO 7250-1 biacromial breadth",
-                &["Rt. Acromion", "Lt. Acromion"],
-            ),
-            Measure::ChestGirth => d("chest_girth", "Chest girth", Girth, "ISO 8559-1 chest girth", AXILLAE),
+                &["Rt. Acromion", "Lt. Acromion"], Span),
+            Measure::ChestGirth => d("chest_girth", "Chest girth", Girth, "ISO 8559-1 chest girth", AXILLAE, Surface),
             Measure::BustGirth => d(
                 "bust_girth",
                 "Bust girth",
                 Girth,
                 "ISO 8559-1 bust girth",
-                &["Rt. Thelion/Bustpoint", "Lt. Thelion/Bustpoint"],
-            ),
+                &["Rt. Thelion/Bustpoint", "Lt. Thelion/Bustpoint"], Level(2)),
             Measure::UnderbustGirth => d(
                 "underbust_girth",
                 "Underbust girth",
                 Girth,
                 "ISO 8559-1 underbust girth",
-                &["Substernale"],
-            ),
-            Measure::WaistGirth => d("waist_girth", "Waist girth", Girth, "ISO 8559-1 waist girth", WAIST),
-            Measure::HipGirth => d("hip_girth", "Hip girth", Girth, "ISO 8559-1 hip girth", HIP),
+                &["Substernale"], Level(1)),
+            Measure::WaistGirth => d("waist_girth", "Waist girth", Girth, "ISO 8559-1 waist girth", WAIST, Level(4)),
+            Measure::HipGirth => d("hip_girth", "Hip girth", Girth, "ISO 8559-1 hip girth", HIP, Surface),
             Measure::ThighGirth => d(
                 "thigh_girth",
                 "Thigh girth",
                 Girth,
                 "ISO 8559-1 thigh girth",
-                &["Crotch", "Rt. Trochanterion"],
-            ),
+                &["Crotch", "Rt. Trochanterion"], Surface),
             Measure::UpperArmGirth => d(
                 "upper_arm_girth",
                 "Upper-arm girth",
                 Girth,
                 "ISO 8559-1 upper arm girth",
-                &["Rt. Acromion", "Rt. Olecranon"],
-            ),
+                &["Rt. Acromion", "Rt. Olecranon"], Level(2)),
             Measure::NeckGirth => d(
                 "neck_girth",
                 "Neck girth",
                 Girth,
                 "ISO 8559-1 neck girth",
-                &["Cervicale", "Suprasternale", "Rt. Tragion", "Lt. Tragion"],
-            ),
+                &["Cervicale", "Suprasternale", "Rt. Tragion", "Lt. Tragion"], Surface),
             Measure::HeadGirth => d(
                 "head_girth",
                 "Head girth",
                 Girth,
                 "ISO 8559-1 head girth",
-                &["Sellion", "Rt. Tragion", "Lt. Tragion"],
-            ),
+                &["Sellion", "Rt. Tragion", "Lt. Tragion"], Level(1)),
             Measure::ArmLength => d(
                 "arm_length",
                 "Arm length",
                 Length,
                 "ISO 8559-1 arm length",
-                &["Rt. Acromion", "Rt. Radiale", "Rt. Radial Styloid"],
-            ),
+                &["Rt. Acromion", "Rt. Radiale", "Rt. Radial Styloid"], Span),
             Measure::WaistToHipBack => d(
                 "waist_to_hip_back",
                 "Waist to hip (back)",
@@ -220,10 +231,9 @@ impl Measure {
                     "Rt. Trochanterion",
                     "Lt. Trochanterion",
                     "Crotch",
-                ],
-            ),
-            Measure::Volume => d("volume", "Body volume", Volume, "volume enclosed by the body surface (no ISO 7250-1 clause; for density and BMI-like indices)", &[]),
-            Measure::SurfaceArea => d("surface_area", "Surface area", Area, "area of the body surface (no ISO clause; what DuBois-type formulas estimate)", &[]),
+                ], Level(4)),
+            Measure::Volume => d("volume", "Body volume", Volume, "volume enclosed by the body surface (no ISO 7250-1 clause; for density and BMI-like indices)", &[], Surface),
+            Measure::SurfaceArea => d("surface_area", "Surface area", Area, "area of the body surface (no ISO clause; what DuBois-type formulas estimate)", &[], Surface),
         }
     }
 }

@@ -13,6 +13,8 @@
 //! * [`params`] — [`MeasureParams`], the plane offsets and up axis with their defaults
 //! * [`tolerance`] — ISO 20685-1's limit per measurement ([`IsoClass`]) and its verdict on a set
 //!   of differences ([`Agreement`])
+//! * [`trust`] — [`measurements_trust`]: each measurement of a fit placed, body-defined or
+//!   estimated from where its landmarks came, with its expected error against ISO 20685-1
 //! * [`error`] — [`MeasureError`]
 //!
 //! Volume and surface area are [`crate::mesh::volume`].
@@ -26,12 +28,16 @@ pub mod section;
 pub mod surface;
 pub mod tape;
 pub mod tolerance;
+pub mod trust;
 pub mod upright;
 
 pub use body::{BodyMeasurer, Measurements, Reading, TapePath};
-pub use definitions::{Definition, Kind, Measure};
+pub use definitions::{Anchoring, Definition, Kind, Measure};
 pub use error::MeasureError;
 pub use params::MeasureParams;
 pub use section::{plane_section, Plane, SectionLoop};
 pub use tolerance::{Agreement, IsoClass};
+pub use trust::{
+    measurement_trust, measurements_trust, MeasurementTrust, Origin, Trust, TrustParams,
+};
 pub use upright::upright;

@@ -1,5 +1,6 @@
 //! [`fit_subject`]: one subject from what was read to a checked fit — the landmark policy, the RBF
-//! warp and fine alignment ([`align_scan`]), the quality check and the frame — and its report.
+//! warp and fine alignment ([`align_scan`]), the quality check, the frame and each measurement's
+//! trust from where its landmarks came (`measure/trust.rs`) — and its report.
 
 use nalgebra::Point3;
 
@@ -7,10 +8,13 @@ use super::error::SubjectError;
 use super::frame::ToTemplate;
 use super::input::{read_subject, SubjectInput};
 use super::options::SubjectOptions;
-use super::policy::{subject_landmarks, PriorEstimate};
+use super::policy::{subject_landmarks, PriorEstimate, SubjectLandmarks};
 use super::report::SubjectReport;
 use crate::align::{align_scan, assess, AlignInput, AlignObserver, Alignment};
-use crate::estimate::Verdict;
+use crate::estimate::typical_error::typical_error_mm;
+use crate::estimate::{given_landmarks, Verdict};
+use crate::landmarks::CAESAR_LANDMARKS;
+use crate::measure::{measurements_trust, Origin, TrustParams};
 use crate::mesh::units::Units;
 use crate::template::{Resolution, Template};
 
@@ -51,7 +55,8 @@ impl SubjectFit {
 /// Fits `template` (at `fine`: coarse to fine, from `base_template` when the caller keeps one) to
 /// the subject: its landmarks by the one policy (`policy.rs`; `prior`: an estimate already run on
 /// this scan with these landmarks), then [`align_scan`], the quality check with the options'
-/// thresholds (left-out landmarks raise `suspicious_landmarks`) and the frame. `observer` hears
+/// thresholds (left-out landmarks raise `suspicious_landmarks`), the frame and each measurement's
+/// trust ([`measurements_trust`] from `landmark_origins`). `observer` hears
 /// the estimate and every iteration of the alignment; a `Break` cancels.
 pub fn fit_subject(
     template: &Template,
@@ -109,13 +114,44 @@ pub fn fit_subject(
     let to_m = alignment.scale_to_metres;
     let in_scan_units: Vec<_> = alignment.positions.iter().map(|p| p / to_m).collect();
     let to_template = ToTemplate::of_fit(&in_scan_units, &base.mesh().positions, units);
+    let origin = landmark_origins(input, &landmarks);
     let report = SubjectReport {
+        measurement_trust: measurements_trust(
+            &|name: &str| {
+                let k = CAESAR_LANDMARKS.iter().position(|l| l.name == name);
+                let typical = k.map_or(f64::NAN, typical_error_mm);
+                (k.map_or(Origin::Absent, |k| origin[k]), typical)
+            },
+            &TrustParams::default(),
+        ),
         landmarks: landmarks.report,
         quality,
         to_template,
         alignment: alignment.report.clone(),
     };
     Ok(SubjectFit { alignment, report })
+}
+
+/// Where each CAESAR landmark of the fit came from (CAESAR order): given and kept by the check,
+/// left out as suspicious, estimated (in the warp's set and not given), or absent.
+fn landmark_origins(input: &SubjectInput, landmarks: &SubjectLandmarks) -> Vec<Origin> {
+    let given = given_landmarks(&input.given_in_scan_units());
+    let used = given_landmarks(&landmarks.set);
+    let left_out = &landmarks.report.left_out;
+    (0..CAESAR_LANDMARKS.len())
+        .map(|k| {
+            let name = CAESAR_LANDMARKS[k].name;
+            if left_out.iter().any(|l| l.name == name) {
+                Origin::LeftOut
+            } else if given.iter().any(|(i, _)| *i == k) {
+                Origin::Placed
+            } else if used.iter().any(|(i, _)| *i == k) {
+                Origin::Estimated
+            } else {
+                Origin::Absent
+            }
+        })
+        .collect()
 }
 
 /// [`read_subject`] then [`fit_subject`]: the whole path from file bytes (`scan`: bytes and file
@@ -132,4 +168,75 @@ pub fn fit_subject_files(
 ) -> Result<SubjectFit, SubjectError> {
     let input = read_subject(scan, landmarks, units)?;
     fit_subject(template, base_template, &input, None, options, observer)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::estimate::SuspicionKind;
+    use crate::landmarks::{Landmark, LandmarkSet};
+    use crate::mesh::Mesh;
+    use crate::subject::input::GivenLandmarks;
+    use crate::subject::report::{LandmarkPolicyReport, LandmarkSource};
+
+    fn set(names: &[&str]) -> LandmarkSet {
+        LandmarkSet {
+            landmarks: names
+                .iter()
+                .map(|n| Landmark {
+                    name: n.to_string(),
+                    position: Point3::origin(),
+                })
+                .collect(),
+            ..LandmarkSet::default()
+        }
+    }
+
+    #[test]
+    fn each_landmark_is_placed_left_out_estimated_or_absent() {
+        // Given: both Acromions and Sellion; Sellion left out as suspicious. The warp's set: the
+        // Rt. Acromion kept and Cervicale estimated; the Lt. Acromion given and kept too.
+        let input = SubjectInput {
+            name: "s".into(),
+            scan: Mesh::new(vec![Point3::origin()], vec![]),
+            units: Some(Units::Metres),
+            given: Some(GivenLandmarks {
+                set: set(&["Rt. Acromion", "Lt. Acromion", "Sellion"]),
+                units: None,
+                file: "l.csv".into(),
+            }),
+        };
+        let landmarks = SubjectLandmarks {
+            set: set(&["Rt. Acromion", "Lt. Acromion", "Cervicale"]),
+            report: LandmarkPolicyReport {
+                source: LandmarkSource::FilledIn,
+                file: "l.csv".into(),
+                given: 3,
+                left_out: vec![crate::estimate::SuspiciousLandmark {
+                    name: "Sellion".into(),
+                    distance_mm: 40.0,
+                    kind: SuspicionKind::Far,
+                    suggestion: String::new(),
+                    expected: [0.0; 3],
+                }],
+                unjudged: vec![],
+                estimated: 1,
+                used: 3,
+                estimate: None,
+                estimate_check: None,
+            },
+        };
+        let origin = landmark_origins(&input, &landmarks);
+        let of = |name: &str| {
+            origin[CAESAR_LANDMARKS
+                .iter()
+                .position(|l| l.name == name)
+                .unwrap()]
+        };
+        assert_eq!(of("Rt. Acromion"), Origin::Placed);
+        assert_eq!(of("Lt. Acromion"), Origin::Placed);
+        assert_eq!(of("Sellion"), Origin::LeftOut);
+        assert_eq!(of("Cervicale"), Origin::Estimated);
+        assert_eq!(of("Crotch"), Origin::Absent);
+    }
 }

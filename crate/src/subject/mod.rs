@@ -11,7 +11,8 @@
 //!   template's (upright, y up, metres, facing +z), where bodies are compared — the shape
 //!   model's own rule (`pca/template_frame.rs`), recorded with the fit.
 //! * [`fit`] — [`fit_subject`]: RBF warp and fine alignment ([`crate::align::align_scan`]), the
-//!   quality check, the frame → [`SubjectFit`] with its [`SubjectReport`] (`report.rs`).
+//!   quality check, the frame, each measurement's trust (`crate::measure::trust`) →
+//!   [`SubjectFit`] with its [`SubjectReport`] (`report.rs`).
 //! * [`SubjectOptions`] (`options.rs`): every choice of the path, with its default;
 //!   [`SubjectError`] (`error.rs`).
 //!

@@ -8,6 +8,7 @@ use serde::Serialize;
 use super::frame::ToTemplate;
 use crate::align::{AlignmentReport, QualityReport};
 use crate::estimate::{SelfCheck, SuspiciousLandmark};
+use crate::measure::MeasurementTrust;
 
 /// Where a subject's landmarks came from.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
@@ -58,6 +59,10 @@ pub struct SubjectReport {
     pub quality: Option<QualityReport>,
     /// From the scan's frame and units into the template's.
     pub to_template: ToTemplate,
+    /// Each measurement's trust on this fit, from where its landmarks came
+    /// (`measure/trust.rs`), in `Measure::ALL` order: a per-measurement verdict, not a quality
+    /// flag.
+    pub measurement_trust: Vec<MeasurementTrust>,
     #[serde(flatten)]
     pub alignment: AlignmentReport,
 }
@@ -66,5 +71,11 @@ impl SubjectReport {
     /// Whether the quality check raised any flag.
     pub fn flagged(&self) -> bool {
         self.quality.as_ref().is_some_and(|q| !q.flags.is_empty())
+    }
+
+    /// The measurements whose expected error from estimated landmarks exceeds ISO 20685-1's
+    /// limit.
+    pub fn doubtful_measurements(&self) -> impl Iterator<Item = &MeasurementTrust> {
+        self.measurement_trust.iter().filter(|t| t.doubtful)
     }
 }

@@ -1,0 +1,389 @@
+//! Whether a fit's measurement can be trusted, from where its landmarks came: the one rule every
+//! path uses (the subject report carries it, `subject/fit.rs`; docs/measurements.md, "Trust").
+//!
+//! A measurement is
+//! * `placed` when every landmark that defines it ([`Anchoring`]) was given and kept (the
+//!   suspicious check did not leave it out);
+//! * `body_defined` when it is found on the surface and its landmarks only seed the search
+//!   ([`Anchoring::Surface`]), so it does not inherit their error;
+//! * `estimated` when a defining landmark was not placed — estimated, left out as suspicious, or
+//!   absent from a nearly full file and so placed by the fit alone. Its expected error E comes from
+//!   the typical errors eᵢ (mm) of those landmarks (`estimate/typical_error.csv`; a placed one
+//!   counts 0):
+//!   - a level of `n` landmarks ([`Anchoring::Level`]): E = ½·(Σ eᵢ)/n. One axis of an isotropic
+//!     3-D error has a mean absolute value of half the error's mean length (for a Gaussian,
+//!     σ·√(2/π) against 2σ·√(2/π)); the landmarks of a level are added, not root-sum-squared,
+//!     because the estimate places them together (a segment at a time), so their errors move
+//!     together. A girth at such a level is taken to move with it mm for mm.
+//!   - a span ([`Anchoring::Span`]): E = √(Σ eᵢ²), the whole error of each end (the acromia's
+//!     errors lie along the breadth).
+//!
+//!   E is the mean absolute error to expect; the error of one body then exceeds the
+//!   measurement's ISO 20685-1 limit L (`tolerance.rs`) with the chance
+//!   P = erfc(L / (E·√π)) (a half-normal error of mean E has σ = E·√(π/2), and
+//!   P(|x| > L) = erfc(L / (σ·√2))). The measurement is doubtful when P exceeds
+//!   [`TrustParams::max_chance_over_limit`] (default 5 %, i.e. E > 0.41·L), and the report says
+//!   so in words.
+//!
+//! Checked against the truth on held-out subjects in docs/measurements.md ("Trust"): E matches
+//! the measured MAE, and P the share of bodies over the limit.
+
+use serde::Serialize;
+
+use super::definitions::{Anchoring, Measure};
+
+/// The rule's one parameter, with its default.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct TrustParams {
+    /// A measurement from unplaced landmarks is doubtful when its chance of an error over ISO
+    /// 20685-1's limit exceeds this; default 0.05 ("never silently wrong": a measurement is
+    /// trusted only when it is nearly sure to be within the standard).
+    pub max_chance_over_limit: f64,
+}
+
+impl Default for TrustParams {
+    fn default() -> Self {
+        Self {
+            max_chance_over_limit: 0.05,
+        }
+    }
+}
+
+/// Where one landmark of a fit came from.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Origin {
+    /// Given (in a file or placed by a person) and kept by the suspicious check.
+    Placed,
+    /// Estimated by the landmark estimate.
+    Estimated,
+    /// Given, but left out of the fit as suspicious: the fit placed it without it.
+    LeftOut,
+    /// Neither given nor estimated (a nearly full file without it): the fit placed it alone.
+    Absent,
+}
+
+impl Origin {
+    fn adjective(self) -> &'static str {
+        match self {
+            Origin::Placed => "placed",
+            Origin::Estimated => "estimated",
+            Origin::LeftOut => "left-out (suspicious)",
+            Origin::Absent => "absent",
+        }
+    }
+}
+
+/// A measurement's trust.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Trust {
+    Placed,
+    BodyDefined,
+    Estimated,
+}
+
+/// One defining landmark that was not placed.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct UnplacedLandmark {
+    pub name: String,
+    pub origin: Origin,
+    /// The estimate's typical error of this landmark (mm).
+    pub typical_error_mm: f64,
+}
+
+/// One measurement's verdict on a fit.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct MeasurementTrust {
+    /// The measurement's snake_case name ([`super::Definition::name`]).
+    pub name: &'static str,
+    pub trust: Trust,
+    /// Its defining landmarks that were not placed (empty unless `estimated`).
+    pub landmarks: Vec<UnplacedLandmark>,
+    /// E (mm), for an `estimated` measurement.
+    pub expected_error_mm: Option<f64>,
+    /// ISO 20685-1's limit (mm); `None` for volume and area.
+    pub limit_mm: Option<f64>,
+    /// P, the chance that this body's error exceeds the limit, for an `estimated` measurement
+    /// with a limit.
+    pub chance_over_limit: Option<f64>,
+    /// P above [`TrustParams::max_chance_over_limit`].
+    pub doubtful: bool,
+    /// What a person reads, for an `estimated` measurement (empty otherwise).
+    pub words: String,
+}
+
+/// The trust of `m` on a fit whose landmark `name` came from `origin(name)` = (where it came
+/// from, its typical error in mm).
+pub fn measurement_trust(
+    m: Measure,
+    origin: &dyn Fn(&str) -> (Origin, f64),
+    params: &TrustParams,
+) -> MeasurementTrust {
+    let d = m.definition();
+    let limit_mm = m.iso_class().map(|c| c.limit() * 1e3);
+    let defining = match d.anchoring {
+        Anchoring::Surface => 0,
+        Anchoring::Level(n) => n.min(d.landmarks.len()),
+        Anchoring::Span => d.landmarks.len(),
+    };
+    let landmarks: Vec<UnplacedLandmark> = d.landmarks[..defining]
+        .iter()
+        .map(|&name| (name, origin(name)))
+        .filter(|(_, (o, _))| *o != Origin::Placed)
+        .map(|(name, (origin, typical_error_mm))| UnplacedLandmark {
+            name: name.to_string(),
+            origin,
+            typical_error_mm,
+        })
+        .collect();
+    let trust = match (d.anchoring, landmarks.is_empty()) {
+        (Anchoring::Surface, _) => Trust::BodyDefined,
+        (_, true) => Trust::Placed,
+        (_, false) => Trust::Estimated,
+    };
+    let expected_error_mm = (trust == Trust::Estimated).then(|| {
+        let e = landmarks.iter().map(|l| l.typical_error_mm);
+        match d.anchoring {
+            Anchoring::Level(_) => 0.5 * e.sum::<f64>() / defining as f64,
+            _ => e.map(|x| x * x).sum::<f64>().sqrt(),
+        }
+    });
+    let chance_over_limit = match (expected_error_mm, limit_mm) {
+        (Some(e), Some(limit)) => Some(chance_over(limit, e)),
+        _ => None,
+    };
+    let doubtful = chance_over_limit.is_some_and(|p| p > params.max_chance_over_limit);
+    let words = expected_error_mm
+        .map(|e| {
+            let limit = limit_mm.zip(chance_over_limit);
+            words(d.label, &landmarks, e, limit, doubtful)
+        })
+        .unwrap_or_default();
+    MeasurementTrust {
+        name: d.name,
+        trust,
+        landmarks,
+        expected_error_mm,
+        limit_mm,
+        chance_over_limit,
+        doubtful,
+        words,
+    }
+}
+
+/// Every measurement's trust, in [`Measure::ALL`] order.
+pub fn measurements_trust(
+    origin: &dyn Fn(&str) -> (Origin, f64),
+    params: &TrustParams,
+) -> Vec<MeasurementTrust> {
+    Measure::ALL
+        .into_iter()
+        .map(|m| measurement_trust(m, origin, params))
+        .collect()
+}
+
+/// P(|x| > `limit`) for a half-normal error x of mean `expected`: erfc(limit / (expected·√π)).
+pub fn chance_over(limit: f64, expected: f64) -> f64 {
+    if expected <= 0.0 {
+        return if limit < 0.0 { 1.0 } else { 0.0 };
+    }
+    erfc(limit / (expected * std::f64::consts::PI.sqrt()))
+}
+
+/// erfc(x) for x ≥ 0 (Abramowitz & Stegun 7.1.26, absolute error < 1.5·10⁻⁷). A negative x
+/// (never here: the argument is a ratio of lengths) is taken as 0, giving erfc(0) = 1.
+fn erfc(x: f64) -> f64 {
+    let x = x.max(0.0);
+    let t = 1.0 / (1.0 + 0.327_591_1 * x);
+    let poly = t
+        * (0.254_829_592
+            + t * (-0.284_496_736
+                + t * (1.421_413_741 + t * (-1.453_152_027 + t * 1.061_405_429))));
+    poly * (-x * x).exp()
+}
+
+/// "shoulder breadth (biacromial): from the estimated Rt. Acromion (typical error 24 mm) and Lt.
+/// Acromion (23 mm), expected error ≈ 33 mm against ISO 20685-1's 4 mm (over it on 92 % of
+/// bodies) — place these landmarks to measure it"; `limit`: the limit (mm) and P.
+fn words(
+    label: &str,
+    landmarks: &[UnplacedLandmark],
+    expected: f64,
+    limit: Option<(f64, f64)>,
+    doubtful: bool,
+) -> String {
+    let mut from = String::new();
+    for (i, l) in landmarks.iter().enumerate() {
+        let same_origin = i > 0 && landmarks[i - 1].origin == l.origin;
+        from += match i {
+            0 => "",
+            _ if i + 1 == landmarks.len() => " and ",
+            _ => ", ",
+        };
+        if !same_origin {
+            from += &format!("the {} ", l.origin.adjective());
+        }
+        from += &l.name;
+        from += &if i == 0 {
+            format!(" (typical error {:.0} mm)", l.typical_error_mm)
+        } else {
+            format!(" ({:.0} mm)", l.typical_error_mm)
+        };
+    }
+    let against = match limit {
+        Some((limit, p)) => format!(
+            " against ISO 20685-1's {limit:.0} mm (over it on {:.0} % of bodies)",
+            100.0 * p
+        ),
+        None => String::new(),
+    };
+    let advice = match (doubtful, landmarks.len()) {
+        (false, _) => "",
+        (true, 1) => " — place this landmark to measure it",
+        (true, _) => " — place these landmarks to measure it",
+    };
+    format!(
+        "{}: from {from}, expected error ≈ {expected:.0} mm{against}{advice}",
+        label.to_lowercase()
+    )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn all(origin: Origin) -> impl Fn(&str) -> (Origin, f64) {
+        move |name: &str| {
+            let e = match name {
+                "Rt. Acromion" | "Lt. Acromion" => 23.6,
+                "Rt. Radial Styloid" => 2.6,
+                _ => 10.0,
+            };
+            (origin, e)
+        }
+    }
+
+    #[test]
+    fn placed_landmarks_are_trusted_and_body_defined_ones_never_inherit() {
+        for t in measurements_trust(&all(Origin::Placed), &TrustParams::default()) {
+            assert!(!t.doubtful, "{}", t.name);
+            assert!(t.landmarks.is_empty() && t.words.is_empty());
+            assert_eq!(t.expected_error_mm, None);
+            let m = Measure::from_name(t.name).unwrap();
+            let surface = m.definition().anchoring == Anchoring::Surface;
+            let want = if surface {
+                Trust::BodyDefined
+            } else {
+                Trust::Placed
+            };
+            assert_eq!(t.trust, want, "{}", t.name);
+        }
+        for m in [
+            Measure::Stature,
+            Measure::ChestGirth,
+            Measure::HipGirth,
+            Measure::NeckGirth,
+        ] {
+            let t = measurement_trust(m, &all(Origin::Estimated), &TrustParams::default());
+            assert_eq!(t.trust, Trust::BodyDefined, "{}", t.name);
+            assert!(!t.doubtful);
+        }
+    }
+
+    #[test]
+    fn a_span_adds_its_ends_errors_in_quadrature_and_a_level_halves_their_mean() {
+        let t = measurement_trust(
+            Measure::ShoulderBreadth,
+            &all(Origin::Estimated),
+            &TrustParams::default(),
+        );
+        assert_eq!(t.trust, Trust::Estimated);
+        let e = t.expected_error_mm.unwrap();
+        assert!((e - 23.6 * 2f64.sqrt()).abs() < 1e-9, "{e}");
+        assert!(t.doubtful);
+        assert_eq!(t.limit_mm, Some(4.0));
+        assert_eq!(
+            t.words,
+            "shoulder breadth (biacromial): from the estimated Rt. Acromion (typical error 24 \
+             mm) and Lt. Acromion (24 mm), expected error ≈ 33 mm against ISO 20685-1's 4 mm \
+             (over it on 92 % of bodies) — place these landmarks to measure it"
+        );
+        // Acromion height: the mean level of the two, ½·(23.6 + 23.6)/2.
+        let t = measurement_trust(
+            Measure::AcromionHeight,
+            &all(Origin::Estimated),
+            &TrustParams::default(),
+        );
+        assert!((t.expected_error_mm.unwrap() - 11.8).abs() < 1e-9);
+        // One of two placed: it counts 0 in the mean, the other stays.
+        let one = |name: &str| match name {
+            "Rt. Acromion" => (Origin::Placed, 23.6),
+            _ => (Origin::LeftOut, 23.6),
+        };
+        let t = measurement_trust(Measure::AcromionHeight, &one, &TrustParams::default());
+        assert!((t.expected_error_mm.unwrap() - 5.9).abs() < 1e-9);
+        assert_eq!(t.landmarks.len(), 1);
+        assert!(t.words.contains("the left-out (suspicious) Lt. Acromion"));
+        assert!(t.words.ends_with("place this landmark to measure it"));
+    }
+
+    #[test]
+    fn the_chance_over_the_limit_of_a_half_normal_error() {
+        // erfc(0) = 1, erfc(1) = 0.157299, erfc(2) = 0.004678.
+        assert!((erfc(0.0) - 1.0).abs() < 1e-6);
+        assert!((erfc(1.0) - 0.157_299).abs() < 1e-6);
+        assert!((erfc(2.0) - 0.004_678).abs() < 1e-6);
+        // Mean 1 and limit √π: one σ·√2 out.
+        let p = chance_over(std::f64::consts::PI.sqrt(), 1.0);
+        assert!((p - 0.157_299).abs() < 1e-6);
+        assert_eq!(chance_over(4.0, 0.0), 0.0);
+        // The default's threshold, E = 0.407·L: P = 5 %.
+        assert!((chance_over(1.0, 0.407) - 0.05).abs() < 2e-3);
+    }
+
+    #[test]
+    fn only_the_defining_landmarks_count_and_the_chance_decides() {
+        // Thigh girth's level is the Crotch's; the Trochanterion only picks the loop.
+        let crotch_placed = |name: &str| match name {
+            "Crotch" => (Origin::Placed, 14.0),
+            _ => (Origin::Estimated, 17.5),
+        };
+        let t = measurement_trust(Measure::ThighGirth, &crotch_placed, &TrustParams::default());
+        assert_eq!(t.trust, Trust::Placed);
+        // Waist girth: four landmarks of 10 mm, E = 5 mm against the 9 mm of a large girth:
+        // P = erfc(9 / (5·√π)) = erfc(1.0155) = 0.1509, doubtful at the default 5 %, not at 20 %.
+        let waist = |params: TrustParams| {
+            measurement_trust(Measure::WaistGirth, &all(Origin::Absent), &params)
+        };
+        let t = waist(TrustParams::default());
+        assert_eq!(t.trust, Trust::Estimated);
+        assert!((t.expected_error_mm.unwrap() - 5.0).abs() < 1e-9);
+        assert!((t.chance_over_limit.unwrap() - 0.1509).abs() < 1e-4);
+        assert!(t.doubtful);
+        assert!(t
+            .words
+            .starts_with("waist girth: from the absent Rt. 10th Rib"));
+        let t = waist(TrustParams {
+            max_chance_over_limit: 0.2,
+        });
+        assert!(!t.doubtful);
+        assert!(
+            t.words
+                .ends_with("against ISO 20685-1's 9 mm (over it on 15 % of bodies)"),
+            "{}",
+            t.words
+        );
+        // Arm length: √(23.6² + 10² + 2.6²).
+        let t = measurement_trust(
+            Measure::ArmLength,
+            &all(Origin::Estimated),
+            &TrustParams::default(),
+        );
+        let want = (23.6f64.powi(2) + 100.0 + 2.6f64.powi(2)).sqrt();
+        assert!((t.expected_error_mm.unwrap() - want).abs() < 1e-9);
+        assert!(t
+            .words
+            .contains(", Rt. Radiale (10 mm) and Rt. Radial Styloid (3 mm)"));
+    }
+}
