@@ -344,13 +344,20 @@ mod tests {
 
     #[test]
     fn only_the_defining_landmarks_count_and_the_chance_decides() {
-        // Thigh girth's level is the Crotch's; the Trochanterion only picks the loop.
-        let crotch_placed = |name: &str| match name {
-            "Crotch" => (Origin::Placed, 14.0),
+        // Head girth's level is Sellion's; the Tragions only pick the loop.
+        let sellion_placed = |name: &str| match name {
+            "Sellion" => (Origin::Placed, 13.5),
             _ => (Origin::Estimated, 17.5),
         };
-        let t = measurement_trust(Measure::ThighGirth, &crotch_placed, &TrustParams::default());
+        let t = measurement_trust(Measure::HeadGirth, &sellion_placed, &TrustParams::default());
         assert_eq!(t.trust, Trust::Placed);
+        // Thigh girth is found at the crotch on the surface, whatever its landmarks.
+        let t = measurement_trust(
+            Measure::ThighGirth,
+            &all(Origin::Estimated),
+            &TrustParams::default(),
+        );
+        assert_eq!(t.trust, Trust::BodyDefined);
         // Waist girth: four landmarks of 10 mm, E = 5 mm against the 9 mm of a large girth:
         // P = erfc(9 / (5·√π)) = erfc(1.0155) = 0.1509, doubtful at the default 5 %, not at 20 %.
         let waist = |params: TrustParams| {
