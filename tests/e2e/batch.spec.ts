@@ -103,6 +103,18 @@ test('six subjects dropped at once are aligned, come back after a reload and bui
     await expect(row(page, s).getByTestId('batch-rms')).toHaveText(before[s]!.rms);
   }
   await expect(row(page, 'scan_006')).toHaveAttribute('data-status', 'excluded');
+  // Subject 7's landmarks were estimated: its row counts the measurements not to trust and names
+  // them in words (the core's `measurement_trust`, kept through the reload); a subject with its
+  // landmark file has fewer.
+  const doubtful7 = row(page, 'scan_007').getByTestId('batch-doubtful');
+  await expect(doubtful7).toHaveText(/^\d+ doubtful$/);
+  const count = async (s: string) => {
+    const note = row(page, s).getByTestId('batch-doubtful');
+    return (await note.count()) ? parseInt(await note.innerText(), 10) : 0;
+  };
+  expect(await count('scan_007')).toBeGreaterThanOrEqual(5);
+  expect(await doubtful7.getAttribute('title')).toMatch(/shoulder breadth \(biacromial\): from the estimated Rt\. Acromion/);
+  expect(await count('scan_001')).toBeLessThan(await count('scan_007'));
 
   await shapeReady(page);
   await page.getByTestId('batch-build').click();

@@ -1,7 +1,7 @@
 // The batch kept in the browser's IndexedDB, so a reload loses nothing: one record per subject
 // with its state, its input files (File objects are stored as blobs) and, once fitted, its fit
 // (positions and distances as Float32Array, the core's report and quality flags).
-import type { AlignReport, QualityReport } from '../shared/align-types';
+import type { QualityReport, SubjectReport } from '../shared/align-types';
 import type { Orientation } from '../shared/orientation';
 import type { TemplateResolution } from '../shared/template-data';
 
@@ -14,7 +14,8 @@ export interface BatchFit {
   positions: Float32Array;
   /** `#V` distance of each fitted vertex to the scan, metres. */
   distances: Float32Array;
-  report: AlignReport;
+  /** The core's subject report (records stored before it carried `measurement_trust` lack it). */
+  report: SubjectReport;
   quality: QualityReport;
 }
 

@@ -1,10 +1,13 @@
-// The Batch panel: one row per subject (status with progress, RMS, flags, time), sortable by any
+// The Batch panel: one row per subject (status with progress, RMS, flags and how many measurements
+// are doubtful, time), sortable by any
 // column; a click on a row shows that fit; overall progress with the ETA; cancel, retry, exclude,
 // build the model, clear the batch; which way is up in scans without a landmark file, and their
 // alignment again once it is said.
 import type { BatchRow, BatchSummary } from '../app/batch';
+import type { MeasurementTrust } from '../shared/align-types';
 import { orientationText, type Orientation } from '../shared/orientation';
 import { byId, h } from './dom';
+import { doubtfulMeasurementsText } from './format';
 import { heatLegend } from './heat-legend';
 import { orientationControl } from './orientation-control';
 
@@ -30,7 +33,7 @@ const COLUMNS: { key: Column; label: string; title: string }[] = [
   { key: 'subject', label: 'Subject', title: 'The subject, from the scan file name' },
   { key: 'status', label: 'Status', title: 'Queued, aligning (with progress), ok, flagged, failed, cancelled or excluded' },
   { key: 'rms', label: 'RMS', title: 'Scan → template RMS distance of the fit, mm' },
-  { key: 'flags', label: 'Flags', title: 'Quality flags of the fit, or why it failed' },
+  { key: 'flags', label: 'Flags', title: "Quality flags of the fit, or why it failed; and how many of its measurements cannot be trusted (landmarks estimated, expected error over ISO 20685-1's limit; hover for which)" },
   { key: 'time', label: 'Time', title: 'Time the alignment took, s' },
 ];
 
@@ -62,6 +65,11 @@ function sortValue(row: BatchRow, column: Column): string | number {
     case 'time':
       return row.seconds ?? Infinity;
   }
+}
+
+/** The fit's doubtful measurements (`measure/trust.rs`); none for a record stored before them. */
+function doubtful(row: BatchRow): MeasurementTrust[] {
+  return (row.fit?.report.measurement_trust ?? []).filter((t) => t.doubtful);
 }
 
 function formatSeconds(s: number): string {
@@ -212,7 +220,7 @@ export class BatchPanel {
         ),
         status,
         h('td', { 'data-testid': 'batch-rms' }, row.rmsMm === null ? '—' : row.rmsMm.toFixed(2)),
-        h('td', { class: 'batch-flags', title: row.reason }, flags),
+        h('td', { class: 'batch-flags', title: row.reason }, flags, ...doubtfulNote(row)),
         h('td', { class: 'batch-time' }, row.seconds === null ? '—' : row.seconds.toFixed(1)),
       );
       if (row.fit) tr.addEventListener('click', () => this.actions.onSelect(row.subject));
@@ -227,4 +235,11 @@ export class BatchPanel {
     if (row.status === 'failed' || row.status === 'cancelled' || row.status === 'interrupted') return [button('Retry', 'batch-retry', () => this.actions.onRetry(s))];
     return [button(row.excluded ? 'Include' : 'Exclude', 'batch-exclude', () => this.actions.onExclude(s, !row.excluded))];
   }
+}
+
+/** Under the flags: how many measurements of the fit are doubtful ("11 doubtful"), which in words on hover. */
+function doubtfulNote(row: BatchRow): HTMLElement[] {
+  const d = doubtful(row);
+  if (!d.length) return [];
+  return [h('div', { class: 'note', 'data-testid': 'batch-doubtful', title: doubtfulMeasurementsText(d) }, `${d.length} doubtful`)];
 }
