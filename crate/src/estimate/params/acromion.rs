@@ -28,14 +28,17 @@ pub struct AcromionParams {
     pub min_points: usize,
     /// An upper arm raised more than this from hanging down (in the trunk's frontal plane) has no
     /// shoulder point (the shoulder's top runs on along the arm): the fit's guess is kept.
-    /// Default 30°: 35° gave 18.8 mm on the development seeds (above) against 18.3; at 60° the
-    /// search ran along arms held out (the turn is shallow there) and made them worse.
+    /// Default 30°: 35° gave 18.8 mm on the development seeds (above) against 18.3; at 60°
+    /// (and a 60 mm window) the search ran along arms held out (the turn is shallow there) and
+    /// made them worse.
     pub max_abduction_deg: f64,
     /// How much of the fit's guess front to back is kept (1: all, 0: the shoulder point's).
     /// Default 1: the cap's crest lay further back than the fit's guess (the mean error on the
     /// development seeds, 45 mm window: 20.2 mm with the crest's, 19.1 with the fit's).
     pub keep_forward: f64,
-    /// The confidence of an Acromion left at the fit's guess is multiplied by this. Default 0.7.
+    /// The confidence of an Acromion left at the fit's guess is multiplied by this. Default 0.7
+    /// (a choice, not tuned: the fallen-back Acromions are the larger errors, and the
+    /// typical-error table is their mean with the found ones).
     pub fallback_confidence: f64,
 }
 
