@@ -3,7 +3,7 @@
 //!
 //! `cargo run --release --example landmarks_estimate -- [--n N] [--seed S] [--partial K]
 //!  [--fine-iterations N] [--segment-iterations N] [--step MM] [--pose K] [--frame K]
-//!  [--first K] [--profile tuning|held-out] [--align] [--rounds 2] [--perturb MM] [--knees] [--arms]
+//!  [--first K] [--profile tuning|held-out] [--align] [--rounds 2] [--perturb MM] [--knees] [--arms] [--acromions]
 //!  [--true-for NAMES]
 //!  [--quiet] [--params JSON]`
 //!
@@ -32,7 +32,8 @@
 //! forearm's turn about its own axis (the styloids' direction across it, estimate against
 //! truth), the hand's direction (styloids → Dactylion) against the truth, the knuckles' turn
 //! against the styloids about the forearm (true and estimated) and splits each elbow, wrist and hand landmark's error along the upper arm, along the
-//! forearm and out of their plane (`--knees` the knees'). Also printed: the mean and worst error per landmark
+//! forearm and out of their plane (`--knees` the knees', `--acromions` the Acromions' split
+//! lateral / up / forward in the trunk's frame). Also printed: the mean and worst error per landmark
 //! group and Spearman's ρ between the confidence and the error (the confidence should fall as the
 //! error grows: ρ < 0).
 
@@ -64,6 +65,7 @@ mod native {
         let mut quiet = false;
         let mut knees = false;
         let mut arms = false;
+        let mut acromions = false;
         let mut true_for: Vec<String> = Vec::new();
         let mut params = EstimateParams::default();
         let mut scanner: Option<ScannerParams> = None;
@@ -135,6 +137,7 @@ mod native {
                 "--quiet" => quiet = true,
                 "--knees" => knees = true,
                 "--arms" => arms = true,
+                "--acromions" => acromions = true,
                 "--true-for" => {
                     true_for = args
                         .next()
@@ -265,6 +268,11 @@ mod native {
                 print_arms(&c.landmarks, &estimate.positions, to_mm, "fit");
                 let predicted: Vec<_> = estimate.predicted.iter().map(|p| Some(*p)).collect();
                 print_arms(&c.landmarks, &predicted, to_mm, "segments");
+            }
+            if acromions {
+                print_acromions(&c.landmarks, &estimate.positions, to_mm, "fit");
+                let predicted: Vec<_> = estimate.predicted.iter().map(|p| Some(*p)).collect();
+                print_acromions(&c.landmarks, &predicted, to_mm, "segments");
             }
             if align {
                 let estimated = if perturb > 0.0 {
@@ -428,6 +436,49 @@ mod native {
             }
             println!("{line}");
         }
+    }
+
+    /// Per side, the Acromion's error in the trunk's frame from the true landmarks, in mm:
+    /// lateral (+ away from the midline, along the true Acromions' line made square to up), up
+    /// (+ towards the head, the ASIS' midpoint → Suprasternale) and forward (+ the way the body
+    /// faces, Cervicale → Suprasternale made square to up), and the confidence's landmark
+    /// distance.
+    fn print_acromions(
+        truth: &LandmarkSet,
+        estimated: &[Option<Point3<f64>>],
+        to_mm: f64,
+        what: &str,
+    ) {
+        let t = |n: &str| true_and_estimated(truth, estimated, n).map(|(p, _)| p);
+        let (Some(rt), Some(lt), Some(sternum), Some(cervicale), Some(ra), Some(la)) = (
+            t("Rt. Acromion"),
+            t("Lt. Acromion"),
+            t("Suprasternale"),
+            t("Cervicale"),
+            t("Rt. ASIS"),
+            t("Lt. ASIS"),
+        ) else {
+            return;
+        };
+        let up = (sternum - nalgebra::center(&ra, &la)).normalize();
+        let square = |v: Vector3<f64>| (v - up * v.dot(&up)).normalize();
+        let right = square(rt - lt);
+        let forward = square(sternum - cervicale);
+        let mut line = format!("           acromions, {what} (lateral / up / forward mm):");
+        for (side, lateral) in [("Rt.", right), ("Lt.", -right)] {
+            if let [(_, [a, b, c])] = split(
+                truth,
+                estimated,
+                side,
+                &["Acromion"],
+                [lateral, up, forward],
+                to_mm,
+            )[..]
+            {
+                line += &format!(" {side} {a:+5.1} {b:+5.1} {c:+5.1};");
+            }
+        }
+        println!("{line}");
     }
 
     /// Per arm, each elbow, wrist and hand landmark's error in the arm's frame from the true

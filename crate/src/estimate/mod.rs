@@ -14,6 +14,7 @@
 //!   [`arm_swing`] — each arm's swing about the shoulder tried from several starts;
 //!   [`bent_arm`] — the elbow of an arm bent at it (hands on hips); [`buttocks`] — the torso's
 //!   length from the height of the buttocks.
+//! * [`acromion`] — the Acromions on the scan's shoulder near the fit's, after the fine fit.
 //! * [`profile`] — the limbs' cross-section profiles (knees, elbows, the wrist).
 //! * [`hand`] — the hand's pose about the wrist, from the scan's surface beyond it (the
 //!   template's hands: `template::hand`).
@@ -33,6 +34,7 @@
 //!   with its documented default); [`EstimateReport`] (`report.rs`), [`EstimateError`]
 //!   (`error.rs`).
 
+pub mod acromion;
 pub mod arm_swing;
 pub mod bent_arm;
 pub mod bilateral;

@@ -12,7 +12,8 @@
 //!    flagged (`expected.rs`, `suspicious.rs`);
 //! 5. the landmark-free fine alignment (paper §3.2, stiff to soft), the unflagged given landmarks
 //!    anchored;
-//! 6. the landmark vertices read off the fit, each with a confidence from its typical error on
+//! 6. the landmark vertices read off the fit (the Acromions found on the scan's shoulder near
+//!    them, `acromion.rs`), each with a confidence from its typical error on
 //!    the development subjects, its definition's spread on a body and the fit's local residual
 //!    (`confidence.rs`); given
 //!    landmarks are returned exactly as given.
@@ -21,6 +22,7 @@ use std::borrow::Cow;
 
 use nalgebra::{Point3, Vector3};
 
+use super::acromion::{acromion_indices, place_acromions, RestTemplate};
 use super::bilateral::{asymmetries, uneven_fits};
 use super::caesar_points::{given_landmarks, landmark_rest};
 use super::candidates::{even_sample, fit_similarity, prefer_torso, FittedCandidate};
@@ -345,6 +347,18 @@ pub fn estimate_landmarks(
         moved_rms_mm(&posed, &fine.positions, &weights),
         params,
     );
+    let rest_template = RestTemplate {
+        positions: rest,
+        triangles,
+        landmark_vertices: &landmark_vertices,
+    };
+    let acromions = place_acromions(
+        &rest_template,
+        &fine.positions,
+        &scan,
+        best.scale,
+        &params.acromion,
+    );
     let near = neighbourhoods(rest, &landmark_vertices, params.confidence_radius);
     let mut positions = Vec::with_capacity(CAESAR_LANDMARK_COUNT);
     let mut confidences = Vec::with_capacity(CAESAR_LANDMARK_COUNT);
@@ -358,7 +372,15 @@ pub fn estimate_landmarks(
         let (position, c) = match given_here {
             Some(p) => (Some(p), 1.0),
             None => {
-                let p = fine.positions[v as usize];
+                // The Acromions on the scan's shoulder where the search is sure (`acromion.rs`).
+                let side = acromion_indices().iter().position(|&a| a == k);
+                let found = side.and_then(|s| acromions[s]);
+                let p = found.unwrap_or(fine.positions[v as usize]);
+                let unsure = if side.is_some() && found.is_none() {
+                    params.acromion.fallback_confidence
+                } else {
+                    1.0
+                };
                 let finite = p.coords.iter().all(|c| c.is_finite());
                 let r = residual(
                     &fine.report.per_vertex_distance,
@@ -366,7 +388,8 @@ pub fn estimate_landmarks(
                     params.outlier_distance,
                 );
                 let c = confidence(typical_error_mm(k) / 1000.0, sharpness.spread(), r, params)
-                    * checked.factor_for(name);
+                    * checked.factor_for(name)
+                    * unsure;
                 (finite.then(|| p / to_m), if finite { c } else { 0.0 })
             }
         };

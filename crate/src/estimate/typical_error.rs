@@ -9,7 +9,9 @@
 //! the forearm carried down the forearm), a bent elbow's hinge across the arm's plane, every
 //! wrist placed by the forearm's profile and the torso's length from the buttocks; the
 //! hands-on-hips subject has its hands laid on the hips (the generator's pose since the
-//! afternoon of 2026-11-25). Regenerate it with the same command when the method or the
+//! afternoon of 2026-11-25); the Acromions' rows measured again 2026-11-27 with the same
+//! command once they were found on the scan's shoulder (`acromion.rs`; 23.6 / 22.6 → 16.6 /
+//! 17.5 mm, the other rows unchanged). Regenerate it with the same command when the method or the
 //! template's landmark vertices change; the held-out figures in docs/landmarks-estimate.md say
 //! how well it ranks the errors of subjects it was not measured on. The figures are data, in
 //! `typical_error.csv` (CAESAR order, one row a landmark).
