@@ -24,7 +24,7 @@ test('a fit from estimated landmarks names its doubtful measurements in words', 
   await expect(note).toContainText('Measurements not to trust from this fit: ');
   await expect(note).toContainText('shoulder breadth (biacromial): from the estimated Rt. Acromion (typical error');
   // E = √(e_Rt² + e_Lt²) of the acromia's typical errors; P = erfc(4 / (E·√π)).
-  await expect(note).toContainText("expected error ≈ 33 mm against ISO 20685-1's 4 mm (over it on 92 % of bodies) — place these landmarks to measure it");
+  await expect(note).toContainText("expected error ≈ 24 mm against ISO 20685-1's 4 mm (over it on 89 % of bodies) — place these landmarks to measure it");
 });
 
 test('a fit from the given landmarks lists no doubtful measurement', async ({ page }) => {

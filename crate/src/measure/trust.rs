@@ -203,8 +203,8 @@ fn erfc(x: f64) -> f64 {
     poly * (-x * x).exp()
 }
 
-/// "shoulder breadth (biacromial): from the estimated Rt. Acromion (typical error 24 mm) and Lt.
-/// Acromion (23 mm), expected error ≈ 33 mm against ISO 20685-1's 4 mm (over it on 92 % of
+/// "shoulder breadth (biacromial): from the estimated Rt. Acromion (typical error 17 mm) and Lt.
+/// Acromion (18 mm), expected error ≈ 24 mm against ISO 20685-1's 4 mm (over it on 89 % of
 /// bodies) — place these landmarks to measure it"; `limit`: the limit (mm) and P.
 fn words(
     label: &str,
