@@ -46,12 +46,8 @@ fn held_out_fits_measure_like_their_truth() {
     let measurer = BodyMeasurer::of_template(&template, MeasureParams::default()).unwrap();
     let mut differences = vec![Vec::new(); Measure::ALL.len()];
     let mut failures = Vec::new();
-    for index in [0u64, 1, 2] {
-        let id = SubjectId {
-            profile: PopulationProfile::HeldOut,
-            seed: 4343,
-            index,
-        };
+    for index in SUBJECTS {
+        let id = held_out(index);
         let (got, want) =
             fitted_and_true_measurements(&data, &template, &measurer, id, &id.profile.scanner());
         for m in Measure::ALL {
@@ -97,12 +93,8 @@ fn landmark_free_fits_measure_the_body_defined_ones_and_doubt_the_others() {
     let reference = &template.mesh().positions;
     let mut differences = vec![Vec::new(); Measure::ALL.len()];
     let mut failures = Vec::new();
-    for index in [0u64, 1, 2] {
-        let id = SubjectId {
-            profile: PopulationProfile::HeldOut,
-            seed: 4343,
-            index,
-        };
+    for index in SUBJECTS {
+        let id = held_out(index);
         let (scan, _, truth) = subject_in_metres(&data, &template, id, &id.profile.scanner());
         let input = SubjectInput {
             name: format!("subject {index}"),
@@ -188,5 +180,16 @@ fn means_within(measures: &[Measure], differences: &[Vec<f64>], failures: &mut V
                 limit * 1e3
             ));
         }
+    }
+}
+
+/// The three held-out subjects of seed 4343 these tests fit.
+const SUBJECTS: [u64; 3] = [0, 1, 2];
+
+fn held_out(index: u64) -> SubjectId {
+    SubjectId {
+        profile: PopulationProfile::HeldOut,
+        seed: 4343,
+        index,
     }
 }
