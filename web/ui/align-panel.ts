@@ -153,10 +153,17 @@ function checkNote(r: SubjectReport): HTMLElement {
  */
 function measurementsNote(r: SubjectReport): HTMLElement {
   const doubtful = r.measurement_trust.filter((t) => t.doubtful);
-  const text = doubtful.length
-    ? `Measurements not to trust from this fit: ${doubtfulMeasurementsText(r.measurement_trust)}.`
-    : 'Every measurement of this fit is from placed landmarks, found on the body, or within ISO 20685-1 by its expected error.';
-  return h('p', { class: doubtful.length ? 'warn-note' : 'note', 'data-testid': 'align-measurements', 'data-doubtful': doubtful.map((t) => t.name).join(' ') }, text);
+  const attributes = { 'data-testid': 'align-measurements', 'data-doubtful': doubtful.map((t) => t.name).join(' ') };
+  if (!doubtful.length) {
+    return h('p', { class: 'note', ...attributes }, 'Every measurement of this fit is from placed landmarks, found on the body, or within ISO 20685-1 by its expected error.');
+  }
+  // The names at a glance; why each is doubtful, in words, one click away.
+  const names = doubtful.map((t) => t.name.replaceAll('_', ' ')).join(', ');
+  return h(
+    'div',
+    { class: 'warn-note', ...attributes },
+    h('details', {}, h('summary', {}, `Measurements not to trust from this fit: ${names}.`), h('p', {}, `${doubtfulMeasurementsText(r.measurement_trust)}.`)),
+  );
 }
 
 /** Which template Align fits, and how: a fine template goes coarse to fine. */
