@@ -9,6 +9,7 @@
 //!   the buttocks' level, the neck's narrowest level
 //! * [`tape`] — a tape around a section: convex-hull perimeter of the chosen loop
 //! * [`body`] — [`BodyMeasurer`]: every measurement of a body
+//! * [`measurements`] — what measuring gives: [`Measurements`], [`Reading`], [`TapePath`]
 //! * [`upright`] — a body in any frame moved rigidly onto the template's
 //! * [`params`] — [`MeasureParams`], the plane offsets and up axis with their defaults
 //! * [`tolerance`] — ISO 20685-1's limit per measurement ([`IsoClass`]) and its verdict on a set
@@ -22,6 +23,7 @@
 pub mod body;
 pub mod definitions;
 pub mod error;
+pub mod measurements;
 pub mod params;
 pub mod parting;
 pub mod section;
@@ -31,9 +33,10 @@ pub mod tolerance;
 pub mod trust;
 pub mod upright;
 
-pub use body::{BodyMeasurer, Measurements, Reading, TapePath};
+pub use body::BodyMeasurer;
 pub use definitions::{Anchoring, Definition, Kind, Measure};
 pub use error::MeasureError;
+pub use measurements::{Measurements, Reading, TapePath};
 pub use params::MeasureParams;
 pub use section::{plane_section, Plane, SectionLoop};
 pub use tolerance::{Agreement, IsoClass};
