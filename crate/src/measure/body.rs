@@ -23,7 +23,7 @@ use super::measurements::{Measurements, TapePath};
 use super::params::MeasureParams;
 use super::parting::{legs_apart, parting_level, torso_alone, PartingSearch};
 use super::section::{plane_section, Plane, SectionLoop};
-use super::surface::{buttock_level, narrowest_neck};
+use super::surface::{buttock_level, fullest_head, narrowest_neck};
 use super::tape::{closed_length, convex_hull, tape, LoopChoice};
 use crate::mesh::volume::volume_and_area_flat;
 use crate::template::Segment;
@@ -81,11 +81,14 @@ impl BodyMeasurer {
         }
         let positive = [
             ("neck_step", params.neck_step),
+            ("head_step", params.head_step),
             ("parting_resolution", params.parting_resolution),
             ("prominence_depth", params.prominence_depth),
         ];
         let non_negative = [
             ("neck_band", params.neck_band),
+            ("head_search_above", params.head_search_above),
+            ("head_search_below", params.head_search_below),
             ("hip_band_below", params.hip_band_below),
             ("hip_band_above", params.hip_band_above),
             ("armpit_band_above", params.armpit_band_above),
@@ -327,8 +330,17 @@ impl BodyMeasurer {
                 around(Plane::new(at, axis)?, Region::HeadAndTorso, at)
             }
             Measure::HeadGirth => {
-                let level = a(0)[up] + p.head_above_sellion;
+                let sellion = a(0)[up];
                 let mut centre = midpoint(a(1), a(2));
+                let level = fullest_head(
+                    b.positions,
+                    &self.triangles,
+                    &self.regions[Region::Head as usize],
+                    centre,
+                    sellion,
+                    p,
+                )
+                .unwrap_or(sellion + p.head_search_above);
                 centre[up] = level;
                 around(Plane::horizontal(up, level), Region::Head, centre)
             }

@@ -210,7 +210,10 @@ impl Measure {
                 "head_girth",
                 "Head girth",
                 Girth,
-                "ISO 8559-1 head girth",
+                "ISO 8559-1 head girth; ISO 7250-1 head circumference",
+                // Found on the surface from the Sellion down (`surface.rs`), but trusted as the
+                // Sellion's level: on landmark-free fits the head's own surface misses the 2 mm
+                // limit too often (docs/measurements.md, "Trust").
                 &["Sellion", "Rt. Tragion", "Lt. Tragion"], Level(1)),
             Measure::ArmLength => d(
                 "arm_length",

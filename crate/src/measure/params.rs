@@ -15,9 +15,16 @@ pub struct MeasureParams {
     /// ISO 8559-1 takes thigh girth just below the gluteal fold, for which the template has no
     /// landmark; default 0.03 m.
     pub thigh_below_crotch: f64,
-    /// Height of the head plane above Sellion: ISO 8559-1 passes it above the eyebrows
-    /// (glabella); default 0.015 m.
-    pub head_above_sellion: f64,
+    /// The head girth's level (ISO 7250-1 head circumference: the greatest, above the eyebrow
+    /// ridges) is the cranium's widest horizontal section, found walking down from
+    /// `head_search_above` over the Sellion's height every `head_step` until the girth stops
+    /// growing, never below `head_search_below` under it (`surface.rs`, [`fullest_head`]);
+    /// defaults 0.05 m, 0.01 m and 0.01 m.
+    ///
+    /// [`fullest_head`]: super::surface::fullest_head
+    pub head_search_above: f64,
+    pub head_search_below: f64,
+    pub head_step: f64,
     /// Where the neck plane sits between the neck base (Cervicale–Suprasternale, 0) and the ears
     /// (Tragions, 1), perpendicular to that axis: ISO 8559-1 neck girth is taken just below the
     /// Adam's apple; default 0.25.
@@ -62,7 +69,9 @@ impl Default for MeasureParams {
             up_axis: 1,
             hip_above_crotch: 0.02,
             thigh_below_crotch: 0.03,
-            head_above_sellion: 0.015,
+            head_search_above: 0.04,
+            head_search_below: 0.01,
+            head_step: 0.005,
             neck_fraction: 0.25,
             neck_band: 0.2,
             neck_step: 0.025,

@@ -1,7 +1,7 @@
 //! A body point found on the surface around a landmark's guess rather than taken from the
 //! landmark's vertex, so that a landmark a few centimetres off names the same point: the
 //! **prominence** of a part along a direction, and with it the hip level ([`buttock_level`]);
-//! and the neck's narrowest level ([`narrowest_neck`]).
+//! the neck's narrowest level ([`narrowest_neck`]) and the head's widest ([`fullest_head`]).
 //! Parameters: [`MeasureParams`].
 //!
 //! Of the candidate vertices pᵢ and a unit direction d, the prominence's extent is
@@ -116,6 +116,90 @@ fn hull_contains(hull: &[[f64; 2]], q: [f64; 2]) -> bool {
         })
 }
 
+/// Girths of a tape perpendicular to an axis: at fraction f, the plane through base + f·axis
+/// perpendicular to `axis`, cut from the triangles of a region that straddle the searched stretch
+/// of the axis, around the outermost loop that encloses the axis (not the chin, an ear or a
+/// shoulder beside a tilted axis). Shared by the neck's and the head's searches.
+struct GirthsAlong<'a> {
+    positions: &'a [f32],
+    triangles: &'a [[u32; 3]],
+    /// The region's triangles that reach into fractions `first..=last` of the axis, each with the
+    /// span of fractions it covers, `(lo, hi, triangle)`, ascending by `lo`.
+    near: Vec<(f64, f64, u32)>,
+    /// The widest span among them: a plane at f cuts only triangles with lo in [f − widest, f].
+    widest: f64,
+    base: [f64; 3],
+    axis: [f64; 3],
+}
+
+impl<'a> GirthsAlong<'a> {
+    /// `None` when the axis has no length.
+    fn new(
+        positions: &'a [f32],
+        triangles: &'a [[u32; 3]],
+        region: &[u32],
+        base: [f64; 3],
+        axis: [f64; 3],
+        (first, last): (f64, f64),
+    ) -> Option<Self> {
+        let length2 = dot(axis, axis);
+        if length2 <= 0.0 {
+            return None;
+        }
+        let along = |v: u32| dot(sub(vertex(positions, v), base), axis) / length2;
+        let mut near: Vec<(f64, f64, u32)> = region
+            .iter()
+            .map(|&t| {
+                let s = triangles[t as usize].map(along);
+                (s[0].min(s[1]).min(s[2]), s[0].max(s[1]).max(s[2]), t)
+            })
+            .filter(|&(lo, hi, _)| hi >= first && lo <= last)
+            .collect();
+        near.sort_by(|a, b| a.0.total_cmp(&b.0));
+        let widest = near.iter().map(|&(lo, hi, _)| hi - lo).fold(0.0, f64::max);
+        Some(GirthsAlong {
+            positions,
+            triangles,
+            near,
+            widest,
+            base,
+            axis,
+        })
+    }
+
+    /// The girth at fraction `f`; `None` when no loop there encloses the axis.
+    fn at(&self, f: f64) -> Option<f64> {
+        // The triangles whose span holds f (with a rounding margin: the plane decides).
+        let margin = 1e-9;
+        let from = self
+            .near
+            .partition_point(|n| n.0 < f - self.widest - margin);
+        let to = self.near.partition_point(|n| n.0 <= f + margin);
+        let cut: Vec<u32> = self.near[from..to]
+            .iter()
+            .filter(|n| n.1 >= f - margin)
+            .map(|n| n.2)
+            .collect();
+        let at = [0, 1, 2].map(|k| self.base[k] + f * self.axis[k]);
+        let plane = Plane::new(at, self.axis)?;
+        let loops = plane_section(self.positions, self.triangles, &cut, &plane);
+        tape(&loops, LoopChoice::Around(plane.to_plane(at)))
+            .filter(|t| hull_contains(&t.hull, [0.0, 0.0]))
+            .map(|t| t.girth)
+    }
+}
+
+/// The vertex of the parabola through three girths a step apart (`l`, `c`, `r`), as a shift of
+/// the middle one in steps (within ±½); 0 when they do not bend the way sought (`least`: up).
+fn parabola_shift(l: f64, c: f64, r: f64, least: bool) -> f64 {
+    let curvature = l - 2.0 * c + r;
+    if (least && curvature > 0.0) || (!least && curvature < 0.0) {
+        (0.5 * (l - r) / curvature).clamp(-0.5, 0.5)
+    } else {
+        0.0
+    }
+}
+
 /// ISO 8559-1 5.3.2's level of the neck girth, where the neck is narrowest: the fraction f of
 /// the neck `axis` (the point base + f·axis) where the tape perpendicular to the axis around the
 /// outermost loop that encloses the axis, cut from `region` (indices into `triangles`), is least,
@@ -133,33 +217,15 @@ pub fn narrowest_neck(
     let n = (2.0 * p.neck_band / p.neck_step).round().max(0.0) as usize;
     let first = p.neck_fraction - p.neck_step * n as f64 / 2.0;
     let last = first + p.neck_step * n as f64;
-    let length2 = dot(axis, axis);
-    if length2 <= 0.0 {
+    let Some(girths_along) =
+        GirthsAlong::new(positions, triangles, region, base, axis, (first, last))
+    else {
         return p.neck_fraction;
-    }
-    // Only the triangles that straddle the searched stretch of the axis can be cut.
-    let along = |v: u32| dot(sub(vertex(positions, v), base), axis) / length2;
-    let near: Vec<u32> = region
-        .iter()
-        .copied()
-        .filter(|&t| {
-            let s = triangles[t as usize].map(along);
-            let (lo, hi) = (s[0].min(s[1]).min(s[2]), s[0].max(s[1]).max(s[2]));
-            hi >= first && lo <= last
-        })
-        .collect();
+    };
     let girth_at = |i: usize| {
-        let f = first + p.neck_step * i as f64;
-        let at = [0, 1, 2].map(|k| base[k] + f * axis[k]);
-        Plane::new(at, axis)
-            .and_then(|plane| {
-                let loops = plane_section(positions, triangles, &near, &plane);
-                tape(&loops, LoopChoice::Around(plane.to_plane(at)))
-            })
-            // Only a loop around the axis is the neck (not the chin, or a shoulder beside a
-            // tilted head's axis).
-            .filter(|t| hull_contains(&t.hull, [0.0, 0.0]))
-            .map_or(f64::INFINITY, |t| t.girth)
+        girths_along
+            .at(first + p.neck_step * i as f64)
+            .unwrap_or(f64::INFINITY)
     };
     // Every other sample first (and the last), then downhill through the skipped samples beside
     // the least: the same least sample as taking them all where the girth has one valley near
@@ -193,13 +259,59 @@ pub fn narrowest_neck(
     }
     let mut f = first + p.neck_step * i as f64;
     if i > 0 && i < n && girths[i - 1].is_finite() && girths[i + 1].is_finite() {
-        let (l, c, r) = (girths[i - 1], girths[i], girths[i + 1]);
-        let curvature = l - 2.0 * c + r;
-        if curvature > 0.0 {
-            f += p.neck_step * (0.5 * (l - r) / curvature).clamp(-0.5, 0.5);
-        }
+        f += p.neck_step * parabola_shift(girths[i - 1], girths[i], girths[i + 1], true);
     }
     f
+}
+
+/// ISO 7250-1's head circumference, the greatest girth of the head above the eyebrow ridges, taken
+/// horizontally: the height (along `params.up_axis`) of the cranium's widest horizontal section.
+/// From `head_search_above` over `sellion` (the Sellion's height) down every `head_step`, the tape
+/// around the loop that encloses the vertical through `centre` (the Tragions' midpoint), cut from
+/// `region`, grows until the dome's widest level; the first sample the next one below does not
+/// exceed is that level (lower down, where the ears or the brow join the section, the girth can
+/// grow again: not the cranium's), refined by the parabola through it and its neighbours; never
+/// below `head_search_below` under the Sellion. `None` when no sample has such a loop.
+pub fn fullest_head(
+    positions: &[f32],
+    triangles: &[[u32; 3]],
+    region: &[u32],
+    centre: [f64; 3],
+    sellion: f64,
+    params: &MeasureParams,
+) -> Option<f64> {
+    let p = params;
+    let up = p.up_axis;
+    let mut base = centre;
+    base[up] = sellion;
+    let mut axis = [0.0; 3];
+    axis[up] = 1.0;
+    let (top, bottom) = (p.head_search_above, -p.head_search_below);
+    let girths_along = GirthsAlong::new(positions, triangles, region, base, axis, (bottom, top))?;
+    let steps = ((top - bottom) / p.head_step).floor() as usize;
+    let level = |i: usize| top - p.head_step * i as f64;
+    // The samples taken, (index, girth), from the first with the head's loop on.
+    let mut taken: Vec<(usize, f64)> = Vec::with_capacity(steps + 1);
+    for i in 0..=steps {
+        let Some(g) = girths_along.at(level(i)) else {
+            if taken.is_empty() {
+                continue; // above the crown
+            }
+            break;
+        };
+        if let Some(&(c, widest)) = taken.last() {
+            if g <= widest {
+                let shift = match taken.len() {
+                    1 => 0.0,
+                    n => parabola_shift(taken[n - 2].1, widest, g, false),
+                };
+                // Levels fall as the index grows: a shift towards the lower sample is down.
+                return Some(sellion + level(c) - p.head_step * shift);
+            }
+        }
+        taken.push((i, g));
+    }
+    taken.last().map(|&(c, _)| sellion + level(c))
 }
 
 #[cfg(test)]
@@ -222,6 +334,67 @@ mod tests {
             }
         }
         p
+    }
+
+    /// A closed surface of revolution about the vertical through (0, ·, 0): rings every 2 mm
+    /// from y0 to y1, each an ellipse of half-axes `half(y)` (x, z) sampled at 120 points, closed
+    /// by a vertex at each end. Returns flat positions and triangles.
+    fn revolved(y0: f64, y1: f64, half: impl Fn(f64) -> (f64, f64)) -> (Vec<f32>, Vec<[u32; 3]>) {
+        let (rings, around) = (((y1 - y0) / 0.002).round() as u32, 120u32);
+        let mut p = vec![0.0, y0 as f32, 0.0];
+        for j in 1..rings {
+            let y = y0 + (y1 - y0) * j as f64 / rings as f64;
+            let (a, b) = half(y);
+            for i in 0..around {
+                let t = std::f64::consts::TAU * i as f64 / around as f64;
+                p.extend([a * t.cos(), y, b * t.sin()].map(|x| x as f32));
+            }
+        }
+        p.extend([0.0, y1 as f32, 0.0]);
+        let last = (p.len() / 3 - 1) as u32;
+        let at = |j: u32, i: u32| 1 + (j - 1) * around + i % around;
+        let mut t = Vec::new();
+        for i in 0..around {
+            t.push([0, at(1, i + 1), at(1, i)]);
+            t.push([last, at(rings - 1, i), at(rings - 1, i + 1)]);
+            for j in 1..rings - 1 {
+                t.push([at(j, i), at(j, i + 1), at(j + 1, i + 1)]);
+                t.push([at(j, i), at(j + 1, i + 1), at(j + 1, i)]);
+            }
+        }
+        (p, t)
+    }
+
+    #[test]
+    fn the_head_is_widest_at_the_domes_equator_wherever_the_sellion_and_whatever_the_ears() {
+        // An ellipsoidal cranium widest at y = 1.60 m, with "ears" 3 cm under its equator that
+        // make the section wider again: the search must stop at the dome.
+        let (p, t) = revolved(1.49, 1.71, |y| {
+            let s = (1.0 - ((y - 1.60) / 0.11).powi(2)).max(0.0).sqrt();
+            let ears = if (1.555..=1.575).contains(&y) {
+                0.02
+            } else {
+                0.0
+            };
+            (0.08 * s + ears, 0.10 * s)
+        });
+        let region: Vec<u32> = (0..t.len() as u32).collect();
+        let params = MeasureParams::default();
+        let girth = |level: f64| {
+            GirthsAlong::new(&p, &t, &region, [0.0; 3], [0.0, 1.0, 0.0], (level, level))
+                .and_then(|g| g.at(level))
+                .unwrap()
+        };
+        let widest = girth(1.60);
+        // The Sellion 2 cm under the equator, then moved 2 cm down and 2 cm up.
+        for sellion in [1.56, 1.58, 1.60] {
+            let level = fullest_head(&p, &t, &region, [0.0; 3], sellion, &params).unwrap();
+            assert!(
+                (level - 1.60).abs() < 0.003,
+                "Sellion {sellion}: level {level}"
+            );
+            assert!((girth(level) - widest).abs() < 0.001, "Sellion {sellion}");
+        }
     }
 
     #[test]
