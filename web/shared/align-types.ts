@@ -228,9 +228,11 @@ export interface UnplacedLandmark {
 /**
  * Whether the scan is under the fit where a body-defined measurement is taken
  * (`measure/support.rs`): of the fit's vertices there, those farther from the scan than the
- * rule's distance (5 mm by default).
+ * rule's distance (5 mm by default, 20 mm at the soles).
  */
 export interface MeasurementSupport {
+  /** The part judged: the measurement's place, or the soles (a height's other end) when they failed and the place did not. */
+  at: 'place' | 'soles';
   vertices: number;
   unsupported: number;
   unsupported_share: number;

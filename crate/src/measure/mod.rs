@@ -40,7 +40,7 @@ pub use definitions::{Anchoring, Definition, Kind, Measure};
 pub use error::MeasureError;
 pub use params::MeasureParams;
 pub use section::{plane_section, Plane, SectionLoop};
-pub use support::{measurements_support, Support, SupportParams};
+pub use support::{measurements_support, At, Support, SupportParams};
 pub use tolerance::{Agreement, IsoClass};
 pub use trust::{
     measurement_trust, measurements_trust, MeasurementTrust, Origin, Trust, TrustParams,

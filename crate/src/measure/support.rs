@@ -7,18 +7,19 @@
 //! fit is the template's extrapolation and the value with it. The place of each ([`place`]):
 //!
 //! * stature: the crown, every fit vertex within [`SupportParams::radius_mm`] of the highest
-//!   level (the floor is the soles, which a scanner never sees under a standing body: 37–59 %
-//!   of the sole's vertices are beyond 5 mm on every synthetic scan, stature right all the
-//!   same);
+//!   level;
 //! * crotch height: the fit's vertices within the radius of the fit's Crotch landmark;
 //! * a girth: the vertices within the radius of its tape's corners (the convex hull's corners,
 //!   [`BodyMeasurer::tape_paths`]: where the tape touches the body), and for the thigh, whose
-//!   level is the crotch's, the crotch's too.
+//!   level is the crotch's, the crotch's too;
+//! * and for the heights (stature, crotch height), the soles, their other end: every vertex
+//!   within the radius of the lowest level.
 //!
 //! Its support: of those `n` vertices, the `k` whose distance to the scan (the alignment's
 //! per-vertex distance, [`crate::align::Alignment::per_vertex_distance`]) exceeds
-//! [`SupportParams::far_mm`]; the measurement is unsupported when k/n exceeds
-//! [`SupportParams::max_unsupported_share`].
+//! [`SupportParams::far_mm`] ([`SupportParams::sole_far_mm`] at the soles); the measurement is
+//! unsupported when k/n exceeds [`SupportParams::max_unsupported_share`] at its place or at the
+//! soles.
 
 use serde::Serialize;
 
@@ -36,6 +37,10 @@ pub struct SupportParams {
     /// A vertex farther than this from the scan is unsupported (mm); default 5 mm, five times
     /// the synthetic scanner's noise and about five times a good fit's RMS.
     pub far_mm: f64,
+    /// The same at the soles (mm), which a scanner never sees under a standing body, so that the
+    /// template's sole spans the scan's foot: 37–59 % of the soles' vertices are beyond 5 mm on
+    /// every tuning fit, ≤ 8 % beyond 20 mm (at most 33 mm away); default 20 mm.
+    pub sole_far_mm: f64,
     /// The measurement is doubtful when more than this share of its vertices is unsupported;
     /// default 0.5: more than half of the place is the template's. Every synthetic scan has a
     /// small hole at the crown (10–43 % of the crown's vertices beyond 5 mm, up to 26 mm away)
@@ -49,6 +54,7 @@ impl Default for SupportParams {
         Self {
             radius_mm: 15.0,
             far_mm: 5.0,
+            sole_far_mm: 20.0,
             max_unsupported_share: 0.5,
         }
     }
@@ -83,12 +89,30 @@ pub fn place(m: Measure) -> Option<Place> {
     })
 }
 
+/// Whether `m` is a height above the floor, so that the soles are its other end.
+fn above_the_soles(m: Measure) -> bool {
+    matches!(m, Measure::Stature | Measure::CrotchHeight)
+}
+
+/// Which part of a measurement's place a [`Support`] judged.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum At {
+    /// The measurement's own [`place`].
+    Place,
+    /// The soles, a height's other end.
+    Soles,
+}
+
 /// The fit's support where one measurement is taken.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Support {
-    /// Fit vertices at the measurement's place.
+    /// The part judged: its place, or the soles when they failed and the place did not.
+    pub at: At,
+    /// Fit vertices there.
     pub vertices: usize,
-    /// Of them, those farther than [`SupportParams::far_mm`] from the scan.
+    /// Of them, those farther than [`SupportParams::far_mm`] (at the soles
+    /// [`SupportParams::sole_far_mm`]) from the scan.
     pub unsupported: usize,
     /// unsupported / vertices (0 when there are none).
     pub unsupported_share: f64,
@@ -110,9 +134,30 @@ pub fn measurements_support(
     distances: &[f64],
     params: &SupportParams,
 ) -> Vec<Option<Support>> {
-    places(measurer, landmarks, upright, up, params.radius_mm * 1e-3)
+    let radius = params.radius_mm * 1e-3;
+    let soles = level(upright, up, radius, false);
+    let soles = support(At::Soles, &soles, distances, params);
+    places(measurer, landmarks, upright, up, radius)
         .into_iter()
-        .map(|vertices| Some(support(&vertices?, distances, params)))
+        .zip(Measure::ALL)
+        .map(|(vertices, m)| {
+            let s = support(At::Place, &vertices?, distances, params);
+            Some(match !s.doubtful && soles.doubtful && above_the_soles(m) {
+                true => soles.clone(),
+                false => s,
+            })
+        })
+        .collect()
+}
+
+/// The fit's vertices within `radius` (metres) of its highest level (`top`) or its lowest.
+fn level(upright: &[f32], up: usize, radius: f64, top: bool) -> Vec<usize> {
+    let height = |v: usize| upright[3 * v + up] as f64;
+    let n = upright.len() / 3;
+    let sign = if top { 1.0 } else { -1.0 };
+    let extreme = (0..n).map(|v| sign * height(v)).fold(f64::MIN, f64::max);
+    (0..n)
+        .filter(|&v| sign * height(v) >= extreme - radius)
         .collect()
 }
 
@@ -131,14 +176,13 @@ pub fn places(
         [p[0] as f64, p[1] as f64, p[2] as f64]
     };
     let n = upright.len() / 3;
-    let r = radius;
     let near = |centres: &[[f64; 3]]| -> Vec<usize> {
         (0..n)
             .filter(|&v| {
                 let p = vertex(v);
                 centres.iter().any(|c| {
                     let d = [0, 1, 2].map(|k| p[k] - c[k]);
-                    d[0] * d[0] + d[1] * d[1] + d[2] * d[2] <= r * r
+                    d[0] * d[0] + d[1] * d[1] + d[2] * d[2] <= radius * radius
                 })
             })
             .collect()
@@ -162,10 +206,7 @@ pub fn places(
         .into_iter()
         .map(|m| {
             Some(match place(m)? {
-                Place::Crown => {
-                    let top = (0..n).map(|v| vertex(v)[up]).fold(f64::MIN, f64::max);
-                    (0..n).filter(|&v| vertex(v)[up] >= top - r).collect()
-                }
+                Place::Crown => level(upright, up, radius, true),
                 Place::Landmark(name) => near(&landmark(name).into_iter().collect::<Vec<_>>()),
                 Place::Tape => near(&tape(m)),
                 Place::TapeAnd(name) => {
@@ -178,9 +219,10 @@ pub fn places(
         .collect()
 }
 
-/// The support of `vertices` given each vertex's `distances` to the scan (metres).
-pub fn support(vertices: &[usize], distances: &[f64], params: &SupportParams) -> Support {
-    let far = params.far_mm * 1e-3;
+/// The support of `vertices` (the part `at` of a place) given each vertex's `distances` to the
+/// scan (metres).
+pub fn support(at: At, vertices: &[usize], distances: &[f64], params: &SupportParams) -> Support {
+    let far = far_mm(at, params) * 1e-3;
     let d: Vec<f64> = vertices
         .iter()
         .map(|&v| distances.get(v).map_or(f64::INFINITY, |d| d.abs()))
@@ -192,6 +234,7 @@ pub fn support(vertices: &[usize], distances: &[f64], params: &SupportParams) ->
         unsupported as f64 / d.len() as f64
     };
     Support {
+        at,
         vertices: d.len(),
         unsupported,
         unsupported_share,
@@ -200,24 +243,32 @@ pub fn support(vertices: &[usize], distances: &[f64], params: &SupportParams) ->
     }
 }
 
+fn far_mm(at: At, params: &SupportParams) -> f64 {
+    match at {
+        At::Place => params.far_mm,
+        At::Soles => params.sole_far_mm,
+    }
+}
+
 /// What a person reads of an unsupported measurement: "chest girth: the scan has no surface
 /// within 5 mm of 38 % of the fit where its tape runs (up to 24 mm away): the fit there is the
 /// template's, not the scan's".
 pub fn words(m: Measure, s: &Support, params: &SupportParams) -> String {
     let d = m.definition();
-    let at = match place(m) {
-        Some(Place::Crown) => "at the crown (a scanner's field of view often cuts it)",
-        Some(Place::Landmark("Crotch")) => {
+    let at = match (s.at, place(m)) {
+        (At::Soles, _) => "at the soles (its feet are not on the scan's)",
+        (_, Some(Place::Crown)) => "at the crown (a scanner's field of view often cuts it)",
+        (_, Some(Place::Landmark(_))) => {
             "at the crotch (between the legs, where a scanner sees little)"
         }
-        Some(Place::TapeAnd("Crotch")) => "where its tape runs and at the crotch",
+        (_, Some(Place::TapeAnd(_))) => "where its tape runs and at the crotch",
         _ => "where its tape runs",
     };
     format!(
         "{}: the scan has no surface within {:.0} mm of {:.0} % of the fit {at} (up to {:.0} mm \
          away): the fit there is the template's, not the scan's",
         d.label.to_lowercase(),
-        params.far_mm,
+        far_mm(s.at, params),
         100.0 * s.unsupported_share,
         s.max_distance_mm
     )
@@ -298,6 +349,35 @@ mod tests {
     }
 
     #[test]
+    fn feet_off_the_scan_leave_both_heights_unsupported() {
+        // The fit's feet reach 30 mm below the scan's: the soles are 30 mm off, the rest on it.
+        let floor = Template::embedded()
+            .unwrap()
+            .mesh()
+            .positions
+            .iter()
+            .map(|p| p.y)
+            .fold(f64::MAX, f64::min);
+        let (supports, _) = judged(&|p, _| if p[1] < floor + 0.03 { 0.03 } else { 0.001 });
+        for m in [Measure::Stature, Measure::CrotchHeight] {
+            let s = supports[m.index()].as_ref().unwrap();
+            assert!(s.doubtful && s.at == At::Soles, "{m:?}: {s:?}");
+        }
+        assert!(
+            !supports[Measure::HipGirth.index()]
+                .as_ref()
+                .unwrap()
+                .doubtful
+        );
+        let s = supports[Measure::Stature.index()].as_ref().unwrap();
+        assert!(
+            words(Measure::Stature, s, &SupportParams::default()).starts_with(
+                "stature: the scan has no surface within 20 mm of 100 % of the fit at the soles"
+            )
+        );
+    }
+
+    #[test]
     fn a_fit_far_from_the_scan_around_one_girth_makes_that_girth_doubtful() {
         // Every vertex within 40 mm of the hip girth's tape level is 12 mm off the scan.
         let template = Template::embedded().unwrap();
@@ -327,10 +407,15 @@ mod tests {
             assert!(!supports[m.index()].as_ref().unwrap().doubtful, "{m:?}");
         }
         // Half of the place off, and no more, stays trusted: the share must exceed 0.5.
-        let half = support(&[0, 1], &[0.001, 0.012], &SupportParams::default());
+        let half = support(
+            At::Place,
+            &[0, 1],
+            &[0.001, 0.012],
+            &SupportParams::default(),
+        );
         assert_eq!(half.unsupported_share, 0.5);
         assert!(!half.doubtful);
-        let none = support(&[], &[], &SupportParams::default());
+        let none = support(At::Place, &[], &[], &SupportParams::default());
         assert!(!none.doubtful && none.vertices == 0);
     }
 }

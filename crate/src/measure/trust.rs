@@ -318,7 +318,14 @@ mod tests {
     fn a_body_defined_measurement_is_doubtful_where_the_scan_is_not_under_the_fit() {
         let params = TrustParams::default();
         let (near, far) = ([0.001; 4], [0.001, 0.012, 0.012, 0.012]);
-        let s = |d: &[f64]| Some(support::support(&[0, 1, 2, 3], d, &params.support));
+        let s = |d: &[f64]| {
+            Some(support::support(
+                support::At::Place,
+                &[0, 1, 2, 3],
+                d,
+                &params.support,
+            ))
+        };
         let t = measurement_trust(Measure::HipGirth, &all(Origin::Placed), s(&far), &params);
         assert_eq!(t.trust, Trust::BodyDefined);
         assert!(t.doubtful);
