@@ -35,6 +35,7 @@ use serde::Serialize;
 
 use super::definitions::{Anchoring, Measure};
 use super::support::{self, Support, SupportParams};
+use super::tolerance::chance_over;
 
 /// The rule's parameters, with their defaults.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
@@ -206,26 +207,6 @@ pub fn measurements_trust(
         .collect()
 }
 
-/// P(|x| > `limit`) for a half-normal error x of mean `expected`: erfc(limit / (expected·√π)).
-pub fn chance_over(limit: f64, expected: f64) -> f64 {
-    if expected <= 0.0 {
-        return if limit < 0.0 { 1.0 } else { 0.0 };
-    }
-    erfc(limit / (expected * std::f64::consts::PI.sqrt()))
-}
-
-/// erfc(x) for x ≥ 0 (Abramowitz & Stegun 7.1.26, absolute error < 1.5·10⁻⁷). A negative x
-/// (never here: the argument is a ratio of lengths) is taken as 0, giving erfc(0) = 1.
-fn erfc(x: f64) -> f64 {
-    let x = x.max(0.0);
-    let t = 1.0 / (1.0 + 0.327_591_1 * x);
-    let poly = t
-        * (0.254_829_592
-            + t * (-0.284_496_736
-                + t * (1.421_413_741 + t * (-1.453_152_027 + t * 1.061_405_429))));
-    poly * (-x * x).exp()
-}
-
 /// "shoulder breadth (biacromial): from the estimated Rt. Acromion (typical error 17 mm) and Lt.
 /// Acromion (18 mm), expected error ≈ 24 mm against ISO 20685-1's 4 mm (over it on 89 % of
 /// bodies) — place these landmarks to measure it"; `limit`: the limit (mm) and P.
@@ -382,20 +363,6 @@ mod tests {
         assert_eq!(t.landmarks.len(), 1);
         assert!(t.words.contains("the left-out (suspicious) Lt. Acromion"));
         assert!(t.words.ends_with("place this landmark to measure it"));
-    }
-
-    #[test]
-    fn the_chance_over_the_limit_of_a_half_normal_error() {
-        // erfc(0) = 1, erfc(1) = 0.157299, erfc(2) = 0.004678.
-        assert!((erfc(0.0) - 1.0).abs() < 1e-6);
-        assert!((erfc(1.0) - 0.157_299).abs() < 1e-6);
-        assert!((erfc(2.0) - 0.004_678).abs() < 1e-6);
-        // Mean 1 and limit √π: one σ·√2 out.
-        let p = chance_over(std::f64::consts::PI.sqrt(), 1.0);
-        assert!((p - 0.157_299).abs() < 1e-6);
-        assert_eq!(chance_over(4.0, 0.0), 0.0);
-        // The default's threshold, E = 0.407·L: P = 5 %.
-        assert!((chance_over(1.0, 0.407) - 0.05).abs() < 2e-3);
     }
 
     #[test]
