@@ -20,7 +20,9 @@
 //! over them (each subject's differences go to stderr); then the trust the subject report gives
 //! each measurement (`measure/trust.rs`) against the truth: its verdicts, the mean expected error
 //! against the MAE, the doubtful ones that were within the limit and the trusted ones that were
-//! out (the cache keeps each fit's trust beside it, `….trust.json`); and per subject how far below the true crown the scan's highest point lies (the
+//! out (the cache keeps beside each fit what its trust is judged from, `….support.json`: the
+//! landmarks' origins and the fit's distances to the scan; each body-defined measurement's support
+//! per subject goes to stderr); and per subject how far below the true crown the scan's highest point lies (the
 //! scanner's cut: the fit's crown there is the alignment's extrapolation), and the time to
 //! measure one fit natively.
 
@@ -36,12 +38,12 @@ mod native {
     use bodyspace::io::{read_scan, write_ply};
     use bodyspace::measure::{
         upright, Agreement, BodyMeasurer, Measure, MeasureParams, MeasurementTrust, Measurements,
-        Trust,
+        Origin, Trust, TrustParams,
     };
     use bodyspace::mesh::similarity::similarity;
     use bodyspace::mesh::units::detect_units;
     use bodyspace::mesh::{bounding_extent, Mesh};
-    use bodyspace::subject::{fit_subject, read_subject, SubjectOptions};
+    use bodyspace::subject::{fit_measurements_trust, fit_subject, read_subject, SubjectOptions};
     use bodyspace::template::{Resolution, Template};
     use std::path::{Path, PathBuf};
 
@@ -126,30 +128,58 @@ mod native {
         std::fs::read(path).map_err(|e| format!("{}: {e}", path.display()))
     }
 
-    /// One measurement's trust as the report wrote it: (trust, expected error E in mm, chance P
-    /// over the limit, doubtful).
+    /// One measurement's trust: (trust, expected error E in mm, chance P over the limit,
+    /// doubtful).
     type TrustRow = (String, Option<f64>, Option<f64>, bool);
 
+    /// What the trust of a fit is judged from, kept beside a cached fit (`….support.json`):
+    /// where each CAESAR landmark came from and each base vertex's distance to the scan (mm).
+    #[derive(serde::Serialize, serde::Deserialize)]
+    struct Judged {
+        origins: Vec<Origin>,
+        distances_mm: Vec<f32>,
+    }
+
     /// The fit of subject `id` at `template`'s resolution (`base` given at `fine`; template
-    /// frame, metres) and its measurements' trust, from the cache or fitted now.
+    /// frame, metres) and its measurements' trust (`subject::fit_measurements_trust`, the rule
+    /// the subject report uses, judged anew on a cached fit), from the cache or fitted now.
     fn fit(
         o: &Options,
         (template, base): (&Template, Option<&Template>),
         id: usize,
         from: From,
-    ) -> Result<(Vec<nalgebra::Point3<f64>>, Vec<TrustRow>), String> {
+    ) -> Result<(Vec<nalgebra::Point3<f64>>, Vec<MeasurementTrust>), String> {
         let fine = if base.is_some() { "_fine" } else { "" };
+        let base_template = base.unwrap_or(template);
+        let nb = base_template.mesh().vertex_count();
+        let trust = |positions: &[nalgebra::Point3<f64>], judged: &Judged| {
+            let distances: Vec<f64> = judged
+                .distances_mm
+                .iter()
+                .map(|&d| d as f64 * 1e-3)
+                .collect();
+            fit_measurements_trust(
+                base_template,
+                positions,
+                &distances,
+                &judged.origins,
+                &TrustParams::default(),
+            )
+        };
         let cached = o
             .cache
             .as_ref()
             .map(|c| c.join(format!("{}{fine}_{id:03}.ply", from.name())));
-        let trust_path = cached.as_ref().map(|p| p.with_extension("trust.json"));
-        if let (Some(path), Some(trust)) = (
+        let judged_path = cached.as_ref().map(|p| p.with_extension("support.json"));
+        if let (Some(path), Some(judged)) = (
             cached.as_ref().filter(|p| p.exists()),
-            trust_path.as_ref().filter(|p| p.exists()),
+            judged_path.as_ref().filter(|p| p.exists()),
         ) {
-            let rows = serde_json::from_slice(&bytes(trust)?).map_err(|e| e.to_string())?;
-            return Ok((read_fit(path)?.positions, rows));
+            let judged: Judged =
+                serde_json::from_slice(&bytes(judged)?).map_err(|e| e.to_string())?;
+            let positions = read_fit(path)?.positions;
+            let rows = trust(&positions, &judged);
+            return Ok((positions, rows));
         }
         let scan_path = o.dir.join(format!("scan_{id:03}.ply"));
         let lnd_path = o.dir.join(format!("landmarks_{id:03}.lnd"));
@@ -174,27 +204,53 @@ mod native {
         )
         .map_err(|e| e.to_string())?;
         let positions = fitted.positions_in_template_frame();
-        let rows: Vec<TrustRow> = fitted
-            .report
-            .measurement_trust
-            .iter()
-            .map(|t: &MeasurementTrust| {
-                (
-                    trust_name(t.trust),
-                    t.expected_error_mm,
-                    t.chance_over_limit,
-                    t.doubtful,
-                )
-            })
-            .collect();
-        if let (Some(path), Some(trust)) = (cached, trust_path) {
+        let judged = Judged {
+            origins: fitted.landmark_origins.clone(),
+            distances_mm: fitted.alignment.per_vertex_distance[..nb]
+                .iter()
+                .map(|&d| (d * 1e3) as f32)
+                .collect(),
+        };
+        let rows = fitted.report.measurement_trust.clone();
+        if let (Some(path), Some(judged_path)) = (cached, judged_path) {
             let mesh = Mesh::new(positions.clone(), template.mesh().triangles.clone());
             std::fs::write(&path, write_ply(&mesh))
                 .map_err(|e| format!("{}: {e}", path.display()))?;
-            let text = serde_json::to_vec(&rows).map_err(|e| e.to_string())?;
-            std::fs::write(&trust, text).map_err(|e| format!("{}: {e}", trust.display()))?;
+            let text = serde_json::to_vec(&judged).map_err(|e| e.to_string())?;
+            std::fs::write(&judged_path, text)
+                .map_err(|e| format!("{}: {e}", judged_path.display()))?;
         }
         Ok((positions, rows))
+    }
+
+    /// A measurement's trust as the table counts it.
+    fn row(t: &MeasurementTrust) -> TrustRow {
+        (
+            trust_name(t.trust),
+            t.expected_error_mm,
+            t.chance_over_limit,
+            t.doubtful,
+        )
+    }
+
+    /// Each body-defined measurement's support on one fit, on stderr: the unsupported share,
+    /// the largest distance (mm) and the verdict.
+    fn support_lines(from: From, id: usize, trust: &[MeasurementTrust]) {
+        let parts: Vec<String> = trust
+            .iter()
+            .filter_map(|t| {
+                let s = t.support.as_ref()?;
+                Some(format!(
+                    "{} {:.0} % of {} ≤ {:.0} mm{}",
+                    t.name,
+                    100.0 * s.unsupported_share,
+                    s.vertices,
+                    s.max_distance_mm,
+                    if s.doubtful { " doubtful" } else { "" }
+                ))
+            })
+            .collect();
+        eprintln!("{} {id:03} support: {}", from.name(), parts.join("; "));
     }
 
     fn trust_name(t: Trust) -> String {
@@ -411,7 +467,8 @@ mod native {
             for (id, truth) in (1..=n).zip(&truths) {
                 let started = std::time::Instant::now();
                 let (positions, trusted) = fit(&o, fitting, id, from)?;
-                trust.push(trusted);
+                support_lines(from, id, &trusted);
+                trust.push(trusted.iter().map(row).collect());
                 // The base vertices come first at `fine`: measured on them, as `bodyspace measure` does.
                 let positions = &positions[..template.mesh().vertex_count()];
                 let stood = upright(positions, &template.mesh().positions)

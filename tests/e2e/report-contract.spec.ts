@@ -10,7 +10,7 @@ import { mkdtempSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { expect, test } from '@playwright/test';
-import type { DistanceStatsMm, FineReport, LandmarkPolicyReport, MeasurementTrust, QualityReport, SubjectReport, ToTemplate, UnplacedLandmark, WarpReport } from '../../web/shared/align-types';
+import type { DistanceStatsMm, FineReport, LandmarkPolicyReport, MeasurementSupport, MeasurementTrust, QualityReport, SubjectReport, ToTemplate, UnplacedLandmark, WarpReport } from '../../web/shared/align-types';
 import type { EstimateReport, SelfCheck, SelfCheckEvidence } from '../../web/shared/landmark-entry';
 import { bodyspaceBinary, synthSubjects } from './synth';
 
@@ -66,7 +66,8 @@ const quality: Keys<QualityReport> = {
 const selfCheck: Keys<SelfCheck> = { verdict: true, reasons: true, confidence_factor: true, lopsided_factor: true, evidence: true };
 const evidence: Keys<SelfCheckEvidence> = { fit_rms_mm: true, fit_moved_mm: true, stature_m: true, contradicting: true, asymmetric: true, uneven: true };
 const estimateRead: Keys<EstimateReport> = { landmarks: true, frame: true, given: true, estimated: true, flagged: true, self_check: true, fit_rms_mm: true, total_ms: true };
-const trust: Keys<MeasurementTrust> = { name: true, trust: true, landmarks: true, expected_error_mm: true, limit_mm: true, chance_over_limit: true, doubtful: true, words: true };
+const trust: Keys<MeasurementTrust> = { name: true, trust: true, landmarks: true, expected_error_mm: true, limit_mm: true, chance_over_limit: true, support: true, doubtful: true, words: true };
+const support: Keys<MeasurementSupport> = { at: true, vertices: true, unsupported: true, unsupported_share: true, max_distance_mm: true, doubtful: true };
 const unplaced: Keys<UnplacedLandmark> = { name: true, origin: true, typical_error_mm: true };
 const toTemplate: Keys<ToTemplate> = { scale_to_metres: true, rotation: true, translation: true };
 const warp: Keys<WarpReport> = {
@@ -143,6 +144,9 @@ test('the TypeScript report types name exactly the fields the core writes', () =
     const trusted = report.measurement_trust as unknown as Record<string, unknown>[];
     expect(trusted).toHaveLength(19);
     for (const t of trusted) expectKeys(`MeasurementTrust ${String(t.name)}`, t, trust);
+    // A body-defined measurement with a limit carries the scan's support where it is taken.
+    const chest = trusted.find((t) => t.name === 'chest_girth')!;
+    expectKeys('MeasurementSupport', chest.support as Record<string, unknown>, support);
 
     // No landmark file, and up stated as −z on this z-up scan: the estimate runs in a wrong frame,
     // says it failed and why, and the fit's quality carries it.

@@ -226,9 +226,27 @@ export interface UnplacedLandmark {
 }
 
 /**
+ * Whether the scan is under the fit where a body-defined measurement is taken
+ * (`measure/support.rs`): of the fit's vertices there, those farther from the scan than the
+ * rule's distance (5 mm by default, 20 mm at the soles).
+ */
+export interface MeasurementSupport {
+  /** The part judged: the measurement's place, or the soles (a height's other end) when they failed and the place did not. */
+  at: 'place' | 'soles';
+  vertices: number;
+  unsupported: number;
+  unsupported_share: number;
+  /** The largest distance to the scan among them (mm). */
+  max_distance_mm: number;
+  /** The unsupported share above the rule's (more than half by default). */
+  doubtful: boolean;
+}
+
+/**
  * One measurement's trust on a fit, from where its landmarks came (`measure/trust.rs`): placed,
  * found on the body (`body_defined`), or estimated with its expected error; doubtful when that
- * error exceeds ISO 20685-1's limit. A per-measurement verdict, not a quality flag.
+ * error exceeds ISO 20685-1's limit, or, for a body-defined one, when the fit where it is taken is
+ * mostly not on the scan. A per-measurement verdict, not a quality flag.
  */
 export interface MeasurementTrust {
   /** The measurement's snake_case name (`shoulder_breadth`). */
@@ -239,8 +257,10 @@ export interface MeasurementTrust {
   limit_mm: number | null;
   /** The chance that this body's error exceeds the limit, for an estimated measurement with a limit. */
   chance_over_limit: number | null;
+  /** For a body-defined measurement with a limit on a finished fit: the scan's support there. */
+  support: MeasurementSupport | null;
   doubtful: boolean;
-  /** In words, for an estimated measurement (empty otherwise). */
+  /** In words, for an estimated or unsupported measurement (empty otherwise). */
   words: string;
 }
 

@@ -155,7 +155,7 @@ function measurementsNote(r: SubjectReport): HTMLElement {
   const doubtful = r.measurement_trust.filter((t) => t.doubtful);
   const attributes = { 'data-testid': 'align-measurements', 'data-doubtful': doubtful.map((t) => t.name).join(' ') };
   if (!doubtful.length) {
-    return h('p', { class: 'note', ...attributes }, 'Every measurement of this fit is from placed landmarks, found on the body, or within ISO 20685-1 by its expected error.');
+    return h('p', { class: 'note', ...attributes }, 'Every measurement of this fit is from placed landmarks, found on the body where the scan is under the fit, or within ISO 20685-1 by its expected error.');
   }
   // The names at a glance; why each is doubtful, in words, one click away.
   const names = doubtful.map((t) => t.name.replaceAll('_', ' ')).join(', ');

@@ -15,7 +15,10 @@
 //! * [`tolerance`] — ISO 20685-1's limit per measurement ([`IsoClass`]) and its verdict on a set
 //!   of differences ([`Agreement`])
 //! * [`trust`] — [`measurements_trust`]: each measurement of a fit placed, body-defined or
-//!   estimated from where its landmarks came, with its expected error against ISO 20685-1
+//!   estimated from where its landmarks came, with its expected error against ISO 20685-1, and
+//!   a body-defined one doubtful where the fit there is not the scan's
+//! * [`support`] — [`measurements_support`]: whether the scan is under a fit where each
+//!   body-defined measurement is taken
 //! * [`error`] — [`MeasureError`]
 //!
 //! Volume and surface area are [`crate::mesh::volume`].
@@ -27,6 +30,7 @@ pub mod measurements;
 pub mod params;
 pub mod parting;
 pub mod section;
+pub mod support;
 pub mod surface;
 pub mod tape;
 pub mod tolerance;
@@ -39,6 +43,7 @@ pub use error::MeasureError;
 pub use measurements::{Measurements, Reading, TapePath};
 pub use params::MeasureParams;
 pub use section::{plane_section, Plane, SectionLoop};
+pub use support::{measurements_support, At, Support, SupportParams};
 pub use tolerance::{Agreement, IsoClass};
 pub use trust::{
     measurement_trust, measurements_trust, MeasurementTrust, Origin, Trust, TrustParams,

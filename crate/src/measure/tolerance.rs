@@ -6,6 +6,9 @@
 //! body depths 5 mm; large girths (chest, waist, hip) 9 mm; head dimensions 2 mm. A method passes
 //! on a measurement when the 95 % interval of the mean difference, mean ± 1.96·sd/√n, lies inside
 //! ± that limit.
+//!
+//! [`chance_over`]: the chance that one body's error, of a given mean, exceeds a limit
+//! (`trust.rs`).
 
 use super::definitions::Measure;
 use serde::Serialize;
@@ -109,6 +112,26 @@ impl Agreement {
     }
 }
 
+/// P(|x| > `limit`) for a half-normal error x of mean `expected`: erfc(limit / (expected·√π)).
+pub fn chance_over(limit: f64, expected: f64) -> f64 {
+    if expected <= 0.0 {
+        return if limit < 0.0 { 1.0 } else { 0.0 };
+    }
+    erfc(limit / (expected * std::f64::consts::PI.sqrt()))
+}
+
+/// erfc(x) for x ≥ 0 (Abramowitz & Stegun 7.1.26, absolute error < 1.5·10⁻⁷). A negative x
+/// (never here: the argument is a ratio of lengths) is taken as 0, giving erfc(0) = 1.
+fn erfc(x: f64) -> f64 {
+    let x = x.max(0.0);
+    let t = 1.0 / (1.0 + 0.327_591_1 * x);
+    let poly = t
+        * (0.254_829_592
+            + t * (-0.284_496_736
+                + t * (1.421_413_741 + t * (-1.453_152_027 + t * 1.061_405_429))));
+    poly * (-x * x).exp()
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -142,5 +165,19 @@ mod tests {
         // A bias of −4 mm fails a 4 mm limit however small the spread.
         assert!(!Agreement::of(&[-0.0041, -0.0041]).unwrap().within(0.004));
         assert!(Agreement::of(&[]).is_none());
+    }
+
+    #[test]
+    fn the_chance_over_the_limit_of_a_half_normal_error() {
+        // erfc(0) = 1, erfc(1) = 0.157299, erfc(2) = 0.004678.
+        assert!((erfc(0.0) - 1.0).abs() < 1e-6);
+        assert!((erfc(1.0) - 0.157_299).abs() < 1e-6);
+        assert!((erfc(2.0) - 0.004_678).abs() < 1e-6);
+        // Mean 1 and limit √π: one σ·√2 out.
+        let p = chance_over(std::f64::consts::PI.sqrt(), 1.0);
+        assert!((p - 0.157_299).abs() < 1e-6);
+        assert_eq!(chance_over(4.0, 0.0), 0.0);
+        // The default's threshold, E = 0.407·L: P = 5 %.
+        assert!((chance_over(1.0, 0.407) - 0.05).abs() < 2e-3);
     }
 }

@@ -25,32 +25,40 @@
 //!   [`TrustParams::max_chance_over_limit`] (default 5 %, i.e. E > 0.41·L), and the report says
 //!   so in words.
 //!
+//! A body-defined measurement is doubtful where the fit is not the scan's: when too much of the
+//! fit where it is taken lies far from the scan ([`super::support`], [`TrustParams::support`]).
+//!
 //! Checked against the truth on held-out subjects in docs/measurements.md ("Trust"): E matches
 //! the measured MAE, and P the share of bodies over the limit.
 
 use serde::Serialize;
 
 use super::definitions::{Anchoring, Measure};
+use super::support::{self, Support, SupportParams};
+use super::tolerance::chance_over;
 
-/// The rule's one parameter, with its default.
+/// The rule's parameters, with their defaults.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct TrustParams {
     /// A measurement from unplaced landmarks is doubtful when its chance of an error over ISO
     /// 20685-1's limit exceeds this; default 0.05 ("never silently wrong": a measurement is
     /// trusted only when it is nearly sure to be within the standard).
     pub max_chance_over_limit: f64,
+    /// When the fit carries a body-defined measurement ([`super::support`]).
+    pub support: SupportParams,
 }
 
 impl Default for TrustParams {
     fn default() -> Self {
         Self {
             max_chance_over_limit: 0.05,
+            support: SupportParams::default(),
         }
     }
 }
 
 /// Where one landmark of a fit came from.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, serde::Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum Origin {
     /// Given (in a file or placed by a person) and kept by the suspicious check.
@@ -107,17 +115,21 @@ pub struct MeasurementTrust {
     /// P, the chance that this body's error exceeds the limit, for an `estimated` measurement
     /// with a limit.
     pub chance_over_limit: Option<f64>,
-    /// P above [`TrustParams::max_chance_over_limit`].
+    /// For a `body_defined` measurement with a limit, when the fit's distances to the scan were
+    /// known: the fit's support where it is taken ([`super::support`]).
+    pub support: Option<Support>,
+    /// P above [`TrustParams::max_chance_over_limit`], or too little support.
     pub doubtful: bool,
-    /// What a person reads, for an `estimated` measurement (empty otherwise).
+    /// What a person reads, for an `estimated` or unsupported measurement (empty otherwise).
     pub words: String,
 }
 
 /// The trust of `m` on a fit whose landmark `name` came from `origin(name)` = (where it came
-/// from, its typical error in mm).
+/// from, its typical error in mm) and whose support where `m` is taken is `support`.
 pub fn measurement_trust(
     m: Measure,
     origin: &dyn Fn(&str) -> (Origin, f64),
+    support: Option<Support>,
     params: &TrustParams,
 ) -> MeasurementTrust {
     let d = m.definition();
@@ -153,13 +165,21 @@ pub fn measurement_trust(
         (Some(e), Some(limit)) => Some(chance_over(limit, e)),
         _ => None,
     };
-    let doubtful = chance_over_limit.is_some_and(|p| p > params.max_chance_over_limit);
-    let words = expected_error_mm
-        .map(|e| {
-            let limit = limit_mm.zip(chance_over_limit);
-            words(d.label, &landmarks, e, limit, doubtful)
-        })
-        .unwrap_or_default();
+    let support = support.filter(|_| trust == Trust::BodyDefined);
+    let unsupported = support.as_ref().filter(|s| s.doubtful);
+    let doubtful = chance_over_limit.is_some_and(|p| p > params.max_chance_over_limit)
+        || unsupported.is_some();
+    let words = match (expected_error_mm, unsupported) {
+        (Some(e), _) => words(
+            d.label,
+            &landmarks,
+            e,
+            limit_mm.zip(chance_over_limit),
+            doubtful,
+        ),
+        (None, Some(s)) => support::words(m, s, &params.support),
+        (None, None) => String::new(),
+    };
     MeasurementTrust {
         name: d.name,
         trust,
@@ -167,40 +187,24 @@ pub fn measurement_trust(
         expected_error_mm,
         limit_mm,
         chance_over_limit,
+        support,
         doubtful,
         words,
     }
 }
 
-/// Every measurement's trust, in [`Measure::ALL`] order.
+/// Every measurement's trust, in [`Measure::ALL`] order; `supports`: each one's support in that
+/// order (empty when the fit's distances to the scan are not known).
 pub fn measurements_trust(
     origin: &dyn Fn(&str) -> (Origin, f64),
+    supports: Vec<Option<Support>>,
     params: &TrustParams,
 ) -> Vec<MeasurementTrust> {
+    let mut supports = supports.into_iter();
     Measure::ALL
         .into_iter()
-        .map(|m| measurement_trust(m, origin, params))
+        .map(|m| measurement_trust(m, origin, supports.next().flatten(), params))
         .collect()
-}
-
-/// P(|x| > `limit`) for a half-normal error x of mean `expected`: erfc(limit / (expected·√π)).
-pub fn chance_over(limit: f64, expected: f64) -> f64 {
-    if expected <= 0.0 {
-        return if limit < 0.0 { 1.0 } else { 0.0 };
-    }
-    erfc(limit / (expected * std::f64::consts::PI.sqrt()))
-}
-
-/// erfc(x) for x ≥ 0 (Abramowitz & Stegun 7.1.26, absolute error < 1.5·10⁻⁷). A negative x
-/// (never here: the argument is a ratio of lengths) is taken as 0, giving erfc(0) = 1.
-fn erfc(x: f64) -> f64 {
-    let x = x.max(0.0);
-    let t = 1.0 / (1.0 + 0.327_591_1 * x);
-    let poly = t
-        * (0.254_829_592
-            + t * (-0.284_496_736
-                + t * (1.421_413_741 + t * (-1.453_152_027 + t * 1.061_405_429))));
-    poly * (-x * x).exp()
 }
 
 /// "shoulder breadth (biacromial): from the estimated Rt. Acromion (typical error 17 mm) and Lt.
@@ -266,7 +270,7 @@ mod tests {
 
     #[test]
     fn placed_landmarks_are_trusted_and_body_defined_ones_never_inherit() {
-        for t in measurements_trust(&all(Origin::Placed), &TrustParams::default()) {
+        for t in measurements_trust(&all(Origin::Placed), vec![], &TrustParams::default()) {
             assert!(!t.doubtful, "{}", t.name);
             assert!(t.landmarks.is_empty() && t.words.is_empty());
             assert_eq!(t.expected_error_mm, None);
@@ -285,10 +289,41 @@ mod tests {
             Measure::HipGirth,
             Measure::NeckGirth,
         ] {
-            let t = measurement_trust(m, &all(Origin::Estimated), &TrustParams::default());
+            let t = measurement_trust(m, &all(Origin::Estimated), None, &TrustParams::default());
             assert_eq!(t.trust, Trust::BodyDefined, "{}", t.name);
             assert!(!t.doubtful);
         }
+    }
+
+    #[test]
+    fn a_body_defined_measurement_is_doubtful_where_the_scan_is_not_under_the_fit() {
+        let params = TrustParams::default();
+        let (near, far) = ([0.001; 4], [0.001, 0.012, 0.012, 0.012]);
+        let s = |d: &[f64]| {
+            Some(support::support(
+                support::At::Place,
+                &[0, 1, 2, 3],
+                d,
+                &params.support,
+            ))
+        };
+        let t = measurement_trust(Measure::HipGirth, &all(Origin::Placed), s(&far), &params);
+        assert_eq!(t.trust, Trust::BodyDefined);
+        assert!(t.doubtful);
+        assert_eq!(t.support.as_ref().unwrap().unsupported, 3);
+        assert!(
+            t.words.starts_with(
+                "hip girth: the scan has no surface within 5 mm of 75 % of the fit where its \
+                 tape runs (up to 12 mm away): the fit there is the template's"
+            ),
+            "{}",
+            t.words
+        );
+        let t = measurement_trust(Measure::HipGirth, &all(Origin::Placed), s(&near), &params);
+        assert!(!t.doubtful && t.words.is_empty() && t.support.is_some());
+        // A landmark-defined measurement is judged by its landmarks alone.
+        let t = measurement_trust(Measure::WaistGirth, &all(Origin::Placed), s(&far), &params);
+        assert!(!t.doubtful && t.support.is_none());
     }
 
     #[test]
@@ -296,6 +331,7 @@ mod tests {
         let t = measurement_trust(
             Measure::ShoulderBreadth,
             &all(Origin::Estimated),
+            None,
             &TrustParams::default(),
         );
         assert_eq!(t.trust, Trust::Estimated);
@@ -313,6 +349,7 @@ mod tests {
         let t = measurement_trust(
             Measure::AcromionHeight,
             &all(Origin::Estimated),
+            None,
             &TrustParams::default(),
         );
         assert!((t.expected_error_mm.unwrap() - 11.8).abs() < 1e-9);
@@ -321,25 +358,11 @@ mod tests {
             "Rt. Acromion" => (Origin::Placed, 23.6),
             _ => (Origin::LeftOut, 23.6),
         };
-        let t = measurement_trust(Measure::AcromionHeight, &one, &TrustParams::default());
+        let t = measurement_trust(Measure::AcromionHeight, &one, None, &TrustParams::default());
         assert!((t.expected_error_mm.unwrap() - 5.9).abs() < 1e-9);
         assert_eq!(t.landmarks.len(), 1);
         assert!(t.words.contains("the left-out (suspicious) Lt. Acromion"));
         assert!(t.words.ends_with("place this landmark to measure it"));
-    }
-
-    #[test]
-    fn the_chance_over_the_limit_of_a_half_normal_error() {
-        // erfc(0) = 1, erfc(1) = 0.157299, erfc(2) = 0.004678.
-        assert!((erfc(0.0) - 1.0).abs() < 1e-6);
-        assert!((erfc(1.0) - 0.157_299).abs() < 1e-6);
-        assert!((erfc(2.0) - 0.004_678).abs() < 1e-6);
-        // Mean 1 and limit √π: one σ·√2 out.
-        let p = chance_over(std::f64::consts::PI.sqrt(), 1.0);
-        assert!((p - 0.157_299).abs() < 1e-6);
-        assert_eq!(chance_over(4.0, 0.0), 0.0);
-        // The default's threshold, E = 0.407·L: P = 5 %.
-        assert!((chance_over(1.0, 0.407) - 0.05).abs() < 2e-3);
     }
 
     #[test]
@@ -349,19 +372,25 @@ mod tests {
             "Sellion" => (Origin::Placed, 13.5),
             _ => (Origin::Estimated, 17.5),
         };
-        let t = measurement_trust(Measure::HeadGirth, &sellion_placed, &TrustParams::default());
+        let t = measurement_trust(
+            Measure::HeadGirth,
+            &sellion_placed,
+            None,
+            &TrustParams::default(),
+        );
         assert_eq!(t.trust, Trust::Placed);
         // Thigh girth is found at the crotch on the surface, whatever its landmarks.
         let t = measurement_trust(
             Measure::ThighGirth,
             &all(Origin::Estimated),
+            None,
             &TrustParams::default(),
         );
         assert_eq!(t.trust, Trust::BodyDefined);
         // Waist girth: four landmarks of 10 mm, E = 5 mm against the 9 mm of a large girth:
         // P = erfc(9 / (5·√π)) = erfc(1.0155) = 0.1509, doubtful at the default 5 %, not at 20 %.
         let waist = |params: TrustParams| {
-            measurement_trust(Measure::WaistGirth, &all(Origin::Absent), &params)
+            measurement_trust(Measure::WaistGirth, &all(Origin::Absent), None, &params)
         };
         let t = waist(TrustParams::default());
         assert_eq!(t.trust, Trust::Estimated);
@@ -373,6 +402,7 @@ mod tests {
             .starts_with("waist girth: from the absent Rt. 10th Rib"));
         let t = waist(TrustParams {
             max_chance_over_limit: 0.2,
+            ..TrustParams::default()
         });
         assert!(!t.doubtful);
         assert!(
@@ -385,6 +415,7 @@ mod tests {
         let t = measurement_trust(
             Measure::ArmLength,
             &all(Origin::Estimated),
+            None,
             &TrustParams::default(),
         );
         let want = (23.6f64.powi(2) + 100.0 + 2.6f64.powi(2)).sqrt();

@@ -14,7 +14,10 @@ use crate::align::{align_scan, assess, AlignInput, AlignObserver, Alignment};
 use crate::estimate::typical_error::typical_error_mm;
 use crate::estimate::{given_landmarks, Verdict};
 use crate::landmarks::CAESAR_LANDMARKS;
-use crate::measure::{measurements_trust, Origin, TrustParams};
+use crate::measure::{
+    measurements_support, measurements_trust, upright, BodyMeasurer, MeasureParams,
+    MeasurementTrust, Origin, TrustParams,
+};
 use crate::mesh::units::Units;
 use crate::template::{Resolution, Template};
 
@@ -24,6 +27,9 @@ pub struct SubjectFit {
     /// The alignment: positions in metres, the scan's frame, template order.
     pub alignment: Alignment,
     pub report: SubjectReport,
+    /// Where each CAESAR landmark of the fit came from (CAESAR order), which the report's
+    /// `measurement_trust` was judged from.
+    pub landmark_origins: Vec<Origin>,
 }
 
 impl SubjectFit {
@@ -114,14 +120,13 @@ pub fn fit_subject(
     let to_m = alignment.scale_to_metres;
     let in_scan_units: Vec<_> = alignment.positions.iter().map(|p| p / to_m).collect();
     let to_template = ToTemplate::of_fit(&in_scan_units, &base.mesh().positions, units);
-    let origin = landmark_origins(input, &landmarks);
+    let origins = landmark_origins(input, &landmarks);
     let report = SubjectReport {
-        measurement_trust: measurements_trust(
-            &|name: &str| {
-                let k = CAESAR_LANDMARKS.iter().position(|l| l.name == name);
-                let typical = k.map_or(f64::NAN, typical_error_mm);
-                (k.map_or(Origin::Absent, |k| origin[k]), typical)
-            },
+        measurement_trust: fit_measurements_trust(
+            base,
+            &alignment.positions,
+            &alignment.per_vertex_distance,
+            &origins,
             &TrustParams::default(),
         ),
         landmarks: landmarks.report,
@@ -129,7 +134,51 @@ pub fn fit_subject(
         to_template,
         alignment: alignment.report.clone(),
     };
-    Ok(SubjectFit { alignment, report })
+    Ok(SubjectFit {
+        alignment,
+        report,
+        landmark_origins: origins,
+    })
+}
+
+/// Each measurement's trust on a fit ([`measurements_trust`]): from where its landmarks came
+/// (`origins`, CAESAR order) and, for a body-defined one, the fit's support by the scan where it
+/// is taken ([`measurements_support`]). `positions`: the fit (metres, any frame, at least the
+/// `base` template's `#Vb` vertices first); `distances`: each fitted vertex's distance to the
+/// scan (metres, the same order; empty after the warp alone, when support is not judged).
+pub fn fit_measurements_trust(
+    base: &Template,
+    positions: &[Point3<f64>],
+    distances: &[f64],
+    origins: &[Origin],
+    params: &TrustParams,
+) -> Vec<MeasurementTrust> {
+    let n = base.mesh().vertex_count();
+    let measure = MeasureParams::default();
+    let stood = (positions.len() >= n && distances.len() >= n)
+        .then(|| upright(&positions[..n], &base.mesh().positions))
+        .flatten();
+    let supports = match (stood, BodyMeasurer::of_template(base, measure)) {
+        (Some(stood), Ok(measurer)) => measurements_support(
+            &measurer,
+            base.landmark_vertices(),
+            &stood,
+            measure.up_axis,
+            &distances[..n],
+            &params.support,
+        ),
+        _ => vec![],
+    };
+    measurements_trust(
+        &|name: &str| {
+            let k = CAESAR_LANDMARKS.iter().position(|l| l.name == name);
+            let typical = k.map_or(f64::NAN, typical_error_mm);
+            let origin = k.and_then(|k| origins.get(k).copied());
+            (origin.unwrap_or(Origin::Absent), typical)
+        },
+        supports,
+        params,
+    )
 }
 
 /// Where each CAESAR landmark of the fit came from (CAESAR order): given and kept by the check,

@@ -27,7 +27,7 @@ pub mod policy;
 pub mod report;
 
 pub use error::SubjectError;
-pub use fit::{fit_subject, fit_subject_files, SubjectFit};
+pub use fit::{fit_measurements_trust, fit_subject, fit_subject_files, SubjectFit};
 pub use frame::ToTemplate;
 pub use input::{read_subject, GivenLandmarks, SubjectInput};
 pub use options::SubjectOptions;
