@@ -124,10 +124,8 @@ struct GirthsAlong<'a> {
     positions: &'a [f32],
     triangles: &'a [[u32; 3]],
     /// The region's triangles that reach into fractions `first..=last` of the axis, each with the
-    /// span of fractions it covers, `(lo, hi, triangle)`, ascending by `lo`.
+    /// span of fractions it covers, `(lo, hi, triangle)`.
     near: Vec<(f64, f64, u32)>,
-    /// The widest span among them: a plane at f cuts only triangles with lo in [f − widest, f].
-    widest: f64,
     base: [f64; 3],
     axis: [f64; 3],
 }
@@ -147,7 +145,7 @@ impl<'a> GirthsAlong<'a> {
             return None;
         }
         let along = |v: u32| dot(sub(vertex(positions, v), base), axis) / length2;
-        let mut near: Vec<(f64, f64, u32)> = region
+        let near: Vec<(f64, f64, u32)> = region
             .iter()
             .map(|&t| {
                 let s = triangles[t as usize].map(along);
@@ -155,13 +153,10 @@ impl<'a> GirthsAlong<'a> {
             })
             .filter(|&(lo, hi, _)| hi >= first && lo <= last)
             .collect();
-        near.sort_by(|a, b| a.0.total_cmp(&b.0));
-        let widest = near.iter().map(|&(lo, hi, _)| hi - lo).fold(0.0, f64::max);
         Some(GirthsAlong {
             positions,
             triangles,
             near,
-            widest,
             base,
             axis,
         })
@@ -171,13 +166,10 @@ impl<'a> GirthsAlong<'a> {
     fn at(&self, f: f64) -> Option<f64> {
         // The triangles whose span holds f (with a rounding margin: the plane decides).
         let margin = 1e-9;
-        let from = self
+        let cut: Vec<u32> = self
             .near
-            .partition_point(|n| n.0 < f - self.widest - margin);
-        let to = self.near.partition_point(|n| n.0 <= f + margin);
-        let cut: Vec<u32> = self.near[from..to]
             .iter()
-            .filter(|n| n.1 >= f - margin)
+            .filter(|n| n.0 <= f + margin && n.1 >= f - margin)
             .map(|n| n.2)
             .collect();
         let at = [0, 1, 2].map(|k| self.base[k] + f * self.axis[k]);
