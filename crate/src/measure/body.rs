@@ -19,18 +19,18 @@
 
 use super::definitions::Measure;
 use super::error::MeasureError;
+use super::levels::{distance, midpoint, sub, Body};
 use super::measurements::{Measurements, TapePath};
 use super::params::MeasureParams;
-use super::parting::{legs_apart, parting_level, torso_alone, PartingSearch};
+use super::parting::{parting_level, torso_alone, PartingSearch};
 use super::section::{plane_section, Plane, SectionLoop};
-use super::surface::{buttock_level, fullest_head, narrowest_neck};
+use super::surface::{fullest_head, narrowest_neck};
 use super::tape::{closed_length, convex_hull, tape, LoopChoice};
-use crate::mesh::volume::volume_and_area_flat;
 use crate::template::Segment;
 
 /// Which triangles a section cuts.
 #[derive(Debug, Clone, Copy)]
-enum Region {
+pub(super) enum Region {
     Torso,
     TorsoAndLegs,
     RightArm,
@@ -43,16 +43,16 @@ enum Region {
 /// every measurement, resolved once (by name, so revised landmark vertices flow through).
 #[derive(Debug, Clone)]
 pub struct BodyMeasurer {
-    triangles: Vec<[u32; 3]>,
-    vertex_count: usize,
+    pub(super) triangles: Vec<[u32; 3]>,
+    pub(super) vertex_count: usize,
     /// Per measurement, the vertices of its definition's landmarks, in the definition's order.
-    anchors: Vec<Vec<u32>>,
+    pub(super) anchors: Vec<Vec<u32>>,
     /// Triangle indices per [`Region`] (by `Region as usize`).
-    regions: [Vec<u32>; 6],
+    pub(super) regions: [Vec<u32>; 6],
     /// Vertices whose largest blend weight is the torso's or a leg's (where the buttocks are
     /// sought).
-    trunk_vertices: Vec<u32>,
-    params: MeasureParams,
+    pub(super) trunk_vertices: Vec<u32>,
+    pub(super) params: MeasureParams,
 }
 
 /// A girth's plane, the region it cuts and how the tape picks its loop.
@@ -424,146 +424,4 @@ fn around_everything(loops: &[SectionLoop]) -> Option<(f64, Vec<[f64; 2]>)> {
         .collect();
     let hull = convex_hull(&points);
     (hull.len() >= 3).then(|| (closed_length(&hull), hull))
-}
-
-/// One body being measured: positions and what several measurements share.
-struct Body<'a> {
-    measurer: &'a BodyMeasurer,
-    positions: &'a [f32],
-    floor: f64,
-    top: f64,
-    /// The hip level, computed once for hip girth and waist-to-hip.
-    hip_level: std::cell::OnceCell<f64>,
-    /// The crotch, computed once for crotch height and thigh girth.
-    crotch_level: std::cell::OnceCell<f64>,
-    /// Volume and area, computed once for both measurements (one pass over every triangle).
-    volume_and_area: std::cell::OnceCell<(f64, f64)>,
-}
-
-impl<'a> Body<'a> {
-    fn new(measurer: &'a BodyMeasurer, positions: &'a [f32]) -> Body<'a> {
-        let up = measurer.params.up_axis;
-        let (mut floor, mut top) = (f64::INFINITY, f64::NEG_INFINITY);
-        for p in positions.chunks_exact(3) {
-            floor = floor.min(p[up] as f64);
-            top = top.max(p[up] as f64);
-        }
-        Body {
-            measurer,
-            positions,
-            floor,
-            top,
-            hip_level: std::cell::OnceCell::new(),
-            crotch_level: std::cell::OnceCell::new(),
-            volume_and_area: std::cell::OnceCell::new(),
-        }
-    }
-
-    fn vertex(&self, v: u32) -> [f64; 3] {
-        let i = 3 * v as usize;
-        let p = &self.positions[i..i + 3];
-        [p[0] as f64, p[1] as f64, p[2] as f64]
-    }
-
-    /// The `k`-th landmark of measurement `m`'s definition.
-    fn anchor(&self, m: Measure, k: usize) -> [f64; 3] {
-        self.vertex(self.measurer.anchors[m.index()][k])
-    }
-
-    /// Mean height of all of `m`'s landmarks.
-    fn mean_height(&self, m: Measure) -> f64 {
-        let vs = &self.measurer.anchors[m.index()];
-        let up = self.measurer.params.up_axis;
-        vs.iter().map(|&v| self.vertex(v)[up]).sum::<f64>() / vs.len() as f64
-    }
-
-    /// ISO 8559-1's waist: midway between the lowest rib (10th Ribs) and the iliac crest
-    /// (Iliocristales).
-    fn waist_level(&self) -> f64 {
-        self.mean_height(Measure::WaistGirth)
-    }
-
-    /// The landmarks' guess of the hip level: the Trochanterions' mean height, at least
-    /// `hip_above_crotch` over the Crotch.
-    fn hip_guess(&self) -> f64 {
-        let up = self.measurer.params.up_axis;
-        let m = Measure::HipGirth;
-        let trochanters = (self.anchor(m, 0)[up] + self.anchor(m, 1)[up]) / 2.0;
-        trochanters.max(self.anchor(m, 2)[up] + self.measurer.params.hip_above_crotch)
-    }
-
-    /// ISO 8559-1 5.3.13's hip level, the level of greatest buttock prominence
-    /// ([`buttock_level`]) from `hip_band_below` under to `hip_band_above` over
-    /// [`Body::hip_guess`], never under `hip_above_crotch` over the Crotch; backward is
-    /// Suprasternale → Cervicale. The guess when nothing is found.
-    fn hip_level(&self) -> f64 {
-        *self.hip_level.get_or_init(|| {
-            let p = &self.measurer.params;
-            let up = p.up_axis;
-            let guess = self.hip_guess();
-            let crotch = self.anchor(Measure::HipGirth, 2)[up];
-            let neck = Measure::NeckGirth;
-            let backward = sub(self.anchor(neck, 0), self.anchor(neck, 1));
-            let band = (guess - p.hip_band_below).max(crotch + p.hip_above_crotch)
-                ..=guess + p.hip_band_above;
-            buttock_level(
-                self.positions,
-                &self.measurer.trunk_vertices,
-                backward,
-                band,
-                p,
-            )
-            .unwrap_or(guess)
-        })
-    }
-
-    /// ISO 7250-1's crotch: the highest level at which the torso's and legs' section has parted
-    /// into the legs ([`legs_apart`] around the Crotch, Lt. → Rt. Trochanterion the side
-    /// direction), from `crotch_band_above` over to `crotch_band_below` under the Crotch
-    /// landmark's height; that height when the band holds no parting.
-    fn crotch_level(&self) -> f64 {
-        *self.crotch_level.get_or_init(|| {
-            let p = &self.measurer.params;
-            // CROTCH: Crotch, Rt. Trochanterion, Lt. Trochanterion.
-            let m = Measure::CrotchHeight;
-            let crotch = self.anchor(m, 0);
-            let mut lateral = sub(self.anchor(m, 1), self.anchor(m, 2));
-            lateral[p.up_axis] = 0.0;
-            let search = PartingSearch {
-                region: &self.measurer.regions[Region::TorsoAndLegs as usize],
-                centre: crotch,
-                lateral,
-                guess: crotch[p.up_axis],
-                above: p.crotch_band_above,
-                below: p.crotch_band_below,
-            };
-            parting_level(
-                self.positions,
-                &self.measurer.triangles,
-                &search,
-                legs_apart,
-                p,
-            )
-            .unwrap_or(crotch[p.up_axis])
-        })
-    }
-
-    fn volume_and_area(&self) -> (f64, f64) {
-        *self
-            .volume_and_area
-            .get_or_init(|| volume_and_area_flat(self.positions, &self.measurer.triangles))
-    }
-}
-
-fn sub(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
-    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
-}
-
-fn midpoint(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
-    [0, 1, 2].map(|k| (a[k] + b[k]) / 2.0)
-}
-
-fn distance(a: [f64; 3], b: [f64; 3]) -> f64 {
-    let d = sub(a, b);
-    (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt()
 }

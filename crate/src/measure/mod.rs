@@ -9,6 +9,7 @@
 //!   the buttocks' level, the neck's narrowest level
 //! * [`tape`] — a tape around a section: convex-hull perimeter of the chosen loop
 //! * [`body`] — [`BodyMeasurer`]: every measurement of a body
+//! * [`levels`] — one body being measured and the levels its measurements share
 //! * [`measurements`] — what measuring gives: [`Measurements`], [`Reading`], [`TapePath`]
 //! * [`upright`] — a body in any frame moved rigidly onto the template's
 //! * [`params`] — [`MeasureParams`], the plane offsets and up axis with their defaults
@@ -26,6 +27,7 @@
 pub mod body;
 pub mod definitions;
 pub mod error;
+mod levels;
 pub mod measurements;
 pub mod params;
 pub mod parting;
