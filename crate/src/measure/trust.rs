@@ -268,6 +268,11 @@ mod tests {
         }
     }
 
+    /// The trust of `m` with the default parameters and no support known.
+    fn trust_of(m: Measure, origin: &dyn Fn(&str) -> (Origin, f64)) -> MeasurementTrust {
+        measurement_trust(m, origin, None, &TrustParams::default())
+    }
+
     #[test]
     fn placed_landmarks_are_trusted_and_body_defined_ones_never_inherit() {
         for t in measurements_trust(&all(Origin::Placed), vec![], &TrustParams::default()) {
@@ -289,7 +294,7 @@ mod tests {
             Measure::HipGirth,
             Measure::NeckGirth,
         ] {
-            let t = measurement_trust(m, &all(Origin::Estimated), None, &TrustParams::default());
+            let t = trust_of(m, &all(Origin::Estimated));
             assert_eq!(t.trust, Trust::BodyDefined, "{}", t.name);
             assert!(!t.doubtful);
         }
@@ -328,12 +333,7 @@ mod tests {
 
     #[test]
     fn a_span_adds_its_ends_errors_in_quadrature_and_a_level_halves_their_mean() {
-        let t = measurement_trust(
-            Measure::ShoulderBreadth,
-            &all(Origin::Estimated),
-            None,
-            &TrustParams::default(),
-        );
+        let t = trust_of(Measure::ShoulderBreadth, &all(Origin::Estimated));
         assert_eq!(t.trust, Trust::Estimated);
         let e = t.expected_error_mm.unwrap();
         assert!((e - 23.6 * 2f64.sqrt()).abs() < 1e-9, "{e}");
@@ -346,19 +346,14 @@ mod tests {
              (over it on 92 % of bodies) — place these landmarks to measure it"
         );
         // Acromion height: the mean level of the two, ½·(23.6 + 23.6)/2.
-        let t = measurement_trust(
-            Measure::AcromionHeight,
-            &all(Origin::Estimated),
-            None,
-            &TrustParams::default(),
-        );
+        let t = trust_of(Measure::AcromionHeight, &all(Origin::Estimated));
         assert!((t.expected_error_mm.unwrap() - 11.8).abs() < 1e-9);
         // One of two placed: it counts 0 in the mean, the other stays.
         let one = |name: &str| match name {
             "Rt. Acromion" => (Origin::Placed, 23.6),
             _ => (Origin::LeftOut, 23.6),
         };
-        let t = measurement_trust(Measure::AcromionHeight, &one, None, &TrustParams::default());
+        let t = trust_of(Measure::AcromionHeight, &one);
         assert!((t.expected_error_mm.unwrap() - 5.9).abs() < 1e-9);
         assert_eq!(t.landmarks.len(), 1);
         assert!(t.words.contains("the left-out (suspicious) Lt. Acromion"));
@@ -372,20 +367,10 @@ mod tests {
             "Sellion" => (Origin::Placed, 13.5),
             _ => (Origin::Estimated, 17.5),
         };
-        let t = measurement_trust(
-            Measure::HeadGirth,
-            &sellion_placed,
-            None,
-            &TrustParams::default(),
-        );
+        let t = trust_of(Measure::HeadGirth, &sellion_placed);
         assert_eq!(t.trust, Trust::Placed);
         // Thigh girth is found at the crotch on the surface, whatever its landmarks.
-        let t = measurement_trust(
-            Measure::ThighGirth,
-            &all(Origin::Estimated),
-            None,
-            &TrustParams::default(),
-        );
+        let t = trust_of(Measure::ThighGirth, &all(Origin::Estimated));
         assert_eq!(t.trust, Trust::BodyDefined);
         // Waist girth: four landmarks of 10 mm, E = 5 mm against the 9 mm of a large girth:
         // P = erfc(9 / (5·√π)) = erfc(1.0155) = 0.1509, doubtful at the default 5 %, not at 20 %.
@@ -412,12 +397,7 @@ mod tests {
             t.words
         );
         // Arm length: √(23.6² + 10² + 2.6²).
-        let t = measurement_trust(
-            Measure::ArmLength,
-            &all(Origin::Estimated),
-            None,
-            &TrustParams::default(),
-        );
+        let t = trust_of(Measure::ArmLength, &all(Origin::Estimated));
         let want = (23.6f64.powi(2) + 100.0 + 2.6f64.powi(2)).sqrt();
         assert!((t.expected_error_mm.unwrap() - want).abs() < 1e-9);
         assert!(t
