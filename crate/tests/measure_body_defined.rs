@@ -1,8 +1,9 @@
 //! The body-defined measurements (docs/measurements.md) on a body of revolution with known
 //! answers — an elliptic torso with a bump on its back (the buttocks) at a known level, under a
 //! shoulder dome, and a neck of known least girth — and each with its landmarks moved 2 cm: the
-//! value moves at most 2 mm.
+//! value moves at most 2 mm. The head's widest level on an ellipsoidal cranium with "ears".
 
+use bodyspace::measure::surface::fullest_head;
 use bodyspace::measure::tape::{tape, LoopChoice};
 use bodyspace::measure::{plane_section, BodyMeasurer, Measure, MeasureParams, Plane};
 use std::f64::consts::PI;
@@ -213,4 +214,47 @@ fn stature_is_the_crown_and_moves_with_no_landmark() {
     assert!((m.get(Measure::Stature).unwrap() - top).abs() < 1e-6);
     let moved = measure(&["Sellion", "Rt. Tragion", "Lt. Tragion"], 0.02);
     assert_eq!(moved.get(Measure::Stature), m.get(Measure::Stature));
+}
+
+#[test]
+fn the_head_is_widest_at_the_domes_equator_wherever_the_sellion_and_whatever_the_ears() {
+    // An ellipsoidal cranium widest at y = 1.60 m (rings every 2 mm from 1.49 to 1.71 m), with
+    // "ears" 3 cm under its equator that make the section wider again: the search must stop at
+    // the dome.
+    let y = |i: usize| 1.492 + 0.002 * i as f64;
+    let (p, t) = ring_surface(
+        109,
+        120,
+        |i, angle| {
+            let s = (1.0 - ((y(i) - 1.60) / 0.11).powi(2)).max(0.0).sqrt();
+            let ears = if (1.555..=1.575).contains(&y(i)) {
+                0.02
+            } else {
+                0.0
+            };
+            [
+                (0.08 * s + ears) * angle.cos(),
+                y(i),
+                0.10 * s * angle.sin(),
+            ]
+        },
+        [0.0, 1.49, 0.0],
+        [0.0, 1.71, 0.0],
+    );
+    let region: Vec<u32> = (0..t.len() as u32).collect();
+    let params = MeasureParams::default();
+    let girth = |level: f64| {
+        let loops = plane_section(&p, &t, &region, &Plane::horizontal(1, level));
+        tape(&loops, LoopChoice::Around([0.0, 0.0])).unwrap().girth
+    };
+    let widest = girth(1.60);
+    // The Sellion 2 cm under the equator, then moved 2 cm down and 2 cm up.
+    for sellion in [1.56, 1.58, 1.60] {
+        let level = fullest_head(&p, &t, &region, [0.0; 3], sellion, &params).unwrap();
+        assert!(
+            (level - 1.60).abs() < 0.003,
+            "Sellion {sellion}: level {level}"
+        );
+        assert!((girth(level) - widest).abs() < 0.001, "Sellion {sellion}");
+    }
 }
