@@ -2,6 +2,8 @@
 //! template vertex order, anchored on the template's landmarks (docs/measurements.md).
 //!
 //! * [`definitions`] — the [`Measure`] table: names, kinds, sources, landmarks
+//! * [`acromion`] — the acromia found on the body's surface around the Acromion vertices
+//!   (shoulder breadth, acromion height, arm length), by the shoulder's rule the estimate shares
 //! * [`parting`] — levels where a section's loops part, found on the surface: the armpits' apex
 //!   (the chest girth's level) and the crotch (crotch height, the thigh girth's level)
 //! * [`section`] — plane sections of a triangle mesh ([`Plane`], [`plane_section`])
@@ -24,6 +26,7 @@
 //!
 //! Volume and surface area are [`crate::mesh::volume`].
 
+pub mod acromion;
 pub mod body;
 pub mod definitions;
 pub mod error;
