@@ -14,7 +14,7 @@
 //! Cost: the template's side (its frame, its surface near each Acromion) is prepared once; a body
 //! costs two or more searches over the triangles near its shoulders.
 
-use nalgebra::Point3;
+use nalgebra::{Point3, Vector3};
 
 use super::definitions::SHOULDERS;
 use super::params::MeasureParams;
@@ -131,54 +131,135 @@ impl AcromionSearch {
     }
 
     /// The acromia (right, left) of the body at flat `positions` (template vertex order,
-    /// metres, upright like the template): each side's Acromion vertex where the search finds
-    /// no shoulder point.
-    pub fn acromia(&self, positions: &[f32], params: &MeasureParams) -> [[f64; 3]; 2] {
+    /// metres, upright like the template), each with how it was found ([`Acromion`]): the
+    /// Acromion vertex where the search finds no shoulder point or the point it finds is not on
+    /// the shoulder's turn ([`turn_rises`]).
+    pub fn acromia(&self, positions: &[f32], params: &MeasureParams) -> [Acromion; 2] {
         let p = params;
         let guesses = [0, 1].map(|s| point(positions, self.landmarks[s]));
-        let mut out = guesses;
+        let mut out = guesses.map(|g| Acromion {
+            point: [g.x, g.y, g.z],
+            vertex: [g.x, g.y, g.z],
+            on_surface: false,
+            shoulder_point: None,
+            rises: None,
+        });
         let frames = ShoulderFrame::both(&|k| shoulder_landmark(positions, &self.landmarks, k));
-        if let (Some(rest), Some(frames)) = (self.rest_frames, frames) {
-            let window = (p.acromion_radius, p.acromion_edge, p.acromion_cap);
-            for (side, s) in self.sides.iter().enumerate() {
-                let (frame, own) = (&frames[side], &rest[side]);
-                let Some((dl, du)) = frame.direction(p.acromion_max_abduction_deg) else {
-                    continue;
-                };
-                let Some(template_point) = shoulder_point(
-                    &s.rest_points,
-                    &s.rest_acromion,
-                    &own.vector([dl, du, 0.0]),
-                    window,
-                    p.acromion_min_points,
-                ) else {
-                    continue;
-                };
-                let offset = own.components(&(s.rest_acromion - template_point));
-                let local: Vec<Point3<f64>> =
-                    s.vertices.iter().map(|&v| point(positions, v)).collect();
-                let surface = |c: &Point3<f64>| {
-                    surface_near(
-                        &local,
-                        &s.triangles,
-                        c,
-                        p.acromion_radius,
-                        p.acromion_spacing,
-                    )
-                };
-                if let Some(found) = climb_to_shoulder_point(
-                    &surface,
-                    &guesses[side],
-                    &frame.vector([dl, du, 0.0]),
-                    window,
-                    p.acromion_min_points,
-                    p.acromion_searches,
-                ) {
-                    // Front to back the vertex's own place (keep 1): the breadth runs across.
-                    out[side] = acromion_at(frame, &found, offset, &guesses[side], 1.0, 1.0);
-                }
+        let (Some(rest), Some(frames)) = (self.rest_frames, frames) else {
+            return out;
+        };
+        let window = (p.acromion_radius, p.acromion_edge, p.acromion_cap);
+        for (side, s) in self.sides.iter().enumerate() {
+            let (frame, own) = (&frames[side], &rest[side]);
+            let Some((dl, du)) = frame.direction(p.acromion_max_abduction_deg) else {
+                continue;
+            };
+            let Some(template_point) = shoulder_point(
+                &s.rest_points,
+                &s.rest_acromion,
+                &own.vector([dl, du, 0.0]),
+                window,
+                p.acromion_min_points,
+            ) else {
+                continue;
+            };
+            let offset = own.components(&(s.rest_acromion - template_point));
+            let local: Vec<Point3<f64>> = s.vertices.iter().map(|&v| point(positions, v)).collect();
+            let surface = |c: &Point3<f64>| {
+                surface_near(
+                    &local,
+                    &s.triangles,
+                    c,
+                    p.acromion_radius,
+                    p.acromion_spacing,
+                )
+            };
+            let direction = frame.vector([dl, du, 0.0]);
+            let Some(found) = climb_to_shoulder_point(
+                &surface,
+                &guesses[side],
+                &direction,
+                window,
+                p.acromion_min_points,
+                p.acromion_searches,
+            ) else {
+                continue;
+            };
+            let o = &mut out[side];
+            o.shoulder_point = Some([found.x, found.y, found.z]);
+            let medial = frame.vector([-du, dl, 0.0]);
+            o.rises = turn_rises(
+                &surface(&found),
+                &found,
+                &direction,
+                &medial,
+                &frame.forward,
+                (p.acromion_turn_reach, p.acromion_turn_band),
+            );
+            if o.rises
+                .is_some_and(|r| r.iter().all(|&x| x <= p.acromion_turn_rise))
+            {
+                // Front to back the vertex's own place (keep 1): the breadth runs across.
+                let a = acromion_at(frame, &found, offset, &guesses[side], 1.0, 1.0);
+                o.point = [a.x, a.y, a.z];
+                o.on_surface = true;
             }
         }
-        out.map(|a| [a.x, a.y, a.z])
+        out
     }
+}
+
+/// One acromion of a body and how it was found.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Acromion {
+    /// The acromion the measurements take: found on the surface, or the Acromion vertex.
+    pub point: [f64; 3],
+    /// The body's Acromion vertex (the search's guess).
+    pub vertex: [f64; 3],
+    /// Found on the surface: the shoulder point was sure and on the shoulder's turn. Otherwise
+    /// `point` is `vertex`.
+    pub on_surface: bool,
+    /// The shoulder point the search found, sure or not on the turn (`None`: no search, or not
+    /// sure).
+    pub shoulder_point: Option<[f64; 3]>,
+    /// [`turn_rises`] at the shoulder point (m, towards the neck and towards the arm).
+    pub rises: Option<[f64; 2]>,
+}
+
+/// How far the surface rises above the shoulder point `at` along the search's `direction` d
+/// (unit) within `reach` of it to either side in the frontal plane: towards the neck (`medial`,
+/// the unit tangent square to d in the frontal plane that points in and up) and towards the arm
+/// (−`medial`). The profile R(s) = max (p − at)·d over the `points` (surface samples around
+/// `at`) within `band` of `at` front to back and within ½·`band` of the tangent offset s,
+/// s = k·`band`; the rises are max R(s) − R(0) over 0 < s ≤ `reach` and over −`reach` ≤ s < 0
+/// (≤ 0 where the point is its profile's furthest reach). On a shoulder's turn both are about 0
+/// (the cap's top and the arm's side fall away from it); where an arm is raised until the cap's
+/// top and the arm's upper side make nearly one slope, d lies nearly square to that slope and the
+/// point found is a bump on the way up to the neck: the rise towards the neck is centimetres.
+/// `None` when no point lies at s = 0.
+pub fn turn_rises(
+    points: &[Point3<f64>],
+    at: &Point3<f64>,
+    direction: &Vector3<f64>,
+    medial: &Vector3<f64>,
+    forward: &Vector3<f64>,
+    (reach, band): (f64, f64),
+) -> Option<[f64; 2]> {
+    let bins = (reach / band).round().max(1.0) as i64;
+    let mut profile = vec![f64::NEG_INFINITY; 2 * bins as usize + 1];
+    for p in points {
+        let v = p - at;
+        let k = (v.dot(medial) / band).round();
+        if v.dot(forward).abs() <= band && k.abs() <= bins as f64 {
+            let r = &mut profile[(k as i64 + bins) as usize];
+            *r = r.max(v.dot(direction));
+        }
+    }
+    let top = profile[bins as usize];
+    if top == f64::NEG_INFINITY {
+        return None;
+    }
+    let rise = |side: &[f64]| side.iter().fold(f64::NEG_INFINITY, |m, &r| m.max(r - top));
+    let (arm, neck) = (&profile[..bins as usize], &profile[bins as usize + 1..]);
+    Some([rise(neck), rise(arm)])
 }

@@ -19,7 +19,7 @@
 //! acromia (the shoulders' turn); a landmark a few centimetres off then names the same level or
 //! point.
 
-use super::acromion::AcromionSearch;
+use super::acromion::{Acromion, AcromionSearch};
 use super::definitions::{Measure, SHOULDERS};
 use super::error::MeasureError;
 use super::levels::{distance, midpoint, sub, Body};
@@ -94,6 +94,8 @@ impl BodyMeasurer {
             ("acromion_radius", params.acromion_radius),
             ("acromion_spacing", params.acromion_spacing),
             ("acromion_cap", params.acromion_cap),
+            ("acromion_turn_reach", params.acromion_turn_reach),
+            ("acromion_turn_band", params.acromion_turn_band),
         ];
         let non_negative = [
             ("neck_band", params.neck_band),
@@ -107,6 +109,7 @@ impl BodyMeasurer {
             ("crotch_band_above", params.crotch_band_above),
             ("crotch_band_below", params.crotch_band_below),
             ("acromion_edge", params.acromion_edge),
+            ("acromion_turn_rise", params.acromion_turn_rise),
             (
                 "acromion_max_abduction_deg",
                 params.acromion_max_abduction_deg,
@@ -276,6 +279,13 @@ impl BodyMeasurer {
         Ok(Measurements { values })
     }
 
+    /// The acromia (right, left) the body at flat `positions` is measured between, with how each
+    /// was found ([`Acromion`]: on the surface, or the Acromion vertex).
+    pub fn acromia(&self, positions: &[f32]) -> Result<[Acromion; 2], MeasureError> {
+        let positions = self.check(positions)?;
+        Ok(self.acromia.acromia(positions, &self.params))
+    }
+
     /// The tapes of every girth as closed 3-D polylines (convex hull corners in their plane).
     pub fn tape_paths(&self, positions: &[f32]) -> Result<Vec<TapePath>, MeasureError> {
         let positions = self.check(positions)?;
@@ -427,18 +437,18 @@ impl BodyMeasurer {
             Measure::Stature => b.top - b.floor,
             Measure::CervicaleHeight | Measure::KneeHeight => b.mean_height(m) - b.floor,
             Measure::AcromionHeight => {
-                let [right, left] = b.acromia();
+                let [right, left] = b.acromia().map(|a| a.point);
                 let up = self.params.up_axis;
                 (right[up] + left[up]) / 2.0 - b.floor
             }
             Measure::CrotchHeight => b.crotch_level() - b.floor,
             Measure::ShoulderBreadth => {
-                let [right, left] = b.acromia();
+                let [right, left] = b.acromia().map(|a| a.point);
                 distance(right, left)
             }
             Measure::ArmLength => {
                 // ARM: Rt. Acromion (the guess), Rt. Radiale, Rt. Radial Styloid.
-                let [right, _] = b.acromia();
+                let [right, _] = b.acromia().map(|a| a.point);
                 distance(right, a(1)) + distance(a(1), a(2))
             }
             Measure::WaistToHipBack => b.waist_level() - b.hip_level(),

@@ -3,6 +3,7 @@
 //! buttocks' prominence, [`super::surface`]), the crotch ([`super::parting`]), the acromia
 //! ([`super::acromion`]), the volume and area.
 
+use super::acromion::Acromion;
 use super::body::{BodyMeasurer, Region};
 use super::definitions::Measure;
 use super::parting::{legs_apart, parting_level, PartingSearch};
@@ -20,7 +21,7 @@ pub(super) struct Body<'a> {
     /// The crotch, computed once for crotch height and thigh girth.
     crotch_level: std::cell::OnceCell<f64>,
     /// The acromia (right, left), found once.
-    acromia: std::cell::OnceCell<[[f64; 3]; 2]>,
+    acromia: std::cell::OnceCell<[Acromion; 2]>,
     /// Volume and area, computed once for both measurements (one pass over every triangle).
     volume_and_area: std::cell::OnceCell<(f64, f64)>,
 }
@@ -136,7 +137,7 @@ impl<'a> Body<'a> {
 
     /// ISO 7250-1's acromia (right, left), found on the surface around the Acromion vertices
     /// ([`super::acromion::AcromionSearch::acromia`]).
-    pub(super) fn acromia(&self) -> [[f64; 3]; 2] {
+    pub(super) fn acromia(&self) -> [Acromion; 2] {
         *self.acromia.get_or_init(|| {
             let m = self.measurer;
             m.acromia.acromia(self.positions, &m.params)

@@ -51,6 +51,7 @@ pub use section::{plane_section, Plane, SectionLoop};
 pub use support::{measurements_support, At, Support, SupportParams};
 pub use tolerance::{Agreement, IsoClass};
 pub use trust::{
-    measurement_trust, measurements_trust, MeasurementTrust, Origin, Trust, TrustParams,
+    acromion_sides, measurement_trust, measurements_trust, note_acromia_on_vertices,
+    MeasurementTrust, Origin, Trust, TrustParams,
 };
 pub use upright::upright;

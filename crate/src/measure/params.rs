@@ -78,6 +78,15 @@ pub struct MeasureParams {
     pub acromion_searches: usize,
     pub acromion_min_points: usize,
     pub acromion_max_abduction_deg: f64,
+    /// The found shoulder point is taken only on the shoulder's turn: along the search's
+    /// direction the surface may rise at most `acromion_turn_rise` above it within
+    /// `acromion_turn_reach` to either side in the frontal plane (towards the neck and towards
+    /// the arm; its profile in bins `acromion_turn_band` wide, within that of the point front to
+    /// back, `acromion::turn_rises`); otherwise the Acromion vertex stands. Defaults 0.03 m,
+    /// 0.003 m and 0.002 m.
+    pub acromion_turn_reach: f64,
+    pub acromion_turn_band: f64,
+    pub acromion_turn_rise: f64,
 }
 
 impl Default for MeasureParams {
@@ -108,6 +117,9 @@ impl Default for MeasureParams {
             acromion_searches: 4,
             acromion_min_points: 50,
             acromion_max_abduction_deg: 60.0,
+            acromion_turn_reach: 0.04,
+            acromion_turn_band: 0.003,
+            acromion_turn_rise: 0.003,
         }
     }
 }
