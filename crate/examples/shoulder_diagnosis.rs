@@ -13,7 +13,9 @@ fn main() -> Result<(), String> {
     use bodyspace::cli::model::read_fit;
     use bodyspace::landmarks::shoulder::{acromion_indices, ShoulderFrame};
     use bodyspace::landmarks::CAESAR_LANDMARKS;
+    use bodyspace::measure::acromion::turn_rises;
     use bodyspace::measure::{upright, BodyMeasurer, Measure, MeasureParams};
+    use bodyspace::mesh::surface_points::surface_near;
     use bodyspace::template::Template;
     use nalgebra::Point3;
     use std::path::PathBuf;
@@ -28,6 +30,7 @@ fn main() -> Result<(), String> {
     let measurer = BodyMeasurer::of_template(&template, MeasureParams::default())
         .map_err(|e| e.to_string())?;
     let rest = &template.mesh().positions;
+    let triangles = &template.mesh().triangles;
     let n = rest.len();
     let vertex_of: Vec<usize> = CAESAR_LANDMARKS
         .iter()
@@ -58,9 +61,12 @@ fn main() -> Result<(), String> {
             Ok(m.get(Measure::ShoulderBreadth).unwrap_or(f64::NAN) * 1e3)
         };
         let found = breadth(&fit)? - breadth(&truth)?;
+        let acromia = |flat: &[f32]| measurer.acromia(flat).map_err(|e| e.to_string());
+        let (truth_acromia, fit_acromia) = (acromia(&truth)?, acromia(&fit)?);
         let (truth, fit) = (points(&truth), points(&fit));
         let frames = ShoulderFrame::both(&|k| truth[vertex_of[k]]).ok_or("no frame")?;
         let mut line = format!("{kind} {id:03}:");
+        let mut detail = String::new();
         for (side, k) in [rt, lt].into_iter().enumerate() {
             let f = &frames[side];
             let d = fit[vertex_of[k]] - truth[vertex_of[k]];
@@ -76,10 +82,56 @@ fn main() -> Result<(), String> {
                 c[1],
                 c[2],
             );
+            // Each body's shoulder point against its own Acromion vertex (lateral, up; mm) and
+            // the surface's drops beside it (towards the neck, towards the arm; mm).
+            for (who, a) in [("truth", &truth_acromia[side]), ("fit", &fit_acromia[side])] {
+                let v = Point3::from(a.vertex);
+                let shift = a.shoulder_point.map_or("none".to_string(), |s| {
+                    let d = Point3::from(s) - v;
+                    format!(
+                        "{:+5.1} {:+5.1}",
+                        d.dot(&f.lateral) * 1e3,
+                        d.dot(&f.up) * 1e3
+                    )
+                });
+                let drops = a.rises.map_or("none".to_string(), |[m, l]| {
+                    format!("{:+5.1} {:+5.1}", m * 1e3, l * 1e3)
+                });
+                let moved = (Point3::from(a.point) - v).norm() * 1e3;
+                let body = if who == "truth" { &truth } else { &fit };
+                let profile = a.shoulder_point.map_or(String::new(), |sp| {
+                    let sp = Point3::from(sp);
+                    let Some(frames) = ShoulderFrame::both(&|k| body[vertex_of[k]]) else {
+                        return String::new();
+                    };
+                    let frame = &frames[side];
+                    let Some((dl, du)) = frame.direction(90.0) else {
+                        return String::new();
+                    };
+                    let near = surface_near(body, triangles, &sp, 0.06, 0.003);
+                    let d = frame.vector([dl, du, 0.0]);
+                    let medial = frame.vector([-du, dl, 0.0]);
+                    [0.02, 0.03, 0.04]
+                        .map(|r| {
+                            turn_rises(&near, &sp, &d, &medial, &frame.forward, (r, 0.003))
+                                .map_or(" -".into(), |[m, l]| {
+                                    format!(" {:.0}:{:+.1}/{:+.1}", r * 1e3, m * 1e3, l * 1e3)
+                                })
+                        })
+                        .concat()
+                });
+                detail += &format!(
+                    "\n    {} {who}: shoulder point − vertex {shift}, rises {drops}, {} (moved {moved:.1}); profile{profile}",
+                    ["Rt", "Lt"][side],
+                    if a.on_surface { "on the turn" } else { "vertex" },
+                );
+            }
         }
         let vertices = |b: &[Point3<f64>]| (b[vertex_of[rt]] - b[vertex_of[lt]]).norm() * 1e3;
         let between = vertices(&fit) - vertices(&truth);
-        println!("{line}  breadth fit − truth: vertices {between:+5.1}, acromia {found:+5.1} mm");
+        println!(
+            "{line}  breadth fit − truth: vertices {between:+5.1}, acromia {found:+5.1} mm{detail}"
+        );
         count += 1;
         between_abs += between.abs();
         found_abs += found.abs();
