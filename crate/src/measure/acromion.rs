@@ -263,3 +263,77 @@ pub fn turn_rises(
     let (arm, neck) = (&profile[..bins as usize], &profile[bins as usize + 1..]);
     Some([rise(neck), rise(arm)])
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A profile in the frontal plane (x out, y up; points `step` apart along each piece)
+    /// drawn front to back from −6 to 6 mm: the surface a shoulder's turn is sought on.
+    fn extruded(pieces: &[(Point3<f64>, Vector3<f64>, f64)], step: f64) -> Vec<Point3<f64>> {
+        let mut out = Vec::new();
+        for (start, along, length) in pieces {
+            let n = (length / step).round() as usize;
+            for i in 0..=n {
+                for k in -6..=6 {
+                    let p = start + along * (i as f64 * step);
+                    out.push(Point3::new(p.x, p.y, k as f64 * 0.001));
+                }
+            }
+        }
+        out
+    }
+
+    fn unit(deg: f64) -> Vector3<f64> {
+        let a = deg.to_radians();
+        Vector3::new(a.cos(), a.sin(), 0.0)
+    }
+
+    /// The rises (towards the neck, towards the arm) around the origin, looking along the
+    /// direction `deg` above the outward horizontal, with the defaults' reach and band.
+    fn rises(points: &[Point3<f64>], deg: f64) -> [f64; 2] {
+        let p = MeasureParams::default();
+        let medial = unit(deg + 90.0);
+        let window = (p.acromion_turn_reach, p.acromion_turn_band);
+        turn_rises(
+            points,
+            &Point3::origin(),
+            &unit(deg),
+            &medial,
+            &Vector3::z(),
+            window,
+        )
+        .unwrap()
+    }
+
+    #[test]
+    fn a_turn_falls_away_on_both_sides_and_a_bump_under_a_rising_slope_does_not() {
+        let o = Point3::origin();
+        // A right-angled shoulder, d halfway: the surface falls away by the tangent offset, so
+        // the nearest bins (±1.5 mm off the point) lie 1.5 mm under it.
+        let corner = extruded(&[(o, unit(180.0), 0.06), (o, unit(-90.0), 0.06)], 0.0002);
+        let [neck, arm] = rises(&corner, 45.0);
+        assert!(
+            (neck + 0.0015).abs() < 2e-4 && (arm + 0.0015).abs() < 2e-4,
+            "{neck} {arm}"
+        );
+        // An arm out 55° (its upper side 35° under the horizontal, d 72.5° up) and the
+        // shoulder's top flat for 12 mm, then rising 35° to the neck: along d the slope rises by
+        // (sin 35° sin 72.5° − cos 35° cos 72.5°) = 0.3007 per unit of its length v, from
+        // −12·cos 72.5° = −3.61 mm at its foot; tangent offset s = 11.44 mm + 0.9537·v, so the
+        // last bin (s ≤ 40.5 mm) holds v = 30.47 mm and a rise of 5.55 mm.
+        let foot = Point3::new(-0.012, 0.0, 0.0);
+        let slope = extruded(
+            &[
+                (o, unit(-35.0), 0.06),
+                (o, unit(180.0), 0.012),
+                (foot, unit(145.0), 0.06),
+            ],
+            0.0002,
+        );
+        let [neck, arm] = rises(&slope, 72.5);
+        assert!((neck - 0.00555).abs() < 2e-4, "{neck}");
+        assert!(neck > MeasureParams::default().acromion_turn_rise);
+        assert!(arm <= 0.0, "{arm}");
+    }
+}
