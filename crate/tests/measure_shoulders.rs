@@ -5,7 +5,11 @@
 //! 45° up and out, as a shoulder's), elliptic around (front to back as round). The
 //! same surface meshed again with its vertices slid 2 cm along it at the shoulders — a fit whose
 //! Acromion vertices sit 2 cm off on the same body — keeps both values within 2 mm, while the
-//! distance between the vertices themselves changes by more than a centimetre.
+//! distance between the vertices themselves changes by more than a centimetre. And the same
+//! torso with its top rising 40° to the neck from 18 mm medial of the turn, its Acromion
+//! vertices 3 cm down the arm's side: arms hanging, the acromia are found on the turn; arms out
+//! 55°, the point found is no turn (the top rises 8 mm above it within 4 cm towards the neck,
+//! `acromion::turn_rises`) and the vertices stand.
 
 use bodyspace::measure::{BodyMeasurer, Measure, MeasureParams};
 use std::f64::consts::{FRAC_PI_2, PI};
@@ -199,6 +203,112 @@ fn acromia_2_cm_off_on_the_same_shoulders_move_breadth_and_height_at_most_2_mm()
                 (between - vertices).abs() > 0.01 || right == 0.0 || left == 0.0,
                 "between the vertices {between} vs {vertices}"
             );
+        }
+    }
+}
+
+/// The body with its arms out `abduction` (degrees from hanging down: the epicondyles' vertices
+/// moved 30 cm out along the arm from each Acromion) and each side's shoulder top rising
+/// `slope` (degrees) to the neck from `flat` (m) medial of x = `turn` (a shear of the top,
+/// y > 0, |x| < turn − flat).
+fn with_arms_out(p: &mut [f32], abduction: f64, slope: f64, turn: f64, flat: f64) {
+    let names = landmarks();
+    let vertex_of = |name: &str| names.iter().find(|(n, _)| n == name).unwrap().1 as usize;
+    let start = turn - flat;
+    for q in p.chunks_exact_mut(3) {
+        let (x, y) = (q[0] as f64, q[1] as f64);
+        if y > 0.0 && x.abs() < start {
+            q[1] = (y + slope.to_radians().tan() * (start - x.abs())) as f32;
+        }
+    }
+    let a = abduction.to_radians();
+    for (side, out) in [("Rt.", 1.0), ("Lt.", -1.0)] {
+        let acromion = vertex_of(&format!("{side} Acromion"));
+        let at = [0, 1, 2].map(|k| p[3 * acromion + k] as f64);
+        for which in ["Lateral", "Medial"] {
+            let v = vertex_of(&format!("{side} Humeral {which} Epicn"));
+            let elbow = [at[0] + out * 0.3 * a.sin(), at[1] - 0.3 * a.cos(), at[2]];
+            for k in 0..3 {
+                p[3 * v + k] = elbow[k] as f32;
+            }
+        }
+    }
+}
+
+#[test]
+fn an_arm_out_55_degrees_under_a_shoulder_rising_to_the_neck_keeps_the_acromion_vertices() {
+    let (rest, triangles) = torso(&|_, _| 0.0);
+    let weights = vec![[0.0, 0.0, 0.0, 1.0, 0.0, 0.0f32]; rest.len() / 3];
+    let names = landmarks();
+    let measurer_with = |params: MeasureParams| {
+        BodyMeasurer::new(&rest, &triangles, &weights, &names, params).unwrap()
+    };
+    let measurer = measurer_with(MeasureParams::default());
+    // Where the plain torso's top turns for an arm out `abduction`: its furthest reach along
+    // d, 45° + abduction / 2 up from the outward horizontal.
+    let turn_at = |abduction: f64| {
+        let a = (45.0 + abduction / 2.0f64).to_radians();
+        let reach = |q: [f64; 3]| q[0] * a.cos() + q[1] * a.sin();
+        (0..2000)
+            .map(|i| surface(0.5 + i as f64 / 2000.0, 0.0))
+            .max_by(|a, b| reach(*a).total_cmp(&reach(*b)))
+            .unwrap()
+    };
+    let turn = turn_at(55.0);
+    // The Acromion vertices slid down onto the arm's side, 3 cm from the turn.
+    let slide = (0..1000)
+        .map(|i| -0.5 * i as f64 / 1000.0)
+        .find(|s| distance(surface(ETA_A + s, 0.0), turn) >= 0.03)
+        .unwrap();
+    let bump = |e: f64, o: f64, centre: f64| {
+        let d = (o - centre + PI).rem_euclid(2.0 * PI) - PI;
+        (-((e - ETA_A).powi(2) + d * d) / (2.0 * 0.35f64.powi(2))).exp()
+    };
+    let (slid, _) = torso(&|e, o| slide * (bump(e, o, 0.0) + bump(e, o, PI)));
+    let vertex_of = |name: &str| names.iter().find(|(n, _)| n == name).unwrap().1;
+    let (rt, lt) = (vertex_of("Rt. Acromion"), vertex_of("Lt. Acromion"));
+    let vertices = distance(point(&slid, rt), point(&slid, lt));
+    let unchecked = measurer_with(MeasureParams {
+        acromion_turn_rise: 1.0,
+        ..MeasureParams::default()
+    });
+    let breadth = |m: &BodyMeasurer, p: &[f32]| {
+        let m = m.measure_some(p, &[Measure::ShoulderBreadth]).unwrap();
+        m.get(Measure::ShoulderBreadth).unwrap()
+    };
+    for abduction in [0.0, 55.0] {
+        let mut p = slid.clone();
+        with_arms_out(&mut p, abduction, 40.0, turn[0], 0.018);
+        let acromia = measurer.acromia(&p).unwrap();
+        let [checked, found] = [&measurer, &unchecked].map(|m| breadth(m, &p));
+        eprintln!(
+            "arms out {abduction}°: rises {:?} mm, breadth {:.1} mm, unchecked {:.1}, between the \
+             vertices {:.1}",
+            acromia.map(|a| a.rises.map(|r| r.map(|x| (x * 1e4).round() / 10.0))),
+            checked * 1e3,
+            found * 1e3,
+            vertices * 1e3
+        );
+        // Both searches end on the plain torso's turn (the top's slope starts medial of it).
+        let here = turn_at(abduction);
+        for a in &acromia {
+            let s = a.shoulder_point.unwrap();
+            assert!((s[0].abs() - here[0]).abs() < 0.01, "{s:?} vs {here:?}");
+        }
+        if abduction == 0.0 {
+            // Hanging arms: d halfway, the top's 40° slope falls away along it; the turn holds.
+            assert!(acromia.iter().all(|a| a.on_surface));
+            assert!((checked - found).abs() < 1e-9);
+            assert!((checked - vertices).abs() > 0.002);
+        } else {
+            // Out 55°: d 17.5° from up, the slope rises along it by 0.5 per unit across, 5 mm
+            // and more within 4 cm towards the neck: the point is no turn, the vertices stand.
+            assert!(acromia
+                .iter()
+                .all(|a| !a.on_surface && a.rises.unwrap()[0] > 0.005));
+            assert!((checked - vertices).abs() < 1e-6);
+            // Without the check the point would be taken (a test that can fail).
+            assert!((found - vertices).abs() > 0.002);
         }
     }
 }
