@@ -444,4 +444,34 @@ mod tests {
             .words
             .contains(", Rt. Radiale (10 mm) and Rt. Radial Styloid (3 mm)"));
     }
+
+    #[test]
+    fn a_doubtful_measurement_on_the_acromion_vertices_says_so() {
+        let estimated = all(Origin::Estimated);
+        let mut t = trust_of(Measure::ShoulderBreadth, &estimated);
+        let before = t.words.clone();
+        note_acromia_on_vertices(&mut t, [true, true]);
+        assert_eq!(t.words, before);
+        note_acromia_on_vertices(&mut t, [true, false]);
+        assert_eq!(
+            t.words,
+            format!(
+                "{before}; taken at the Acromion vertex: the left shoulder's turn was not found \
+                 on the surface"
+            )
+        );
+        let mut t = trust_of(Measure::AcromionHeight, &estimated);
+        note_acromia_on_vertices(&mut t, [false, false]);
+        assert!(t.words.ends_with(
+            "; taken at the Acromion vertices: the shoulders' turns were not found on the surface"
+        ));
+        // Arm length hangs on the right alone; placed Acromions are trusted as they are.
+        let mut t = trust_of(Measure::ArmLength, &estimated);
+        let before = t.words.clone();
+        note_acromia_on_vertices(&mut t, [true, false]);
+        assert_eq!(t.words, before);
+        let mut t = trust_of(Measure::ShoulderBreadth, &all(Origin::Placed));
+        note_acromia_on_vertices(&mut t, [false, false]);
+        assert!(!t.doubtful && t.words.is_empty());
+    }
 }
