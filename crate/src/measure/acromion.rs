@@ -9,10 +9,14 @@
 //! centimetres off the shoulder's turn names nearly the same point (an estimated Acromion farther
 //! off still moves it: the measurements keep the Acromions' trust). On the template itself the
 //! point is the Acromion vertex. The vertex stands where there is no turn (an upper arm raised more
-//! than `acromion_max_abduction_deg`) or the search is not sure.
+//! than `acromion_max_abduction_deg`), the search is not sure, or the point found is not on the
+//! shoulder's turn: the surface rises more than `acromion_turn_rise` above it along the search's
+//! direction within `acromion_turn_reach` towards the neck or the arm ([`turn_rises`]; an arm
+//! out 55° under a shoulder rising to the neck, where the search's direction lies nearly square to
+//! that slope and the reach stops on a bump of it).
 //!
 //! Cost: the template's side (its frame, its surface near each Acromion) is prepared once; a body
-//! costs two or more searches over the triangles near its shoulders.
+//! costs two or more searches over the triangles near its shoulders and one profile per side.
 
 use nalgebra::{Point3, Vector3};
 
