@@ -19,6 +19,7 @@ fn main() {
         .flat_map(|p| [p.x as f32, p.y as f32, p.z as f32])
         .collect();
     let measurer = BodyMeasurer::new(
+        &positions,
         &mesh.triangles,
         template.segment_weight_table(),
         template.landmark_vertices(),

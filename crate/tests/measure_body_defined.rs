@@ -115,6 +115,12 @@ fn landmarks(which: &[&str], moved: f64) -> Vec<(String, u32)> {
         ("Rt. Olecranon", 1.10, RIGHT + 4),
         ("Rt. Radiale", 1.05, RIGHT + 4),
         ("Rt. Radial Styloid", 0.85, RIGHT + 4),
+        ("Rt. ASIS", 0.95, FRONT - 8),
+        ("Lt. ASIS", 0.95, FRONT + 8),
+        ("Rt. Humeral Lateral Epicn", 1.10, RIGHT),
+        ("Rt. Humeral Medial Epicn", 1.10, RIGHT + 8),
+        ("Lt. Humeral Lateral Epicn", 1.10, LEFT),
+        ("Lt. Humeral Medial Epicn", 1.10, LEFT - 8),
         ("Sellion", 1.70, FRONT),
         ("Rt. Tragion", 1.65, RIGHT),
         ("Lt. Tragion", 1.65, LEFT),
@@ -131,6 +137,7 @@ fn measure(which: &[&str], moved: f64) -> bodyspace::measure::Measurements {
     let (p, t) = body();
     let weights = vec![[0.0, 0.0, 0.0, 1.0, 0.0, 0.0f32]; p.len() / 3];
     let measurer = BodyMeasurer::new(
+        &p,
         &t,
         &weights,
         &landmarks(which, moved),

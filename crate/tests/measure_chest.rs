@@ -4,6 +4,7 @@
 //! alone at `chest_below_armpit` under it, and moving the axilla landmarks 2 cm moves the girth
 //! at most 2 mm.
 
+use bodyspace::measure::definitions::SHOULDERS;
 use bodyspace::measure::parting::{parting_level, torso_alone, PartingSearch};
 use bodyspace::measure::tape::{tape, LoopChoice};
 use bodyspace::measure::{plane_section, BodyMeasurer, Measure, MeasureParams, Plane};
@@ -236,10 +237,12 @@ fn landmarks(p: &[f32], moved: f64) -> Vec<(String, u32)> {
     .into_iter()
     .map(|(n, v)| (n.to_string(), v))
     .chain(
-        // The other measurements' landmarks anywhere on the torso, under the armpits.
+        // The other measurements' landmarks (and the shoulders' frame, `SHOULDERS`) anywhere on
+        // the torso, under the armpits.
         Measure::ALL
             .iter()
             .flat_map(|m| m.definition().landmarks.iter().copied())
+            .chain(SHOULDERS.iter().copied())
             .filter(|n| !n.contains("Axilla"))
             .collect::<std::collections::BTreeSet<&str>>()
             .into_iter()
@@ -252,7 +255,7 @@ fn landmarks(p: &[f32], moved: f64) -> Vec<(String, u32)> {
 fn chest(moved: f64) -> f64 {
     let (p, t, w) = body();
     let measurer =
-        BodyMeasurer::new(&t, &w, &landmarks(&p, moved), MeasureParams::default()).unwrap();
+        BodyMeasurer::new(&p, &t, &w, &landmarks(&p, moved), MeasureParams::default()).unwrap();
     measurer
         .measure_some(&p, &[Measure::ChestGirth])
         .unwrap()

@@ -87,6 +87,7 @@ fn moving_the_crotch_landmark_2_cm_moves_crotch_height_and_thigh_girth_at_most_2
     let positions = mesh.flat_positions_f32();
     let measure = |landmarks: &[(String, u32)]| {
         let measurer = BodyMeasurer::new(
+            &positions,
             &mesh.triangles,
             template.segment_weight_table(),
             landmarks,

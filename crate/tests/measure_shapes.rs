@@ -215,6 +215,12 @@ fn every_measurement_of_a_cylinder_body() {
         ("Rt. Radiale", ring(10, 0)),
         ("Rt. Radial Styloid", ring(10, 32)),
         ("Suprasternale", ring(17, 48)),
+        ("Rt. ASIS", ring(9, 40)),
+        ("Lt. ASIS", ring(9, 56)),
+        ("Rt. Humeral Lateral Epicn", ring(12, 0)),
+        ("Rt. Humeral Medial Epicn", ring(12, 4)),
+        ("Lt. Humeral Lateral Epicn", ring(12, 32)),
+        ("Lt. Humeral Medial Epicn", ring(12, 28)),
         ("Sellion", ring(18, 0)),
         ("Rt. Tragion", ring(18, 16)),
         ("Lt. Tragion", ring(18, 48)),
@@ -222,7 +228,7 @@ fn every_measurement_of_a_cylinder_body() {
     .into_iter()
     .map(|(s, v)| (s.to_string(), v))
     .collect();
-    let measurer = BodyMeasurer::new(&t, &weights, &names, MeasureParams::default()).unwrap();
+    let measurer = BodyMeasurer::new(&p, &t, &weights, &names, MeasureParams::default()).unwrap();
     let m = measurer.measure(&p).unwrap();
     let get = |k: Measure| m.get(k).unwrap_or(f64::NAN);
     let polygon = n as f64 * 2.0 * r * (PI / n as f64).sin();
@@ -274,6 +280,6 @@ fn every_measurement_of_a_cylinder_body() {
     nan[7] = f32::NAN;
     assert!(measurer.measure(&nan).is_err());
     let missing: Vec<(String, u32)> = names[1..].to_vec();
-    let e = BodyMeasurer::new(&t, &weights, &missing, MeasureParams::default()).unwrap_err();
+    let e = BodyMeasurer::new(&p, &t, &weights, &missing, MeasureParams::default()).unwrap_err();
     assert!(e.to_string().contains("Cervicale"), "{e}");
 }

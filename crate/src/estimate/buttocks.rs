@@ -131,7 +131,7 @@ pub fn place_buttocks(
 mod tests {
     use super::*;
 
-    use crate::estimate::profile::surface_samples;
+    use crate::mesh::surface_points::surface_samples;
     use crate::template::fixture::base_body;
 
     /// Points on the back of a body (facing +z, y up) whose back reaches furthest at `peak`

@@ -274,32 +274,6 @@ fn gained_cost(pairs: &[(f64, f64)]) -> Option<f64> {
     Some(sum / pairs.len() as f64)
 }
 
-/// Points spread over the triangles of a mesh (`positions`, `triangles`) about `spacing` (m)
-/// apart: on each triangle a barycentric grid with as many steps per edge as its longest edge
-/// holds `spacing`. A coarse template's vertices lie in rings too far apart for a profile's bins
-/// (and more densely where the mesh is finer); its surface does not.
-pub fn surface_samples(
-    positions: &[Point3<f64>],
-    triangles: &[[u32; 3]],
-    spacing: f64,
-) -> Vec<Point3<f64>> {
-    let mut out = Vec::new();
-    for t in triangles {
-        let [a, b, c] = t.map(|v| positions[v as usize]);
-        let longest = (b - a).norm().max((c - b).norm()).max((a - c).norm());
-        let n = ((longest / spacing).ceil() as usize).clamp(1, 64);
-        for i in 0..n {
-            for j in 0..n - i {
-                // Grid cell centres (a third of a step in), so shared edges are not counted twice.
-                let u = (i as f64 + 1.0 / 3.0) / n as f64;
-                let v = (j as f64 + 1.0 / 3.0) / n as f64;
-                out.push(a + (b - a) * u + (c - a) * v);
-            }
-        }
-    }
-    out
-}
-
 /// The triangles of `triangles` (on `positions`) that may reach within `radius` (m) of `line`:
 /// those with a corner within `radius` and the triangle's longest edge of it (every point of a
 /// triangle lies within its longest edge of each corner).

@@ -26,12 +26,11 @@ use super::bent_arm::place_bent_elbows;
 use super::buttocks::{place_buttocks, psis_midpoint};
 use super::matching::Matching;
 use super::params::{ProfileParams, SegmentParams};
-use super::profile::{
-    fraction, knee_from_front, profile, reach, register, surface_samples, LimbLine,
-};
+use super::profile::{fraction, knee_from_front, profile, reach, register, LimbLine};
 use super::tick::Ticker;
 use crate::mesh::normals::vertex_normals;
 use crate::mesh::similarity::{similarity, Similarity};
+use crate::mesh::surface_points::surface_samples;
 use crate::mesh::Mesh;
 use crate::template::parts::{blend, dominant_parts, limb_bend, Part, PartPose};
 use crate::template::Template;

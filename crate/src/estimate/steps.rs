@@ -22,7 +22,7 @@ use std::borrow::Cow;
 
 use nalgebra::{Point3, Vector3};
 
-use super::acromion::{acromion_indices, place_acromions, RestTemplate};
+use super::acromion::{place_acromions, RestTemplate};
 use super::bilateral::{asymmetries, uneven_fits};
 use super::caesar_points::{given_landmarks, landmark_rest};
 use super::candidates::{even_sample, fit_similarity, prefer_torso, FittedCandidate};
@@ -45,6 +45,7 @@ use super::up::head_end;
 use crate::align::{
     data_weights, fine_align, AlignObserver, FineAlignInput, FineAlignParams, SurfaceIndex,
 };
+use crate::landmarks::shoulder::acromion_indices;
 use crate::landmarks::{
     definition_sharpness, LandmarkSet, CAESAR_LANDMARKS, CAESAR_LANDMARK_COUNT,
 };

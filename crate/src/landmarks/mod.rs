@@ -1,11 +1,13 @@
 //! Anatomical landmarks: the CAESAR list, how sharply each is defined, name normalisation,
-//! and landmark sets (the data; the estimate of the landmarks on a bare scan is `crate::estimate`).
+//! and landmark sets (the data; the estimate of the landmarks on a bare scan is `crate::estimate`),
+//! and the shoulder's rule that places the Acromion on a body's own surface ([`shoulder`]).
 
 pub mod caesar;
 pub mod names;
 pub mod report;
 pub mod set;
 pub mod sharpness;
+pub mod shoulder;
 pub mod virtual_landmarks;
 
 pub use caesar::{CaesarLandmark, CAESAR_LANDMARKS, CAESAR_LANDMARK_COUNT};

@@ -10,14 +10,17 @@
 //! to the segment with the largest blend weight summed over its corners, which partitions the
 //! overlap bands.
 //!
-//! Four levels are found on the surface around their landmarks' guesses rather than taken from
-//! the landmarks' vertices ([`super::surface`], [`super::parting`], parameters in
-//! [`MeasureParams`]): the hip level (greatest buttock prominence), the neck girth's level (the
-//! neck's least girth), the chest girth's (under the armpits' apex, around the torso's loop
-//! alone of the torso's and arms' section) and the crotch (where the legs part: crotch height,
-//! and the thigh girth below it); a landmark a few centimetres off then names the same level.
+//! Four levels and the acromia are found on the surface around their landmarks' guesses rather
+//! than taken from the landmarks' vertices ([`super::surface`], [`super::parting`],
+//! [`super::acromion`], parameters in [`MeasureParams`]): the hip level (greatest buttock
+//! prominence), the neck girth's level (the neck's least girth), the chest girth's (under the
+//! armpits' apex, around the torso's loop alone of the torso's and arms' section), the crotch
+//! (where the legs part: crotch height, and the thigh girth below it) and shoulder breadth's
+//! acromia (the shoulders' turn); a landmark a few centimetres off then names the same level or
+//! point.
 
-use super::definitions::Measure;
+use super::acromion::{Acromion, AcromionSearch};
+use super::definitions::{Measure, SHOULDERS};
 use super::error::MeasureError;
 use super::levels::{distance, midpoint, sub, Body};
 use super::measurements::{Measurements, TapePath};
@@ -52,6 +55,8 @@ pub struct BodyMeasurer {
     /// Vertices whose largest blend weight is the torso's or a leg's (where the buttocks are
     /// sought).
     pub(super) trunk_vertices: Vec<u32>,
+    /// Shoulder breadth's search for the acromia, prepared on the template at rest.
+    pub(super) acromia: AcromionSearch,
     pub(super) params: MeasureParams,
 }
 
@@ -63,10 +68,12 @@ struct Girth {
 }
 
 impl BodyMeasurer {
-    /// `triangles` (`#F`), `segment_weights` (`#V`, [`Segment::ALL`] order), the template's
-    /// (canonical name, vertex) landmark list. Fails on a missing landmark, an index beyond
-    /// `#V`, or a bad parameter.
+    /// `rest` (the template at rest, flat `#V·3`, metres: where the acromia's search takes the
+    /// template's own shoulder points), `triangles` (`#F`), `segment_weights` (`#V`,
+    /// [`Segment::ALL`] order), the template's (canonical name, vertex) landmark list. Fails on a
+    /// missing landmark, an index beyond `#V`, rest positions not `#V·3`, or a bad parameter.
     pub fn new(
+        rest: &[f32],
         triangles: &[[u32; 3]],
         segment_weights: &[[f32; 6]],
         landmarks: &[(String, u32)],
@@ -84,6 +91,11 @@ impl BodyMeasurer {
             ("head_step", params.head_step),
             ("parting_resolution", params.parting_resolution),
             ("prominence_depth", params.prominence_depth),
+            ("acromion_radius", params.acromion_radius),
+            ("acromion_spacing", params.acromion_spacing),
+            ("acromion_cap", params.acromion_cap),
+            ("acromion_turn_reach", params.acromion_turn_reach),
+            ("acromion_turn_band", params.acromion_turn_band),
         ];
         let non_negative = [
             ("neck_band", params.neck_band),
@@ -96,6 +108,12 @@ impl BodyMeasurer {
             ("chest_below_armpit", params.chest_below_armpit),
             ("crotch_band_above", params.crotch_band_above),
             ("crotch_band_below", params.crotch_band_below),
+            ("acromion_edge", params.acromion_edge),
+            ("acromion_turn_rise", params.acromion_turn_rise),
+            (
+                "acromion_max_abduction_deg",
+                params.acromion_max_abduction_deg,
+            ),
         ];
         for (name, value) in positive {
             if !(value > 0.0 && value.is_finite()) {
@@ -106,6 +124,13 @@ impl BodyMeasurer {
             if !(value >= 0.0 && value.is_finite()) {
                 return Err(MeasureError::BadParameter(format!("{name} {value} (≥ 0)")));
             }
+        }
+        if rest.len() != 3 * vertex_count || rest.iter().any(|x| !x.is_finite()) {
+            return Err(MeasureError::BadPositions(format!(
+                "{} finite rest values for a template of {vertex_count} vertices ({} expected)",
+                rest.len(),
+                3 * vertex_count
+            )));
         }
         let in_range = |what: &str, v: u32| {
             if (v as usize) < vertex_count {
@@ -118,18 +143,18 @@ impl BodyMeasurer {
                 })
             }
         };
+        let vertex_of = |name: &str| {
+            let v = landmarks
+                .iter()
+                .find(|(n, _)| n == name)
+                .map(|(_, v)| *v)
+                .ok_or_else(|| MeasureError::MissingLandmark(name.into()))?;
+            in_range(&format!("landmark {name}"), v)
+        };
         let mut anchors = Vec::with_capacity(Measure::ALL.len());
         for m in Measure::ALL {
-            let mut vs = Vec::new();
-            for &name in m.definition().landmarks {
-                let v = landmarks
-                    .iter()
-                    .find(|(n, _)| n == name)
-                    .map(|(_, v)| *v)
-                    .ok_or_else(|| MeasureError::MissingLandmark(name.into()))?;
-                vs.push(in_range(&format!("landmark {name}"), v)?);
-            }
-            anchors.push(vs);
+            let vs = m.definition().landmarks.iter().map(|&name| vertex_of(name));
+            anchors.push(vs.collect::<Result<Vec<u32>, MeasureError>>()?);
         }
         let mut regions: [Vec<u32>; 6] = Default::default();
         for (i, t) in triangles.iter().enumerate() {
@@ -176,7 +201,11 @@ impl BodyMeasurer {
             })
             .map(|(v, _)| v as u32)
             .collect();
+        let shoulders = SHOULDERS.iter().map(|&name| vertex_of(name));
+        let shoulders = shoulders.collect::<Result<Vec<u32>, MeasureError>>()?;
+        let acromia = AcromionSearch::new(rest, triangles, shoulders, &params);
         Ok(BodyMeasurer {
+            acromia,
             triangles: triangles.to_vec(),
             vertex_count,
             anchors,
@@ -217,6 +246,7 @@ impl BodyMeasurer {
         params: MeasureParams,
     ) -> Result<BodyMeasurer, MeasureError> {
         BodyMeasurer::new(
+            &template.mesh().flat_positions_f32(),
             &template.mesh().triangles,
             template.segment_weight_table(),
             template.landmark_vertices(),
@@ -247,6 +277,13 @@ impl BodyMeasurer {
             };
         }
         Ok(Measurements { values })
+    }
+
+    /// The acromia (right, left) the body at flat `positions` is measured between, with how each
+    /// was found ([`Acromion`]: on the surface, or the Acromion vertex).
+    pub fn acromia(&self, positions: &[f32]) -> Result<[Acromion; 2], MeasureError> {
+        let positions = self.check(positions)?;
+        Ok(self.acromia.acromia(positions, &self.params))
     }
 
     /// The tapes of every girth as closed 3-D polylines (convex hull corners in their plane).
@@ -398,14 +435,21 @@ impl BodyMeasurer {
         let a = |k: usize| b.anchor(m, k);
         match m {
             Measure::Stature => b.top - b.floor,
-            Measure::CervicaleHeight | Measure::AcromionHeight | Measure::KneeHeight => {
-                b.mean_height(m) - b.floor
+            Measure::CervicaleHeight | Measure::KneeHeight => b.mean_height(m) - b.floor,
+            Measure::AcromionHeight => {
+                let [right, left] = b.acromia().map(|a| a.point);
+                let up = self.params.up_axis;
+                (right[up] + left[up]) / 2.0 - b.floor
             }
             Measure::CrotchHeight => b.crotch_level() - b.floor,
-            Measure::ShoulderBreadth => distance(a(0), a(1)),
+            Measure::ShoulderBreadth => {
+                let [right, left] = b.acromia().map(|a| a.point);
+                distance(right, left)
+            }
             Measure::ArmLength => {
-                let n = self.anchors[m.index()].len();
-                (1..n).map(|k| distance(a(k - 1), a(k))).sum()
+                // ARM: Rt. Acromion (the guess), Rt. Radiale, Rt. Radial Styloid.
+                let [right, _] = b.acromia().map(|a| a.point);
+                distance(right, a(1)) + distance(a(1), a(2))
             }
             Measure::WaistToHipBack => b.waist_level() - b.hip_level(),
             Measure::Volume => b.volume_and_area().0,

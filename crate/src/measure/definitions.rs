@@ -91,6 +91,22 @@ const WAIST: &[&str] = &[
     "Rt. Iliocristale",
     "Lt. Iliocristale",
 ];
+/// The Acromions and the landmarks of the shoulders' frames (`landmarks::shoulder`), Acromions
+/// first: the acromia of shoulder breadth, acromion height and arm length are sought on the
+/// surface from them (`acromion.rs`). Only the Acromions define those measurements' trust (their
+/// definitions' landmarks): a guess far off still moves the point found (docs/measurements.md).
+pub const SHOULDERS: &[&str] = &[
+    "Rt. Acromion",
+    "Lt. Acromion",
+    "Suprasternale",
+    "Cervicale",
+    "Rt. ASIS",
+    "Lt. ASIS",
+    "Rt. Humeral Lateral Epicn",
+    "Rt. Humeral Medial Epicn",
+    "Lt. Humeral Lateral Epicn",
+    "Lt. Humeral Medial Epicn",
+];
 const HIP: &[&str] = &["Rt. Trochanterion", "Lt. Trochanterion", "Crotch"];
 
 impl Measure {

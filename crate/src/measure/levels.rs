@@ -1,8 +1,9 @@
 //! One body being measured ([`Body`]): its positions, floor and top, its landmarks' positions,
 //! and what several measurements share, each found once — the waist's level, the hip's (the
-//! buttocks' prominence, [`super::surface`]), the crotch ([`super::parting`]), the volume and
-//! area.
+//! buttocks' prominence, [`super::surface`]), the crotch ([`super::parting`]), the acromia
+//! ([`super::acromion`]), the volume and area.
 
+use super::acromion::Acromion;
 use super::body::{BodyMeasurer, Region};
 use super::definitions::Measure;
 use super::parting::{legs_apart, parting_level, PartingSearch};
@@ -19,6 +20,8 @@ pub(super) struct Body<'a> {
     hip_level: std::cell::OnceCell<f64>,
     /// The crotch, computed once for crotch height and thigh girth.
     crotch_level: std::cell::OnceCell<f64>,
+    /// The acromia (right, left), found once.
+    acromia: std::cell::OnceCell<[Acromion; 2]>,
     /// Volume and area, computed once for both measurements (one pass over every triangle).
     volume_and_area: std::cell::OnceCell<(f64, f64)>,
 }
@@ -38,6 +41,7 @@ impl<'a> Body<'a> {
             top,
             hip_level: std::cell::OnceCell::new(),
             crotch_level: std::cell::OnceCell::new(),
+            acromia: std::cell::OnceCell::new(),
             volume_and_area: std::cell::OnceCell::new(),
         }
     }
@@ -128,6 +132,15 @@ impl<'a> Body<'a> {
                 p,
             )
             .unwrap_or(crotch[p.up_axis])
+        })
+    }
+
+    /// ISO 7250-1's acromia (right, left), found on the surface around the Acromion vertices
+    /// ([`super::acromion::AcromionSearch::acromia`]).
+    pub(super) fn acromia(&self) -> [Acromion; 2] {
+        *self.acromia.get_or_init(|| {
+            let m = self.measurer;
+            m.acromia.acromia(self.positions, &m.params)
         })
     }
 

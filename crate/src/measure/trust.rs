@@ -236,6 +236,46 @@ pub fn measurements_trust(
         .collect()
 }
 
+/// The Acromions (right, left) a measurement's acromia are sought from ([`super::acromion`]):
+/// both for shoulder breadth and acromion height, the right for arm length, none otherwise.
+pub fn acromion_sides(m: Measure) -> &'static [usize] {
+    match m {
+        Measure::ShoulderBreadth | Measure::AcromionHeight => &[0, 1],
+        Measure::ArmLength => &[0],
+        _ => &[],
+    }
+}
+
+/// Where a doubtful measurement's acromion was not found on the shoulder's turn
+/// (`on_surface`: right, left; [`super::acromion::Acromion::on_surface`]) and it stands on the
+/// Acromion vertex instead, its words say so: "…, taken at the Acromion vertex: the right
+/// shoulder's turn was not found on the surface". A trusted measurement is left as it is (its
+/// vertices were placed, and a placed vertex is the measurement's own landmark).
+pub fn note_acromia_on_vertices(t: &mut MeasurementTrust, on_surface: [bool; 2]) {
+    let Some(m) = Measure::from_name(t.name) else {
+        return;
+    };
+    let missed: Vec<&str> = acromion_sides(m)
+        .iter()
+        .filter(|&&s| !on_surface[s])
+        .map(|&s| ["right", "left"][s])
+        .collect();
+    if !t.doubtful || missed.is_empty() {
+        return;
+    }
+    let (which, turns) = match missed[..] {
+        [one] => (format!("the {one} shoulder's turn"), "was"),
+        _ => ("the shoulders' turns".to_string(), "were"),
+    };
+    let vertex = if missed.len() == 1 {
+        "vertex"
+    } else {
+        "vertices"
+    };
+    t.words +=
+        &format!("; taken at the Acromion {vertex}: {which} {turns} not found on the surface");
+}
+
 /// "shoulder breadth (biacromial): from the estimated Rt. Acromion (typical error 17 mm) and Lt.
 /// Acromion (18 mm) and the fit's own error (3 mm), expected error ≈ 24 mm against ISO 20685-1's
 /// 4 mm (over it on 89 % of bodies) — place these landmarks to measure it", or, with no unplaced
@@ -531,5 +571,35 @@ mod tests {
             "{}",
             t.words
         );
+    }
+
+    #[test]
+    fn a_doubtful_measurement_on_the_acromion_vertices_says_so() {
+        let estimated = all(Origin::Estimated);
+        let mut t = trust_of(Measure::ShoulderBreadth, &estimated);
+        let before = t.words.clone();
+        note_acromia_on_vertices(&mut t, [true, true]);
+        assert_eq!(t.words, before);
+        note_acromia_on_vertices(&mut t, [true, false]);
+        assert_eq!(
+            t.words,
+            format!(
+                "{before}; taken at the Acromion vertex: the left shoulder's turn was not found \
+                 on the surface"
+            )
+        );
+        let mut t = trust_of(Measure::AcromionHeight, &estimated);
+        note_acromia_on_vertices(&mut t, [false, false]);
+        assert!(t.words.ends_with(
+            "; taken at the Acromion vertices: the shoulders' turns were not found on the surface"
+        ));
+        // Arm length hangs on the right alone; placed Acromions are trusted as they are.
+        let mut t = trust_of(Measure::ArmLength, &estimated);
+        let before = t.words.clone();
+        note_acromia_on_vertices(&mut t, [true, false]);
+        assert_eq!(t.words, before);
+        let mut t = trust_of(Measure::ShoulderBreadth, &all(Origin::Placed));
+        note_acromia_on_vertices(&mut t, [false, false]);
+        assert!(!t.doubtful && t.words.is_empty());
     }
 }

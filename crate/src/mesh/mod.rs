@@ -9,6 +9,7 @@
 //! * [`units`]: metres or millimetres from a body's extent.
 //! * [`volume`]: enclosed volume and surface area.
 //! * [`summary`]: the one-look summary of a loaded scan.
+//! * [`surface_points`]: points spread over a mesh's triangles, everywhere or near a point.
 //! * `test_points` (tests only): small point sets the unit tests of several modules share.
 
 pub mod bounds;
@@ -17,6 +18,7 @@ pub mod principal_axes;
 pub mod ray;
 pub mod similarity;
 pub mod summary;
+pub mod surface_points;
 #[cfg(test)]
 pub(crate) mod test_points;
 pub mod topology;

@@ -15,8 +15,8 @@ use crate::estimate::typical_error::typical_error_mm;
 use crate::estimate::{given_landmarks, Verdict};
 use crate::landmarks::CAESAR_LANDMARKS;
 use crate::measure::{
-    measurements_support, measurements_trust, upright, BodyMeasurer, MeasureParams,
-    MeasurementTrust, Origin, TrustParams,
+    measurements_support, measurements_trust, note_acromia_on_vertices, upright, BodyMeasurer,
+    MeasureParams, MeasurementTrust, Origin, TrustParams,
 };
 use crate::mesh::units::Units;
 use crate::template::{Resolution, Template};
@@ -143,7 +143,8 @@ pub fn fit_subject(
 
 /// Each measurement's trust on a fit ([`measurements_trust`]): from where its landmarks came
 /// (`origins`, CAESAR order) and, for a body-defined one, the fit's support by the scan where it
-/// is taken ([`measurements_support`]). `positions`: the fit (metres, any frame, at least the
+/// is taken ([`measurements_support`]); a doubtful one whose acromia stand on the Acromion
+/// vertices says so ([`note_acromia_on_vertices`]). `positions`: the fit (metres, any frame, at least the
 /// `base` template's `#Vb` vertices first); `distances`: each fitted vertex's distance to the
 /// scan (metres, the same order; empty after the warp alone, when support is not judged).
 pub fn fit_measurements_trust(
@@ -155,21 +156,22 @@ pub fn fit_measurements_trust(
 ) -> Vec<MeasurementTrust> {
     let n = base.mesh().vertex_count();
     let measure = MeasureParams::default();
-    let stood = (positions.len() >= n && distances.len() >= n)
+    let stood = (positions.len() >= n)
         .then(|| upright(&positions[..n], &base.mesh().positions))
         .flatten();
-    let supports = match (stood, BodyMeasurer::of_template(base, measure)) {
-        (Some(stood), Ok(measurer)) => measurements_support(
-            &measurer,
+    let measurer = BodyMeasurer::of_template(base, measure).ok();
+    let supports = match (&stood, &measurer) {
+        (Some(stood), Some(measurer)) if distances.len() >= n => measurements_support(
+            measurer,
             base.landmark_vertices(),
-            &stood,
+            stood,
             measure.up_axis,
             &distances[..n],
             &params.support,
         ),
         _ => vec![],
     };
-    measurements_trust(
+    let mut trust = measurements_trust(
         &|name: &str| {
             let k = CAESAR_LANDMARKS.iter().position(|l| l.name == name);
             let typical = k.map_or(f64::NAN, typical_error_mm);
@@ -178,7 +180,15 @@ pub fn fit_measurements_trust(
         },
         supports,
         params,
-    )
+    );
+    if let (Some(stood), Some(measurer)) = (&stood, &measurer) {
+        if let Ok(acromia) = measurer.acromia(stood) {
+            for t in &mut trust {
+                note_acromia_on_vertices(t, acromia.map(|a| a.on_surface));
+            }
+        }
+    }
+    trust
 }
 
 /// Where each CAESAR landmark of the fit came from (CAESAR order): given and kept by the check,

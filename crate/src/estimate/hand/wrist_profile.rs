@@ -4,9 +4,8 @@
 use nalgebra::Point3;
 
 use crate::estimate::params::{HandParams, ProfileParams};
-use crate::estimate::profile::{
-    profile, register_shift, surface_samples, triangles_near, LimbLine,
-};
+use crate::estimate::profile::{profile, register_shift, triangles_near, LimbLine};
+use crate::mesh::surface_points::surface_samples;
 use crate::mesh::Mesh;
 use crate::template::hand::{mid, wrist_and_axis, Hand};
 
