@@ -50,7 +50,7 @@ fn measure_a_fit_and_a_folder() {
         (stature - 1.6659).abs() < 1e-3,
         "template stature {stature}"
     );
-    assert_eq!(json["measurements"].as_object().unwrap().len(), 19);
+    assert_eq!(json["measurements"].as_object().unwrap().len(), 20);
     for (name, p) in json["percentiles"].as_object().unwrap() {
         let p = p.as_f64().unwrap_or(-1.0);
         assert!((0.0..=100.0).contains(&p), "{name} percentile {p}");
@@ -155,7 +155,7 @@ fn distribution_and_manikins_from_the_command_line() {
         let name = m["name"].as_str().unwrap();
         let ply = std::fs::read(out_dir.join(format!("{name}.ply"))).unwrap();
         assert!(ply.starts_with(b"ply"));
-        assert_eq!(m["measurements"].as_object().unwrap().len(), 19);
+        assert_eq!(m["measurements"].as_object().unwrap().len(), 20);
     }
     let rows = std::fs::read_to_string(out_dir.join("manikins.csv")).unwrap();
     assert_eq!(rows.lines().count(), 9);

@@ -21,6 +21,7 @@ use super::definitions::Measure;
 use super::error::MeasureError;
 use super::levels::{distance, midpoint, sub, Body};
 use super::measurements::{Measurements, TapePath};
+use super::neck_base::{neck_base_tape, NeckBaseTape};
 use super::params::MeasureParams;
 use super::parting::{parting_level, torso_alone, PartingSearch};
 use super::section::{plane_section, Plane, SectionLoop};
@@ -243,6 +244,7 @@ impl BodyMeasurer {
         for &m in which {
             values[m.index()] = match self.girth(&body, m) {
                 Some(g) => self.tape(&body, &g).map(|(length, _)| length),
+                None if m == Measure::NeckBaseGirth => self.neck_base(&body).map(|t| t.girth),
                 None => Some(self.length(&body, m)),
             };
         }
@@ -256,6 +258,13 @@ impl BodyMeasurer {
         Ok(Measure::ALL
             .into_iter()
             .filter_map(|m| {
+                if m == Measure::NeckBaseGirth {
+                    let t = self.neck_base(&body)?;
+                    return Some(TapePath {
+                        measure: m,
+                        points: t.path,
+                    });
+                }
                 let g = self.girth(&body, m)?;
                 let (_, hull) = self.tape(&body, &g)?;
                 Some(TapePath {
@@ -264,6 +273,22 @@ impl BodyMeasurer {
                 })
             })
             .collect())
+    }
+
+    /// ISO 8559-1's neck base girth ([`neck_base_tape`]), cut from the head's and torso's
+    /// triangles.
+    fn neck_base(&self, b: &Body) -> Option<NeckBaseTape> {
+        let m = Measure::NeckBaseGirth;
+        // Cervicale, Suprasternale, Rt. Tragion, Lt. Tragion.
+        neck_base_tape(
+            b.positions,
+            &self.triangles,
+            &self.regions[Region::HeadAndTorso as usize],
+            b.anchor(m, 0),
+            b.anchor(m, 1),
+            midpoint(b.anchor(m, 2), b.anchor(m, 3)),
+            self.params.up_axis,
+        )
     }
 
     fn tape(&self, body: &Body, g: &Girth) -> Option<(f64, Vec<[f64; 2]>)> {
