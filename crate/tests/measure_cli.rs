@@ -69,7 +69,7 @@ fn measure_a_fit_and_a_folder() {
     let rows: Vec<Vec<&str>> = text.lines().map(|l| l.split(',').collect()).collect();
     assert_eq!(rows.len(), 3);
     assert_eq!(rows[0][0], "subject");
-    assert_eq!(rows[0].len(), 20);
+    assert_eq!(rows[0].len(), 21);
     assert_eq!((rows[1][0], rows[2][0]), ("\"a\"", "\"b\""));
     // Frame and units do not change a measurement (f32 millimetres round to ≈0.1 mm).
     for ((name, x), y) in rows[0].iter().zip(&rows[1]).zip(&rows[2]).skip(1) {
@@ -121,7 +121,7 @@ fn distribution_and_manikins_from_the_command_line() {
     assert_eq!(stature["percentiles"].as_array().unwrap().len(), 5);
     assert_eq!(
         json["samples"]["correlation"].as_array().unwrap().len(),
-        19 * 19
+        20 * 20
     );
     let table = std::fs::read_to_string(&csv).unwrap();
     assert_eq!(table.lines().count(), 1 + 100 + 40);

@@ -8,7 +8,8 @@
 //! arm; head: head; neck: head and torso) — the thigh from torso and legs, as the overlap band at
 //! the crotch splits its section between the two. A triangle belongs
 //! to the segment with the largest blend weight summed over its corners, which partitions the
-//! overlap bands.
+//! overlap bands. The neck base girth is a tape over its landmarks and the side neck points
+//! found on the neck's section through the Cervicale ([`super::neck_base`]).
 //!
 //! Four levels are found on the surface around their landmarks' guesses rather than taken from
 //! the landmarks' vertices ([`super::surface`], [`super::parting`], parameters in

@@ -100,12 +100,10 @@ pub fn neck_base_tape(
         distance(corners[a], cervicale).total_cmp(&distance(corners[b], cervicale))
     })?;
     let (one, other) = (chain(first, last), chain(last, first));
-    let back = if one[1..one.len() - 1].contains(&nearest)
-        || !other[1..other.len() - 1].contains(&nearest)
-    {
-        one
-    } else {
+    let back = if other[1..other.len() - 1].contains(&nearest) {
         other
+    } else {
+        one
     };
     let mut path: Vec<[f64; 3]> = back.iter().map(|&i| corners[i]).collect();
     let length: f64 = path.windows(2).map(|w| distance(w[0], w[1])).sum();

@@ -152,7 +152,7 @@ mod tests {
         );
         assert_eq!(Measure::Volume.iso_class(), None);
         let judged = Measure::ALL.iter().filter(|m| m.iso_class().is_some());
-        assert_eq!(judged.count(), 17);
+        assert_eq!(judged.count(), 18);
     }
 
     #[test]
