@@ -22,7 +22,9 @@
 //! against the MAE, the doubtful ones that were within the limit and the trusted ones that were
 //! out (the cache keeps beside each fit what its trust is judged from, `….support.json`: the
 //! landmarks' origins and the fit's distances to the scan; each body-defined measurement's support
-//! per subject goes to stderr); and per subject how far below the true crown the scan's highest point lies (the
+//! per subject goes to stderr); with `--from both` or `all`, the fit's own error of each
+//! measurement in `measure/fit_error.csv`'s format (its MAE over the fits its support did not
+//! call doubtful, from the true landmarks and landmark-free); and per subject how far below the true crown the scan's highest point lies (the
 //! scanner's cut: the fit's crown there is the alignment's extrapolation), and the time to
 //! measure one fit natively.
 
@@ -129,8 +131,8 @@ mod native {
     }
 
     /// One measurement's trust: (trust, expected error E in mm, chance P over the limit,
-    /// doubtful).
-    type TrustRow = (String, Option<f64>, Option<f64>, bool);
+    /// doubtful, doubtful by its support).
+    type TrustRow = (String, Option<f64>, Option<f64>, bool, bool);
 
     /// What the trust of a fit is judged from, kept beside a cached fit (`….support.json`):
     /// where each CAESAR landmark came from and each base vertex's distance to the scan (mm).
@@ -230,6 +232,7 @@ mod native {
             t.expected_error_mm,
             t.chance_over_limit,
             t.doubtful,
+            t.support.as_ref().is_some_and(|s| s.doubtful),
         )
     }
 
@@ -282,7 +285,7 @@ mod native {
             let (mut p_sum, mut p_n, mut over) = (0.0, 0, 0);
             let (mut alarm, mut miss) = (0, 0);
             for ((fit, truth), t) in rows.iter().zip(trust) {
-                let (name, e, p, doubtful) = &t[m.index()];
+                let (name, e, p, doubtful, _) = &t[m.index()];
                 if let Some(p) = p {
                     p_sum += p;
                     p_n += 1;
@@ -336,6 +339,27 @@ mod native {
             "{title}: doubtful {doubtful_total}, of them within the limit {alarms}; trusted \
              {trusted_total}, of them out of the limit {missed} (subject × measurement)"
         );
+    }
+
+    /// Each measurement's MAE (mm) over the fits its support did not call doubtful: the fit's
+    /// own error, `measure/fit_error.csv`'s column for this kind of fit; `None` without a limit.
+    fn own_error(
+        rows: &[(Measurements, Measurements)],
+        trust: &[Vec<TrustRow>],
+    ) -> Vec<Option<f64>> {
+        Measure::ALL
+            .into_iter()
+            .map(|m| {
+                m.iso_class()?;
+                let d: Vec<f64> = rows
+                    .iter()
+                    .zip(trust)
+                    .filter(|(_, t)| !t[m.index()].4)
+                    .filter_map(|((fit, truth), _)| Some((fit.get(m)? - truth.get(m)?).abs()))
+                    .collect();
+                Some(d.iter().sum::<f64>() / d.len().max(1) as f64 * 1e3)
+            })
+            .collect()
     }
 
     /// How far below the true crown the scan's highest point lies (mm): both moved by the rigid
@@ -461,6 +485,7 @@ mod native {
                 .join(", ")
         );
         let mut times = Vec::new();
+        let mut own = Vec::new();
         for &from in &o.from {
             let mut rows = Vec::with_capacity(n);
             let mut trust = Vec::with_capacity(n);
@@ -485,6 +510,19 @@ mod native {
             }
             table(from.title(), &rows);
             trust_table(from.title(), &rows, &trust);
+            own.push((from, own_error(&rows, &trust)));
+        }
+        let column = |f: From| own.iter().find(|(from, _)| *from == f).map(|(_, e)| e);
+        if let (Some(placed), Some(free)) = (column(From::Landmarks), column(From::Free)) {
+            println!(
+                "\nthe fit's own error (MAE of the supported fits, mm; measure/fit_error.csv):"
+            );
+            println!("measurement,placed_mm,estimated_mm");
+            for m in Measure::ALL {
+                if let (Some(p), Some(e)) = (placed[m.index()], free[m.index()]) {
+                    println!("{},{p:.2},{e:.2}", m.definition().name);
+                }
+            }
         }
         times.sort_by(f64::total_cmp);
         println!(

@@ -243,24 +243,28 @@ export interface MeasurementSupport {
 }
 
 /**
- * One measurement's trust on a fit, from where its landmarks came (`measure/trust.rs`): placed,
- * found on the body (`body_defined`), or estimated with its expected error; doubtful when that
- * error exceeds ISO 20685-1's limit, or, for a body-defined one, when the fit where it is taken is
- * mostly not on the scan. A per-measurement verdict, not a quality flag.
+ * One measurement's trust on a fit (`measure/trust.rs`): placed, found on the body
+ * (`body_defined`) or estimated, by where its landmarks came from; its expected error is its
+ * unplaced landmarks' and the fit's own together. Doubtful when that error makes an error over
+ * ISO 20685-1's limit likely, or, for a body-defined one, when the fit where it is taken is mostly
+ * not on the scan. A per-measurement verdict, not a quality flag.
  */
 export interface MeasurementTrust {
   /** The measurement's snake_case name (`shoulder_breadth`). */
   name: string;
   trust: 'placed' | 'body_defined' | 'estimated';
   landmarks: UnplacedLandmark[];
+  /** The fit's own typical error (measured on the tuning subjects), part of `expected_error_mm`. */
+  fit_error_mm: number | null;
+  /** The unplaced landmarks' error and the fit's own in quadrature; null without a limit. */
   expected_error_mm: number | null;
   limit_mm: number | null;
-  /** The chance that this body's error exceeds the limit, for an estimated measurement with a limit. */
+  /** The chance that this body's error exceeds the limit, when both are known. */
   chance_over_limit: number | null;
   /** For a body-defined measurement with a limit on a finished fit: the scan's support there. */
   support: MeasurementSupport | null;
   doubtful: boolean;
-  /** In words, for an estimated or unsupported measurement (empty otherwise). */
+  /** In words, for an estimated or doubtful measurement (empty otherwise). */
   words: string;
 }
 

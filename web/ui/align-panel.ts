@@ -147,15 +147,17 @@ function checkNote(r: SubjectReport): HTMLElement {
 }
 
 /**
- * Which measurements of this fit cannot be trusted: those defined by landmarks that were
- * estimated (or left out) whose expected error exceeds ISO 20685-1's limit, in words. Not a
- * quality flag: a fit can be good for the model and still doubtful for a tape measure.
+ * Which measurements of this fit cannot be trusted, in words (the core's `measurement_trust`):
+ * those whose expected error — their estimated (or left-out) landmarks' and the fit's own —
+ * makes an error over ISO 20685-1's limit likely, and those found on the body where the scan is
+ * not under the fit. Not a quality flag: a fit can be good for the model and still doubtful for a
+ * tape measure.
  */
 function measurementsNote(r: SubjectReport): HTMLElement {
   const doubtful = r.measurement_trust.filter((t) => t.doubtful);
   const attributes = { 'data-testid': 'align-measurements', 'data-doubtful': doubtful.map((t) => t.name).join(' ') };
   if (!doubtful.length) {
-    return h('p', { class: 'note', ...attributes }, 'Every measurement of this fit is from placed landmarks, found on the body where the scan is under the fit, or within ISO 20685-1 by its expected error.');
+    return h('p', { class: 'note', ...attributes }, 'Every measurement of this fit is within ISO 20685-1 by its expected error (its landmarks\' and the fit\'s own), and those found on the body lie where the scan is under the fit.');
   }
   // The names at a glance; why each is doubtful, in words, one click away.
   const names = doubtful.map((t) => t.name.replaceAll('_', ' ')).join(', ');

@@ -181,7 +181,7 @@ struct ReportedTrust {
 }
 
 impl ReportedTrust {
-    /// `placed`, `body_defined`, `estimated`, or `doubtful` for an estimated one over its limit.
+    /// `placed`, `body_defined`, `estimated`, or `doubtful` for a doubtful one.
     fn verdict(&self) -> &str {
         if self.doubtful {
             "doubtful"

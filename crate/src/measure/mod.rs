@@ -22,6 +22,7 @@
 //!   a body-defined one doubtful where the fit there is not the scan's
 //! * [`support`] — [`measurements_support`]: whether the scan is under a fit where each
 //!   body-defined measurement is taken
+//! * [`fit_error`] — [`FitErrors`]: the fit's own error of each measurement, measured
 //! * [`error`] — [`MeasureError`]
 //!
 //! Volume and surface area are [`crate::mesh::volume`].
@@ -29,6 +30,7 @@
 pub mod body;
 pub mod definitions;
 pub mod error;
+pub mod fit_error;
 mod levels;
 pub mod measurements;
 pub mod neck_base;
@@ -45,6 +47,7 @@ pub mod upright;
 pub use body::BodyMeasurer;
 pub use definitions::{Anchoring, Definition, Kind, Measure};
 pub use error::MeasureError;
+pub use fit_error::{FitError, FitErrors};
 pub use measurements::{Measurements, Reading, TapePath};
 pub use params::MeasureParams;
 pub use section::{plane_section, Plane, SectionLoop};

@@ -25,8 +25,18 @@
 //!   [`TrustParams::max_chance_over_limit`] (default 5 %, i.e. E > 0.41·L), and the report says
 //!   so in words.
 //!
-//! A body-defined measurement is doubtful where the fit is not the scan's: when too much of the
-//! fit where it is taken lies far from the scan ([`super::support`], [`TrustParams::support`]).
+//! Every measurement with a limit also carries **the fit's own error** E_f ([`super::fit_error`]):
+//! what a fit's value typically differs from the body's even where its landmarks are right (the
+//! alignment's error where the measurement is taken), measured against the truth on the tuning
+//! subjects — for a placed or estimated measurement the figure of fits from placed landmarks, for
+//! a body-defined one that of fits whose seeds were placed, or of landmark-free fits when one was
+//! not (the larger of the two when it has no seed). The landmarks' error E_l (above; 0 when every
+//! defining landmark was placed) and E_f are independent, so E = √(E_l² + E_f²), and P and the
+//! verdict follow from E as above: a measurement the fit cannot take within the standard is
+//! doubtful however its landmarks were placed, and the words say so.
+//!
+//! A body-defined measurement is also doubtful where the fit is not the scan's: when too much of
+//! the fit where it is taken lies far from the scan ([`super::support`], [`TrustParams::support`]).
 //!
 //! Checked against the truth on held-out subjects in docs/measurements.md ("Trust"): E matches
 //! the measured MAE, and P the share of bodies over the limit.
@@ -34,6 +44,7 @@
 use serde::Serialize;
 
 use super::definitions::{Anchoring, Measure};
+use super::fit_error::FitErrors;
 use super::support::{self, Support, SupportParams};
 use super::tolerance::chance_over;
 
@@ -44,6 +55,9 @@ pub struct TrustParams {
     /// 20685-1's limit exceeds this; default 0.05 ("never silently wrong": a measurement is
     /// trusted only when it is nearly sure to be within the standard).
     pub max_chance_over_limit: f64,
+    /// The fit's own error of each measurement, added to its landmarks'; default: the measured
+    /// table ([`FitErrors::measured`]).
+    pub fit_errors: FitErrors,
     /// When the fit carries a body-defined measurement ([`super::support`]).
     pub support: SupportParams,
 }
@@ -52,6 +66,7 @@ impl Default for TrustParams {
     fn default() -> Self {
         Self {
             max_chance_over_limit: 0.05,
+            fit_errors: FitErrors::measured(),
             support: SupportParams::default(),
         }
     }
@@ -108,19 +123,21 @@ pub struct MeasurementTrust {
     pub trust: Trust,
     /// Its defining landmarks that were not placed (empty unless `estimated`).
     pub landmarks: Vec<UnplacedLandmark>,
-    /// E (mm), for an `estimated` measurement.
+    /// E_f (mm), the fit's own error included in E; `None` for volume and area.
+    pub fit_error_mm: Option<f64>,
+    /// E (mm) = √(E_l² + E_f²), with E_l the unplaced landmarks' error; `None` when neither is
+    /// known (volume, area).
     pub expected_error_mm: Option<f64>,
     /// ISO 20685-1's limit (mm); `None` for volume and area.
     pub limit_mm: Option<f64>,
-    /// P, the chance that this body's error exceeds the limit, for an `estimated` measurement
-    /// with a limit.
+    /// P, the chance that this body's error exceeds the limit, when E and the limit are known.
     pub chance_over_limit: Option<f64>,
     /// For a `body_defined` measurement with a limit, when the fit's distances to the scan were
     /// known: the fit's support where it is taken ([`super::support`]).
     pub support: Option<Support>,
     /// P above [`TrustParams::max_chance_over_limit`], or too little support.
     pub doubtful: bool,
-    /// What a person reads, for an `estimated` or unsupported measurement (empty otherwise).
+    /// What a person reads, for an `estimated` or doubtful measurement (empty otherwise).
     pub words: String,
 }
 
@@ -154,36 +171,48 @@ pub fn measurement_trust(
         (_, true) => Trust::Placed,
         (_, false) => Trust::Estimated,
     };
-    let expected_error_mm = (trust == Trust::Estimated).then(|| {
+    let landmark_error_mm = (trust == Trust::Estimated).then(|| {
         let e = landmarks.iter().map(|l| l.typical_error_mm);
         match d.anchoring {
             Anchoring::Level(_) => 0.5 * e.sum::<f64>() / defining as f64,
             _ => e.map(|x| x * x).sum::<f64>().sqrt(),
         }
     });
-    let chance_over_limit = match (expected_error_mm, limit_mm) {
-        (Some(e), Some(limit)) => Some(chance_over(limit, e)),
-        _ => None,
+    let fit_error_mm = limit_mm.and(params.fit_errors.of(m)).map(|f| match trust {
+        Trust::BodyDefined if d.landmarks.is_empty() => f.placed_mm.max(f.estimated_mm),
+        Trust::BodyDefined if d.landmarks.iter().all(|l| origin(l).0 == Origin::Placed) => {
+            f.placed_mm
+        }
+        Trust::BodyDefined => f.estimated_mm,
+        _ => f.placed_mm,
+    });
+    let expected_error_mm = match (landmark_error_mm, fit_error_mm) {
+        (None, None) => None,
+        (l, f) => Some(l.unwrap_or(0.0).hypot(f.unwrap_or(0.0))),
     };
+    let chance = |e: f64| limit_mm.map(|limit| chance_over(limit, e));
+    let chance_over_limit = expected_error_mm.and_then(chance);
+    let over = |p: Option<f64>| p.is_some_and(|p| p > params.max_chance_over_limit);
     let support = support.filter(|_| trust == Trust::BodyDefined);
     let unsupported = support.as_ref().filter(|s| s.doubtful);
-    let doubtful = chance_over_limit.is_some_and(|p| p > params.max_chance_over_limit)
-        || unsupported.is_some();
-    let words = match (expected_error_mm, unsupported) {
-        (Some(e), _) => words(
+    let doubtful = over(chance_over_limit) || unsupported.is_some();
+    let words = match (unsupported, expected_error_mm) {
+        (Some(s), _) => support::words(m, s, &params.support),
+        (None, Some(e)) if doubtful || trust == Trust::Estimated => words(
             d.label,
             &landmarks,
+            fit_error_mm,
             e,
             limit_mm.zip(chance_over_limit),
-            doubtful,
+            doubtful.then_some(over(fit_error_mm.and_then(chance))),
         ),
-        (None, Some(s)) => support::words(m, s, &params.support),
-        (None, None) => String::new(),
+        _ => String::new(),
     };
     MeasurementTrust {
         name: d.name,
         trust,
         landmarks,
+        fit_error_mm,
         expected_error_mm,
         limit_mm,
         chance_over_limit,
@@ -208,21 +237,25 @@ pub fn measurements_trust(
 }
 
 /// "shoulder breadth (biacromial): from the estimated Rt. Acromion (typical error 17 mm) and Lt.
-/// Acromion (18 mm), expected error ≈ 24 mm against ISO 20685-1's 4 mm (over it on 89 % of
-/// bodies) — place these landmarks to measure it"; `limit`: the limit (mm) and P.
+/// Acromion (18 mm) and the fit's own error (3 mm), expected error ≈ 24 mm against ISO 20685-1's
+/// 4 mm (over it on 89 % of bodies) — place these landmarks to measure it", or, with no unplaced
+/// landmark, "neck girth: the fit's own error ≈ 3 mm against …"; `fit`: E_f; `limit`: the limit
+/// (mm) and P; `doubtful`: `Some(whether the fit's own error alone is over the rule)` when the
+/// measurement is doubtful, which picks the advice.
 fn words(
     label: &str,
     landmarks: &[UnplacedLandmark],
+    fit: Option<f64>,
     expected: f64,
     limit: Option<(f64, f64)>,
-    doubtful: bool,
+    doubtful: Option<bool>,
 ) -> String {
     let mut from = String::new();
     for (i, l) in landmarks.iter().enumerate() {
         let same_origin = i > 0 && landmarks[i - 1].origin == l.origin;
         from += match i {
             0 => "",
-            _ if i + 1 == landmarks.len() => " and ",
+            _ if i + 1 == landmarks.len() && fit.is_none() => " and ",
             _ => ", ",
         };
         if !same_origin {
@@ -243,14 +276,24 @@ fn words(
         None => String::new(),
     };
     let advice = match (doubtful, landmarks.len()) {
-        (false, _) => "",
-        (true, 1) => " — place this landmark to measure it",
-        (true, _) => " — place these landmarks to measure it",
+        (None, _) => "",
+        (Some(true), _) | (Some(false), 0) => " — measure it by hand where it matters",
+        (Some(false), 1) => " — place this landmark to measure it",
+        (Some(false), _) => " — place these landmarks to measure it",
     };
-    format!(
-        "{}: from {from}, expected error ≈ {expected:.0} mm{against}{advice}",
-        label.to_lowercase()
-    )
+    let label = label.to_lowercase();
+    match (landmarks.is_empty(), fit) {
+        (true, _) => {
+            format!("{label}: the fit's own typical error here ≈ {expected:.1} mm{against}{advice}")
+        }
+        (false, Some(f)) => format!(
+            "{label}: from {from} and the fit's own error ({f:.1} mm), expected error ≈ \
+             {expected:.0} mm{against}{advice}"
+        ),
+        (false, None) => {
+            format!("{label}: from {from}, expected error ≈ {expected:.0} mm{against}{advice}")
+        }
+    }
 }
 
 #[cfg(test)]
@@ -268,14 +311,22 @@ mod tests {
         }
     }
 
-    /// The trust of `m` with the default parameters and no support known.
+    /// The rule of the landmarks alone: the defaults without the fit's own error.
+    fn landmarks_only() -> TrustParams {
+        TrustParams {
+            fit_errors: FitErrors::none(),
+            ..TrustParams::default()
+        }
+    }
+
+    /// The trust of `m` by its landmarks alone, no support known.
     fn trust_of(m: Measure, origin: &dyn Fn(&str) -> (Origin, f64)) -> MeasurementTrust {
-        measurement_trust(m, origin, None, &TrustParams::default())
+        measurement_trust(m, origin, None, &landmarks_only())
     }
 
     #[test]
     fn placed_landmarks_are_trusted_and_body_defined_ones_never_inherit() {
-        for t in measurements_trust(&all(Origin::Placed), vec![], &TrustParams::default()) {
+        for t in measurements_trust(&all(Origin::Placed), vec![], &landmarks_only()) {
             assert!(!t.doubtful, "{}", t.name);
             assert!(t.landmarks.is_empty() && t.words.is_empty());
             assert_eq!(t.expected_error_mm, None);
@@ -302,7 +353,7 @@ mod tests {
 
     #[test]
     fn a_body_defined_measurement_is_doubtful_where_the_scan_is_not_under_the_fit() {
-        let params = TrustParams::default();
+        let params = landmarks_only();
         let (near, far) = ([0.001; 4], [0.001, 0.012, 0.012, 0.012]);
         let s = |d: &[f64]| {
             Some(support::support(
@@ -377,7 +428,7 @@ mod tests {
         let waist = |params: TrustParams| {
             measurement_trust(Measure::WaistGirth, &all(Origin::Absent), None, &params)
         };
-        let t = waist(TrustParams::default());
+        let t = waist(landmarks_only());
         assert_eq!(t.trust, Trust::Estimated);
         assert!((t.expected_error_mm.unwrap() - 5.0).abs() < 1e-9);
         assert!((t.chance_over_limit.unwrap() - 0.1509).abs() < 1e-4);
@@ -387,7 +438,7 @@ mod tests {
             .starts_with("waist girth: from the absent Rt. 10th Rib"));
         let t = waist(TrustParams {
             max_chance_over_limit: 0.2,
-            ..TrustParams::default()
+            ..landmarks_only()
         });
         assert!(!t.doubtful);
         assert!(
@@ -403,5 +454,82 @@ mod tests {
         assert!(t
             .words
             .contains(", Rt. Radiale (10 mm) and Rt. Radial Styloid (3 mm)"));
+    }
+
+    #[test]
+    fn the_fits_own_error_adds_to_the_landmarks_and_can_make_a_placed_measurement_doubtful() {
+        let mut table = FitErrors::none();
+        let own = |placed_mm, estimated_mm| {
+            Some(crate::measure::FitError {
+                placed_mm,
+                estimated_mm,
+            })
+        };
+        table.0[Measure::ShoulderBreadth.index()] = own(3.0, 5.0);
+        table.0[Measure::NeckGirth.index()] = own(1.0, 3.0);
+        table.0[Measure::Stature.index()] = own(0.5, 1.2);
+        let params = TrustParams {
+            fit_errors: table,
+            ..TrustParams::default()
+        };
+        let trust = |m, origin: Origin| measurement_trust(m, &all(origin), None, &params);
+
+        // Placed: E = E_f = 3 mm against 4 mm, P = erfc(4 / (3·√π)) = erfc(0.7523) = 0.2873.
+        let t = trust(Measure::ShoulderBreadth, Origin::Placed);
+        assert_eq!(t.trust, Trust::Placed);
+        assert_eq!(
+            (t.fit_error_mm, t.expected_error_mm),
+            (Some(3.0), Some(3.0))
+        );
+        assert!((t.chance_over_limit.unwrap() - 0.2873).abs() < 1e-4);
+        assert!(t.doubtful);
+        assert_eq!(
+            t.words,
+            "shoulder breadth (biacromial): the fit's own typical error here ≈ 3.0 mm against ISO \
+             20685-1's 4 mm (over it on 29 % of bodies) — measure it by hand where it matters"
+        );
+        // Estimated: the landmarks' √2·23.6 and the fit's own 3 mm in quadrature; placing the
+        // landmarks would not make it trusted, so the advice is the hand.
+        let t = trust(Measure::ShoulderBreadth, Origin::Estimated);
+        let want = (2.0 * 23.6f64.powi(2) + 9.0).sqrt();
+        assert!((t.expected_error_mm.unwrap() - want).abs() < 1e-9);
+        assert!(t.words.contains(
+            "Rt. Acromion (typical error 24 mm), Lt. Acromion (24 mm) and the fit's own error \
+             (3.0 mm), expected error ≈ 34 mm"
+        ));
+        assert!(
+            t.words.ends_with("measure it by hand where it matters"),
+            "{}",
+            t.words
+        );
+
+        // Body-defined: the column follows its seeds; 1 mm placed is trusted, silently.
+        let t = trust(Measure::NeckGirth, Origin::Placed);
+        assert_eq!(t.trust, Trust::BodyDefined);
+        assert_eq!(t.fit_error_mm, Some(1.0));
+        assert!(!t.doubtful && t.words.is_empty());
+        let t = trust(Measure::NeckGirth, Origin::Estimated);
+        assert_eq!(t.fit_error_mm, Some(3.0));
+        assert!(t.doubtful);
+        assert!(t
+            .words
+            .starts_with("neck girth: the fit's own typical error here ≈ 3.0 mm"));
+        // No seed: the larger column.
+        assert_eq!(
+            trust(Measure::Stature, Origin::Placed).fit_error_mm,
+            Some(1.2)
+        );
+        // No limit, no error: volume is never judged.
+        let t = trust(Measure::Volume, Origin::Estimated);
+        assert_eq!((t.expected_error_mm, t.doubtful), (None, false));
+
+        // A measurement whose own error is small keeps the landmarks' advice.
+        let t = trust(Measure::UpperArmGirth, Origin::Estimated);
+        assert_eq!(t.fit_error_mm, None);
+        assert!(
+            t.words.ends_with("place these landmarks to measure it"),
+            "{}",
+            t.words
+        );
     }
 }
