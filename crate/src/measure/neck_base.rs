@@ -3,10 +3,10 @@
 //!
 //! The Cervicale and the front neck point are bony landmarks; the side neck points, where the
 //! neck's side meets the shoulder's top, are not on the template and are found on the surface.
-//! The Cervicale sits at the neck's base at the back, the front neck point 7–9 cm lower, and the
-//! side neck points above the plane through both (a plane through the Cervicale and the front
-//! neck point cuts the trapezius at the sides): the standard's tape is not planar. It is taken in
-//! two parts:
+//! The Cervicale sits at the neck's base at the back, the front neck point well below it (on the
+//! template 8.6 cm), and the side neck points above the plane through both (that plane runs over
+//! the trapezius and the clavicles at the sides, docs/measurements.md): the standard's tape is not
+//! planar. It is taken in two parts:
 //!
 //! * behind, the section of the body by the plane through the Cervicale c perpendicular to the
 //!   neck's axis a (from m = (c + s)/2 to the Tragions' midpoint), around the loop that encloses
