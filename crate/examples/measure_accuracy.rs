@@ -526,7 +526,8 @@ mod native {
         }
         times.sort_by(f64::total_cmp);
         println!(
-            "\nmeasuring one upright fit (all 19): median {:.2} ms, max {:.2} ms natively",
+            "\nmeasuring one upright fit (all {}): median {:.2} ms, max {:.2} ms natively",
+            Measure::ALL.len(),
             times[times.len() / 2],
             times[times.len() - 1]
         );

@@ -62,7 +62,7 @@ fn targets_population_and_manikins_cross_the_bindings() {
     assert_eq!(torso["part"], "torso");
     assert_eq!(torso["achieved"][0]["met"], true);
     let targetable = json(space.targetable_json());
-    assert_eq!(targetable["whole"].as_array().map(Vec::len), Some(19));
+    assert_eq!(targetable["whole"].as_array().map(Vec::len), Some(20));
     assert!(targetable["torso"]
         .as_array()
         .is_some_and(|a| a.contains(&"waist_girth".into())));
@@ -74,7 +74,7 @@ fn targets_population_and_manikins_cross_the_bindings() {
     assert_eq!(d["samples"]["bodies"], 300);
     assert_eq!(
         d["samples"]["correlation"].as_array().map(Vec::len),
-        Some(19 * 19)
+        Some(20 * 20)
     );
     let set = json(population.boundary_manikins_json(
         &space,

@@ -50,7 +50,7 @@ fn measure_a_fit_and_a_folder() {
         (stature - 1.6659).abs() < 1e-3,
         "template stature {stature}"
     );
-    assert_eq!(json["measurements"].as_object().unwrap().len(), 19);
+    assert_eq!(json["measurements"].as_object().unwrap().len(), 20);
     for (name, p) in json["percentiles"].as_object().unwrap() {
         let p = p.as_f64().unwrap_or(-1.0);
         assert!((0.0..=100.0).contains(&p), "{name} percentile {p}");
@@ -69,7 +69,7 @@ fn measure_a_fit_and_a_folder() {
     let rows: Vec<Vec<&str>> = text.lines().map(|l| l.split(',').collect()).collect();
     assert_eq!(rows.len(), 3);
     assert_eq!(rows[0][0], "subject");
-    assert_eq!(rows[0].len(), 20);
+    assert_eq!(rows[0].len(), 21);
     assert_eq!((rows[1][0], rows[2][0]), ("\"a\"", "\"b\""));
     // Frame and units do not change a measurement (f32 millimetres round to ≈0.1 mm).
     for ((name, x), y) in rows[0].iter().zip(&rows[1]).zip(&rows[2]).skip(1) {
@@ -121,7 +121,7 @@ fn distribution_and_manikins_from_the_command_line() {
     assert_eq!(stature["percentiles"].as_array().unwrap().len(), 5);
     assert_eq!(
         json["samples"]["correlation"].as_array().unwrap().len(),
-        19 * 19
+        20 * 20
     );
     let table = std::fs::read_to_string(&csv).unwrap();
     assert_eq!(table.lines().count(), 1 + 100 + 40);
@@ -155,7 +155,7 @@ fn distribution_and_manikins_from_the_command_line() {
         let name = m["name"].as_str().unwrap();
         let ply = std::fs::read(out_dir.join(format!("{name}.ply"))).unwrap();
         assert!(ply.starts_with(b"ply"));
-        assert_eq!(m["measurements"].as_object().unwrap().len(), 19);
+        assert_eq!(m["measurements"].as_object().unwrap().len(), 20);
     }
     let rows = std::fs::read_to_string(out_dir.join("manikins.csv")).unwrap();
     assert_eq!(rows.lines().count(), 9);

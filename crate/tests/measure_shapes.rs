@@ -271,8 +271,8 @@ fn every_measurement_of_a_cylinder_body() {
     let paths = measurer.tape_paths(&p).unwrap();
     assert_eq!(
         paths.len(),
-        7,
-        "five torso girths, the thigh (torso and legs) and the neck (head and torso)"
+        8,
+        "five torso girths, the thigh (torso and legs), the neck and the neck base (head and torso)"
     );
     // Bad input is refused with a message, not a panic.
     assert!(measurer.measure(&p[..p.len() - 3]).is_err());

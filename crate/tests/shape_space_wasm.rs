@@ -57,9 +57,9 @@ fn max_diff(a: &[f32], b: &[f32]) -> f32 {
 fn stature(space: &ShapeSpace) -> f64 {
     let json = space.measure_json().unwrap_or_else(|_| panic!("measure"));
     let v: serde_json::Value = serde_json::from_str(&json).unwrap_or_else(|e| panic!("{e}"));
-    // A list of {name, label, kind, value}, one per measurement, all 19 taken on the mean.
+    // A list of {name, label, kind, value}, one per measurement, all 20 taken on the mean.
     let list = v.as_array().map(Vec::as_slice).unwrap_or_default();
-    assert_eq!(list.len(), 19, "{json}");
+    assert_eq!(list.len(), 20, "{json}");
     assert!(list.iter().all(|r| r["value"].is_number()), "{json}");
     list.iter()
         .find(|r| r["name"] == "stature")

@@ -142,7 +142,7 @@ test('the TypeScript report types name exactly the fields the core writes', () =
     expectKeys('FineReport', report.fine!, fine);
     expectKeys('DistanceStatsMm', report.fine!.scan_to_template as Record<string, unknown>, distance);
     const trusted = report.measurement_trust as unknown as Record<string, unknown>[];
-    expect(trusted).toHaveLength(19);
+    expect(trusted).toHaveLength(20);
     for (const t of trusted) expectKeys(`MeasurementTrust ${String(t.name)}`, t, trust);
     // A body-defined measurement with a limit carries the scan's support where it is taken.
     const chest = trusted.find((t) => t.name === 'chest_girth')!;

@@ -4,7 +4,7 @@ import { readFileSync } from 'node:fs';
 import { expect, test, type Page } from '@playwright/test';
 import { shapeReady, slide } from './steps';
 
-const READINGS = ['stature', 'chest_girth', 'bust_girth', 'waist_girth', 'hip_girth', 'thigh_girth', 'neck_girth', 'head_girth', 'arm_length', 'crotch_height', 'volume', 'surface_area'].map((n) => `measure-${n}`);
+const READINGS = ['stature', 'chest_girth', 'bust_girth', 'waist_girth', 'hip_girth', 'thigh_girth', 'neck_girth', 'neck_base_girth', 'head_girth', 'arm_length', 'crotch_height', 'volume', 'surface_area'].map((n) => `measure-${n}`);
 
 
 /** The `c=` (camera) part of a link. */

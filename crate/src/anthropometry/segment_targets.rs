@@ -6,7 +6,9 @@
 //! docs/measurements.md): head and neck girth → head (the neck plane lies in the head
 //! segment's part of the neck); upper-arm girth and arm length → right arm (both are taken on
 //! the right arm); thigh girth and knee height → right leg (the right thigh's loop, the right
-//! knee over the right foot); the torso girths and waist-to-hip length → torso. Stature,
+//! knee over the right foot); the torso girths, waist-to-hip length and neck base girth → torso
+//! (the neck base's plane runs through the torso's triangles, under the head segment's part of
+//! the neck). Stature,
 //! cervicale, acromion and crotch height run from the floor through several segments, shoulder
 //! breadth joins the two arms' acromions, and volume and area cover every segment: they are
 //! whole-body targets only. (Anchoring this on
@@ -34,9 +36,8 @@ pub fn measurement_segment(m: Measure) -> Option<Segment> {
         HeadGirth | NeckGirth => Some(Segment::Head),
         UpperArmGirth | ArmLength => Some(Segment::RightArm),
         ThighGirth | KneeHeight => Some(Segment::RightLeg),
-        ChestGirth | BustGirth | UnderbustGirth | WaistGirth | HipGirth | WaistToHipBack => {
-            Some(Segment::Torso)
-        }
+        ChestGirth | BustGirth | UnderbustGirth | WaistGirth | HipGirth | WaistToHipBack
+        | NeckBaseGirth => Some(Segment::Torso),
         Stature | CervicaleHeight | AcromionHeight | CrotchHeight | ShoulderBreadth | Volume
         | SurfaceArea => None,
     }

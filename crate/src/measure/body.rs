@@ -8,7 +8,8 @@
 //! arm; head: head; neck: head and torso) — the thigh from torso and legs, as the overlap band at
 //! the crotch splits its section between the two. A triangle belongs
 //! to the segment with the largest blend weight summed over its corners, which partitions the
-//! overlap bands.
+//! overlap bands. The neck base girth is a tape over its landmarks and the side neck points
+//! found on the neck's section through the Cervicale ([`super::neck_base`]).
 //!
 //! Four levels and the acromia are found on the surface around their landmarks' guesses rather
 //! than taken from the landmarks' vertices ([`super::surface`], [`super::parting`],
@@ -24,6 +25,7 @@ use super::definitions::{Measure, SHOULDERS};
 use super::error::MeasureError;
 use super::levels::{distance, midpoint, sub, Body};
 use super::measurements::{Measurements, TapePath};
+use super::neck_base::{neck_base_tape, NeckBaseTape};
 use super::params::MeasureParams;
 use super::parting::{parting_level, torso_alone, PartingSearch};
 use super::section::{plane_section, Plane, SectionLoop};
@@ -273,6 +275,7 @@ impl BodyMeasurer {
         for &m in which {
             values[m.index()] = match self.girth(&body, m) {
                 Some(g) => self.tape(&body, &g).map(|(length, _)| length),
+                None if m == Measure::NeckBaseGirth => self.neck_base(&body).map(|t| t.girth),
                 None => Some(self.length(&body, m)),
             };
         }
@@ -293,6 +296,13 @@ impl BodyMeasurer {
         Ok(Measure::ALL
             .into_iter()
             .filter_map(|m| {
+                if m == Measure::NeckBaseGirth {
+                    let t = self.neck_base(&body)?;
+                    return Some(TapePath {
+                        measure: m,
+                        points: t.path,
+                    });
+                }
                 let g = self.girth(&body, m)?;
                 let (_, hull) = self.tape(&body, &g)?;
                 Some(TapePath {
@@ -301,6 +311,22 @@ impl BodyMeasurer {
                 })
             })
             .collect())
+    }
+
+    /// ISO 8559-1's neck base girth ([`neck_base_tape`]), cut from the head's and torso's
+    /// triangles.
+    fn neck_base(&self, b: &Body) -> Option<NeckBaseTape> {
+        let m = Measure::NeckBaseGirth;
+        // Cervicale, Suprasternale, Rt. Tragion, Lt. Tragion.
+        neck_base_tape(
+            b.positions,
+            &self.triangles,
+            &self.regions[Region::HeadAndTorso as usize],
+            b.anchor(m, 0),
+            b.anchor(m, 1),
+            midpoint(b.anchor(m, 2), b.anchor(m, 3)),
+            self.params.up_axis,
+        )
     }
 
     fn tape(&self, body: &Body, g: &Girth) -> Option<(f64, Vec<[f64; 2]>)> {

@@ -55,6 +55,7 @@ pub enum Measure {
     ThighGirth,
     UpperArmGirth,
     NeckGirth,
+    NeckBaseGirth,
     HeadGirth,
     ArmLength,
     WaistToHipBack,
@@ -111,7 +112,7 @@ const HIP: &[&str] = &["Rt. Trochanterion", "Lt. Trochanterion", "Crotch"];
 
 impl Measure {
     /// Every measurement, in the order of tables and JSON.
-    pub const ALL: [Measure; 19] = [
+    pub const ALL: [Measure; 20] = [
         Measure::Stature,
         Measure::CervicaleHeight,
         Measure::AcromionHeight,
@@ -126,6 +127,7 @@ impl Measure {
         Measure::ThighGirth,
         Measure::UpperArmGirth,
         Measure::NeckGirth,
+        Measure::NeckBaseGirth,
         Measure::HeadGirth,
         Measure::ArmLength,
         Measure::WaistToHipBack,
@@ -222,6 +224,14 @@ impl Measure {
                 Girth,
                 "ISO 8559-1 neck girth",
                 &["Cervicale", "Suprasternale", "Rt. Tragion", "Lt. Tragion"], Surface),
+            Measure::NeckBaseGirth => d(
+                "neck_base_girth",
+                "Neck base girth",
+                Girth,
+                "ISO 8559-1 neck base girth",
+                // Over both bony points (`neck_base.rs`): a level of two landmarks; the Tragions
+                // only tilt the back's plane with the neck's axis.
+                &["Cervicale", "Suprasternale", "Rt. Tragion", "Lt. Tragion"], Level(2)),
             Measure::HeadGirth => d(
                 "head_girth",
                 "Head girth",

@@ -10,6 +10,8 @@
 //! * [`surface`] — body points found on the surface around a landmark's guess: the prominence,
 //!   the buttocks' level, the neck's narrowest level
 //! * [`tape`] — a tape around a section: convex-hull perimeter of the chosen loop
+//! * [`neck_base`] — the neck base girth's tape over the Cervicale, the side neck points and
+//!   the front neck point
 //! * [`body`] — [`BodyMeasurer`]: every measurement of a body
 //! * [`levels`] — one body being measured and the levels its measurements share
 //! * [`measurements`] — what measuring gives: [`Measurements`], [`Reading`], [`TapePath`]
@@ -34,6 +36,7 @@ pub mod error;
 pub mod fit_error;
 mod levels;
 pub mod measurements;
+pub mod neck_base;
 pub mod params;
 pub mod parting;
 pub mod section;

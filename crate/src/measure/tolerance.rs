@@ -21,7 +21,7 @@ pub enum IsoClass {
     Height,
     /// Body breadths: 4 mm.
     Breadth,
-    /// Small girths (thigh, upper arm, neck): 4 mm.
+    /// Small girths (thigh, upper arm, neck, neck base): 4 mm.
     SmallGirth,
     /// Segment lengths and body depths: 5 mm.
     SegmentLength,
@@ -60,7 +60,10 @@ impl Measure {
             | Measure::UnderbustGirth
             | Measure::WaistGirth
             | Measure::HipGirth => LargeGirth,
-            Measure::ThighGirth | Measure::UpperArmGirth | Measure::NeckGirth => SmallGirth,
+            Measure::ThighGirth
+            | Measure::UpperArmGirth
+            | Measure::NeckGirth
+            | Measure::NeckBaseGirth => SmallGirth,
             Measure::HeadGirth => HeadDimension,
             Measure::ArmLength | Measure::WaistToHipBack => SegmentLength,
             Measure::Volume | Measure::SurfaceArea => return None,
@@ -149,7 +152,7 @@ mod tests {
         );
         assert_eq!(Measure::Volume.iso_class(), None);
         let judged = Measure::ALL.iter().filter(|m| m.iso_class().is_some());
-        assert_eq!(judged.count(), 17);
+        assert_eq!(judged.count(), 18);
     }
 
     #[test]
