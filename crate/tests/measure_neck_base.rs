@@ -7,6 +7,7 @@
 //! √(NECK_A² + NECK_B² + Δh²) each (Δh: the landmarks' difference in height) — whatever way the
 //! body faces; and it follows the landmarks.
 
+use bodyspace::measure::definitions::SHOULDERS;
 use bodyspace::measure::{BodyMeasurer, Measure, MeasureParams};
 use std::f64::consts::{PI, TAU};
 
@@ -86,15 +87,18 @@ fn neck_base_girth(cervicale: f64, front: f64, turn: f64) -> f64 {
         ("Rt. Tragion".to_string(), at(1.66, 0)),
         ("Lt. Tragion".to_string(), at(1.66, AROUND / 2)),
     ];
-    for m in Measure::ALL {
-        for &name in m.definition().landmarks {
-            if !landmarks.iter().any(|(n, _)| n == name) {
-                landmarks.push((name.to_string(), 0));
-            }
+    // The other measurements' landmarks and the shoulders' frame anywhere: not measured here.
+    let others = Measure::ALL
+        .into_iter()
+        .flat_map(|m| m.definition().landmarks.iter());
+    for &name in others.chain(SHOULDERS) {
+        if !landmarks.iter().any(|(n, _)| n == name) {
+            landmarks.push((name.to_string(), 0));
         }
     }
     let weights = vec![[0.0, 0.0, 0.0, 1.0, 0.0, 0.0f32]; p.len() / 3];
-    let measurer = BodyMeasurer::new(&t, &weights, &landmarks, MeasureParams::default()).unwrap();
+    let measurer =
+        BodyMeasurer::new(&p, &t, &weights, &landmarks, MeasureParams::default()).unwrap();
     measurer
         .measure_some(&p, &[Measure::NeckBaseGirth])
         .unwrap()

@@ -23,7 +23,7 @@
 use super::acromion::{Acromion, AcromionSearch};
 use super::definitions::{Measure, SHOULDERS};
 use super::error::MeasureError;
-use super::levels::{distance, midpoint, sub, Body};
+use super::levels::Body;
 use super::measurements::{Measurements, TapePath};
 use super::neck_base::{neck_base_tape, NeckBaseTape};
 use super::params::MeasureParams;
@@ -31,6 +31,7 @@ use super::parting::{parting_level, torso_alone, PartingSearch};
 use super::section::{plane_section, Plane, SectionLoop};
 use super::surface::{fullest_head, narrowest_neck};
 use super::tape::{closed_length, convex_hull, tape, LoopChoice};
+use super::vec3::{distance, midpoint, sub};
 use crate::template::Segment;
 
 /// Which triangles a section cuts.

@@ -8,6 +8,7 @@ use super::body::{BodyMeasurer, Region};
 use super::definitions::Measure;
 use super::parting::{legs_apart, parting_level, PartingSearch};
 use super::surface::buttock_level;
+use super::vec3::sub;
 use crate::mesh::volume::volume_and_area_flat;
 
 /// One body being measured: positions and what several measurements share.
@@ -149,17 +150,4 @@ impl<'a> Body<'a> {
             .volume_and_area
             .get_or_init(|| volume_and_area_flat(self.positions, &self.measurer.triangles))
     }
-}
-
-pub(super) fn sub(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
-    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
-}
-
-pub(super) fn midpoint(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
-    [0, 1, 2].map(|k| (a[k] + b[k]) / 2.0)
-}
-
-pub(super) fn distance(a: [f64; 3], b: [f64; 3]) -> f64 {
-    let d = sub(a, b);
-    (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt()
 }

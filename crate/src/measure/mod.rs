@@ -25,6 +25,7 @@
 //! * [`support`] — [`measurements_support`]: whether the scan is under a fit where each
 //!   body-defined measurement is taken
 //! * [`fit_error`] — [`FitErrors`]: the fit's own error of each measurement, measured
+//! * `vec3` — the 3-vector operations the searches share
 //! * [`error`] — [`MeasureError`]
 //!
 //! Volume and surface area are [`crate::mesh::volume`].
@@ -46,6 +47,7 @@ pub mod tape;
 pub mod tolerance;
 pub mod trust;
 pub mod upright;
+mod vec3;
 
 pub use body::BodyMeasurer;
 pub use definitions::{Anchoring, Definition, Kind, Measure};

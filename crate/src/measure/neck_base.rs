@@ -22,18 +22,7 @@
 
 use super::section::{plane_section, Plane};
 use super::tape::{tape, LoopChoice};
-
-fn sub(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
-    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
-}
-
-fn dot(a: [f64; 3], b: [f64; 3]) -> f64 {
-    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
-}
-
-fn distance(a: [f64; 3], b: [f64; 3]) -> f64 {
-    dot(sub(a, b), sub(a, b)).sqrt()
-}
+use super::vec3::{cross, distance, dot, sub};
 
 /// The neck base tape: its length (m) and its path, a closed 3-D polyline (the back's hull
 /// corners from one side neck point to the other, then the front neck point).
@@ -68,11 +57,7 @@ pub fn neck_base_tape(
     let mut up = [0.0; 3];
     up[up_axis] = 1.0;
     // ℓ = e_up × (c − s).
-    let lateral = [
-        up[1] * backward[2] - up[2] * backward[1],
-        up[2] * backward[0] - up[0] * backward[2],
-        up[0] * backward[1] - up[1] * backward[0],
-    ];
+    let lateral = cross(up, backward);
     if dot(lateral, lateral) <= 0.0 {
         return None;
     }

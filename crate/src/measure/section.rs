@@ -1,5 +1,6 @@
 //! Plane sections of a triangle mesh: the closed loops (and open chains) where a plane cuts it.
 
+use super::vec3::{cross, dot, unit};
 use std::collections::HashMap;
 use std::hash::{BuildHasherDefault, Hasher};
 
@@ -33,23 +34,6 @@ pub struct Plane {
     pub normal: [f64; 3],
     u: [f64; 3],
     v: [f64; 3],
-}
-
-fn dot(a: [f64; 3], b: [f64; 3]) -> f64 {
-    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
-}
-
-fn cross(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
-    [
-        a[1] * b[2] - a[2] * b[1],
-        a[2] * b[0] - a[0] * b[2],
-        a[0] * b[1] - a[1] * b[0],
-    ]
-}
-
-fn unit(a: [f64; 3]) -> Option<[f64; 3]> {
-    let n = dot(a, a).sqrt();
-    (n > 1e-12 && n.is_finite()).then(|| a.map(|x| x / n))
 }
 
 impl Plane {

@@ -13,6 +13,7 @@
 use super::params::MeasureParams;
 use super::section::{plane_section, Plane};
 use super::tape::{tape, LoopChoice};
+use super::vec3::{dot, sub, unit};
 use std::ops::RangeInclusive;
 
 /// The prominence of a set of vertices along a direction.
@@ -22,19 +23,6 @@ pub struct Prominence {
     pub extent: f64,
     /// The cap's weighted centroid moved along d onto the plane d·p = s* (metres).
     pub point: [f64; 3],
-}
-
-fn dot(a: [f64; 3], b: [f64; 3]) -> f64 {
-    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
-}
-
-fn sub(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
-    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
-}
-
-fn unit(a: [f64; 3]) -> Option<[f64; 3]> {
-    let n = dot(a, a).sqrt();
-    (n > 1e-12 && n.is_finite()).then(|| a.map(|x| x / n))
 }
 
 fn vertex(positions: &[f32], v: u32) -> [f64; 3] {
