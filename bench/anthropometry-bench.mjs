@@ -3,7 +3,7 @@
 //     report is trivial), the page's "measurements + seam report" time per body;
 //   * a body from measurements: RUNS presses of "Find body" with stature and waist-girth targets
 //     spread over ±4 cm around the mean body's (the core call in the worker);
-//   * the population (19 measurements over the training subjects and the sampled bodies) once, as
+//   * the population (all measurements over the training subjects and the sampled bodies) once, as
 //     the model opens (the per-body timings wait for it), and the boundary manikins of stature × waist girth at the default coverage once.
 // Usage: node bench/anthropometry-bench.mjs URL RUNS
 import { launchBenchPage } from './browser.mjs';
@@ -56,7 +56,7 @@ const manikins = await page.evaluate(() => ({ n: document.body.dataset.manikins,
 console.log(`Chromium ${browser.version()}; demo model at base, ${runs} runs (ms)`);
 console.log(`| ${'in the worker (WASM)'.padEnd(52)} | ${'median'.padStart(8)} | ${'min'.padStart(8)} | ${'max'.padStart(8)} |`);
 console.log(`|${'-'.repeat(54)}|${'-'.repeat(10)}|${'-'.repeat(10)}|${'-'.repeat(10)}|`);
-console.log(row('one body: 19 measurements + seam report', measure));
+console.log(row('one body: all measurements + seam report', measure));
 console.log(row('a body from stature + waist girth', find));
 console.log(`population (training subjects + sampled bodies), once: ${(populationMs / 1000).toFixed(2)} s`);
 console.log(`boundary manikins, stature × waist girth, default coverage, once: ${manikins.n} manikins in ${(manikins.ms / 1000).toFixed(2)} s`);

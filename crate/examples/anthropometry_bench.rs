@@ -8,12 +8,12 @@
 //! 1. A model built like the demo model (`build-model --modes 20`, rigid GPA) from the ground
 //!    truth of TRAIN `tuning` subjects (seed 2026, `bodyspace synth`'s subjects: posed template
 //!    vertices, each moved rigidly onto the template as `build-model` does with fits).
-//! 2. (a) SETS random target sets of 2, 4 and all 19 measurements, each the values of a body
+//! 2. (a) SETS random target sets of 2, 4 and all the measurements, each the values of a body
 //!    drawn from the model (seed 77, not the distribution's samples) with every value inside the
 //!    population's 5–95 % range (the sampled bodies' percentiles): share met within 2 mm
 //!    (lengths) / 5 mm (girths) / 0.5 L / 0.005 m², and the worst miss per kind.
 //! 3. (b) HELD_OUT `held-out` subjects (seed 912, never tuned on): their truth measured, the body
-//!    predicted from stature, chest, waist and hip girth (and from all 19) against the mean body,
+//!    predicted from stature, chest, waist and hip girth (and from all of them) against the mean body,
 //!    mean vertex error after a rigid alignment of the truth onto each (the model's pose removal).
 //! 4. (c) times: one body from 2, 4 and 19 measurements; the distribution (100 training subjects
 //!    + 300 samples); boundary manikins of 2, 3 and 4 measurements.
@@ -275,7 +275,7 @@ fn main() {
         ("mean body", &e_mean),
         ("from stature", &e_stature),
         ("from stature, chest, waist, hip girth", &e_four),
-        ("from all 19 measurements", &e_all),
+        ("from all measurements", &e_all),
     ] {
         let all: Vec<f64> = e.iter().map(|e| e[0] * 1e3).collect();
         let torso: Vec<f64> = e.iter().map(|e| e[1] * 1e3).collect();

@@ -74,7 +74,7 @@ pub struct BoundaryManikins {
 impl BoundaryManikins {
     /// One row per manikin: `name`, `distance` (achieved Mahalanobis distance; `radius` on the
     /// boundary), `mahalanobis` (‖z‖ of the body), `target_M` and `achieved_M` of each chosen
-    /// measurement, then all 19 measurements by name (m, m³, m²; empty where not taken).
+    /// measurement, then all 20 measurements by name (m, m³, m²; empty where not taken).
     pub fn to_csv(&self) -> String {
         use std::fmt::Write;
         let mut out = String::from("name,distance,mahalanobis");

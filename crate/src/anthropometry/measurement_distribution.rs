@@ -20,7 +20,7 @@ pub const PERCENTILE_LEVELS: [f64; 5] = [5.0, 25.0, 50.0, 75.0, 95.0];
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct DistributionParams {
     /// Bodies sampled from the model; default 300. A sampled body costs one reconstruction and
-    /// one measurement of all 19 values (~6 ms at `base`, docs/benchmarks.md), so 300 take about
+    /// one measurement of all 20 values (~6 ms at `base`, docs/benchmarks.md), so 300 take about
     /// 2 s in the worker; the 5th and 95th percentiles of 300 draws have a standard error of
     /// ~0.013 in probability (√(p(1−p)/N)), about 1.5 % of the 5–95 % range of a normal.
     pub samples: usize,
