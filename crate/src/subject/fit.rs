@@ -142,11 +142,12 @@ pub fn fit_subject(
 }
 
 /// Each measurement's trust on a fit ([`measurements_trust`]): from where its landmarks came
-/// (`origins`, CAESAR order) and, for a body-defined one, the fit's support by the scan where it
-/// is taken ([`measurements_support`]); a doubtful one whose acromia stand on the Acromion
-/// vertices says so ([`note_acromia_on_vertices`]). `positions`: the fit (metres, any frame, at least the
-/// `base` template's `#Vb` vertices first); `distances`: each fitted vertex's distance to the
-/// scan (metres, the same order; empty after the warp alone, when support is not judged).
+/// (`origins`, CAESAR order), the fit's own error and, for a body-defined one, the fit's support
+/// by the scan where it is taken ([`measurements_support`]); a doubtful one whose acromia stand
+/// on the Acromion vertices says so ([`note_acromia_on_vertices`]). `positions`: the fit
+/// (metres, any frame, at least the `base` template's `#Vb` vertices first); `distances`: each
+/// fitted vertex's distance to the scan (metres, the same order; empty after the warp alone,
+/// when support is not judged).
 pub fn fit_measurements_trust(
     base: &Template,
     positions: &[Point3<f64>],
