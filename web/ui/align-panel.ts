@@ -5,7 +5,7 @@ import type { AlignReport, AlignStage, SubjectReport } from '../shared/align-typ
 import type { TemplateResolution } from '../shared/template-data';
 import { button, byId, h } from './dom';
 import { EnergyChart } from './energy-chart';
-import { doubtfulMeasurementsText, formatCount, qualityText } from './format';
+import { formatCount, qualityText } from './format';
 import { heatLegend } from './heat-legend';
 import { keepControl } from './keep-button';
 
@@ -164,7 +164,7 @@ function measurementsNote(r: SubjectReport): HTMLElement {
   return h(
     'div',
     { class: 'warn-note', ...attributes },
-    h('details', {}, h('summary', {}, `Measurements not to trust from this fit: ${names}.`), h('p', {}, `${doubtfulMeasurementsText(r.measurement_trust)}.`)),
+    h('details', {}, h('summary', {}, `Measurements not to trust from this fit: ${names}.`), h('ul', { class: 'doubtful-list' }, ...doubtful.map((t) => h('li', {}, t.words)))),
   );
 }
 

@@ -47,9 +47,9 @@ export function qualityText(q: QualityReport): string {
 }
 
 /**
- * The measurements a fit cannot be trusted for, in words (`measure/trust.rs`): each doubtful one
- * with the estimated landmarks it comes from and its expected error against ISO 20685-1's limit;
- * empty when there is none.
+ * The measurements a fit cannot be trusted for, in words, one sentence after another (the Batch
+ * table's hover): each doubtful one's reason from the core (`measure/trust.rs`) — its estimated
+ * landmarks, the fit's own error or the scan missing under the fit; empty when there is none.
  */
 export function doubtfulMeasurementsText(trust: readonly MeasurementTrust[]): string {
   return trust
