@@ -14,6 +14,8 @@
 //! alignment or a measurement changes.
 //! They hold for `base`; the paper's preset and `fine` are not measured.
 
+use std::sync::OnceLock;
+
 use serde::Serialize;
 
 use super::definitions::Measure;
@@ -35,9 +37,10 @@ pub struct FitError {
 pub struct FitErrors(pub [Option<FitError>; Measure::ALL.len()]);
 
 impl FitErrors {
-    /// The measured table (`fit_error.csv`).
+    /// The measured table (`fit_error.csv`), read once.
     pub fn measured() -> Self {
-        Self(parse(TABLE).expect("fit_error.csv is checked by its test"))
+        static PARSED: OnceLock<FitErrors> = OnceLock::new();
+        *PARSED.get_or_init(|| Self(parse(TABLE).expect("fit_error.csv is checked by its test")))
     }
 
     /// No error of the fit's own: a measurement's trust is its landmarks' alone.
