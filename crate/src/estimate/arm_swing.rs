@@ -5,7 +5,9 @@
 //! drags the template's hand across the body (docs/landmarks-estimate.md). So each arm, with its
 //! upper and lower part together, is turned about its shoulder in the body's frontal plane by
 //! each of the turns of `ArmSwingParams::turns_deg` and kept at the turn whose matches fit best; the ICP then goes on from
-//! there.
+//! there. An arm that none of those turns finds (raised beside or above the head, 90–150° from
+//! the body) is tried at `ArmSwingParams::raised_turns_deg` too; an arm found among the first
+//! turns makes no further run.
 
 use nalgebra::{Point3, Rotation3, Unit, Vector3};
 
