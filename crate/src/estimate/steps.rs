@@ -188,7 +188,9 @@ pub fn estimate_landmarks(
     };
     let max_iterations = starts.len() * (params.candidate_iterations + 1)
         + params.segment_iterations * segment_starts
-        + params.segments.swing.iterations * params.segments.swing.turns_deg.len()
+        + params.segments.swing.iterations
+            * (params.segments.swing.turns_deg.len()
+                + params.segments.swing.raised_turns_deg.len())
         + params.fine.max_iterations;
     let mut ticker = Ticker::new(observer, max_iterations);
 

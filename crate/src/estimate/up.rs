@@ -7,11 +7,16 @@
 //! `[t_lo, t_hi]` (the `EXTENT_PERCENTILE` and `1 − EXTENT_PERCENTILE` quantiles of `p·u` over the
 //! vertices of the scan's triangles: lone stray points and small strays do not move it). At each
 //! end, over the slabs `END_SLAB` (the end) and `BELOW_SLAB` (below the end), as fractions of the
-//! extent from that end, the width is the larger of the `WIDTH_PERCENTILE`–`(1 −
-//! WIDTH_PERCENTILE)` ranges of the slab's points along the other two principal axes, and
-//! `ratio = width(end) / width(below)`. The head's end is the one with the smaller ratio, when
-//! it is below `decisive` times the other's; otherwise the shape does not say. It assumes the
-//! hands below the top of the head (arms raised above it would widen the head's end).
+//! extent from that end, the width is the larger of two: across the body (the second principal
+//! axis `s`) twice the narrower side's reach from the body's centre line `c` (the median of `p·s`
+//! over all points), `2·max(0, min(c − q_lo, q_hi − c))`, and front to back (the third) the range
+//! `q_hi − q_lo`, with `q_lo`, `q_hi` the slab's `WIDTH_PERCENTILE` and `1 − WIDTH_PERCENTILE`
+//! quantiles; `ratio = width(end) / width(below)`. The head's end is the one with the smaller
+//! ratio, when it is below `decisive` times the other's; otherwise the shape does not say. A
+//! body is much the same on its two sides, so the narrower side is the body's; one arm raised
+//! beside or above the head widens one side only (a raised hand in the head's slab had made the
+//! head's end 1.7 times as wide as the shoulders, wider than the feet's: upside down). Both arms
+//! raised above the head would still widen the head's end.
 
 use nalgebra::{Matrix3, Point3, Vector3};
 
@@ -63,12 +68,20 @@ pub fn head_end(
     if extent.is_nan() || extent <= 0.0 {
         return None;
     }
+    let across = axes.column(1).into_owned();
+    let centre = quantile(
+        &points
+            .iter()
+            .map(|p| p.coords.dot(&across))
+            .collect::<Vec<_>>(),
+        0.5,
+    )?;
     // Ratio at the end where the height from the end is `from_end(t)`.
     let ratio = |from_end: &dyn Fn(f64) -> f64| {
-        let end = slab_width(&points, &heights, &axes, |t| {
+        let end = slab_width(&points, &heights, &axes, centre, |t| {
             in_slab(from_end(t) / extent, END_SLAB)
         })?;
-        let below = slab_width(&points, &heights, &axes, |t| {
+        let below = slab_width(&points, &heights, &axes, centre, |t| {
             in_slab(from_end(t) / extent, BELOW_SLAB)
         })?;
         (below > 0.0).then_some(end / below)
@@ -91,26 +104,41 @@ fn in_slab(f: f64, (a, b): (f64, f64)) -> bool {
     f >= a && f <= b
 }
 
-/// The larger of the quantile ranges of the slab's points along the second and third axes.
+/// The slab's width (see the module documentation): the slab's points' reach from `centre`
+/// along the second axis (across the body) on its narrower side `r`, and the width is the larger
+/// of `2r` and the quantile range along the third axis (front to back) of the slab's points
+/// within `r` of `centre` across: a raised hand beside the head is out of both.
 fn slab_width(
     points: &[Point3<f64>],
     heights: &[f64],
     axes: &Matrix3<f64>,
+    centre: f64,
     in_slab: impl Fn(f64) -> bool,
 ) -> Option<f64> {
-    let mut widest: Option<f64> = None;
-    for k in 1..3 {
-        let axis = axes.column(k).into_owned();
-        let along: Vec<f64> = points
-            .iter()
-            .zip(heights)
-            .filter(|(_, t)| in_slab(**t))
-            .map(|(p, _)| p.coords.dot(&axis))
-            .collect();
-        let w = quantile(&along, 1.0 - WIDTH_PERCENTILE)? - quantile(&along, WIDTH_PERCENTILE)?;
-        widest = Some(widest.map_or(w, |x: f64| x.max(w)));
-    }
-    widest
+    let (across, depth) = (axes.column(1).into_owned(), axes.column(2).into_owned());
+    let slab: Vec<(f64, f64)> = points
+        .iter()
+        .zip(heights)
+        .filter(|(_, t)| in_slab(**t))
+        .map(|(p, _)| (p.coords.dot(&across) - centre, p.coords.dot(&depth)))
+        .collect();
+    let sideways: Vec<f64> = slab.iter().map(|s| s.0).collect();
+    let r = quantile(&sideways, 1.0 - WIDTH_PERCENTILE)?
+        .min(-quantile(&sideways, WIDTH_PERCENTILE)?)
+        .max(0.0);
+    let near: Vec<f64> = slab
+        .iter()
+        .filter(|s| s.0.abs() <= r)
+        .map(|s| s.1)
+        .collect();
+    let depth = match (
+        quantile(&near, WIDTH_PERCENTILE),
+        quantile(&near, 1.0 - WIDTH_PERCENTILE),
+    ) {
+        (Some(lo), Some(hi)) => hi - lo,
+        _ => 0.0,
+    };
+    Some((2.0 * r).max(depth))
 }
 
 /// The `q` quantile of `values` (nearest rank); `None` when empty.
@@ -129,8 +157,10 @@ mod tests {
     use super::*;
 
     /// A stick figure's surface points along y (m): a head 0.18 wide on top of 0.45 shoulders,
-    /// a 0.35 wide trunk and two legs 0.3 apart on 0.25 long feet; one triangle over all.
-    fn figure(flip: bool) -> (Vec<Point3<f64>>, Vec<[u32; 3]>) {
+    /// a 0.35 wide trunk and two legs 0.3 apart on 0.25 long feet, and with `raised` one arm
+    /// raised from the shoulder 30° from the vertical, its hand 0.2 m above the head; one
+    /// triangle over all.
+    fn figure(flip: bool, raised: bool) -> (Vec<Point3<f64>>, Vec<[u32; 3]>) {
         let mut points = Vec::new();
         let mut ring = |y: f64, cx: f64, rx: f64, rz: f64| {
             for k in 0..24 {
@@ -155,6 +185,12 @@ mod tests {
                 _ => ring(y, 0.0, 0.09, 0.1),
             }
         }
+        for i in 0..=60 {
+            let t = i as f64 / 60.0;
+            if raised {
+                ring(1.45 + 0.5 * t, 0.22 + 0.29 * t, 0.045, 0.045);
+            }
+        }
         let n = points.len() as u32;
         let triangles = (0..n / 3).map(|i| [3 * i, 3 * i + 1, 3 * i + 2]).collect();
         (points, triangles)
@@ -163,11 +199,17 @@ mod tests {
     #[test]
     fn the_head_is_the_narrow_end_either_way_up() {
         for flip in [false, true] {
-            let (points, triangles) = figure(flip);
+            let (points, triangles) = figure(flip, false);
             let end = head_end(&points, &triangles, 0.75).expect("decisive");
             let want = if flip { -1.0 } else { 1.0 };
             assert!(end.up.y * want > 0.99, "{flip}: {:?}", end);
             assert!(end.head_ratio < 0.6 && end.feet_ratio > 0.9, "{end:?}");
+            // One arm raised above the head widens one side of the head's end only.
+            let (points, triangles) = figure(flip, true);
+            let end = head_end(&points, &triangles, 0.75).expect("decisive, one arm raised");
+            // (The arm tilts the first principal axis by ≈ 10°.)
+            assert!(end.up.y * want > 0.95, "{flip}, raised: {:?}", end);
+            assert!(end.head_ratio < 0.6 * end.feet_ratio, "{end:?}");
         }
         // A featureless column says nothing.
         let column: Vec<Point3<f64>> = (0..2000)

@@ -71,6 +71,16 @@ pub struct ArmSwingParams {
     /// issue's A-poses reach 60° from the body, 20° above the template's), as people are
     /// scanned.
     pub turns_deg: Vec<f64>,
+    /// Further turns (degrees, as `turns_deg`) tried only for an arm that every turn of
+    /// `turns_deg` leaves badly matched (`raise_when`): an arm raised beside or above the head,
+    /// 90–150° from the body (issue 31's "one arm raised"). Default −45°, −75°, −105° (from the
+    /// template's 39.6°: 85–145° from the body, each reaching ≈ 20° either way).
+    pub raised_turns_deg: Vec<f64>,
+    /// An arm whose lowest capped energy over `turns_deg` is above this fraction of `cap`² is
+    /// badly matched and tried at `raised_turns_deg`. Default 0.5: arms the ordinary turns find
+    /// measure 0.21–0.33 on development held-out subjects, raised arms 0.60–1.0
+    /// (docs/landmarks-estimate.md, "One arm raised, found").
+    pub raise_when: f64,
     /// Iterations of the segment-wise fit run from each turn before the turns are compared.
     /// Default 3.
     pub iterations: usize,
@@ -91,6 +101,8 @@ impl Default for ArmSwingParams {
     fn default() -> Self {
         Self {
             turns_deg: vec![-15.0, 0.0, 15.0, 30.0],
+            raised_turns_deg: vec![-45.0, -75.0, -105.0],
+            raise_when: 0.5,
             iterations: 3,
             after: 5,
             cap: 0.03,
