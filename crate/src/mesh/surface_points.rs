@@ -14,8 +14,12 @@ pub fn surface_samples(
     spacing: f64,
 ) -> Vec<Point3<f64>> {
     let mut out = Vec::new();
-    for t in triangles {
-        let [a, b, c] = t.map(|v| positions[v as usize]);
+    for &[i, j, k] in triangles {
+        let [a, b, c] = [
+            positions[i as usize],
+            positions[j as usize],
+            positions[k as usize],
+        ];
         let longest = (b - a).norm().max((c - b).norm()).max((a - c).norm());
         let n = ((longest / spacing).ceil() as usize).clamp(1, 64);
         for i in 0..n {
@@ -43,10 +47,15 @@ pub fn surface_near(
     let near: Vec<[u32; 3]> = triangles
         .iter()
         .filter(|t| {
-            let [a, b, c] = t.map(|v| positions[v as usize]);
+            let [a, b, c] = [
+                positions[t[0] as usize],
+                positions[t[1] as usize],
+                positions[t[2] as usize],
+            ];
             let longest = (b - a).norm().max((c - b).norm()).max((a - c).norm());
-            t.iter()
-                .any(|&v| (positions[v as usize] - centre).norm() <= radius + longest)
+            [a, b, c]
+                .iter()
+                .any(|p| (p - centre).norm() <= radius + longest)
         })
         .copied()
         .collect();
