@@ -1,6 +1,6 @@
 //! The body-defined measurements (docs/measurements.md) on a body of revolution with known
-//! answers — an elliptic torso with a bump on its back (the buttocks) at a known level, under a
-//! shoulder dome, and a neck of known least girth — and each with its landmarks moved 2 cm: the
+//! answers — an elliptic torso with a bump on its back (the buttocks) and one on its front (the
+//! bust) at known levels, under a shoulder dome, and a neck of known least girth — and each with its landmarks moved 2 cm: the
 //! value moves at most 2 mm. The head's widest level on an ellipsoidal cranium with "ears".
 
 use bodyspace::measure::surface::fullest_head;
@@ -20,6 +20,10 @@ const C: f64 = 0.11;
 const BUMP_LEVEL: f64 = 0.90;
 const BUMP: f64 = 0.03;
 const BUMP_WIDTH: f64 = 0.08;
+/// The front bump (the bust): its level, height and width.
+const BUST_LEVEL: f64 = 1.22;
+const BUST: f64 = 0.03;
+const BUST_WIDTH: f64 = 0.04;
 /// The shoulder dome: a half-ellipse of semi-axes (DOME_A, DOME_B) in the coronal plane on top of
 /// the torso at SHOULDER.
 const SHOULDER: f64 = 1.40;
@@ -50,13 +54,14 @@ fn radii(y: f64) -> (f64, f64, f64) {
         return (x.max(neck), z.max(neck), z.max(neck));
     }
     let bump = BUMP * (-((y - BUMP_LEVEL) / BUMP_WIDTH).powi(2)).exp();
+    let bust = BUST * (-((y - BUST_LEVEL) / BUST_WIDTH).powi(2)).exp();
     let x = if y < SHOULDER - 0.1 {
         A
     } else {
         // Widening smoothly into the dome's base.
         A + (DOME_A - A) * ((y - (SHOULDER - 0.1)) / 0.1).powi(2)
     };
-    (x, C, C + bump)
+    (x, C + bust, C + bump)
 }
 
 /// The body: ring i at height(i), AROUND vertices at angles t = 2πa/AROUND, (x, z) =
@@ -181,6 +186,25 @@ fn the_hip_is_at_the_buttocks_prominence_wherever_the_trochanters_are() {
             "trochanters moved {moved} m: hip {} vs {} mm",
             mm(got),
             mm(hip)
+        );
+    }
+}
+
+#[test]
+fn the_bust_is_at_its_prominence_wherever_the_thelions_are() {
+    let want = girth_at(BUST_LEVEL);
+    let bust = measure(&[], 0.0).get(Measure::BustGirth).unwrap();
+    assert!((bust - want).abs() < 1e-4, "bust {bust} vs {want}");
+    // The Thelions' own level (2 cm under the bump) would be over 2 mm short.
+    assert!(want - girth_at(1.20) > 0.002);
+    for moved in [-0.02, 0.02] {
+        let m = measure(&["Rt. Thelion/Bustpoint", "Lt. Thelion/Bustpoint"], moved);
+        let got = m.get(Measure::BustGirth).unwrap();
+        assert!(
+            (got - bust).abs() <= 0.002,
+            "Thelions moved {moved} m: bust {} vs {} mm",
+            mm(got),
+            mm(bust)
         );
     }
 }

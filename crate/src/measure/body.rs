@@ -113,6 +113,8 @@ impl BodyMeasurer {
             ("head_search_below", params.head_search_below),
             ("hip_band_below", params.hip_band_below),
             ("hip_band_above", params.hip_band_above),
+            ("bust_band_below", params.bust_band_below),
+            ("bust_band_above", params.bust_band_above),
             ("armpit_band_above", params.armpit_band_above),
             ("armpit_band_below", params.armpit_band_below),
             ("chest_below_armpit", params.chest_below_armpit),
@@ -372,7 +374,8 @@ impl BodyMeasurer {
         let a = |k: usize| b.anchor(m, k);
         Some(match m {
             Measure::ChestGirth => self.chest(b),
-            Measure::BustGirth | Measure::UnderbustGirth => at(b.mean_height(m), Region::Torso),
+            Measure::BustGirth => at(b.bust_level(), Region::Torso),
+            Measure::UnderbustGirth => at(b.mean_height(m), Region::Torso),
             Measure::WaistGirth => at(b.waist_level(), Region::Torso),
             Measure::HipGirth => at(b.hip_level(), Region::TorsoAndLegs),
             Measure::ThighGirth => {

@@ -197,7 +197,8 @@ impl Measure {
                 "Bust girth",
                 Girth,
                 "ISO 8559-1 bust girth",
-                &["Rt. Thelion/Bustpoint", "Lt. Thelion/Bustpoint"], Level(2)),
+                // The level of the bust points found on the surface (`surface.rs`, `bust_level`).
+                &["Rt. Thelion/Bustpoint", "Lt. Thelion/Bustpoint"], Surface),
             Measure::UnderbustGirth => d(
                 "underbust_girth",
                 "Underbust girth",

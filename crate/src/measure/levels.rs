@@ -10,7 +10,7 @@ use super::body::{BodyMeasurer, Region};
 use super::definitions::Measure;
 use super::parting::{legs_apart, parting_level, PartingSearch};
 use super::spans::TriangleSpans;
-use super::surface::{buttock_level, neck_girths, GirthsAlong};
+use super::surface::{bust_level, buttock_level, neck_girths, GirthsAlong};
 use super::vec3::{midpoint, sub};
 use crate::mesh::volume::volume_and_area_flat;
 
@@ -112,6 +112,26 @@ impl<'a> Body<'a> {
             )
             .unwrap_or(guess)
         })
+    }
+
+    /// ISO 8559-1 5.3.4's bust level, the bust points' ([`bust_level`]) from `bust_band_below`
+    /// under to `bust_band_above` over the Thelions' mean height; forward is Cervicale →
+    /// Suprasternale. That height when a side has no vertex in the band.
+    pub(super) fn bust_level(&self) -> f64 {
+        let p = &self.measurer.params;
+        let m = Measure::BustGirth;
+        let guess = self.mean_height(m);
+        let neck = Measure::NeckGirth;
+        let forward = sub(self.anchor(neck, 1), self.anchor(neck, 0));
+        bust_level(
+            self.positions,
+            &self.measurer.trunk_vertices,
+            [self.anchor(m, 0), self.anchor(m, 1)],
+            forward,
+            guess - p.bust_band_below..=guess + p.bust_band_above,
+            p,
+        )
+        .unwrap_or(guess)
     }
 
     /// ISO 7250-1's crotch: the highest level at which the torso's and legs' section has parted

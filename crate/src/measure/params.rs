@@ -41,6 +41,12 @@ pub struct MeasureParams {
     /// 0.10 m.
     pub hip_band_below: f64,
     pub hip_band_above: f64,
+    /// The bust girth's level is the bust points' (ISO 8559-1 5.3.4: the breasts' most prominent
+    /// points), each the prominence forward of the torso's vertices on its side from
+    /// `bust_band_below` under to `bust_band_above` over the Thelions' mean height
+    /// (`surface.rs`, `bust_level`); defaults 0.04 m and 0.04 m.
+    pub bust_band_below: f64,
+    pub bust_band_above: f64,
     /// The chest girth's level (ISO 8559-1 chest girth: under the armpits, the torso alone) is
     /// `chest_below_armpit` under the armpits' apex, the highest level at which a horizontal
     /// section of the torso and arms has the torso's loop apart from both arms; the apex is
@@ -103,6 +109,8 @@ impl Default for MeasureParams {
             neck_step: 0.025,
             hip_band_below: 0.06,
             hip_band_above: 0.10,
+            bust_band_below: 0.04,
+            bust_band_above: 0.04,
             armpit_band_above: 0.05,
             armpit_band_below: 0.08,
             chest_below_armpit: 0.01,

@@ -1,7 +1,7 @@
 //! A body point found on the surface around a landmark's guess rather than taken from the
 //! landmark's vertex, so that a landmark a few centimetres off names the same point: the
-//! **prominence** of a part along a direction, and with it the hip level ([`buttock_level`]);
-//! the neck's narrowest level ([`narrowest_neck`]) and the head's widest ([`fullest_head`]).
+//! **prominence** of a part along a direction, and with it the hip level ([`buttock_level`])
+//! and the bust level ([`bust_level`]); the neck's narrowest level ([`narrowest_neck`]) and the head's widest ([`fullest_head`]).
 //! Parameters: [`MeasureParams`].
 //!
 //! Of the candidate vertices pᵢ and a unit direction d, the prominence's extent is
@@ -96,6 +96,38 @@ pub fn buttock_level(
         .copied()
         .filter(|&v| band.contains(&vertex(positions, v)[up]));
     prominence(positions, in_band, backward, params.prominence_depth).map(|b| b.point[up])
+}
+
+/// ISO 8559-1's bust level, the height (along `params.up_axis`) of the bust points, each the
+/// most prominent point of its breast: the mean height of two prominences along `forward` made
+/// horizontal (Cervicale → Suprasternale), each of the vertices `trunk` whose height is in `band`
+/// and that lie on one Thelion's side of the vertical plane through the two `thelia`' midpoint
+/// across them (the Rt. → Lt. Thelion direction made horizontal). `None` when a side has none.
+pub fn bust_level(
+    positions: &[f32],
+    trunk: &[u32],
+    thelia: [[f64; 3]; 2],
+    forward: [f64; 3],
+    band: RangeInclusive<f64>,
+    params: &MeasureParams,
+) -> Option<f64> {
+    let up = params.up_axis;
+    let mut forward = forward;
+    forward[up] = 0.0;
+    let forward = unit(forward)?;
+    let mut across = sub(thelia[0], thelia[1]);
+    across[up] = 0.0;
+    let mid = [0, 1, 2].map(|k| (thelia[0][k] + thelia[1][k]) / 2.0);
+    let side = |v: u32| dot(sub(vertex(positions, v), mid), across);
+    let mut sum = 0.0;
+    for sign in [1.0, -1.0] {
+        let candidates = trunk
+            .iter()
+            .copied()
+            .filter(|&v| band.contains(&vertex(positions, v)[up]) && sign * side(v) > 0.0);
+        sum += prominence(positions, candidates, forward, params.prominence_depth)?.point[up];
+    }
+    Some(sum / 2.0)
 }
 
 /// Whether `q` lies inside (or on) the counter-clockwise convex polygon `hull`.
