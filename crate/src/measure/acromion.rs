@@ -26,7 +26,7 @@ use crate::landmarks::shoulder::{
     acromion_at, climb_to_shoulder_point, shoulder_point, ShoulderFrame,
 };
 use crate::landmarks::CAESAR_LANDMARKS;
-use crate::mesh::surface_points::surface_near;
+use crate::mesh::surface_points::{surface_near, SurfaceWindows};
 
 /// One shoulder's template side: its Acromion at rest, the template's surface around it, and the
 /// triangles a body's search may take.
@@ -169,15 +169,8 @@ impl AcromionSearch {
             };
             let offset = own.components(&(s.rest_acromion - template_point));
             let local: Vec<Point3<f64>> = s.vertices.iter().map(|&v| point(positions, v)).collect();
-            let surface = |c: &Point3<f64>| {
-                surface_near(
-                    &local,
-                    &s.triangles,
-                    c,
-                    p.acromion_radius,
-                    p.acromion_spacing,
-                )
-            };
+            let windows = SurfaceWindows::new(&local, &s.triangles);
+            let surface = |c: &Point3<f64>| windows.near(c, p.acromion_radius, p.acromion_spacing);
             let direction = frame.vector([dl, du, 0.0]);
             let Some(found) = climb_to_shoulder_point(
                 &surface,

@@ -33,6 +33,7 @@ use super::surface::{fullest_head, narrowest_neck};
 use super::tape::{closed_length, convex_hull, tape, LoopChoice};
 use super::vec3::{distance, midpoint, sub};
 use crate::template::Segment;
+use std::borrow::Cow;
 
 /// Which triangles a section cuts.
 #[derive(Debug, Clone, Copy)]
@@ -63,10 +64,16 @@ pub struct BodyMeasurer {
     pub(super) params: MeasureParams,
 }
 
-/// A girth's plane, the region it cuts and how the tape picks its loop.
-struct Girth {
+/// The margin (m) by which the head's search is given the triangles beyond its stretch: it
+/// takes those it needs by its own rounding.
+const HEAD_MARGIN: f64 = 1e-6;
+
+/// A girth's plane, the triangles it is cut from and how the tape picks its loop.
+struct Girth<'b> {
     plane: Plane,
-    region: Region,
+    /// Its region's triangles, or of them only those that can reach the plane (a horizontal
+    /// plane's, [`Body::at_level`]; the neck's, [`Body::neck`]): the same section.
+    triangles: Cow<'b, [u32]>,
     choice: Option<LoopChoice>,
 }
 
@@ -317,14 +324,19 @@ impl BodyMeasurer {
     }
 
     /// ISO 8559-1's neck base girth ([`neck_base_tape`]), cut from the head's and torso's
-    /// triangles.
+    /// triangles: those along the neck's axis that reach the Cervicale's plane when the neck
+    /// girth's search spans it ([`Body::neck`]; the plane is square to the same axis), else all.
     fn neck_base(&self, b: &Body) -> Option<NeckBaseTape> {
         let m = Measure::NeckBaseGirth;
+        let region = &self.regions[Region::HeadAndTorso as usize];
+        let near = b
+            .neck()
+            .and_then(|n| n.reaching(n.fraction(b.anchor(m, 0))));
         // Cervicale, Suprasternale, Rt. Tragion, Lt. Tragion.
         neck_base_tape(
             b.positions,
             &self.triangles,
-            &self.regions[Region::HeadAndTorso as usize],
+            near.as_deref().unwrap_or(region),
             b.anchor(m, 0),
             b.anchor(m, 1),
             midpoint(b.anchor(m, 2), b.anchor(m, 3)),
@@ -333,32 +345,32 @@ impl BodyMeasurer {
     }
 
     fn tape(&self, body: &Body, g: &Girth) -> Option<(f64, Vec<[f64; 2]>)> {
-        let loops = plane_section(
-            body.positions,
-            &self.triangles,
-            &self.regions[g.region as usize],
-            &g.plane,
-        );
+        let loops = plane_section(body.positions, &self.triangles, &g.triangles, &g.plane);
         match g.choice {
             Some(choice) => tape(&loops, choice).map(|t| (t.girth, t.hull)),
             None => around_everything(&loops),
         }
     }
 
-    /// The plane and region of a girth; `None` for a measurement that is not a girth.
-    fn girth(&self, b: &Body, m: Measure) -> Option<Girth> {
+    /// The plane and triangles of a girth; `None` for a measurement that is not a girth.
+    fn girth<'b>(&'b self, b: &Body, m: Measure) -> Option<Girth<'b>> {
         let p = &self.params;
         let up = p.up_axis;
         let at = |level: f64, region| Girth {
             plane: Plane::horizontal(up, level),
-            region,
+            triangles: Cow::Owned(b.at_level(region, level)),
             choice: None,
         };
-        let around = |plane: Plane, region, anchor: [f64; 3]| Girth {
+        let around = |plane: Plane, triangles, anchor: [f64; 3]| Girth {
             plane,
-            region,
+            triangles,
             choice: Some(LoopChoice::Around(plane.to_plane(anchor))),
         };
+        let level_around = |level: f64, region, anchor| {
+            let triangles = Cow::Owned(b.at_level(region, level));
+            around(Plane::horizontal(up, level), triangles, anchor)
+        };
+        let region = |r: Region| Cow::Borrowed(self.regions[r as usize].as_slice());
         let a = |k: usize| b.anchor(m, k);
         Some(match m {
             Measure::ChestGirth => self.chest(b),
@@ -369,47 +381,39 @@ impl BodyMeasurer {
             Measure::ThighGirth => {
                 // Both legs and the torso: near the crotch the overlap band splits the thigh's
                 // section between the right leg and the torso; the loop at the hip is the thigh.
-                let plane = Plane::horizontal(up, b.crotch_level() - p.thigh_below_crotch);
-                around(plane, Region::TorsoAndLegs, a(1))
+                let level = b.crotch_level() - p.thigh_below_crotch;
+                level_around(level, Region::TorsoAndLegs, a(1))
             }
             Measure::UpperArmGirth => {
                 let (acromion, olecranon) = (a(0), a(1));
                 let mid = midpoint(acromion, olecranon);
-                around(
-                    Plane::new(mid, sub(olecranon, acromion))?,
-                    Region::RightArm,
-                    mid,
-                )
+                let plane = Plane::new(mid, sub(olecranon, acromion))?;
+                around(plane, region(Region::RightArm), mid)
             }
             Measure::NeckGirth => {
-                let base = midpoint(a(0), a(1));
-                let ears = midpoint(a(2), a(3));
-                let axis = sub(ears, base);
-                let f = narrowest_neck(
-                    b.positions,
-                    &self.triangles,
-                    &self.regions[Region::HeadAndTorso as usize],
-                    base,
-                    axis,
-                    p,
-                );
+                let (base, axis) = b.neck_axis();
+                let f = narrowest_neck(b.neck(), p);
                 let at = [0, 1, 2].map(|k| base[k] + f * axis[k]);
-                around(Plane::new(at, axis)?, Region::HeadAndTorso, at)
+                let near = b.neck().and_then(|n| n.reaching(f));
+                let triangles = near.map_or(region(Region::HeadAndTorso), Cow::Owned);
+                around(Plane::new(at, axis)?, triangles, at)
             }
             Measure::HeadGirth => {
                 let sellion = a(0)[up];
                 let mut centre = midpoint(a(1), a(2));
-                let level = fullest_head(
-                    b.positions,
-                    &self.triangles,
+                // The search looks only at the head's triangles within its stretch (with a
+                // margin: it decides by its own rounding).
+                let (top, bottom) = (sellion + p.head_search_above, sellion - p.head_search_below);
+                let stretch = b.spans().reaching(
                     &self.regions[Region::Head as usize],
-                    centre,
-                    sellion,
-                    p,
-                )
-                .unwrap_or(sellion + p.head_search_above);
+                    bottom - HEAD_MARGIN,
+                    top + HEAD_MARGIN,
+                );
+                let level =
+                    fullest_head(b.positions, &self.triangles, &stretch, centre, sellion, p)
+                        .unwrap_or(sellion + p.head_search_above);
                 centre[up] = level;
-                around(Plane::horizontal(up, level), Region::Head, centre)
+                level_around(level, Region::Head, centre)
             }
             _ => return None,
         })
@@ -421,7 +425,7 @@ impl BodyMeasurer {
     /// direction). Where the band holds no apex (arms joined to the torso all the way down, or
     /// the guess far off), the tape at the axillae's mean level around every piece the torso's
     /// own triangles give.
-    fn chest(&self, b: &Body) -> Girth {
+    fn chest(&self, b: &Body) -> Girth<'static> {
         let m = Measure::ChestGirth;
         let p = &self.params;
         let up = p.up_axis;
@@ -434,27 +438,29 @@ impl BodyMeasurer {
         );
         lateral[up] = 0.0;
         let region = Region::TorsoAndArms;
+        let (above, below) = (p.armpit_band_above, p.armpit_band_below);
         let search = PartingSearch {
-            region: &self.regions[region as usize],
+            region: &b.in_band(region, guess, above, below),
             centre,
             lateral,
             guess,
-            above: p.armpit_band_above,
-            below: p.armpit_band_below,
+            above,
+            below,
         };
         let apex = parting_level(b.positions, &self.triangles, &search, torso_alone, p);
         match apex {
             Some(apex) => {
-                let plane = Plane::horizontal(up, apex - p.chest_below_armpit);
+                let level = apex - p.chest_below_armpit;
+                let plane = Plane::horizontal(up, level);
                 Girth {
                     plane,
-                    region,
+                    triangles: Cow::Owned(b.at_level(region, level)),
                     choice: Some(LoopChoice::Around(plane.to_plane(centre))),
                 }
             }
             None => Girth {
                 plane: Plane::horizontal(up, guess),
-                region: Region::Torso,
+                triangles: Cow::Owned(b.at_level(Region::Torso, guess)),
                 choice: None,
             },
         }

@@ -1,14 +1,17 @@
 //! One body being measured ([`Body`]): its positions, floor and top, its landmarks' positions,
 //! and what several measurements share, each found once — the waist's level, the hip's (the
 //! buttocks' prominence, [`super::surface`]), the crotch ([`super::parting`]), the acromia
-//! ([`super::acromion`]), the volume and area.
+//! ([`super::acromion`]), the volume and area, the triangles' spans along the up axis (every
+//! horizontal section's, [`super::spans`]) and the triangles along the neck's axis (the neck
+//! girth's and the neck base girth's).
 
 use super::acromion::Acromion;
 use super::body::{BodyMeasurer, Region};
 use super::definitions::Measure;
 use super::parting::{legs_apart, parting_level, PartingSearch};
-use super::surface::{bust_level, buttock_level};
-use super::vec3::sub;
+use super::spans::TriangleSpans;
+use super::surface::{bust_level, buttock_level, neck_girths, GirthsAlong};
+use super::vec3::{midpoint, sub};
 use crate::mesh::volume::volume_and_area_flat;
 
 /// One body being measured: positions and what several measurements share.
@@ -25,6 +28,10 @@ pub(super) struct Body<'a> {
     acromia: std::cell::OnceCell<[Acromion; 2]>,
     /// Volume and area, computed once for both measurements (one pass over every triangle).
     volume_and_area: std::cell::OnceCell<(f64, f64)>,
+    /// Every triangle's span along the up axis, found once for the horizontal sections.
+    spans: std::cell::OnceCell<TriangleSpans>,
+    /// The head's and torso's triangles along the neck's axis, found once.
+    neck: std::cell::OnceCell<Option<GirthsAlong<'a>>>,
 }
 
 impl<'a> Body<'a> {
@@ -44,6 +51,8 @@ impl<'a> Body<'a> {
             crotch_level: std::cell::OnceCell::new(),
             acromia: std::cell::OnceCell::new(),
             volume_and_area: std::cell::OnceCell::new(),
+            spans: std::cell::OnceCell::new(),
+            neck: std::cell::OnceCell::new(),
         }
     }
 
@@ -137,13 +146,16 @@ impl<'a> Body<'a> {
             let crotch = self.anchor(m, 0);
             let mut lateral = sub(self.anchor(m, 1), self.anchor(m, 2));
             lateral[p.up_axis] = 0.0;
+            let guess = crotch[p.up_axis];
+            let (above, below) = (p.crotch_band_above, p.crotch_band_below);
+            let region = self.in_band(Region::TorsoAndLegs, guess, above, below);
             let search = PartingSearch {
-                region: &self.measurer.regions[Region::TorsoAndLegs as usize],
+                region: &region,
                 centre: crotch,
                 lateral,
-                guess: crotch[p.up_axis],
-                above: p.crotch_band_above,
-                below: p.crotch_band_below,
+                guess,
+                above,
+                below,
             };
             parting_level(
                 self.positions,
@@ -163,6 +175,53 @@ impl<'a> Body<'a> {
             let m = self.measurer;
             m.acromia.acromia(self.positions, &m.params)
         })
+    }
+
+    /// The triangles of `region` that reach into a parting search's band, from `guess − below`
+    /// to `guess + above` ([`TriangleSpans::reaching`]): those [`parting_level`] keeps of its
+    /// region before its first section, in the region's order, so that it need not look at the
+    /// others.
+    pub(super) fn in_band(&self, region: Region, guess: f64, above: f64, below: f64) -> Vec<u32> {
+        let region = &self.measurer.regions[region as usize];
+        self.spans().reaching(region, guess - below, guess + above)
+    }
+
+    /// The triangles of `region` a horizontal plane at `height` can cut, in the region's order
+    /// ([`TriangleSpans::reaching`]): its section is the region's.
+    pub(super) fn at_level(&self, region: Region, height: f64) -> Vec<u32> {
+        self.spans()
+            .reaching(&self.measurer.regions[region as usize], height, height)
+    }
+
+    /// Every triangle's span along the up axis ([`TriangleSpans`]).
+    pub(super) fn spans(&self) -> &TriangleSpans {
+        self.spans.get_or_init(|| {
+            let m = self.measurer;
+            TriangleSpans::new(self.positions, &m.triangles, m.params.up_axis)
+        })
+    }
+
+    /// The neck's axis `(base, axis)`: from the midpoint of the Cervicale and the Suprasternale
+    /// (the neck's base) to the Tragions' midpoint.
+    pub(super) fn neck_axis(&self) -> ([f64; 3], [f64; 3]) {
+        // NECK: Cervicale, Suprasternale, Rt. Tragion, Lt. Tragion.
+        let a = |k: usize| self.anchor(Measure::NeckGirth, k);
+        let base = midpoint(a(0), a(1));
+        (base, sub(midpoint(a(2), a(3)), base))
+    }
+
+    /// The head's and torso's triangles along the neck's axis over the neck girth's search
+    /// ([`neck_girths`]), for its search and tape and for the neck base girth's section; `None`
+    /// when the axis has no length.
+    pub(super) fn neck(&self) -> Option<&GirthsAlong<'a>> {
+        self.neck
+            .get_or_init(|| {
+                let m = self.measurer;
+                let (base, axis) = self.neck_axis();
+                let region = &m.regions[Region::HeadAndTorso as usize];
+                neck_girths(self.positions, &m.triangles, region, base, axis, &m.params)
+            })
+            .as_ref()
     }
 
     pub(super) fn volume_and_area(&self) -> (f64, f64) {

@@ -7,6 +7,8 @@
 //! * [`parting`] — levels where a section's loops part, found on the surface: the armpits' apex
 //!   (the chest girth's level) and the crotch (crotch height, the thigh girth's level)
 //! * [`section`] — plane sections of a triangle mesh ([`Plane`], [`plane_section`])
+//! * `spans` — each triangle's span along the up axis, so that a horizontal section is cut from
+//!   the triangles that reach its plane alone
 //! * [`surface`] — body points found on the surface around a landmark's guess: the prominence,
 //!   the buttocks' level, the neck's narrowest level
 //! * [`tape`] — a tape around a section: convex-hull perimeter of the chosen loop
@@ -41,6 +43,7 @@ pub mod neck_base;
 pub mod params;
 pub mod parting;
 pub mod section;
+mod spans;
 pub mod support;
 pub mod surface;
 pub mod tape;

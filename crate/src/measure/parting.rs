@@ -107,7 +107,9 @@ pub fn parting_level(
         .region
         .iter()
         .map(|&t| {
-            let h = triangles[t as usize].map(|v| positions[3 * v as usize + up] as f64);
+            let height = |v: u32| positions[3 * v as usize + up] as f64;
+            let [a, b, c] = triangles[t as usize];
+            let h = [height(a), height(b), height(c)];
             (t, h[0].min(h[1]).min(h[2]), h[0].max(h[1]).max(h[2]))
         })
         .filter(|&(_, lo, hi)| hi >= apart && lo <= joined)

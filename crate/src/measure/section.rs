@@ -1,6 +1,7 @@
 //! Plane sections of a triangle mesh: the closed loops (and open chains) where a plane cuts it.
 
-use super::vec3::{cross, dot, unit};
+use super::vec3::{cross, dot, sub, unit};
+use std::collections::hash_map::Entry;
 use std::collections::HashMap;
 use std::hash::{BuildHasherDefault, Hasher};
 
@@ -68,12 +69,12 @@ impl Plane {
 
     /// Signed distance of `p` from the plane.
     pub fn distance(&self, p: [f64; 3]) -> f64 {
-        dot(self.normal, [0, 1, 2].map(|k| p[k] - self.origin[k]))
+        dot(self.normal, sub(p, self.origin))
     }
 
     /// In-plane coordinates of `p` (projected onto the plane).
     pub fn to_plane(&self, p: [f64; 3]) -> [f64; 2] {
-        let d = [0, 1, 2].map(|k| p[k] - self.origin[k]);
+        let d = sub(p, self.origin);
         [dot(d, self.u), dot(d, self.v)]
     }
 
@@ -98,24 +99,26 @@ fn vertex(positions: &[f32], v: u32) -> Option<[f64; 3]> {
         .map(|p| [p[0] as f64, p[1] as f64, p[2] as f64])
 }
 
-/// One mesh edge the plane crosses: where, the (at most two) crossed edges it is linked to
-/// through a cut triangle, and whether a walk has passed it.
+/// One mesh edge the plane crosses: where, the (at most two) crossings it is linked to through a
+/// cut triangle (indices into the section's list of crossings), and whether a walk has passed it.
 #[derive(Clone, Copy)]
 struct Crossing {
+    /// The edge's two vertices, the smaller first.
+    edge: (u32, u32),
     at: [f64; 2],
-    links: [(u32, u32); 2],
+    links: [u32; 2],
     linked: u8,
     visited: bool,
 }
 
 impl Crossing {
-    fn links(&self) -> &[(u32, u32)] {
+    fn links(&self) -> &[u32] {
         &self.links[..self.linked as usize]
     }
 
     /// A link to another crossing; an edge of a manifold mesh (the template is one) borders two
     /// triangles, so a third link (a non-manifold edge) is dropped.
-    fn link(&mut self, to: (u32, u32)) {
+    fn link(&mut self, to: u32) {
         if (self.linked as usize) < self.links.len() {
             self.links[self.linked as usize] = to;
             self.linked += 1;
@@ -123,18 +126,32 @@ impl Crossing {
     }
 }
 
+/// A triangle the plane cuts: its vertices, their positions, their signed distances from the
+/// plane and which of them lie in front of it.
+struct CutTriangle {
+    vertices: [u32; 3],
+    points: [[f64; 3]; 3],
+    distances: [f64; 3],
+    front: [bool; 3],
+}
+
 /// The pieces where `plane` cuts the triangles `section_triangles` (indices into `triangles`,
 /// `#F` index triples over flat `#V·3` `positions`). Each cut crosses mesh edges; the cut points
 /// of one triangle are linked, and the links chained into loops through the edges they share.
 /// A vertex exactly on the plane counts as in front of it, so every crossing is a proper edge cut.
 /// Indices beyond the arrays are skipped.
+///
+/// Cost: one pass over `section_triangles`; then per crossed edge one look-up of its edge in a
+/// map (as each of its two triangles records it), the walk following the links by index.
 pub fn plane_section(
     positions: &[f32],
     triangles: &[[u32; 3]],
     section_triangles: &[u32],
     plane: &Plane,
 ) -> Vec<SectionLoop> {
-    let mut crossings: EdgeMap<Crossing> = EdgeMap::default();
+    // The cut triangles first, so that the edge map is sized once: about one crossed edge per cut
+    // triangle (each has two, each shared by two).
+    let mut cut_triangles: Vec<CutTriangle> = Vec::new();
     for &t in section_triangles {
         let Some(tri) = triangles.get(t as usize) else {
             continue;
@@ -146,73 +163,94 @@ pub fn plane_section(
         ) else {
             continue;
         };
-        let p = [p0, p1, p2];
-        let d = p.map(|q| plane.distance(q));
-        let front = d.map(|x| x >= 0.0);
+        // Written out rather than by `[_; 3]::map`, which is not always inlined: this loop runs
+        // over every triangle of a region.
+        let d = [plane.distance(p0), plane.distance(p1), plane.distance(p2)];
+        let front = [d[0] >= 0.0, d[1] >= 0.0, d[2] >= 0.0];
         // Most triangles lie wholly on one side: nothing to record for them.
         if front[0] == front[1] && front[1] == front[2] {
             continue;
         }
-        let mut cut = [(0u32, 0u32); 2];
+        cut_triangles.push(CutTriangle {
+            vertices: *tri,
+            points: [p0, p1, p2],
+            distances: d,
+            front,
+        });
+    }
+    let mut crossings: Vec<Crossing> = Vec::with_capacity(cut_triangles.len());
+    let mut index: EdgeMap<u32> =
+        EdgeMap::with_capacity_and_hasher(cut_triangles.len(), BuildHasherDefault::default());
+    for CutTriangle {
+        vertices: tri,
+        points: p,
+        distances: d,
+        front,
+    } in cut_triangles
+    {
+        let mut cut = [0u32; 2];
         let mut n = 0;
         for (a, b) in [(0, 1), (1, 2), (2, 0)] {
             if front[a] != front[b] && n < 2 {
                 let f = d[a] / (d[a] - d[b]);
-                let key = (tri[a].min(tri[b]), tri[a].max(tri[b]));
+                let edge = (tri[a].min(tri[b]), tri[a].max(tri[b]));
                 let at = [0, 1, 2].map(|k| p[a][k] + f * (p[b][k] - p[a][k]));
                 let at = plane.to_plane(at);
-                crossings
-                    .entry(key)
-                    .and_modify(|c| c.at = at)
-                    .or_insert(Crossing {
-                        at,
-                        links: [(0, 0); 2],
-                        linked: 0,
-                        visited: false,
-                    });
-                cut[n] = key;
+                // The edge's second triangle computes the same point from its own side; the last
+                // one computed is kept.
+                cut[n] = match index.entry(edge) {
+                    Entry::Occupied(e) => {
+                        crossings[*e.get() as usize].at = at;
+                        *e.get()
+                    }
+                    Entry::Vacant(e) => {
+                        let i = *e.insert(crossings.len() as u32);
+                        crossings.push(Crossing {
+                            edge,
+                            at,
+                            links: [0; 2],
+                            linked: 0,
+                            visited: false,
+                        });
+                        i
+                    }
+                };
                 n += 1;
             }
         }
         if n == 2 {
-            for (from, to) in [(cut[0], cut[1]), (cut[1], cut[0])] {
-                if let Some(c) = crossings.get_mut(&from) {
-                    c.link(to);
-                }
-            }
+            crossings[cut[0] as usize].link(cut[1]);
+            crossings[cut[1] as usize].link(cut[0]);
         }
     }
-    let mut starts: Vec<(u32, u32)> = crossings
+    // Open chains must be walked from an end; sorting by edge keeps the result deterministic.
+    let mut starts: Vec<(bool, (u32, u32), u32)> = crossings
         .iter()
+        .enumerate()
         .filter(|(_, c)| c.linked > 0)
-        .map(|(k, _)| *k)
+        .map(|(i, c)| (c.linked != 1, c.edge, i as u32))
         .collect();
-    // Open chains must be walked from an end; sorting keeps the result deterministic.
-    starts.sort_by_key(|k| (crossings[k].linked != 1, *k));
+    starts.sort_unstable();
     let mut loops = Vec::new();
-    for start in starts {
-        if crossings[&start].visited {
+    for (_, _, start) in starts {
+        if crossings[start as usize].visited {
             continue;
         }
-        let mut chain = vec![crossings[&start].at];
-        if let Some(c) = crossings.get_mut(&start) {
-            c.visited = true;
-        }
+        crossings[start as usize].visited = true;
+        let mut chain = vec![crossings[start as usize].at];
         let mut current = start;
-        while let Some(k) = crossings[&current]
+        while let Some(k) = crossings[current as usize]
             .links()
             .iter()
-            .find(|k| !crossings[*k].visited)
+            .find(|&&k| !crossings[k as usize].visited)
             .copied()
         {
-            let c = crossings
-                .get_mut(&k)
-                .expect("a linked crossing is recorded");
+            let c = &mut crossings[k as usize];
             c.visited = true;
             chain.push(c.at);
             current = k;
         }
-        let closed = chain.len() > 2 && crossings[&current].links().contains(&start);
+        let closed = chain.len() > 2 && crossings[current as usize].links().contains(&start);
         loops.push(SectionLoop {
             points: chain,
             closed,

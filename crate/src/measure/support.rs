@@ -25,6 +25,7 @@ use serde::Serialize;
 
 use super::body::BodyMeasurer;
 use super::definitions::{Anchoring, Measure};
+use super::vec3::sub;
 
 /// Where a fit is judged near enough to the scan to carry a body-defined measurement, with the
 /// defaults chosen on the tuning seeds 2026, 101 and 202 (docs/measurements.md, "Trust").
@@ -177,13 +178,24 @@ pub fn places(
     };
     let n = upright.len() / 3;
     let near = |centres: &[[f64; 3]]| -> Vec<usize> {
+        // A vertex outside the centres' box widened by twice the radius lies, along one axis
+        // alone, more than twice the radius from every centre: farther than the radius from each
+        // whatever the rounding, so it is skipped unmeasured.
+        let (mut low, mut high) = ([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]);
+        for c in centres {
+            for k in 0..3 {
+                low[k] = low[k].min(c[k] - 2.0 * radius);
+                high[k] = high[k].max(c[k] + 2.0 * radius);
+            }
+        }
         (0..n)
             .filter(|&v| {
                 let p = vertex(v);
-                centres.iter().any(|c| {
-                    let d = [0, 1, 2].map(|k| p[k] - c[k]);
-                    d[0] * d[0] + d[1] * d[1] + d[2] * d[2] <= radius * radius
-                })
+                (0..3).all(|k| low[k] <= p[k] && p[k] <= high[k])
+                    && centres.iter().any(|c| {
+                        let d = sub(p, *c);
+                        d[0] * d[0] + d[1] * d[1] + d[2] * d[2] <= radius * radius
+                    })
             })
             .collect()
     };

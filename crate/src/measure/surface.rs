@@ -27,7 +27,11 @@ pub struct Prominence {
 
 fn vertex(positions: &[f32], v: u32) -> [f64; 3] {
     let i = 3 * v as usize;
-    [0, 1, 2].map(|k| positions[i + k] as f64)
+    [
+        positions[i] as f64,
+        positions[i + 1] as f64,
+        positions[i + 2] as f64,
+    ]
 }
 
 /// The prominence along unit `direction` of `candidates` (vertex indices into flat `#V·3`
@@ -139,8 +143,10 @@ fn hull_contains(hull: &[[f64; 2]], q: [f64; 2]) -> bool {
 /// Girths of a tape perpendicular to an axis: at fraction f, the plane through base + f·axis
 /// perpendicular to `axis`, cut from the triangles of a region that straddle the searched stretch
 /// of the axis, around the outermost loop that encloses the axis (not the chin, an ear or a
-/// shoulder beside a tilted axis). Shared by the neck's and the head's searches.
-struct GirthsAlong<'a> {
+/// shoulder beside a tilted axis). Shared by the neck's and the head's searches; the neck's
+/// triangles also give the neck girth's tape and the neck base girth's section
+/// ([`GirthsAlong::reaching`]).
+pub(super) struct GirthsAlong<'a> {
     positions: &'a [f32],
     triangles: &'a [[u32; 3]],
     /// The region's triangles that reach into fractions `first..=last` of the axis, each with the
@@ -148,11 +154,17 @@ struct GirthsAlong<'a> {
     near: Vec<(f64, f64, u32)>,
     base: [f64; 3],
     axis: [f64; 3],
+    first: f64,
+    last: f64,
 }
+
+/// The margin (in fractions of the axis) by which a triangle's span is taken to hold a fraction:
+/// the spans and the plane round differently; the plane decides.
+const MARGIN: f64 = 1e-9;
 
 impl<'a> GirthsAlong<'a> {
     /// `None` when the axis has no length.
-    fn new(
+    pub(super) fn new(
         positions: &'a [f32],
         triangles: &'a [[u32; 3]],
         region: &[u32],
@@ -168,7 +180,8 @@ impl<'a> GirthsAlong<'a> {
         let near: Vec<(f64, f64, u32)> = region
             .iter()
             .map(|&t| {
-                let s = triangles[t as usize].map(along);
+                let [a, b, c] = triangles[t as usize];
+                let s = [along(a), along(b), along(c)];
                 (s[0].min(s[1]).min(s[2]), s[0].max(s[1]).max(s[2]), t)
             })
             .filter(|&(lo, hi, _)| hi >= first && lo <= last)
@@ -179,19 +192,35 @@ impl<'a> GirthsAlong<'a> {
             near,
             base,
             axis,
+            first,
+            last,
         })
+    }
+
+    /// The fraction of the axis at point `p`: (p − base)·axis / |axis|².
+    pub(super) fn fraction(&self, p: [f64; 3]) -> f64 {
+        dot(sub(p, self.base), self.axis) / dot(self.axis, self.axis)
+    }
+
+    /// The triangles whose span holds fraction `f` (in the region's order): when `f` lies inside
+    /// the searched stretch by more than the margin, every triangle of the region that a plane
+    /// perpendicular to the axis at `f` cuts; `None` when it does not.
+    pub(super) fn reaching(&self, f: f64) -> Option<Vec<u32>> {
+        (f - MARGIN >= self.first && f + MARGIN <= self.last).then(|| self.holding(f))
+    }
+
+    /// The triangles whose span holds `f`, with the margin.
+    fn holding(&self, f: f64) -> Vec<u32> {
+        self.near
+            .iter()
+            .filter(|n| n.0 <= f + MARGIN && n.1 >= f - MARGIN)
+            .map(|n| n.2)
+            .collect()
     }
 
     /// The girth at fraction `f`; `None` when no loop there encloses the axis.
     fn at(&self, f: f64) -> Option<f64> {
-        // The triangles whose span holds f (with a rounding margin: the plane decides).
-        let margin = 1e-9;
-        let cut: Vec<u32> = self
-            .near
-            .iter()
-            .filter(|n| n.0 <= f + margin && n.1 >= f - margin)
-            .map(|n| n.2)
-            .collect();
+        let cut = self.holding(f);
         let at = [0, 1, 2].map(|k| self.base[k] + f * self.axis[k]);
         let plane = Plane::new(at, self.axis)?;
         let loops = plane_section(self.positions, self.triangles, &cut, &plane);
@@ -212,26 +241,40 @@ fn parabola_shift(l: f64, c: f64, r: f64, least: bool) -> f64 {
     }
 }
 
-/// ISO 8559-1 5.3.2's level of the neck girth, where the neck is narrowest: the fraction f of
-/// the neck `axis` (the point base + f·axis) where the tape perpendicular to the axis around the
-/// outermost loop that encloses the axis, cut from `region` (indices into `triangles`), is least,
-/// over `neck_fraction ± neck_band` every `neck_step` (every other step first, then downhill
-/// beside the least), refined by the parabola through the least sample and its neighbours. `neck_fraction` when no sample has such a loop.
-pub fn narrowest_neck(
-    positions: &[f32],
-    triangles: &[[u32; 3]],
+/// The neck search's samples: `n + 1` fractions of the neck's axis `neck_step` apart, centred on
+/// `neck_fraction` and spanning about `neck_fraction ± neck_band`, as `(n, first, last)`.
+fn neck_samples(params: &MeasureParams) -> (usize, f64, f64) {
+    let p = params;
+    let n = (2.0 * p.neck_band / p.neck_step).round().max(0.0) as usize;
+    let first = p.neck_fraction - p.neck_step * n as f64 / 2.0;
+    (n, first, first + p.neck_step * n as f64)
+}
+
+/// The triangles of `region` (indices into `triangles`) along the neck's `axis` from `base`,
+/// over the stretch [`narrowest_neck`] samples; `None` when the axis has no length.
+pub(super) fn neck_girths<'a>(
+    positions: &'a [f32],
+    triangles: &'a [[u32; 3]],
     region: &[u32],
     base: [f64; 3],
     axis: [f64; 3],
     params: &MeasureParams,
-) -> f64 {
+) -> Option<GirthsAlong<'a>> {
+    let (_, first, last) = neck_samples(params);
+    GirthsAlong::new(positions, triangles, region, base, axis, (first, last))
+}
+
+/// ISO 8559-1 5.3.2's level of the neck girth, where the neck is narrowest: the fraction f of
+/// the neck's axis (the point base + f·axis) where the tape perpendicular to the axis around the
+/// outermost loop that encloses the axis, cut from the triangles `girths_along` holds
+/// ([`neck_girths`]: the head's and torso's), is least, over `neck_fraction ± neck_band` every
+/// `neck_step` (every other step first, then downhill beside the least), refined by the parabola
+/// through the least sample and its neighbours. `neck_fraction` when the axis has no length or no
+/// sample has such a loop.
+pub(super) fn narrowest_neck(girths_along: Option<&GirthsAlong>, params: &MeasureParams) -> f64 {
     let p = params;
-    let n = (2.0 * p.neck_band / p.neck_step).round().max(0.0) as usize;
-    let first = p.neck_fraction - p.neck_step * n as f64 / 2.0;
-    let last = first + p.neck_step * n as f64;
-    let Some(girths_along) =
-        GirthsAlong::new(positions, triangles, region, base, axis, (first, last))
-    else {
+    let (n, first, _) = neck_samples(p);
+    let Some(girths_along) = girths_along else {
         return p.neck_fraction;
     };
     let girth_at = |i: usize| {

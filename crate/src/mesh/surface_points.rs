@@ -1,5 +1,6 @@
 //! Points spread over a mesh's surface: its triangles sampled on barycentric grids, everywhere
-//! ([`surface_samples`]) or near a point ([`surface_near`]). A coarse mesh's vertices lie too far
+//! ([`surface_samples`]) or near a point ([`surface_near`], [`SurfaceWindows`] for several
+//! points on one mesh). A coarse mesh's vertices lie too far
 //! apart for a profile's bins or a prominence's cap; its surface does not.
 
 use nalgebra::Point3;
@@ -15,7 +16,7 @@ pub fn surface_samples(
 ) -> Vec<Point3<f64>> {
     let mut out = Vec::new();
     for t in triangles {
-        let [a, b, c] = t.map(|v| positions[v as usize]);
+        let [a, b, c] = corners(positions, t);
         let longest = (b - a).norm().max((c - b).norm()).max((a - c).norm());
         let n = ((longest / spacing).ceil() as usize).clamp(1, 64);
         for i in 0..n {
@@ -39,19 +40,63 @@ pub fn surface_near(
     radius: f64,
     spacing: f64,
 ) -> Vec<Point3<f64>> {
-    let r2 = radius * radius;
-    let near: Vec<[u32; 3]> = triangles
-        .iter()
-        .filter(|t| {
-            let [a, b, c] = t.map(|v| positions[v as usize]);
-            let longest = (b - a).norm().max((c - b).norm()).max((a - c).norm());
-            t.iter()
-                .any(|&v| (positions[v as usize] - centre).norm() <= radius + longest)
-        })
-        .copied()
-        .collect();
-    surface_samples(positions, &near, spacing)
-        .into_iter()
-        .filter(|p| (p - centre).norm_squared() <= r2)
-        .collect()
+    SurfaceWindows::new(positions, triangles).near(centre, radius, spacing)
+}
+
+/// A mesh whose surface is sampled in several windows ([`surface_near`] around several
+/// centres), each triangle's longest edge measured once for all of them.
+pub struct SurfaceWindows<'a> {
+    positions: &'a [Point3<f64>],
+    triangles: &'a [[u32; 3]],
+    /// Per triangle, its longest edge (m).
+    longest: Vec<f64>,
+}
+
+impl<'a> SurfaceWindows<'a> {
+    pub fn new(positions: &'a [Point3<f64>], triangles: &'a [[u32; 3]]) -> Self {
+        let longest = triangles
+            .iter()
+            .map(|t| {
+                let [a, b, c] = corners(positions, t);
+                (b - a).norm().max((c - b).norm()).max((a - c).norm())
+            })
+            .collect();
+        SurfaceWindows {
+            positions,
+            triangles,
+            longest,
+        }
+    }
+
+    /// [`surface_near`]: the points `spacing` apart over the triangles within `radius` of
+    /// `centre` (those with a corner within `radius` plus their longest edge of it, sampled, then
+    /// the samples within `radius` kept).
+    pub fn near(&self, centre: &Point3<f64>, radius: f64, spacing: f64) -> Vec<Point3<f64>> {
+        let r2 = radius * radius;
+        let near: Vec<[u32; 3]> = self
+            .triangles
+            .iter()
+            .zip(&self.longest)
+            .filter(|(t, &longest)| {
+                corners(self.positions, t)
+                    .iter()
+                    .any(|p| (p - centre).norm() <= radius + longest)
+            })
+            .map(|(t, _)| *t)
+            .collect();
+        surface_samples(self.positions, &near, spacing)
+            .into_iter()
+            .filter(|p| (p - centre).norm_squared() <= r2)
+            .collect()
+    }
+}
+
+/// The corners of triangle `t` (written out: an array's `map` is not always inlined, and this
+/// runs per triangle).
+fn corners(positions: &[Point3<f64>], t: &[u32; 3]) -> [Point3<f64>; 3] {
+    [
+        positions[t[0] as usize],
+        positions[t[1] as usize],
+        positions[t[2] as usize],
+    ]
 }
