@@ -77,6 +77,14 @@ pub fn prominence(
     })
 }
 
+/// `direction` made horizontal (its `up` component dropped) and unit; `None` when that leaves
+/// nothing.
+fn horizontal(direction: [f64; 3], up: usize) -> Option<[f64; 3]> {
+    let mut d = direction;
+    d[up] = 0.0;
+    unit(d)
+}
+
 /// ISO 8559-1 5.3.13's hip level: the height (along `params.up_axis`) of the prominence along
 /// `backward` made horizontal (Suprasternale → Cervicale) of the vertices `trunk` (the torso's and
 /// legs': never a hand on the hip) whose height is in `band`. `None` when none is.
@@ -88,9 +96,7 @@ pub fn buttock_level(
     params: &MeasureParams,
 ) -> Option<f64> {
     let up = params.up_axis;
-    let mut backward = backward;
-    backward[up] = 0.0;
-    let backward = unit(backward)?;
+    let backward = horizontal(backward, up)?;
     let in_band = trunk
         .iter()
         .copied()
@@ -112,9 +118,7 @@ pub fn bust_level(
     params: &MeasureParams,
 ) -> Option<f64> {
     let up = params.up_axis;
-    let mut forward = forward;
-    forward[up] = 0.0;
-    let forward = unit(forward)?;
+    let forward = horizontal(forward, up)?;
     let mut across = sub(thelia[0], thelia[1]);
     across[up] = 0.0;
     let mid = [0, 1, 2].map(|k| (thelia[0][k] + thelia[1][k]) / 2.0);
