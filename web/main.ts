@@ -132,7 +132,7 @@ async function open(all: File[]): Promise<void> {
   else if (scan || landmarks) banner.dismiss();
   const read = [...outcome.scans.map((s) => s.scan.fileName), ...outcome.landmarks.map((l) => l.fileName)];
   topBar.setStatus(
-    read.length ? `Opened ${read.join(', ')}` : outcome.errors.length ? 'Nothing opened; see the message above.' : '',
+    read.length ? `Opened ${read.join(', ')}` : outcome.errors.length ? 'Not opened: see the message above. What was open stays as it was.' : '',
   );
   body.dataset.busy = 'false';
   body.dataset.loads = String(++loads);
