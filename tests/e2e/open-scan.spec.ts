@@ -72,6 +72,8 @@ test('a broken file names the file and the problem, and what was loaded stays', 
   await expect(banner).toBeVisible();
   await expect(byTestId(page, 'error-text')).toContainText('broken.ply');
   await expect(byTestId(page, 'error-text')).toContainText(/declares|ends|truncated|short/i);
+  // The status line does not read as if the open scan were gone.
+  await expect(page.locator('#status')).toHaveText('Not opened: see the message above. What was open stays as it was.');
 
   await expect(byTestId(page, 'scan-file')).toHaveText('subject.ply');
   await expect(byTestId(page, 'scan-vertices')).toHaveText('12');
