@@ -164,6 +164,19 @@ fn mm(x: f64) -> f64 {
     x * 1e3
 }
 
+/// `which` landmarks moved 2 cm down and 2 cm up change `m` by at most 2 mm from `at_rest`.
+fn moved_2_cm_moves_at_most_2_mm(which: &[&str], m: Measure, at_rest: f64) {
+    for moved in [-0.02, 0.02] {
+        let got = measure(which, moved).get(m).unwrap();
+        assert!(
+            (got - at_rest).abs() <= 0.002,
+            "{which:?} moved {moved} m: {m:?} {} vs {} mm",
+            mm(got),
+            mm(at_rest)
+        );
+    }
+}
+
 #[test]
 fn the_hip_is_at_the_buttocks_prominence_wherever_the_trochanters_are() {
     let m = measure(&[], 0.0);
@@ -178,16 +191,11 @@ fn the_hip_is_at_the_buttocks_prominence_wherever_the_trochanters_are() {
     assert!((hip - want).abs() < 1e-4, "hip {hip} vs {want}");
     // The landmarks' own level (the Trochanterions, 2 cm under the bump) would be 2.6 mm short.
     assert!(want - girth_at(0.88) > 0.002);
-    for moved in [-0.02, 0.02] {
-        let m = measure(&["Rt. Trochanterion", "Lt. Trochanterion"], moved);
-        let got = m.get(Measure::HipGirth).unwrap();
-        assert!(
-            (got - hip).abs() <= 0.002,
-            "trochanters moved {moved} m: hip {} vs {} mm",
-            mm(got),
-            mm(hip)
-        );
-    }
+    moved_2_cm_moves_at_most_2_mm(
+        &["Rt. Trochanterion", "Lt. Trochanterion"],
+        Measure::HipGirth,
+        hip,
+    );
 }
 
 #[test]
@@ -197,16 +205,11 @@ fn the_bust_is_at_its_prominence_wherever_the_thelions_are() {
     assert!((bust - want).abs() < 1e-4, "bust {bust} vs {want}");
     // The Thelions' own level (2 cm under the bump) would be over 2 mm short.
     assert!(want - girth_at(1.20) > 0.002);
-    for moved in [-0.02, 0.02] {
-        let m = measure(&["Rt. Thelion/Bustpoint", "Lt. Thelion/Bustpoint"], moved);
-        let got = m.get(Measure::BustGirth).unwrap();
-        assert!(
-            (got - bust).abs() <= 0.002,
-            "Thelions moved {moved} m: bust {} vs {} mm",
-            mm(got),
-            mm(bust)
-        );
-    }
+    moved_2_cm_moves_at_most_2_mm(
+        &["Rt. Thelion/Bustpoint", "Lt. Thelion/Bustpoint"],
+        Measure::BustGirth,
+        bust,
+    );
 }
 
 #[test]
