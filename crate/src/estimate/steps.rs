@@ -1,7 +1,8 @@
 //! [`estimate_landmarks`]: the 73 CAESAR landmarks on a bare scan, or the rest of a partial
 //! set. Steps (docs/landmarks-estimate.md gives the reasons and the measurements):
 //!
-//! 1. units from the body's extent (`mesh/units.rs`), the scan in metres, a closest-point index;
+//! 1. units from the body's extent (`mesh/units.rs`), the scan in metres, its stray pieces
+//!    floating off the body taken off (`mesh/strays.rs`), a closest-point index;
 //! 2. frame candidates from the principal axes (`frame.rs`), plus one from the given landmarks
 //!    when there are at least four; each fitted by similarity ICP, the lowest energy kept
 //!    (`candidates.rs`);
@@ -51,6 +52,7 @@ use crate::landmarks::{
 };
 use crate::mesh::bounding_extent;
 use crate::mesh::similarity::similarity;
+use crate::mesh::strays::remove_strays;
 use crate::mesh::units::{detect_units, Units};
 use crate::mesh::Mesh;
 use crate::template::hand::hands;
@@ -134,6 +136,12 @@ pub fn estimate_landmarks(
         .unwrap_or_else(|| detect_units(bounding_extent(&input.scan.positions)));
     let to_m = units.scale_to_metres();
     let scan = input.scan.scaled(to_m);
+    // Stray pieces floating off the body go first: they widened the extents the frame
+    // candidates are scaled by, and a body was fitted at the wrong size (issue 31).
+    let (scan, strays) = match remove_strays(&scan, 1.0, &params.strays) {
+        Some((kept, removal)) => (kept, Some(removal)),
+        None => (scan, None),
+    };
     let index = SurfaceIndex::new(&scan).map_err(EstimateError::Scan)?;
     let given = given_landmarks(input.given);
     let given_m: Vec<(usize, Point3<f64>)> = given.iter().map(|(i, p)| (*i, p * to_m)).collect();
@@ -420,6 +428,7 @@ pub fn estimate_landmarks(
     let report = EstimateReport {
         units,
         units_detected: input.units.is_none(),
+        strays,
         frame: FrameReport::of(&best),
         candidates,
         given: given.len(),

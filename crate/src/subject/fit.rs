@@ -1,6 +1,8 @@
-//! [`fit_subject`]: one subject from what was read to a checked fit — the landmark policy, the RBF
-//! warp and fine alignment ([`align_scan`]), the quality check, the frame and each measurement's
+//! [`fit_subject`]: one subject from what was read to a checked fit — the landmark policy, the
+//! scan's stray pieces taken off (`mesh/strays.rs`), the RBF warp and fine alignment ([`align_scan`]), the quality check, the frame and each measurement's
 //! trust from where its landmarks came (`measure/trust.rs`) — and its report.
+
+use std::borrow::Cow;
 
 use nalgebra::Point3;
 
@@ -18,6 +20,7 @@ use crate::measure::{
     measurements_support, measurements_trust, note_acromia_on_vertices, upright, BodyMeasurer,
     MeasureParams, MeasurementTrust, Origin, TrustParams,
 };
+use crate::mesh::strays::remove_strays;
 use crate::mesh::units::Units;
 use crate::template::{Resolution, Template};
 
@@ -74,10 +77,16 @@ pub fn fit_subject(
 ) -> Result<SubjectFit, SubjectError> {
     let (units, units_detected) = input.scan_units();
     let landmarks = subject_landmarks(template, input, prior, options, observer)?;
+    // Stray pieces floating off the body are not fitted (the estimate takes them off too).
+    let (scan, strays) = match remove_strays(&input.scan, units.scale_to_metres(), &options.strays)
+    {
+        Some((kept, removal)) => (Cow::Owned(kept), Some(removal)),
+        None => (Cow::Borrowed(&input.scan), None),
+    };
     let align_input = AlignInput {
         template,
         base_template,
-        scan: &input.scan,
+        scan: &scan,
         landmarks: &landmarks.set,
         units: Some(units),
     };
@@ -130,6 +139,7 @@ pub fn fit_subject(
             &TrustParams::default(),
         ),
         landmarks: landmarks.report,
+        strays,
         quality,
         to_template,
         alignment: alignment.report.clone(),

@@ -1,12 +1,13 @@
 //! Every choice of the path from files to a fit, with its default: the alignment's parameters,
-//! whether given landmarks are checked, the quality thresholds and the landmark estimate's
-//! parameters. `bodyspace align` and `bodyspace batch` share their flags for these
+//! whether given landmarks are checked, the quality thresholds, the landmark estimate's
+//! parameters and what counts as a stray piece of the scan. `bodyspace align` and `bodyspace batch` share their flags for these
 //! (`cli/subject_args.rs`); the app sends the same fields as JSON.
 
 use serde::{Deserialize, Serialize};
 
 use crate::align::{AlignParams, QualityThresholds};
 use crate::estimate::Orientation;
+use crate::mesh::strays::StrayParams;
 
 pub use crate::estimate::check::NEARLY_FULL;
 
@@ -26,6 +27,9 @@ pub struct SubjectOptions {
     /// Which way is up on the scans (and which way they face), when a person said so; the
     /// landmark estimate then tries only that frame. Default `None`: the estimate finds it.
     pub orientation: Option<Orientation>,
+    /// Small pieces floating off the body, taken off the scan before the fit
+    /// (`mesh/strays.rs`; its defaults there), as the landmark estimate takes them off.
+    pub strays: StrayParams,
 }
 
 impl Default for SubjectOptions {
@@ -36,6 +40,7 @@ impl Default for SubjectOptions {
             thresholds: QualityThresholds::default(),
             nearly_full: NEARLY_FULL,
             orientation: None,
+            strays: StrayParams::default(),
         }
     }
 }

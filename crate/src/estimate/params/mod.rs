@@ -21,6 +21,7 @@ pub use self_check::SelfCheckParams;
 use serde::{Deserialize, Serialize};
 
 use crate::align::FineAlignParams;
+use crate::mesh::strays::StrayParams;
 
 /// Parameters of [`super::estimate_landmarks`].
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -94,6 +95,9 @@ pub struct EstimateParams {
     pub confidence_residual: f64,
     /// When the estimate calls itself doubtful or failed (`self_check.rs`).
     pub self_check: SelfCheckParams,
+    /// Small pieces floating off the body, taken off the scan first (`mesh/strays.rs`; its
+    /// defaults there).
+    pub strays: StrayParams,
 }
 
 impl Default for EstimateParams {
@@ -124,6 +128,7 @@ impl Default for EstimateParams {
             confidence_error: 0.03,
             confidence_residual: 0.01,
             self_check: SelfCheckParams::default(),
+            strays: StrayParams::default(),
         }
     }
 }
