@@ -271,10 +271,18 @@ export interface MeasurementTrust {
 /** The core's report of one subject (`SubjectReport`): the alignment's report and what the path added. */
 export interface SubjectReport extends AlignReport {
   landmarks: LandmarkPolicyReport;
+  /** The stray pieces taken off the scan before the fit (`mesh/strays.rs`), when there were any. */
+  strays?: ScanRemoval;
   quality: QualityReport | null;
   to_template: ToTemplate;
   /** Every measurement's trust, in the core's order of measurements. */
   measurement_trust: MeasurementTrust[];
+}
+
+/** What the core took off a scan before fitting it, and that in words. */
+export interface ScanRemoval {
+  vertices: number;
+  words: string;
 }
 
 /** The fitted template and the per-vertex distance (metres) to the scan. */
