@@ -1,6 +1,6 @@
 // Inputs and results of the RBF warp (paper §3.1) and fine alignment (§3.2). No DOM here.
 import type { DistanceHeat } from './heat-scale';
-import type { SelfCheck } from './landmark-entry';
+import type { ScanRemoval, SelfCheck } from './landmark-entry';
 import type { Orientation } from './orientation';
 import type { TemplateResolution } from './template-data';
 import type { Units } from './results';
@@ -277,12 +277,6 @@ export interface SubjectReport extends AlignReport {
   to_template: ToTemplate;
   /** Every measurement's trust, in the core's order of measurements. */
   measurement_trust: MeasurementTrust[];
-}
-
-/** What the core took off a scan before fitting it, and that in words. */
-export interface ScanRemoval {
-  vertices: number;
-  words: string;
 }
 
 /** The fitted template and the per-vertex distance (metres) to the scan. */
