@@ -4,7 +4,9 @@
 //! 1. units from the body's extent (`mesh/units.rs`), the scan in metres, its stray pieces
 //!    floating off the body taken off (`mesh/strays.rs`), a closest-point index;
 //! 2. frame candidates from the principal axes (`frame.rs`), plus one from the given landmarks
-//!    when there are at least four; each fitted by similarity ICP, the lowest energy kept
+//!    when there are at least four; without those, the head's end from the scan's shape
+//!    (`up.rs`) and then the way the feet reach (`facing.rs`) may leave out the candidates
+//!    upside down and back to front; each fitted by similarity ICP, the lowest energy kept
 //!    (`candidates.rs`);
 //! 3. the segment-wise rigid fit of the template's parts to the scan's pose (`segments.rs`),
 //!    then each hand's wrist and turn from the scan's surface beyond the wrist (`hand/`); with
@@ -31,6 +33,7 @@ use super::check::{judge_given, CheckParams, NEARLY_FULL};
 use super::confidence::{confidence, neighbourhoods, residual};
 use super::error::EstimateError;
 use super::expected::expected_positions;
+use super::facing::feet_forward;
 use super::frame::{same_frame, FrameReport};
 use super::hand::pose_hands;
 use super::matching::Matching;
@@ -187,6 +190,15 @@ pub fn estimate_landmarks(
     if given_frame.is_none() && input.orientation.is_none() && params.head_end_decisive > 0.0 {
         if let Some(end) = head_end(&scan.positions, &scan.triangles, params.head_end_decisive) {
             starts.retain(|(_, t)| (t.rotation * Vector3::y()).dot(&end.up) > 0.0);
+            // With up known, the feet may say which way is forward: hair or a pose had made the
+            // back-to-front fit the closer one (issue 31).
+            let decisive = params.feet_forward_decisive;
+            if let Some(feet) = (decisive > 0.0)
+                .then(|| feet_forward(&scan.positions, &scan.triangles, &end.up, decisive))
+                .flatten()
+            {
+                starts.retain(|(_, t)| (t.rotation * Vector3::z()).dot(&feet.forward) > 0.0);
+            }
         }
     }
     let segment_starts = if given_m.len() >= 4 {
