@@ -57,14 +57,14 @@ pub fn frame_candidates(
     scan: &[Point3<f64>],
 ) -> Option<Vec<FrameCandidate>> {
     let axes = principal_axes(scan)?;
-    let scan_mid = body_centre(scan, &axes, 0);
+    let scan_mid = body_centre(scan, &axes, 1);
     let scan_height = extent_along(scan, &axes.column(0).into_owned());
     let template_height = extent_along(template, &Vector3::y());
     if !(scan_height > 0.0 && template_height > 0.0) {
         return None;
     }
     let scale = scan_height / template_height;
-    let template_mid = body_centre(template, &Matrix3::identity(), 1);
+    let template_mid = body_centre(template, &Matrix3::identity(), 0);
     let mut candidates = Vec::with_capacity(4);
     for up_sign in [1.0, -1.0] {
         for side_sign in [1.0, -1.0] {
@@ -130,28 +130,32 @@ pub(super) fn extent_along(points: &[Point3<f64>], axis: &Vector3<f64>) -> f64 {
     hi - lo
 }
 
-/// Where a frame candidate centres a body: along the up axis (column `up` of the orthonormal
-/// `axes`) the middle of the extent of `points` (the extent gives the candidate's scale), along
-/// the two axes across it the median of the points' coordinates. An arm raised sideways or held
-/// out reaches far to one side, and the middle of the extent across moved with it (20–30 cm
-/// towards a raised arm at 104°: the similarity fit then settled with the template shrunk to 0.86
-/// and turned 6°, development seed 9090 subject 1); the median stays on the trunk.
-pub(super) fn body_centre(points: &[Point3<f64>], axes: &Matrix3<f64>, up: usize) -> Vector3<f64> {
+/// Where a frame candidate centres a body: along the side-to-side axis (column `side` of the
+/// orthonormal `axes`) the median of the points' coordinates, along the other two the middle of
+/// the extent of `points` (along up the extent also gives the candidate's scale). An arm raised
+/// sideways reaches far to one side, and the middle of the extent across moved with it (20–30 cm
+/// towards an arm raised to 104°: the similarity fit then settled with the template shrunk to
+/// 0.86 and turned 6°, development seed 9090 subject 1); the median stays on the trunk.
+pub(super) fn body_centre(
+    points: &[Point3<f64>],
+    axes: &Matrix3<f64>,
+    side: usize,
+) -> Vector3<f64> {
     let mut centre = Vector3::zeros();
     let mut along: Vec<f64> = Vec::with_capacity(points.len());
     for k in 0..3 {
         let axis = axes.column(k).into_owned();
         along.clear();
         along.extend(points.iter().map(|p| p.coords.dot(&axis)));
-        let t = if k == up {
+        let t = if k == side {
+            median(&mut along)
+        } else {
             let (lo, hi) = along
                 .iter()
                 .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), &t| {
                     (lo.min(t), hi.max(t))
                 });
             0.5 * (lo + hi)
-        } else {
-            median(&mut along)
         };
         centre += axis * t;
     }
@@ -249,14 +253,14 @@ mod tests {
             pts.push(Point3::new(0.0, 1.8 + j as f64 * 0.05, 0.0));
         }
         let identity = Matrix3::identity();
-        let centre = body_centre(&pts, &identity, 1);
+        let centre = body_centre(&pts, &identity, 0);
         assert!((centre.x - 0.025).abs() <= 0.05, "{centre}");
-        assert!(centre.z.abs() <= 0.05, "{centre}");
-        // Along up, the middle of the extent (0 to 2.1), which the candidate's scale also spans.
+        // Along up and in depth, the middles of the extents (0 to 2.1; -0.1 to 0.15).
         assert!((centre.y - 1.05).abs() < 1e-12, "{centre}");
+        assert!((centre.z - 0.025).abs() < 1e-12, "{centre}");
         // The same point whichever way the axes point (an even count's median is symmetric).
         let turned = Matrix3::from_columns(&[-Vector3::x(), Vector3::y(), -Vector3::z()]);
-        assert!((body_centre(&pts, &turned, 1) - centre).norm() < 1e-12);
+        assert!((body_centre(&pts, &turned, 0) - centre).norm() < 1e-12);
         let mut values = [3.0, 1.0, 2.0, 10.0];
         assert_eq!(median(&mut values), 2.5);
         assert_eq!(median(&mut [4.0, -1.0, 7.0]), 4.0);

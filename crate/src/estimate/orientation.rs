@@ -113,12 +113,12 @@ pub fn orientation_candidates(
         return None;
     }
     let scale = scan_height / template_height;
-    let template_mid = body_centre(template, &Matrix3::identity(), 1);
+    let template_mid = body_centre(template, &Matrix3::identity(), 0);
     let candidates = facings
         .into_iter()
         .map(|facing| {
             let rotation = Matrix3::from_columns(&[up.cross(&facing), up, facing]);
-            let translation = body_centre(scan, &rotation, 1) - scale * (rotation * template_mid);
+            let translation = body_centre(scan, &rotation, 0) - scale * (rotation * template_mid);
             FrameCandidate {
                 start: crate::mesh::similarity::Similarity {
                     scale,
