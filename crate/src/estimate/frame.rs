@@ -133,9 +133,12 @@ pub(super) fn extent_along(points: &[Point3<f64>], axis: &Vector3<f64>) -> f64 {
 /// Where a frame candidate centres a body: along the side-to-side axis (column `side` of the
 /// orthonormal `axes`) the median of the points' coordinates, along the other two the middle of
 /// the extent of `points` (along up the extent also gives the candidate's scale). An arm raised
-/// sideways reaches far to one side, and the middle of the extent across moved with it (20–30 cm
-/// towards an arm raised to 104°: the similarity fit then settled with the template shrunk to
-/// 0.86 and turned 6°, development seed 9090 subject 1); the median stays on the trunk.
+/// sideways reaches far to one side, and the middle of the extent across moves with it (175 mm
+/// from the median on fresh seed 1212's subject 14, an arm at 120°; 13 mm on its neighbour with
+/// the arms down); from there the similarity fit settled with the template shrunk to 0.86 and
+/// turned 6° (development seed 9090 subject 1, an arm at 104°). The median stays on the trunk.
+/// In depth the middle of the extent stays: the median there moved ordinary subjects' landmarks
+/// (docs/landmarks-estimate.md, "The frame candidates centred on the trunk").
 pub(super) fn body_centre(
     points: &[Point3<f64>],
     axes: &Matrix3<f64>,
