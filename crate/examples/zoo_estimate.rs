@@ -140,7 +140,14 @@ mod native {
                         // whether it points the way the estimate's frame faces.
                         let feet = head_end(&c.scan.positions, &c.scan.triangles, 1.0)
                             .and_then(|h| {
-                                feet_forward(&c.scan.positions, &c.scan.triangles, &h.up, 0.0)
+                                let depth = Vector3::from(r.frame.facing);
+                                feet_forward(
+                                    &c.scan.positions,
+                                    &c.scan.triangles,
+                                    &h.up,
+                                    &depth,
+                                    0.0,
+                                )
                             })
                             .map_or("none".to_string(), |f| {
                                 format!(

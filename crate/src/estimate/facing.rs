@@ -8,10 +8,12 @@
 //! With `up` the body's up (from the head's end, `up.rs`) and the robust extent along it as
 //! there (the `EXTENT_PERCENTILE` quantiles of the heights of the triangles' vertices), the feet
 //! are the points of `FEET_SLAB` and the lower legs those of `SHIN_SLAB` (fractions of the extent
-//! from the bottom). The feet's reach is the horizontal part (square to `up`) of the difference of
-//! the two slabs' centroids; it says which way is forward when it is at least `decisive` times the
-//! extent long. Cut feet leave two slabs of the lower legs, which do not reach: the feet do not
-//! say. A floor or turntable left under the feet spreads around them and shortens the reach.
+//! from the bottom). The feet's reach is the difference of the two slabs' centroids along the
+//! body's front–back axis `depth` (square to `up`); it says which way is forward when it is at
+//! least `decisive` times the extent long. Only that axis is judged: an up tilted by a raised arm
+//! (the principal axis leans towards it, in the frontal plane) adds a shift across the body, not
+//! along it. Cut feet leave two slabs of the lower legs, which do not reach: the feet do not say.
+//! A floor or turntable left under the feet spreads around them and shortens the reach.
 
 use nalgebra::{Point3, Vector3};
 
@@ -25,22 +27,24 @@ const SHIN_SLAB: (f64, f64) = (0.06, 0.09);
 /// The feet's verdict on which way the body faces.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct FeetForward {
-    /// Forward (unit, square to up): the way the feet reach from the lower legs.
+    /// Forward (unit, ±`depth` made square to up): the way the feet reach from the lower legs.
     pub forward: Vector3<f64>,
-    /// How far (the scan's units) the feet's centroid lies forward of the lower legs'.
+    /// How far (the scan's units) the feet's centroid lies forward of the lower legs' along it.
     pub reach: f64,
 }
 
-/// The way the feet of the body in `positions` (the vertices of `triangles` only) reach, with
-/// `up` the way from the feet to the head; `None` when they reach less than `decisive` times the
-/// body's extent, or a slab is empty.
+/// The way along `depth` (the body's front–back axis, any length) that the feet of the body in
+/// `positions` (the vertices of `triangles` only) reach, with `up` the way from the feet to the
+/// head; `None` when they reach less than `decisive` times the body's extent, or a slab is empty.
 pub fn feet_forward(
     positions: &[Point3<f64>],
     triangles: &[[u32; 3]],
     up: &Vector3<f64>,
+    depth: &Vector3<f64>,
     decisive: f64,
 ) -> Option<FeetForward> {
     let up = up.try_normalize(1e-12)?;
+    let depth = (depth - up * depth.dot(&up)).try_normalize(1e-12)?;
     let mut used = vec![false; positions.len()];
     for t in triangles {
         for &v in t {
@@ -72,12 +76,10 @@ pub fn feet_forward(
         }
         (count > 0).then(|| sum / count as f64)
     };
-    let shift = centroid(FEET_SLAB)? - centroid(SHIN_SLAB)?;
-    let horizontal = shift - up * shift.dot(&up);
-    let reach = horizontal.norm();
-    (reach >= decisive * extent).then(|| FeetForward {
-        forward: horizontal / reach,
-        reach,
+    let along = (centroid(FEET_SLAB)? - centroid(SHIN_SLAB)?).dot(&depth);
+    (along.abs() >= decisive * extent).then(|| FeetForward {
+        forward: depth * along.signum(),
+        reach: along.abs(),
     })
 }
 
@@ -117,20 +119,25 @@ mod tests {
         let (points, triangles) = legs(0.19);
         let turn = nalgebra::Rotation3::from_euler_angles(1.2, -0.4, 2.5);
         let turned: Vec<Point3<f64>> = points.iter().map(|p| turn * p * 1000.0).collect();
-        let up = turn * Vector3::y();
-        let feet = feet_forward(&turned, &triangles, &up, 0.015).expect("the feet say");
-        assert!((feet.forward - turn * Vector3::z()).norm() < 1e-6);
-        // The feet's centroid, 0.065 m forward of the legs', in millimetres.
-        assert!((feet.reach - 65.0).abs() < 1.0, "{}", feet.reach);
+        let (up, depth) = (turn * Vector3::y(), turn * Vector3::z());
+        // Either way along the front-back axis, and with it leaning 20° off the horizontal.
+        for depth in [depth, -depth, depth + 0.36 * up] {
+            let feet = feet_forward(&turned, &triangles, &up, &depth, 0.015).expect("the feet say");
+            assert!((feet.forward - turn * Vector3::z()).norm() < 1e-6);
+            assert!((feet.reach - 65.0).abs() < 1.0, "{}", feet.reach);
+        }
+        // Across the body they do not reach.
+        assert_eq!(
+            feet_forward(&turned, &triangles, &up, &(turn * Vector3::x()), 0.015),
+            None
+        );
     }
 
     #[test]
     fn feet_that_do_not_reach_do_not_say() {
         // Feet as long forward as back (a foot 0.12 m long centred under the leg).
         let (points, triangles) = legs(0.06);
-        assert_eq!(
-            feet_forward(&points, &triangles, &Vector3::y(), 0.015),
-            None
-        );
+        let (up, depth) = (Vector3::y(), Vector3::z());
+        assert_eq!(feet_forward(&points, &triangles, &up, &depth, 0.015), None);
     }
 }

@@ -192,10 +192,12 @@ pub fn estimate_landmarks(
             starts.retain(|(_, t)| (t.rotation * Vector3::y()).dot(&end.up) > 0.0);
             // With up known, the feet may say which way is forward: hair or a pose had made the
             // back-to-front fit the closer one (issue 31).
+            // The candidates left face either way along one axis, the body's front-back one.
             let decisive = params.feet_forward_decisive;
-            if let Some(feet) = (decisive > 0.0)
-                .then(|| feet_forward(&scan.positions, &scan.triangles, &end.up, decisive))
-                .flatten()
+            let depth = starts.first().map(|(_, t)| t.rotation * Vector3::z());
+            if let Some(feet) = depth
+                .filter(|_| decisive > 0.0)
+                .and_then(|d| feet_forward(&scan.positions, &scan.triangles, &end.up, &d, decisive))
             {
                 starts.retain(|(_, t)| (t.rotation * Vector3::z()).dot(&feet.forward) > 0.0);
             }
