@@ -1,10 +1,12 @@
-//! [`fit_subject`]: one subject from what was read to a checked fit — the landmark policy, the RBF
+//! [`fit_subject`]: one subject from what was read to a checked fit — the landmark policy, the
+//! floor or turntable under the feet taken off the scan (`floor.rs`), the RBF
 //! warp and fine alignment ([`align_scan`]), the quality check, the frame and each measurement's
 //! trust from where its landmarks came (`measure/trust.rs`) — and its report.
 
 use nalgebra::Point3;
 
 use super::error::SubjectError;
+use super::floor::scan_without_floor;
 use super::frame::ToTemplate;
 use super::input::{read_subject, SubjectInput};
 use super::options::SubjectOptions;
@@ -74,10 +76,17 @@ pub fn fit_subject(
 ) -> Result<SubjectFit, SubjectError> {
     let (units, units_detected) = input.scan_units();
     let landmarks = subject_landmarks(template, input, prior, options, observer)?;
+    let (scan, floor) = scan_without_floor(
+        template,
+        &input.scan,
+        &landmarks.set,
+        units.scale_to_metres(),
+        &options.floor,
+    );
     let align_input = AlignInput {
         template,
         base_template,
-        scan: &input.scan,
+        scan: &scan,
         landmarks: &landmarks.set,
         units: Some(units),
     };
@@ -130,6 +139,7 @@ pub fn fit_subject(
             &TrustParams::default(),
         ),
         landmarks: landmarks.report,
+        floor,
         quality,
         to_template,
         alignment: alignment.report.clone(),

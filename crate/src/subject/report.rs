@@ -9,6 +9,7 @@ use super::frame::ToTemplate;
 use crate::align::{AlignmentReport, QualityReport};
 use crate::estimate::{SelfCheck, SuspiciousLandmark};
 use crate::measure::MeasurementTrust;
+use crate::mesh::floor::FloorRemoval;
 
 /// Where a subject's landmarks came from.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
@@ -55,6 +56,10 @@ pub struct LandmarkPolicyReport {
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct SubjectReport {
     pub landmarks: LandmarkPolicyReport,
+    /// The floor or turntable remnant taken off the scan before the fit (`mesh/floor.rs`), if
+    /// one was found under the feet.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub floor: Option<FloorRemoval>,
     /// The quality check of the fit (`align/quality.rs`); absent after the warp alone.
     pub quality: Option<QualityReport>,
     /// From the scan's frame and units into the template's.

@@ -21,6 +21,7 @@ pub use self_check::SelfCheckParams;
 use serde::{Deserialize, Serialize};
 
 use crate::align::FineAlignParams;
+use crate::mesh::floor::FloorParams;
 
 /// Parameters of [`super::estimate_landmarks`].
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -45,6 +46,9 @@ pub struct EstimateParams {
     /// the feet's end's), only the candidates with that end up are fitted; 0 turns it off.
     /// Default 0.75.
     pub head_end_decisive: f64,
+    /// The floor or turntable remnant under the feet, taken off the scan once the frame is
+    /// known (`mesh/floor.rs`; its defaults there).
+    pub floor: FloorParams,
     /// With given landmarks, the segment-wise fit runs from this many of the best candidates and
     /// the one whose landmarks lie nearer the given ones is kept. Default 2.
     pub segment_starts: usize,
@@ -104,6 +108,7 @@ impl Default for EstimateParams {
             same_frame_deg: 60.0,
             torso_close: 0.1,
             head_end_decisive: 0.75,
+            floor: FloorParams::default(),
             segment_starts: 2,
             segment_start_margin: 0.01,
             segment_iterations: 20,
