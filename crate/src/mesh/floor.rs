@@ -10,7 +10,10 @@
 //!    within `level_deg` of ±û: a remnant may be wound either way), among the heights from the
 //!    lowest vertex of a triangle to `search` above it (area-weighted histogram of the
 //!    triangles' centroid heights in bins of `bin`), refined to the area-weighted median height
-//!    h₀ of the level triangles within `layer` of the bin;
+//!    h₀ of the level triangles within `layer` of the bin; then û is turned to the plane's own
+//!    normal (the area-weighted mean normal of those triangles, `level_iterations` times, h₀
+//!    re-taken along it each time) and the heights taken along it: up from a body's fit leans a
+//!    few degrees, which lifts a turntable's far edge out of the layer;
 //! 2. **the footprint** of the body: the vertices from `footprint_from` to `footprint_to` above
 //!    h₀, projected across û (the feet and ankles, above any floor noise and any rim);
 //! 3. **the remnant**: every vertex with h < h₀ + `layer` (the plane's layer and anything below
@@ -30,7 +33,7 @@
 
 use std::collections::HashMap;
 
-use nalgebra::Vector3;
+use nalgebra::{Point3, Vector3};
 use serde::Serialize;
 
 use super::Mesh;
@@ -48,6 +51,9 @@ pub struct FloorParams {
     /// A triangle is level when its normal is within this angle of ±û (40°: a noisy floor
     /// sampled every 4 mm tilts its triangles by up to ≈ 30°).
     pub level_deg: f64,
+    /// The plane's normal refined from its own level faces this many times (3; up from a fit
+    /// may lean a few degrees).
+    pub level_iterations: usize,
     /// The fullest bins tried as the plane, in order, until one holds the evidence (3).
     pub tries: usize,
     /// Half the plane's thickness (0.008 m: four times the noise, and below the tops of the toes).
@@ -79,6 +85,7 @@ impl Default for FloorParams {
             bin: 0.004,
             level_deg: 40.0,
             tries: 3,
+            level_iterations: 3,
             layer: 0.008,
             footprint_from: 0.015,
             footprint_to: 0.15,
@@ -97,7 +104,7 @@ pub struct FloorRemoval {
     pub vertices: usize,
     /// Triangles removed (those using a removed vertex).
     pub triangles: usize,
-    /// The plane's height h₀ along up (the mesh's units: p·û of a point on it).
+    /// The plane's height h₀ along its own normal û (the mesh's units: p·û of a point on it).
     pub height: f64,
     /// Its height above the lowest vertex of a triangle (mm).
     pub above_lowest_mm: f64,
@@ -122,39 +129,32 @@ pub fn remove_floor(
     if !(to_m > 0.0 && to_m.is_finite()) {
         return None;
     }
-    let height: Vec<f64> = mesh
-        .positions
-        .iter()
-        .map(|p| p.coords.dot(&up) * to_m)
-        .collect();
-    let lowest = mesh
-        .triangles
-        .iter()
-        .flatten()
-        .map(|&v| height[v as usize])
-        .fold(f64::INFINITY, f64::min);
-    if !lowest.is_finite() {
-        return None;
-    }
+    let height = heights(mesh, &up, to_m);
+    let lowest = lowest_of_triangles(mesh, &height)?;
     let faces = level_faces(mesh, &up, &height, to_m, lowest, params);
-    let (across_a, across_b) = across(&up);
-    let flat: Vec<[f64; 2]> = mesh
-        .positions
-        .iter()
-        .map(|p| {
-            [
-                p.coords.dot(&across_a) * to_m,
-                p.coords.dot(&across_b) * to_m,
-            ]
-        })
-        .collect();
-    let (plane, remnant, area) =
-        plane_heights(&faces, lowest, params)
-            .into_iter()
-            .find_map(|plane| {
-                let (remnant, area) = remnant(mesh, &faces, &height, &flat, plane, params)?;
-                Some((plane, remnant, area))
-            })?;
+    let (plane, lowest, remnant, area) = plane_heights(&faces, lowest, params)
+        .into_iter()
+        .find_map(|plane| {
+            // The plane's own normal is up from here on: up from a body's fit may lean a
+            // few degrees, which lifts a turntable's far edge out of the layer.
+            let (up, plane) = level_up(&faces, up, plane, to_m, params);
+            let height = heights(mesh, &up, to_m);
+            let lowest = lowest_of_triangles(mesh, &height)?;
+            let faces = level_faces(mesh, &up, &height, to_m, lowest, params);
+            let (across_a, across_b) = across(&up);
+            let flat: Vec<[f64; 2]> = mesh
+                .positions
+                .iter()
+                .map(|p| {
+                    [
+                        p.coords.dot(&across_a) * to_m,
+                        p.coords.dot(&across_b) * to_m,
+                    ]
+                })
+                .collect();
+            let (remnant, area) = remnant(mesh, &faces, &height, &flat, plane, params)?;
+            Some((plane, lowest, remnant, area))
+        })?;
     let mut index = vec![u32::MAX; mesh.positions.len()];
     let mut positions = Vec::with_capacity(mesh.positions.len());
     for (v, p) in mesh.positions.iter().enumerate() {
@@ -186,11 +186,84 @@ pub fn remove_floor(
     Some((Mesh::new(positions, triangles), removal))
 }
 
+/// Each vertex's height p·û (m).
+fn heights(mesh: &Mesh, up: &Vector3<f64>, to_m: f64) -> Vec<f64> {
+    mesh.positions
+        .iter()
+        .map(|p| p.coords.dot(up) * to_m)
+        .collect()
+}
+
+/// The lowest height of a triangle's vertex; `None` without triangles.
+fn lowest_of_triangles(mesh: &Mesh, height: &[f64]) -> Option<f64> {
+    let lowest = mesh
+        .triangles
+        .iter()
+        .flatten()
+        .map(|&v| height[v as usize])
+        .fold(f64::INFINITY, f64::min);
+    lowest.is_finite().then_some(lowest)
+}
+
+/// The plane's own up and height (m): `level_iterations` times, the area-weighted mean normal
+/// of the level `faces` within `layer` of the plane (heights along the current up), and the
+/// area-weighted median height of those faces along it.
+fn level_up(
+    faces: &[LevelFace],
+    up: Vector3<f64>,
+    plane: f64,
+    to_m: f64,
+    params: &FloorParams,
+) -> (Vector3<f64>, f64) {
+    let (mut up, mut plane) = (up, plane);
+    for _ in 0..params.level_iterations {
+        let near: Vec<(f64, &LevelFace)> = faces
+            .iter()
+            .map(|f| (f.centroid.coords.dot(&up) * to_m, f))
+            .filter(|(h, _)| (h - plane).abs() <= params.layer)
+            .collect();
+        let sum: Vector3<f64> = near
+            .iter()
+            .map(|(_, f)| f.normal * f.normal.dot(&up).signum() * f.area)
+            .sum();
+        let Some(next) = sum.try_normalize(1e-12) else {
+            break;
+        };
+        let heights: Vec<(f64, f64)> = near
+            .iter()
+            .map(|(_, f)| (f.centroid.coords.dot(&next) * to_m, f.area))
+            .collect();
+        match weighted_median(heights) {
+            Some(h) => (up, plane) = (next, h),
+            None => break,
+        }
+    }
+    (up, plane)
+}
+
+/// The weighted median of `(value, weight)` pairs; `None` when they weigh nothing.
+fn weighted_median(mut pairs: Vec<(f64, f64)>) -> Option<f64> {
+    pairs.sort_by(|a, b| a.0.total_cmp(&b.0));
+    let total: f64 = pairs.iter().map(|(_, w)| w).sum();
+    let mut below = 0.0;
+    pairs
+        .iter()
+        .find(|(_, w)| {
+            below += w;
+            below >= 0.5 * total && total > 0.0
+        })
+        .map(|(v, _)| *v)
+}
+
 /// A level triangle near the bottom: its index, centroid height (m) and area (m²).
 struct LevelFace {
     triangle: usize,
     height: f64,
     area: f64,
+    /// Its unit normal, turned to point up.
+    normal: Vector3<f64>,
+    /// Its centroid (the mesh's units).
+    centroid: Point3<f64>,
 }
 
 /// The level triangles (normal within `level_deg` of ±`up`: a remnant's triangles may be wound
@@ -215,10 +288,12 @@ fn level_faces(
             let [a, b, c] = t.map(|v| mesh.positions[v as usize]);
             let n = (b - a).cross(&(c - a));
             let norm = n.norm();
-            (norm > 0.0 && n.dot(up).abs() >= cos * norm).then_some(LevelFace {
+            (norm > 0.0 && n.dot(up).abs() >= cos * norm).then(|| LevelFace {
                 triangle: k,
                 height: h,
                 area: 0.5 * norm * to_m * to_m,
+                normal: n.dot(up).signum() * n / norm,
+                centroid: Point3::from((a.coords + b.coords + c.coords) / 3.0),
             })
         })
         .collect()
@@ -243,18 +318,12 @@ fn plane_heights(faces: &[LevelFace], lowest: f64, params: &FloorParams) -> Vec<
             break;
         }
         let centre = lowest + (b as f64 + 0.5) * params.bin;
-        let mut near: Vec<(f64, f64)> = faces
+        let near: Vec<(f64, f64)> = faces
             .iter()
             .filter(|f| (f.height - centre).abs() <= params.layer)
             .map(|f| (f.height, f.area))
             .collect();
-        near.sort_by(|a, b| a.0.total_cmp(&b.0));
-        let weight: f64 = near.iter().map(|(_, a)| a).sum();
-        let mut below = 0.0;
-        let Some(&(h, _)) = near.iter().find(|(_, a)| {
-            below += a;
-            below >= 0.5 * weight
-        }) else {
+        let Some(h) = weighted_median(near) else {
             continue;
         };
         if heights.iter().all(|o| (o - h).abs() > params.layer) {
@@ -592,6 +661,11 @@ mod tests {
             r.height.abs() < 0.001 && (r.above_lowest_mm - 30.0).abs() < 1.0,
             "{r:?}"
         );
+        // Up from a body's fit leaning 4°: the disc's far edge 31 mm off the layer along it.
+        let lean = nalgebra::Rotation3::from_axis_angle(&Vector3::x_axis(), 4f64.to_radians());
+        let (kept, _) =
+            remove_floor(&mesh, &(lean * Vector3::y()), 1.0, &FloorParams::default()).unwrap();
+        only_the_remnant(&mesh, &kept, &disc, &mesh);
     }
 
     #[test]
