@@ -42,3 +42,95 @@ pub fn scan_without_floor<'a>(
         None => (Cow::Borrowed(scan), None),
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::landmarks::Landmark;
+    use crate::template::fixture::base_body;
+    use nalgebra::Point3;
+
+    /// The template at rest on a floor (every 1 cm, 2–12 cm beside the feet: the vertices below
+    /// 3 cm), z up in millimetres, and its landmarks in that frame; the body's vertex count.
+    fn on_floor() -> (Template, Mesh, LandmarkSet, usize) {
+        let body = base_body();
+        let lowest = body.rest.iter().map(|p| p.y).fold(f64::INFINITY, f64::min);
+        let feet: Vec<[f64; 2]> = body
+            .rest
+            .iter()
+            .filter(|p| p.y < lowest + 0.03)
+            .map(|p| [p.x, p.z])
+            .collect();
+        let beside = |x: f64, z: f64| {
+            let d = feet
+                .iter()
+                .map(|f| ((f[0] - x).powi(2) + (f[1] - z).powi(2)).sqrt())
+                .fold(f64::INFINITY, f64::min);
+            d > 0.02 && d <= 0.12
+        };
+        let mm = |p: &Point3<f64>| Point3::new(p.x, -p.z, p.y) * 1000.0;
+        let mut positions: Vec<Point3<f64>> = body.rest.iter().map(mm).collect();
+        let mut triangles = body.triangles.clone();
+        let n = positions.len();
+        let cells = 80;
+        let mut at = vec![None; (cells + 1) * (cells + 1)];
+        for j in 0..=cells {
+            for i in 0..=cells {
+                let (x, z) = (-0.4 + i as f64 * 0.01, -0.4 + j as f64 * 0.01);
+                if beside(x, z) {
+                    at[j * (cells + 1) + i] = Some(positions.len() as u32);
+                    positions.push(mm(&Point3::new(x, lowest - 0.002, z)));
+                }
+            }
+        }
+        for j in 0..cells {
+            for i in 0..cells {
+                let q = [(i, j), (i + 1, j), (i + 1, j + 1), (i, j + 1)]
+                    .map(|(a, b)| at[b * (cells + 1) + a]);
+                if let [Some(a), Some(b), Some(c), Some(d)] = q {
+                    triangles.extend([[a, b, c], [a, c, d]]);
+                }
+            }
+        }
+        let landmarks = LandmarkSet {
+            landmarks: body
+                .template
+                .landmark_vertices()
+                .iter()
+                .map(|(name, v)| Landmark {
+                    name: name.clone(),
+                    position: mm(&body.rest[*v as usize]),
+                })
+                .collect(),
+            ..LandmarkSet::default()
+        };
+        (body.template, Mesh::new(positions, triangles), landmarks, n)
+    }
+
+    #[test]
+    fn the_floor_goes_with_up_from_the_landmarks_and_the_body_stays() {
+        let (template, scan, landmarks, body) = on_floor();
+        let params = FloorParams::default();
+        let (kept, removal) = scan_without_floor(&template, &scan, &landmarks, 0.001, &params);
+        let removal = removal.expect("the floor is found");
+        // Every floor vertex goes; of the body's, only a few of the coarse template's sole edges
+        // (farther than `clear` from any vertex 1.5 cm up), never more than 1 cm above the floor.
+        let floor = &scan.positions[body..];
+        assert!(kept.positions.iter().all(|p| !floor.contains(p)));
+        let gone: Vec<&Point3<f64>> = scan.positions[..body]
+            .iter()
+            .filter(|p| !kept.positions.contains(p))
+            .collect();
+        assert_eq!(removal.vertices, floor.len() + gone.len());
+        assert!(gone.len() <= 20, "{} body vertices removed", gone.len());
+        assert!(gone.iter().all(|p| p.z < floor[0].z + 10.0), "{gone:?}");
+        assert!((removal.height - floor[0].z).abs() < 2.0, "{removal:?}");
+        // Three landmarks do not say which way is up: the scan stays as it is.
+        let three = LandmarkSet {
+            landmarks: landmarks.landmarks[..3].to_vec(),
+            ..LandmarkSet::default()
+        };
+        let (same, none) = scan_without_floor(&template, &scan, &three, 0.001, &params);
+        assert!(none.is_none() && matches!(same, Cow::Borrowed(_)));
+    }
+}
