@@ -268,9 +268,23 @@ export interface MeasurementTrust {
   words: string;
 }
 
+/** The floor or turntable remnant the core took off the scan before the fit (`mesh/floor.rs`). */
+export interface FloorRemoval {
+  vertices: number;
+  triangles: number;
+  /** The plane's height along its normal, in the scan's units. */
+  height: number;
+  above_lowest_mm: number;
+  area_cm2: number;
+  /** What was removed, in words. */
+  words: string;
+}
+
 /** The core's report of one subject (`SubjectReport`): the alignment's report and what the path added. */
 export interface SubjectReport extends AlignReport {
   landmarks: LandmarkPolicyReport;
+  /** Present when a floor or turntable was found under the feet and taken off. */
+  floor?: FloorRemoval;
   quality: QualityReport | null;
   to_template: ToTemplate;
   /** Every measurement's trust, in the core's order of measurements. */
