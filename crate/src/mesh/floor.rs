@@ -11,9 +11,9 @@
 //!    lowest vertex of a triangle to `search` above it (area-weighted histogram of the
 //!    triangles' centroid heights in bins of `bin`), refined to the area-weighted median height
 //!    h₀ of the level triangles within `layer` of the bin; then û is turned to the plane's own
-//!    normal (the least-squares plane through those triangles' centroids, `level_iterations` times, h₀
-//!    re-taken along it each time) and the heights taken along it: up from a body's fit leans a
-//!    few degrees, which lifts a turntable's far edge out of the layer;
+//!    normal (the least-squares plane through those triangles' centroids, `level_iterations`
+//!    times, h₀ re-taken along it each time) and the heights taken along it: up from a body's
+//!    fit leans a few degrees, which lifts a turntable's far edge out of the layer;
 //! 2. **the footprint** of the body: the vertices from `footprint_from` to `footprint_to` above
 //!    h₀, projected across û (the feet and ankles, above any floor noise and any rim);
 //! 3. **the remnant**: every vertex with h < h₀ + `layer` (the plane's layer and anything below
@@ -48,8 +48,8 @@ pub struct FloorParams {
     /// Bin of the height histogram of level area (0.004 m: the scanner's noise, ≈ 1 mm,
     /// well inside one or two bins).
     pub bin: f64,
-    /// A triangle is level when its normal is within this angle of ±û (40°: a noisy floor
-    /// sampled every 4 mm tilts its triangles by up to ≈ 30°).
+    /// A triangle is level when its normal is within this angle of ±û (40°: 1 mm of noise on a
+    /// floor sampled every 4 mm tilts its triangles by ≈ 20° typically).
     pub level_deg: f64,
     /// The plane's normal refined from its own level faces this many times (3; up from a fit
     /// may lean a few degrees).
