@@ -12,7 +12,10 @@ import { shapeReady } from './steps';
 import { bodyspaceBinary, synthSubjects } from './synth';
 
 /** `bodyspace align` on the files, with the core's defaults: its report. */
-function alignNatively(scan: { name: string; bytes: Buffer }, landmarks: { name: string; bytes: Buffer }): { quality: { rms_mm: number }; landmarks: { source: string; used: number } } {
+function alignNatively(
+  scan: { name: string; bytes: Buffer },
+  landmarks: { name: string; bytes: Buffer },
+): { quality: { rms_mm: number; flags: string[] }; landmarks: { source: string; used: number }; strays?: { pieces: number; words: string } } {
   const dir = mkdtempSync(join(tmpdir(), 'bodyspace-one-path-'));
   try {
     writeFileSync(join(dir, scan.name), scan.bytes);
@@ -55,4 +58,27 @@ test('the command line, the single scan and the batch give the same fit of the s
   await expect(page.locator('body')).toHaveAttribute('data-batch-finished', '2', { timeout: 300_000 });
   const row = page.locator('[data-testid="batch-row"][data-subject="scan_001"]');
   await expect(row.getByTestId('batch-rms')).toHaveText(expected);
+});
+
+test('stray pieces floating off a scan are left out alike by the command line and the app, which says so', async ({ page }) => {
+  test.setTimeout(300_000);
+  // The scanner zoo's `stray` class: lone points and small blobs floating off the body.
+  const files = synthSubjects(1, 31, 20, ['--scanner-class', 'stray']);
+  const scan = files.find((f) => f.name === 'scan_001.ply')!;
+  const lnd = files.find((f) => f.name === 'landmarks_001.lnd')!;
+  const native = alignNatively(scan, lnd);
+  expect(native.strays?.pieces ?? 0).toBeGreaterThan(10);
+  expect(native.quality.flags).not.toContain('high_rms');
+
+  await page.goto('./?debug');
+  await expect(page.locator('body')).toHaveAttribute('data-template-ready', 'true', { timeout: 60_000 });
+  await dropFiles(page, [scan, lnd]);
+  await waitForLoads(page, 1);
+  await expect(page.locator('body')).toHaveAttribute('data-rbf-state', 'done', { timeout: 60_000 });
+  await page.getByTestId('align-run').click();
+  await expect(page.locator('body')).toHaveAttribute('data-align-state', 'done', { timeout: 240_000 });
+  const single = Number(await page.getByTestId('align-rms').getAttribute('data-rms-mm'));
+  expect(single.toFixed(2)).toBe(native.quality.rms_mm.toFixed(2));
+  await expect(page.getByTestId('align-check')).toContainText(`Not fitted: ${native.strays!.words}`);
+  await expect(page.getByTestId('align-check')).not.toHaveAttribute('data-flags', /high_rms/);
 });

@@ -19,10 +19,11 @@ export function bodyspaceBinary(): string {
 
 /**
  * `n` synthetic subjects of population `seed`, scanned every `stepMm` (20 mm: ≈ 3,500-vertex
- * scans, quick to align): `scan_00i.ply` and `landmarks_00i.lnd` for each.
+ * scans, quick to align): `scan_00i.ply` and `landmarks_00i.lnd` for each. `extra`: more
+ * `bodyspace synth` arguments (e.g. `--scanner-class stray`).
  */
-export function synthSubjects(n: number, seed: number, stepMm = 20): TestFile[] {
-  return synthFolder(n, seed, stepMm).filter((f) => /^(scan_\d+\.ply|landmarks_\d+\.lnd)$/.test(f.name));
+export function synthSubjects(n: number, seed: number, stepMm = 20, extra: string[] = []): TestFile[] {
+  return synthFolder(n, seed, stepMm, extra).filter((f) => /^(scan_\d+\.ply|landmarks_\d+\.lnd)$/.test(f.name));
 }
 
 /**
@@ -30,10 +31,10 @@ export function synthSubjects(n: number, seed: number, stepMm = 20): TestFile[] 
  * besides each scan and its landmarks (`.lnd` and `.csv`), the ground truths `surface_ID.ply`
  * and `truth_ID.ply`, and the population's own files.
  */
-export function synthFolder(n: number, seed: number, stepMm = 20): TestFile[] {
+export function synthFolder(n: number, seed: number, stepMm = 20, extra: string[] = []): TestFile[] {
   const out = mkdtempSync(join(tmpdir(), 'bodyspace-synth-'));
   try {
-    execFileSync(bodyspaceBinary(), ['synth', '--n', String(n), '--seed', String(seed), '--step', String(stepMm), '--out', out], { stdio: 'ignore' });
+    execFileSync(bodyspaceBinary(), ['synth', '--n', String(n), '--seed', String(seed), '--step', String(stepMm), ...extra, '--out', out], { stdio: 'ignore' });
     return readdirSync(out, { withFileTypes: true })
       .filter((entry) => entry.isFile())
       .map((entry) => entry.name)

@@ -192,7 +192,8 @@ export class LandmarkStep {
     return (
       `the body's up is the scan's ${report.frame.up_axis} axis${up} and it faces ${report.frame.facing_axis}${facing}; units ${units}. ` +
       `${report.given} landmarks kept as given, ${report.estimated} estimated (markers from red, low confidence, to green, high); ` +
-      `the landmark-free fit is ${report.fit_rms_mm.toFixed(1)} mm RMS from the scan.`
+      `the landmark-free fit is ${report.fit_rms_mm.toFixed(1)} mm RMS from the scan.` +
+      (report.strays ? ` Not fitted: ${report.strays.words}.` : '')
     );
   }
 

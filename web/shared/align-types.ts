@@ -1,6 +1,6 @@
 // Inputs and results of the RBF warp (paper §3.1) and fine alignment (§3.2). No DOM here.
 import type { DistanceHeat } from './heat-scale';
-import type { SelfCheck } from './landmark-entry';
+import type { ScanRemoval, SelfCheck } from './landmark-entry';
 import type { Orientation } from './orientation';
 import type { TemplateResolution } from './template-data';
 import type { Units } from './results';
@@ -269,15 +269,12 @@ export interface MeasurementTrust {
 }
 
 /** The floor or turntable remnant the core took off the scan before the fit (`mesh/floor.rs`). */
-export interface FloorRemoval {
-  vertices: number;
+export interface FloorRemoval extends ScanRemoval {
   triangles: number;
   /** The plane's height along its normal, in the scan's units. */
   height: number;
   above_lowest_mm: number;
   area_cm2: number;
-  /** What was removed, in words. */
-  words: string;
 }
 
 /** The core's report of one subject (`SubjectReport`): the alignment's report and what the path added. */
@@ -285,6 +282,8 @@ export interface SubjectReport extends AlignReport {
   landmarks: LandmarkPolicyReport;
   /** Present when a floor or turntable was found under the feet and taken off. */
   floor?: FloorRemoval;
+  /** The stray pieces taken off the scan before the fit (`mesh/strays.rs`), when there were any. */
+  strays?: ScanRemoval;
   quality: QualityReport | null;
   to_template: ToTemplate;
   /** Every measurement's trust, in the core's order of measurements. */

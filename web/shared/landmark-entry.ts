@@ -73,6 +73,12 @@ export interface SelfCheckEvidence {
   uneven: { part: string; left_rms_mm: number; right_rms_mm: number }[];
 }
 
+/** What the core took off a scan before fitting it (stray pieces), and that in words. */
+export interface ScanRemoval {
+  vertices: number;
+  words: string;
+}
+
 /** The core's report of a landmark estimate (`EstimateReport`; the fields the page uses). */
 export interface EstimateReport {
   /** The 73 CAESAR landmarks in file order. */
@@ -87,6 +93,8 @@ export interface EstimateReport {
   /** RMS distance (mm) of the fitted template to the scan after the landmark-free fit. */
   fit_rms_mm: number;
   total_ms: number;
+  /** The stray pieces taken off the scan before anything else, when there were any. */
+  strays?: ScanRemoval;
 }
 
 /** A landmark estimate as the worker returns it: the 73 CAESAR landmarks in file order. */

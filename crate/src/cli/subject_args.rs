@@ -246,6 +246,7 @@ impl SubjectArgs {
             thresholds,
             nearly_full: self.nearly_full,
             orientation: self.orientation.orientation()?,
+            strays: Default::default(),
             ..SubjectOptions::default()
         })
     }

@@ -9,6 +9,7 @@
 //! * [`candidates`] — the similarity ICP of each candidate.
 //! * [`up`] — which end of the body is the head, from the scan's shape (width ratios at its
 //!   ends), before any fit.
+//! * [`facing`] — which way the body faces, from its feet reaching forward of the lower legs.
 //! * [`segments`] — the segment-wise rigid fit of the template's parts (`template::parts`,
 //!   shared with `align::part_pose`) to the scan's pose.
 //!   [`arm_swing`] — each arm's swing about the shoulder tried from several starts;
@@ -45,6 +46,7 @@ pub mod check;
 pub mod confidence;
 pub mod error;
 pub mod expected;
+pub mod facing;
 pub mod forearm_twist;
 pub mod frame;
 pub mod hand;

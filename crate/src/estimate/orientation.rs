@@ -5,7 +5,7 @@
 use nalgebra::{Matrix3, Point3, Vector3};
 use serde::{Deserialize, Serialize};
 
-use super::frame::{extent_along, frame_candidates, mid_of_extents, FrameCandidate};
+use super::frame::{body_centre, extent_along, frame_candidates, FrameCandidate};
 
 /// A scan direction named by its coordinate axis.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
@@ -83,7 +83,7 @@ impl Orientation {
 /// The frame candidates that agree with `orientation`: template up (+y) along the stated up,
 /// facing (+z) along the stated facing, or — without one — along ± the axis across up of the
 /// scan's smaller extent (a standing body is wider than it is deep). Scale and translation as
-/// [`frame_candidates`] makes them, from the extents along these axes. `None` when the scan has
+/// [`frame_candidates`] makes them, from the extent along up and the body's centre. `None` when the scan has
 /// no extent.
 pub fn orientation_candidates(
     template: &[Point3<f64>],
@@ -113,12 +113,12 @@ pub fn orientation_candidates(
         return None;
     }
     let scale = scan_height / template_height;
-    let template_mid = mid_of_extents(template, &Matrix3::identity());
+    let template_mid = body_centre(template, &Matrix3::identity(), 0);
     let candidates = facings
         .into_iter()
         .map(|facing| {
             let rotation = Matrix3::from_columns(&[up.cross(&facing), up, facing]);
-            let translation = mid_of_extents(scan, &rotation) - scale * (rotation * template_mid);
+            let translation = body_centre(scan, &rotation, 0) - scale * (rotation * template_mid);
             FrameCandidate {
                 start: crate::mesh::similarity::Similarity {
                     scale,

@@ -6,6 +6,7 @@ use super::frame::FrameReport;
 use super::self_check::SelfCheck;
 use super::suspicious::SuspiciousLandmark;
 use crate::mesh::floor::FloorRemoval;
+use crate::mesh::strays::StrayRemoval;
 use crate::mesh::units::Units;
 
 /// One frame candidate after its similarity fit.
@@ -41,6 +42,9 @@ pub struct EstimateReport {
     /// The scan's units, as given or detected.
     pub units: Units,
     pub units_detected: bool,
+    /// The stray pieces taken off the scan before anything else (`mesh/strays.rs`), if any.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub strays: Option<StrayRemoval>,
     /// The frame assumed (the best candidate after the whole fit).
     pub frame: FrameReport,
     /// Every candidate tried, by the energy of its similarity fit (the first is `frame`).

@@ -1,9 +1,12 @@
 //! [`estimate_landmarks`]: the 73 CAESAR landmarks on a bare scan, or the rest of a partial
 //! set. Steps (docs/landmarks-estimate.md gives the reasons and the measurements):
 //!
-//! 1. units from the body's extent (`mesh/units.rs`), the scan in metres, a closest-point index;
+//! 1. units from the body's extent (`mesh/units.rs`), the scan in metres, its stray pieces
+//!    floating off the body taken off (`mesh/strays.rs`), a closest-point index;
 //! 2. frame candidates from the principal axes (`frame.rs`), plus one from the given landmarks
-//!    when there are at least four; each fitted by similarity ICP, the lowest energy kept
+//!    when there are at least four; without those, the head's end from the scan's shape
+//!    (`up.rs`) and then the way the feet reach (`facing.rs`) may leave out the candidates
+//!    upside down and back to front; each fitted by similarity ICP, the lowest energy kept
 //!    (`candidates.rs`);
 //!    a floor or turntable remnant under the feet of the kept frame is then taken off the scan
 //!    (`mesh/floor.rs`);
@@ -32,6 +35,7 @@ use super::check::{judge_given, CheckParams, NEARLY_FULL};
 use super::confidence::{confidence, neighbourhoods, residual};
 use super::error::EstimateError;
 use super::expected::expected_positions;
+use super::facing::feet_forward;
 use super::frame::{same_frame, FrameReport};
 use super::hand::pose_hands;
 use super::matching::Matching;
@@ -54,6 +58,7 @@ use crate::landmarks::{
 use crate::mesh::bounding_extent;
 use crate::mesh::floor::remove_floor;
 use crate::mesh::similarity::similarity;
+use crate::mesh::strays::remove_strays;
 use crate::mesh::units::{detect_units, Units};
 use crate::mesh::Mesh;
 use crate::template::hand::hands;
@@ -137,6 +142,12 @@ pub fn estimate_landmarks(
         .unwrap_or_else(|| detect_units(bounding_extent(&input.scan.positions)));
     let to_m = units.scale_to_metres();
     let scan = input.scan.scaled(to_m);
+    // Stray pieces floating off the body go first: they widened the extents the frame
+    // candidates are scaled by, and a body was fitted at the wrong size (issue 31).
+    let (scan, strays) = match remove_strays(&scan, 1.0, &params.strays) {
+        Some((kept, removal)) => (kept, Some(removal)),
+        None => (scan, None),
+    };
     let index = SurfaceIndex::new(&scan).map_err(EstimateError::Scan)?;
     let given = given_landmarks(input.given);
     let given_m: Vec<(usize, Point3<f64>)> = given.iter().map(|(i, p)| (*i, p * to_m)).collect();
@@ -182,6 +193,15 @@ pub fn estimate_landmarks(
     if given_frame.is_none() && input.orientation.is_none() && params.head_end_decisive > 0.0 {
         if let Some(end) = head_end(&scan.positions, &scan.triangles, params.head_end_decisive) {
             starts.retain(|(_, t)| (t.rotation * Vector3::y()).dot(&end.up) > 0.0);
+            // With up known, the feet may say which way is forward: hair or a pose had made the
+            // back-to-front fit the closer one (issue 31).
+            let decisive = params.feet_forward_decisive;
+            if let Some(feet) = (decisive > 0.0)
+                .then(|| feet_forward(&scan.positions, &scan.triangles, &end.up, decisive))
+                .flatten()
+            {
+                starts.retain(|(_, t)| (t.rotation * Vector3::z()).dot(&feet.forward) > 0.0);
+            }
         }
     }
     let segment_starts = if given_m.len() >= 4 {
@@ -435,6 +455,7 @@ pub fn estimate_landmarks(
     let report = EstimateReport {
         units,
         units_detected: input.units.is_none(),
+        strays,
         frame: FrameReport::of(&best),
         candidates,
         given: given.len(),

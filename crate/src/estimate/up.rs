@@ -23,7 +23,7 @@ use nalgebra::{Matrix3, Point3, Vector3};
 use crate::mesh::principal_axes::principal_axes;
 
 /// Robust extent along the up axis: these quantiles of the heights.
-const EXTENT_PERCENTILE: f64 = 0.002;
+pub(super) const EXTENT_PERCENTILE: f64 = 0.002;
 /// The slab at an end and the slab below it, fractions of the extent from that end.
 const END_SLAB: (f64, f64) = (0.0, 0.08);
 const BELOW_SLAB: (f64, f64) = (0.15, 0.25);
@@ -142,7 +142,7 @@ fn slab_width(
 }
 
 /// The `q` quantile of `values` (nearest rank); `None` when empty.
-fn quantile(values: &[f64], q: f64) -> Option<f64> {
+pub(super) fn quantile(values: &[f64], q: f64) -> Option<f64> {
     if values.is_empty() {
         return None;
     }

@@ -88,8 +88,8 @@ pub struct MeasureParams {
     /// direction the surface may rise at most `acromion_turn_rise` above it within
     /// `acromion_turn_reach` to either side in the frontal plane (towards the neck and towards
     /// the arm; its profile in bins `acromion_turn_band` wide, within that of the point front to
-    /// back, `acromion::turn_rises`); otherwise the Acromion vertex stands. Defaults 0.03 m,
-    /// 0.003 m and 0.002 m.
+    /// back, `acromion::turn_rises`); otherwise the Acromion vertex stands. Defaults 0.04 m,
+    /// 0.003 m and 0.003 m.
     pub acromion_turn_reach: f64,
     pub acromion_turn_band: f64,
     pub acromion_turn_rise: f64,

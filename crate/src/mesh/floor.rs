@@ -155,35 +155,22 @@ pub fn remove_floor(
             let (remnant, area) = remnant(mesh, &faces, &height, &flat, plane, params)?;
             Some((plane, lowest, remnant, area))
         })?;
-    let mut index = vec![u32::MAX; mesh.positions.len()];
-    let mut positions = Vec::with_capacity(mesh.positions.len());
-    for (v, p) in mesh.positions.iter().enumerate() {
-        if !remnant[v] {
-            index[v] = positions.len() as u32;
-            positions.push(*p);
-        }
-    }
-    let triangles: Vec<[u32; 3]> = mesh
-        .triangles
-        .iter()
-        .filter(|t| t.iter().all(|&v| !remnant[v as usize]))
-        .map(|t| t.map(|v| index[v as usize]))
-        .collect();
-    let vertices = mesh.positions.len() - positions.len();
+    let keep: Vec<bool> = remnant.iter().map(|r| !r).collect();
+    let kept = mesh.with_vertices(&keep);
+    let vertices = mesh.positions.len() - kept.positions.len();
     let (above_lowest_mm, area_cm2) = ((plane - lowest) * 1000.0, area * 1e4);
     let removal = FloorRemoval {
         vertices,
-        triangles: mesh.triangles.len() - triangles.len(),
+        triangles: mesh.triangles.len() - kept.triangles.len(),
         height: plane / to_m,
         above_lowest_mm,
         area_cm2,
         words: format!(
-            "a floor or turntable under the feet was taken off the scan: {vertices} vertices, \
-             {area_cm2:.0} cm² of level surface {above_lowest_mm:.0} mm above the scan's lowest \
-             point"
+            "a floor or turntable under the feet ({vertices} vertices, {area_cm2:.0} cm² of level \
+             surface {above_lowest_mm:.0} mm above the scan's lowest point) was left out"
         ),
     };
-    Some((Mesh::new(positions, triangles), removal))
+    Some((kept, removal))
 }
 
 /// Each vertex's height p·û (m).

@@ -11,6 +11,7 @@
 //! * [`volume`]: enclosed volume and surface area.
 //! * [`summary`]: the one-look summary of a loaded scan.
 //! * [`surface_points`]: points spread over a mesh's triangles, everywhere or near a point.
+//! * [`strays`]: small pieces of a scan floating apart from the body, found and taken off.
 //! * `test_points` (tests only): small point sets the unit tests of several modules share.
 
 pub mod bounds;
@@ -19,6 +20,7 @@ pub mod normals;
 pub mod principal_axes;
 pub mod ray;
 pub mod similarity;
+pub mod strays;
 pub mod summary;
 pub mod surface_points;
 #[cfg(test)]

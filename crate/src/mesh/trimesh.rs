@@ -50,6 +50,29 @@ impl Mesh {
         }
     }
 
+    /// The mesh with only the vertices whose `keep` flag is set (`#V` flags), in their order, and
+    /// the triangles all of whose corners are kept, re-indexed.
+    pub fn with_vertices(&self, keep: &[bool]) -> Mesh {
+        let mut index = vec![u32::MAX; self.positions.len()];
+        let mut positions = Vec::with_capacity(self.positions.len());
+        for (v, p) in self.positions.iter().enumerate() {
+            if keep[v] {
+                index[v] = positions.len() as u32;
+                positions.push(*p);
+            }
+        }
+        let triangles = self
+            .triangles
+            .iter()
+            .filter(|t| t.iter().all(|&v| keep[v as usize]))
+            .map(|t| t.map(|v| index[v as usize]))
+            .collect();
+        Mesh {
+            positions,
+            triangles,
+        }
+    }
+
     /// Area-weighted unit vertex normals, `#V` ([`crate::mesh::normals::vertex_normals`]).
     pub fn vertex_normals(&self) -> Vec<Vector3<f64>> {
         vertex_normals(&self.positions, &self.triangles)
@@ -72,6 +95,18 @@ impl Mesh {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn with_vertices_keeps_the_triangles_of_kept_corners_reindexed() {
+        let p = |x: f64| Point3::new(x, 0.0, 0.0);
+        let mesh = Mesh::new(
+            vec![p(0.0), p(1.0), p(2.0), p(3.0)],
+            vec![[0, 1, 3], [1, 2, 3]],
+        );
+        let kept = mesh.with_vertices(&[false, true, true, true]);
+        assert_eq!(kept.positions, vec![p(1.0), p(2.0), p(3.0)]);
+        assert_eq!(kept.triangles, vec![[0, 1, 2]]);
+    }
 
     #[test]
     fn scaled_multiplies_positions_and_keeps_triangles() {

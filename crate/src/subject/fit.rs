@@ -1,7 +1,10 @@
 //! [`fit_subject`]: one subject from what was read to a checked fit — the landmark policy, the
-//! floor or turntable under the feet taken off the scan (`floor.rs`), the RBF
-//! warp and fine alignment ([`align_scan`]), the quality check, the frame and each measurement's
-//! trust from where its landmarks came (`measure/trust.rs`) — and its report.
+//! scan's stray pieces taken off (`mesh/strays.rs`), then the floor or turntable under the feet
+//! (`floor.rs`), the RBF warp and fine alignment ([`align_scan`]), the quality check, the frame
+//! and each measurement's trust from where its landmarks came (`measure/trust.rs`) — and its
+//! report.
+
+use std::borrow::Cow;
 
 use nalgebra::Point3;
 
@@ -20,6 +23,7 @@ use crate::measure::{
     measurements_support, measurements_trust, note_acromia_on_vertices, upright, BodyMeasurer,
     MeasureParams, MeasurementTrust, Origin, TrustParams,
 };
+use crate::mesh::strays::remove_strays;
 use crate::mesh::units::Units;
 use crate::template::{Resolution, Template};
 
@@ -76,9 +80,16 @@ pub fn fit_subject(
 ) -> Result<SubjectFit, SubjectError> {
     let (units, units_detected) = input.scan_units();
     let landmarks = subject_landmarks(template, input, prior, options, observer)?;
+    // Stray pieces floating off the body are not fitted (the estimate takes them off too).
+    let (scan, strays) = match remove_strays(&input.scan, units.scale_to_metres(), &options.strays)
+    {
+        Some((kept, removal)) => (Cow::Owned(kept), Some(removal)),
+        None => (Cow::Borrowed(&input.scan), None),
+    };
+    // With up from the landmarks, the floor or turntable under the feet is not fitted either.
     let (scan, floor) = scan_without_floor(
         template,
-        &input.scan,
+        &scan,
         &landmarks.set,
         units.scale_to_metres(),
         &options.floor,
@@ -140,6 +151,7 @@ pub fn fit_subject(
         ),
         landmarks: landmarks.report,
         floor,
+        strays,
         quality,
         to_template,
         alignment: alignment.report.clone(),

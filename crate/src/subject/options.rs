@@ -1,6 +1,6 @@
 //! Every choice of the path from files to a fit, with its default: the alignment's parameters,
-//! whether given landmarks are checked, the quality thresholds and the landmark estimate's
-//! parameters. `bodyspace align` and `bodyspace batch` share their flags for these
+//! whether given landmarks are checked, the quality thresholds, the landmark estimate's
+//! parameters and what counts as a stray piece of the scan. `bodyspace align` and `bodyspace batch` share their flags for these
 //! (`cli/subject_args.rs`); the app sends the same fields as JSON.
 
 use serde::{Deserialize, Serialize};
@@ -8,6 +8,7 @@ use serde::{Deserialize, Serialize};
 use crate::align::{AlignParams, QualityThresholds};
 use crate::estimate::Orientation;
 use crate::mesh::floor::FloorParams;
+use crate::mesh::strays::StrayParams;
 
 pub use crate::estimate::check::NEARLY_FULL;
 
@@ -30,6 +31,9 @@ pub struct SubjectOptions {
     /// The floor or turntable remnant under the feet, taken off the scan once the landmarks say
     /// which way is up (`mesh/floor.rs`; its defaults there).
     pub floor: FloorParams,
+    /// Small pieces floating off the body, taken off the scan before the fit
+    /// (`mesh/strays.rs`; its defaults there), as the landmark estimate takes them off.
+    pub strays: StrayParams,
 }
 
 impl Default for SubjectOptions {
@@ -41,6 +45,7 @@ impl Default for SubjectOptions {
             nearly_full: NEARLY_FULL,
             orientation: None,
             floor: FloorParams::default(),
+            strays: StrayParams::default(),
         }
     }
 }

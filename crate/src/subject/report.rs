@@ -10,6 +10,7 @@ use crate::align::{AlignmentReport, QualityReport};
 use crate::estimate::{SelfCheck, SuspiciousLandmark};
 use crate::measure::MeasurementTrust;
 use crate::mesh::floor::FloorRemoval;
+use crate::mesh::strays::StrayRemoval;
 
 /// Where a subject's landmarks came from.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
@@ -60,6 +61,9 @@ pub struct SubjectReport {
     /// one was found under the feet.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub floor: Option<FloorRemoval>,
+    /// The stray pieces taken off the scan before the fit (`mesh/strays.rs`), if any.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub strays: Option<StrayRemoval>,
     /// The quality check of the fit (`align/quality.rs`); absent after the warp alone.
     pub quality: Option<QualityReport>,
     /// From the scan's frame and units into the template's.

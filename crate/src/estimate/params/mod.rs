@@ -22,6 +22,7 @@ use serde::{Deserialize, Serialize};
 
 use crate::align::FineAlignParams;
 use crate::mesh::floor::FloorParams;
+use crate::mesh::strays::StrayParams;
 
 /// Parameters of [`super::estimate_landmarks`].
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -49,6 +50,11 @@ pub struct EstimateParams {
     /// The floor or turntable remnant under the feet, taken off the scan once the frame is
     /// known (`mesh/floor.rs`; its defaults there).
     pub floor: FloorParams,
+    /// When the shape says which end is the head, the feet say which way the body faces when
+    /// they reach at least this share of the body's extent forward of the lower legs (`facing.rs`;
+    /// on the template ≈ 0.03); only the candidates facing that way are then fitted. 0 turns it
+    /// off. Default 0.015 (2.5 cm on a 1.7 m body).
+    pub feet_forward_decisive: f64,
     /// With given landmarks, the segment-wise fit runs from this many of the best candidates and
     /// the one whose landmarks lie nearer the given ones is kept. Default 2.
     pub segment_starts: usize,
@@ -98,6 +104,9 @@ pub struct EstimateParams {
     pub confidence_residual: f64,
     /// When the estimate calls itself doubtful or failed (`self_check.rs`).
     pub self_check: SelfCheckParams,
+    /// Small pieces floating off the body, taken off the scan first (`mesh/strays.rs`; its
+    /// defaults there).
+    pub strays: StrayParams,
 }
 
 impl Default for EstimateParams {
@@ -109,6 +118,7 @@ impl Default for EstimateParams {
             torso_close: 0.1,
             head_end_decisive: 0.75,
             floor: FloorParams::default(),
+            feet_forward_decisive: 0.015,
             segment_starts: 2,
             segment_start_margin: 0.01,
             segment_iterations: 20,
@@ -129,6 +139,7 @@ impl Default for EstimateParams {
             confidence_error: 0.03,
             confidence_residual: 0.01,
             self_check: SelfCheckParams::default(),
+            strays: StrayParams::default(),
         }
     }
 }

@@ -1,0 +1,225 @@
+//! Stray pieces of a scan: small connected pieces floating apart from the body — dust, a
+//! reflection, a bit of the booth — which a scanner exports with the body (issue 31). Left in,
+//! the fit's scan → template distances counted them, and a good fit was reported as far from
+//! its scan (25 mm RMS against 1.2).
+//!
+//! The scan's pieces are its connected components ([`component_labels`]). The body's pieces are
+//! the largest and every piece holding at least `max_share` of the triangulated vertices (a body
+//! exported in parts: torso, arms, legs); a smaller piece is stray when every vertex of it lies
+//! more than `min_gap` from every vertex of the body's pieces. A small piece close to the body
+//! (a finger or an ear cut off by a hole, a floor remnant under a foot) stays. Vertices no
+//! triangle uses are not pieces and stay as they are (nothing matches or measures them).
+
+use kiddo::{ImmutableKdTree, SquaredEuclidean};
+use serde::{Deserialize, Serialize};
+
+use super::topology::component_labels;
+use super::Mesh;
+
+/// What makes a piece stray (module documentation), with its defaults.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(default)]
+pub struct StrayParams {
+    /// A piece with at least this share of the triangulated vertices is the body's; default
+    /// 0.01.
+    pub max_share: f64,
+    /// A smaller piece is stray when all of it lies farther than this from the body's pieces
+    /// (m); default 0.03 (the zoo's stray pieces float at least 10 cm off, a foot's floor
+    /// remnant within 1 cm).
+    pub min_gap: f64,
+}
+
+impl Default for StrayParams {
+    fn default() -> Self {
+        Self {
+            max_share: 0.01,
+            min_gap: 0.03,
+        }
+    }
+}
+
+/// What [`remove_strays`] took off the scan.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct StrayRemoval {
+    /// Stray pieces removed.
+    pub pieces: usize,
+    /// Their vertices.
+    pub vertices: usize,
+    /// In words, for the report.
+    pub words: String,
+}
+
+/// The scan without its stray pieces (module documentation), and what was removed: `mesh` in its
+/// own frame and units, `to_m` its units → metres. `None` when no piece is stray; else the mesh
+/// with the kept vertices in their order and the kept triangles re-indexed.
+pub fn remove_strays(mesh: &Mesh, to_m: f64, params: &StrayParams) -> Option<(Mesh, StrayRemoval)> {
+    if !(to_m > 0.0 && to_m.is_finite()) {
+        return None;
+    }
+    let (labels, count) = component_labels(mesh);
+    if count < 2 {
+        return None;
+    }
+    let mut sizes = vec![0usize; count];
+    for &l in labels.iter().filter(|&&l| l != u32::MAX) {
+        sizes[l as usize] += 1;
+    }
+    let used: usize = sizes.iter().sum();
+    let largest = (0..count).max_by_key(|&c| sizes[c])?;
+    let body: Vec<bool> = (0..count)
+        .map(|c| c == largest || sizes[c] as f64 >= params.max_share * used as f64)
+        .collect();
+    if body.iter().all(|&b| b) {
+        return None;
+    }
+    let coords: Vec<[f64; 3]> = mesh
+        .positions
+        .iter()
+        .zip(&labels)
+        .filter(|&(_, &l)| l != u32::MAX && body[l as usize])
+        .map(|(p, _)| [p.x * to_m, p.y * to_m, p.z * to_m])
+        .collect();
+    let tree: ImmutableKdTree<f64, 3> = ImmutableKdTree::new_from_slice(&coords).ok()?;
+    // A small piece is near the body when any of its vertices is.
+    let mut near = body.clone();
+    for (p, &l) in mesh.positions.iter().zip(&labels) {
+        if l == u32::MAX || near[l as usize] {
+            continue;
+        }
+        let q = [p.x * to_m, p.y * to_m, p.z * to_m];
+        let d2 = tree
+            .query(&q)
+            .nearest_one::<SquaredEuclidean<f64>>()
+            .execute()
+            .distance;
+        if d2 <= params.min_gap * params.min_gap {
+            near[l as usize] = true;
+        }
+    }
+    let stray = |l: u32| l != u32::MAX && !near[l as usize];
+    let pieces = (0..count).filter(|&c| !near[c]).count();
+    if pieces == 0 {
+        return None;
+    }
+    let keep: Vec<bool> = labels.iter().map(|&l| !stray(l)).collect();
+    let kept = mesh.with_vertices(&keep);
+    let vertices = mesh.positions.len() - kept.positions.len();
+    let gap_cm = params.min_gap * 100.0;
+    let words = format!(
+        "{pieces} stray piece{} of the scan ({vertices} vertices), each more than {gap_cm:.0} cm \
+         from the body, {} left out",
+        if pieces == 1 { "" } else { "s" },
+        if pieces == 1 { "was" } else { "were" },
+    );
+    Some((
+        kept,
+        StrayRemoval {
+            pieces,
+            vertices,
+            words,
+        },
+    ))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use nalgebra::Point3;
+
+    /// A closed box (8 vertices, 12 triangles) from `lo` to `hi`, appended to `mesh`.
+    fn add_box(mesh: &mut Mesh, lo: [f64; 3], hi: [f64; 3]) {
+        let base = mesh.positions.len() as u32;
+        for k in 0..8 {
+            mesh.positions.push(Point3::new(
+                if k & 1 == 0 { lo[0] } else { hi[0] },
+                if k & 2 == 0 { lo[1] } else { hi[1] },
+                if k & 4 == 0 { lo[2] } else { hi[2] },
+            ));
+        }
+        let faces = [
+            [0, 2, 3, 1],
+            [4, 5, 7, 6],
+            [0, 1, 5, 4],
+            [2, 6, 7, 3],
+            [0, 4, 6, 2],
+            [1, 3, 7, 5],
+        ];
+        for [a, b, c, d] in faces {
+            mesh.triangles.push([base + a, base + b, base + c]);
+            mesh.triangles.push([base + a, base + c, base + d]);
+        }
+    }
+
+    /// A speck: one triangle (3 vertices) at `at`, 10 mm across, appended to `mesh`.
+    fn add_speck(mesh: &mut Mesh, at: [f64; 3]) {
+        let base = mesh.positions.len() as u32;
+        for d in [[0.0, 0.0], [10.0, 0.0], [0.0, 10.0]] {
+            mesh.positions
+                .push(Point3::new(at[0] + d[0], at[1] + d[1], at[2]));
+        }
+        mesh.triangles.push([base, base + 1, base + 2]);
+    }
+
+    /// A "body" of `n` stacked boxes (each its own piece, touching the next: a body in parts,
+    /// 8·n vertices), in millimetres.
+    fn body(parts: usize) -> Mesh {
+        let mut mesh = Mesh::default();
+        for i in 0..parts {
+            let z = 300.0 * i as f64;
+            add_box(&mut mesh, [0.0, 0.0, z], [300.0, 200.0, z + 300.0]);
+        }
+        mesh
+    }
+
+    #[test]
+    fn far_small_pieces_go_and_near_ones_stay() {
+        // 40 parts of 8 vertices (2.5 % of the vertices each: the body's at a 2 % share) and
+        // specks of 3 (0.9 %): one 10 cm off the body, one 2 cm off (a bit cut off a foot).
+        let mut mesh = body(40);
+        let body_vertices = mesh.positions.len();
+        add_speck(&mut mesh, [400.0, 0.0, 0.0]);
+        add_speck(&mut mesh, [320.0, 0.0, 0.0]);
+        // A lone vertex: no triangle, stays.
+        mesh.positions.push(Point3::new(5000.0, 0.0, 0.0));
+        let params = StrayParams {
+            max_share: 0.02,
+            ..StrayParams::default()
+        };
+        let (kept, removal) = remove_strays(&mesh, 0.001, &params).expect("one stray piece");
+        assert_eq!(removal.pieces, 1);
+        assert_eq!(removal.vertices, 3);
+        assert_eq!(kept.positions.len(), body_vertices + 3 + 1);
+        assert_eq!(kept.triangles.len(), mesh.triangles.len() - 1);
+        assert!(kept.positions.iter().all(|p| p.x < 400.0 || p.x > 1000.0));
+        assert!(removal
+            .words
+            .contains("1 stray piece of the scan (3 vertices)"));
+    }
+
+    #[test]
+    fn a_body_in_large_parts_or_one_piece_loses_nothing() {
+        assert!(remove_strays(&body(1), 0.001, &StrayParams::default()).is_none());
+        // Parts far apart (a scan split at the joints and moved) are all large: all the body's.
+        let mut mesh = body(1);
+        add_box(&mut mesh, [2000.0, 0.0, 0.0], [2300.0, 200.0, 300.0]);
+        assert!(remove_strays(&mesh, 0.001, &StrayParams::default()).is_none());
+    }
+
+    #[test]
+    fn the_gap_is_in_metres_whatever_the_units() {
+        for (scale, to_m) in [(1.0, 0.001), (0.1, 0.01), (0.001, 1.0)] {
+            let mut mesh = body(40);
+            add_speck(&mut mesh, [400.0, 0.0, 0.0]);
+            add_speck(&mut mesh, [320.0, 0.0, 0.0]);
+            for p in &mut mesh.positions {
+                *p = Point3::from(p.coords * scale);
+            }
+            let params = StrayParams {
+                max_share: 0.02,
+                ..StrayParams::default()
+            };
+            let (_, removal) = remove_strays(&mesh, to_m, &params).expect("the speck is stray");
+            assert_eq!(removal.pieces, 1, "scale {scale}");
+        }
+    }
+}
