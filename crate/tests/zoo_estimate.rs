@@ -25,9 +25,12 @@ const SEED: u64 = 5757;
 /// Mean landmark error allowed per class (mm). Measured on held-out seed 4242 (3 subjects, four
 /// frames, the profile's scanner; docs/landmarks-estimate.md): worst subject 16–24 mm on every
 /// class, 25.4 mm with the feet cut; on this test's seed and coarse scanner 9.0–19.7 mm. A scan
-/// estimated upside down or back to front is 250–800 mm off.
+/// estimated upside down or back to front is 250–800 mm off. With the floor taken off the scan
+/// (2026-11-28) the floor and turntable classes measured 11.5–12.0 mm here, worst subject
+/// 14.6–14.8 mm on fresh seed 7676.
 fn tolerance_mm(class: ScannerClass) -> f64 {
     match class {
+        ScannerClass::Floor | ScannerClass::Turntable => 18.0,
         ScannerClass::Raw | ScannerClass::CrownCut | ScannerClass::FeetCut => 30.0,
         _ => 25.0,
     }

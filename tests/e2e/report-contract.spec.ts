@@ -19,6 +19,7 @@ type Keys<T> = { [K in keyof Required<T>]: boolean };
 
 const subject: Keys<SubjectReport> = {
   landmarks: true,
+  floor: false,
   strays: false,
   quality: true,
   to_template: true,

@@ -268,9 +268,20 @@ export interface MeasurementTrust {
   words: string;
 }
 
+/** The floor or turntable remnant the core took off the scan before the fit (`mesh/floor.rs`). */
+export interface FloorRemoval extends ScanRemoval {
+  triangles: number;
+  /** The plane's height along its normal, in the scan's units. */
+  height: number;
+  above_lowest_mm: number;
+  area_cm2: number;
+}
+
 /** The core's report of one subject (`SubjectReport`): the alignment's report and what the path added. */
 export interface SubjectReport extends AlignReport {
   landmarks: LandmarkPolicyReport;
+  /** Present when a floor or turntable was found under the feet and taken off. */
+  floor?: FloorRemoval;
   /** The stray pieces taken off the scan before the fit (`mesh/strays.rs`), when there were any. */
   strays?: ScanRemoval;
   quality: QualityReport | null;

@@ -137,14 +137,14 @@ function statusText(view: { iteration: number; maxIterations: number; stage: Ali
 /**
  * The fit's own check, in words: the quality flags raised (or none), the landmarks the core's
  * policy left out of the fit as suspicious, each with its distance and suggestion, and what the
- * core took off the scan before fitting it (stray pieces).
+ * core took off the scan before fitting it (stray pieces, a floor or turntable under the feet).
  */
 function checkNote(r: SubjectReport): HTMLElement {
   const flags = r.quality?.flags ?? [];
   const left = r.landmarks.left_out.map((l) => `${l.name}, ${l.distance_mm.toFixed(0)} mm from where the others put it (${l.suggestion})`);
   const text = flags.length && r.quality ? `Flagged: ${qualityText(r.quality)}.` : 'No quality flag raised.';
   const leftText = left.length ? ` Left out of the fit: ${left.join('; ')}.` : '';
-  const removed = [r.strays].flatMap((x) => (x ? [x.words] : []));
+  const removed = [r.strays, r.floor].flatMap((x) => (x ? [x.words] : []));
   const removedText = removed.length ? ` Not fitted: ${removed.join('; ')}.` : '';
   return h('p', { class: flags.length ? 'warn-note' : 'note', 'data-testid': 'align-check', 'data-flags': flags.join(' ') }, text + leftText + removedText);
 }

@@ -247,6 +247,7 @@ impl SubjectArgs {
             nearly_full: self.nearly_full,
             orientation: self.orientation.orientation()?,
             strays: Default::default(),
+            ..SubjectOptions::default()
         })
     }
 }

@@ -5,6 +5,7 @@ use serde::Serialize;
 use super::frame::FrameReport;
 use super::self_check::SelfCheck;
 use super::suspicious::SuspiciousLandmark;
+use crate::mesh::floor::FloorRemoval;
 use crate::mesh::strays::StrayRemoval;
 use crate::mesh::units::Units;
 
@@ -55,6 +56,10 @@ pub struct EstimateReport {
     pub landmarks: Vec<LandmarkReport>,
     /// Given landmarks far from where the scan puts them (not used to anchor the fit).
     pub flagged: Vec<SuspiciousLandmark>,
+    /// The floor or turntable remnant taken off the scan once the frame was known
+    /// (`mesh/floor.rs`), if one was found.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub floor: Option<FloorRemoval>,
     /// The estimate's verdict on itself, with its reasons in words (`self_check.rs`); the
     /// confidences already carry its factor.
     pub self_check: SelfCheck,

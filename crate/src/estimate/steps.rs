@@ -8,6 +8,8 @@
 //!    (`up.rs`) and then the way the feet reach (`facing.rs`) may leave out the candidates
 //!    upside down and back to front; each fitted by similarity ICP, the lowest energy kept
 //!    (`candidates.rs`);
+//!    a floor or turntable remnant under the feet of the kept frame is then taken off the scan
+//!    (`mesh/floor.rs`);
 //! 3. the segment-wise rigid fit of the template's parts to the scan's pose (`segments.rs`),
 //!    then each hand's wrist and turn from the scan's surface beyond the wrist (`hand/`); with
 //!    four or more given landmarks from the two best candidates, the one nearer them kept;
@@ -54,6 +56,7 @@ use crate::landmarks::{
     definition_sharpness, LandmarkSet, CAESAR_LANDMARKS, CAESAR_LANDMARK_COUNT,
 };
 use crate::mesh::bounding_extent;
+use crate::mesh::floor::remove_floor;
 use crate::mesh::similarity::similarity;
 use crate::mesh::strays::remove_strays;
 use crate::mesh::units::{detect_units, Units};
@@ -260,6 +263,18 @@ pub fn estimate_landmarks(
     if fitted.first().is_none_or(|(_, f)| f.matched == 0.0) {
         return Err(EstimateError::NoMatch);
     }
+    // With the frame known, a floor or turntable remnant under the feet is taken off the scan
+    // before the body's fit: left in, it was matched as the soles (issue 31).
+    let up = fitted[0].1.transform.rotation * Vector3::y();
+    let (scan, floor) = match remove_floor(&scan, &up, 1.0, &params.floor) {
+        Some((kept, removal)) => (kept, Some(removal)),
+        None => (scan, None),
+    };
+    let index = match floor {
+        Some(_) => SurfaceIndex::new(&scan).map_err(EstimateError::Scan)?,
+        None => index,
+    };
+    let matching = Matching::new(&index, params);
     let candidates_ms = now_ms() - started;
 
     // The best similarity fit decides the frame. Giving the two best the segment-wise fit and
@@ -449,6 +464,7 @@ pub fn estimate_landmarks(
         estimated: positions.iter().flatten().count() - given.len(),
         landmarks,
         flagged,
+        floor,
         self_check: checked,
         segment_rms_mm: segment_rms * 1000.0,
         fit_rms_mm: fine.report.template_to_scan.rms * 1000.0,

@@ -1,12 +1,15 @@
 //! [`fit_subject`]: one subject from what was read to a checked fit — the landmark policy, the
-//! scan's stray pieces taken off (`mesh/strays.rs`), the RBF warp and fine alignment ([`align_scan`]), the quality check, the frame and each measurement's
-//! trust from where its landmarks came (`measure/trust.rs`) — and its report.
+//! scan's stray pieces taken off (`mesh/strays.rs`), then the floor or turntable under the feet
+//! (`floor.rs`), the RBF warp and fine alignment ([`align_scan`]), the quality check, the frame
+//! and each measurement's trust from where its landmarks came (`measure/trust.rs`) — and its
+//! report.
 
 use std::borrow::Cow;
 
 use nalgebra::Point3;
 
 use super::error::SubjectError;
+use super::floor::scan_without_floor;
 use super::frame::ToTemplate;
 use super::input::{read_subject, SubjectInput};
 use super::options::SubjectOptions;
@@ -83,6 +86,14 @@ pub fn fit_subject(
         Some((kept, removal)) => (Cow::Owned(kept), Some(removal)),
         None => (Cow::Borrowed(&input.scan), None),
     };
+    // With up from the landmarks, the floor or turntable under the feet is not fitted either.
+    let (scan, floor) = scan_without_floor(
+        template,
+        &scan,
+        &landmarks.set,
+        units.scale_to_metres(),
+        &options.floor,
+    );
     let align_input = AlignInput {
         template,
         base_template,
@@ -139,6 +150,7 @@ pub fn fit_subject(
             &TrustParams::default(),
         ),
         landmarks: landmarks.report,
+        floor,
         strays,
         quality,
         to_template,

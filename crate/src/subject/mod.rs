@@ -7,6 +7,8 @@
 //! * [`policy`] — [`subject_landmarks`]: the landmark policy. A nearly full file is checked and
 //!   its suspicious landmarks left out; a partial file is filled in by the estimate, a scan
 //!   without a file gets the estimate's 73.
+//! * [`floor`] — [`scan_without_floor`]: the floor or turntable remnant under the feet taken off
+//!   the scan, up from the landmarks (`mesh/floor.rs`).
 //! * [`frame`] — [`ToTemplate`]: the unit scale and rigid motion from the scan's frame into the
 //!   template's (upright, y up, metres, facing +z), where bodies are compared — the shape
 //!   model's own rule (`pca/template_frame.rs`), recorded with the fit.
@@ -20,6 +22,7 @@
 
 pub mod error;
 pub mod fit;
+pub mod floor;
 pub mod frame;
 pub mod input;
 pub mod options;
@@ -28,6 +31,7 @@ pub mod report;
 
 pub use error::SubjectError;
 pub use fit::{fit_measurements_trust, fit_subject, fit_subject_files, SubjectFit};
+pub use floor::scan_without_floor;
 pub use frame::ToTemplate;
 pub use input::{read_subject, GivenLandmarks, SubjectInput};
 pub use options::SubjectOptions;

@@ -7,6 +7,7 @@ use serde::{Deserialize, Serialize};
 
 use crate::align::{AlignParams, QualityThresholds};
 use crate::estimate::Orientation;
+use crate::mesh::floor::FloorParams;
 use crate::mesh::strays::StrayParams;
 
 pub use crate::estimate::check::NEARLY_FULL;
@@ -27,6 +28,9 @@ pub struct SubjectOptions {
     /// Which way is up on the scans (and which way they face), when a person said so; the
     /// landmark estimate then tries only that frame. Default `None`: the estimate finds it.
     pub orientation: Option<Orientation>,
+    /// The floor or turntable remnant under the feet, taken off the scan once the landmarks say
+    /// which way is up (`mesh/floor.rs`; its defaults there).
+    pub floor: FloorParams,
     /// Small pieces floating off the body, taken off the scan before the fit
     /// (`mesh/strays.rs`; its defaults there), as the landmark estimate takes them off.
     pub strays: StrayParams,
@@ -40,6 +44,7 @@ impl Default for SubjectOptions {
             thresholds: QualityThresholds::default(),
             nearly_full: NEARLY_FULL,
             orientation: None,
+            floor: FloorParams::default(),
             strays: StrayParams::default(),
         }
     }

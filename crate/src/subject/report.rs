@@ -9,6 +9,7 @@ use super::frame::ToTemplate;
 use crate::align::{AlignmentReport, QualityReport};
 use crate::estimate::{SelfCheck, SuspiciousLandmark};
 use crate::measure::MeasurementTrust;
+use crate::mesh::floor::FloorRemoval;
 use crate::mesh::strays::StrayRemoval;
 
 /// Where a subject's landmarks came from.
@@ -56,6 +57,10 @@ pub struct LandmarkPolicyReport {
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct SubjectReport {
     pub landmarks: LandmarkPolicyReport,
+    /// The floor or turntable remnant taken off the scan before the fit (`mesh/floor.rs`), if
+    /// one was found under the feet.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub floor: Option<FloorRemoval>,
     /// The stray pieces taken off the scan before the fit (`mesh/strays.rs`), if any.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub strays: Option<StrayRemoval>,

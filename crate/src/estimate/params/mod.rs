@@ -21,6 +21,7 @@ pub use self_check::SelfCheckParams;
 use serde::{Deserialize, Serialize};
 
 use crate::align::FineAlignParams;
+use crate::mesh::floor::FloorParams;
 use crate::mesh::strays::StrayParams;
 
 /// Parameters of [`super::estimate_landmarks`].
@@ -46,6 +47,9 @@ pub struct EstimateParams {
     /// the feet's end's), only the candidates with that end up are fitted; 0 turns it off.
     /// Default 0.75.
     pub head_end_decisive: f64,
+    /// The floor or turntable remnant under the feet, taken off the scan once the frame is
+    /// known (`mesh/floor.rs`; its defaults there).
+    pub floor: FloorParams,
     /// When the shape says which end is the head, the feet say which way the body faces when
     /// they reach at least this share of the body's extent forward of the lower legs (`facing.rs`;
     /// on the template ≈ 0.03); only the candidates facing that way are then fitted. 0 turns it
@@ -113,6 +117,7 @@ impl Default for EstimateParams {
             same_frame_deg: 60.0,
             torso_close: 0.1,
             head_end_decisive: 0.75,
+            floor: FloorParams::default(),
             feet_forward_decisive: 0.015,
             segment_starts: 2,
             segment_start_margin: 0.01,
