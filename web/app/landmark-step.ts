@@ -16,6 +16,7 @@ import type { Orientation } from '../shared/orientation';
 import { METRES_PER_UNIT } from '../shared/results';
 import type { TemplateData } from '../shared/template-data';
 import { download } from '../ui/download';
+import { notFitted } from '../ui/format';
 import { sentence, type EstimateView, type LandmarkFormat } from '../ui/landmark-tools';
 import { LandmarksPanel, type LandmarkFacts } from '../ui/landmarks-panel';
 import { landmarkStyle } from '../view/landmark-style';
@@ -182,7 +183,7 @@ export class LandmarkStep {
     this.render();
   }
 
-  /** What the estimate assumed of the scan, in words. */
+  /** What the estimate assumed of the scan, and what of it it did not fit, in words. */
   private assumed(report: EstimateReport): string {
     const s = this.session;
     const units = s.scan && s.scanUnits === s.scan.summary.units_detected ? `${s.scanUnits} (detected)` : `${s.scanUnits} (as chosen)`;
@@ -193,7 +194,7 @@ export class LandmarkStep {
       `the body's up is the scan's ${report.frame.up_axis} axis${up} and it faces ${report.frame.facing_axis}${facing}; units ${units}. ` +
       `${report.given} landmarks kept as given, ${report.estimated} estimated (markers from red, low confidence, to green, high); ` +
       `the landmark-free fit is ${report.fit_rms_mm.toFixed(1)} mm RMS from the scan.` +
-      (report.strays ? ` Not fitted: ${report.strays.words}.` : '')
+      notFitted([report.strays, report.floor])
     );
   }
 

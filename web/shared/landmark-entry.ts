@@ -73,7 +73,7 @@ export interface SelfCheckEvidence {
   uneven: { part: string; left_rms_mm: number; right_rms_mm: number }[];
 }
 
-/** What the core took off a scan before fitting it (stray pieces), and that in words. */
+/** What the core took off a scan before fitting it (stray pieces, a floor), and that in words. */
 export interface ScanRemoval {
   vertices: number;
   words: string;
@@ -95,6 +95,8 @@ export interface EstimateReport {
   total_ms: number;
   /** The stray pieces taken off the scan before anything else, when there were any. */
   strays?: ScanRemoval;
+  /** The floor or turntable under the feet taken off once the frame was chosen, when one was found. */
+  floor?: ScanRemoval;
 }
 
 /** A landmark estimate as the worker returns it: the 73 CAESAR landmarks in file order. */

@@ -1,6 +1,7 @@
 // How numbers are written in the panels.
 
 import type { MeasurementTrust, QualityFlag, QualityReport } from '../shared/align-types';
+import type { ScanRemoval } from '../shared/landmark-entry';
 import type { Reading } from '../shared/shape-results';
 
 const integer = new Intl.NumberFormat('en-GB', { maximumFractionDigits: 0 });
@@ -68,4 +69,10 @@ export function flagName(flag: QualityFlag): string {
     landmark_estimate: 'doubtful landmark estimate',
   };
   return names[flag];
+}
+
+/** What the core took off the scan before fitting it (stray pieces, a floor), in its words: empty when nothing. */
+export function notFitted(removed: (ScanRemoval | undefined)[]): string {
+  const words = removed.flatMap((r) => (r ? [r.words] : []));
+  return words.length ? ` Not fitted: ${words.join('; ')}.` : '';
 }
