@@ -6,9 +6,12 @@
 //! The scan's pieces are its connected components ([`component_labels`]). The body's pieces are
 //! the largest and every piece holding at least `max_share` of the triangulated vertices (a body
 //! exported in parts: torso, arms, legs); a smaller piece is stray when every vertex of it lies
-//! more than `min_gap` from every vertex of the body's pieces. A small piece close to the body
-//! (a finger or an ear cut off by a hole, a floor remnant under a foot) stays. Vertices no
-//! triangle uses are not pieces and stay as they are (nothing matches or measures them).
+//! farther than the gap from every vertex of the body's pieces: `min_gap`, or `gap_edges` times
+//! the scan's median edge length where that is more (a coarse scan leaves its toes and
+//! hands in pieces several centimetres apart: at a 20 mm step, 49 vertices of a body's own would
+//! otherwise have gone). A small piece close to the body (a finger or an ear cut off by a hole, a
+//! floor remnant under a foot) stays. Vertices no triangle uses are not pieces and stay as they
+//! are (nothing matches or measures them).
 
 use kiddo::{ImmutableKdTree, SquaredEuclidean};
 use serde::{Deserialize, Serialize};
@@ -27,6 +30,9 @@ pub struct StrayParams {
     /// (m); default 0.03 (the zoo's stray pieces float at least 10 cm off, a foot's floor
     /// remnant within 1 cm).
     pub min_gap: f64,
+    /// …or farther than this many times the scan's median edge length, where that is more;
+    /// default 4 (a scan at 3–4 mm keeps the 3 cm).
+    pub gap_edges: f64,
 }
 
 impl Default for StrayParams {
@@ -34,6 +40,7 @@ impl Default for StrayParams {
         Self {
             max_share: 0.01,
             min_gap: 0.03,
+            gap_edges: 4.0,
         }
     }
 }
@@ -79,6 +86,9 @@ pub fn remove_strays(mesh: &Mesh, to_m: f64, params: &StrayParams) -> Option<(Me
         .filter(|&(_, &l)| l != u32::MAX && body[l as usize])
         .map(|(p, _)| [p.x * to_m, p.y * to_m, p.z * to_m])
         .collect();
+    let gap = params
+        .min_gap
+        .max(params.gap_edges * median_edge(mesh) * to_m);
     let tree: ImmutableKdTree<f64, 3> = ImmutableKdTree::new_from_slice(&coords).ok()?;
     // A small piece is near the body when any of its vertices is.
     let mut near = body.clone();
@@ -92,7 +102,7 @@ pub fn remove_strays(mesh: &Mesh, to_m: f64, params: &StrayParams) -> Option<(Me
             .nearest_one::<SquaredEuclidean<f64>>()
             .execute()
             .distance;
-        if d2 <= params.min_gap * params.min_gap {
+        if d2 <= gap * gap {
             near[l as usize] = true;
         }
     }
@@ -104,7 +114,7 @@ pub fn remove_strays(mesh: &Mesh, to_m: f64, params: &StrayParams) -> Option<(Me
     let keep: Vec<bool> = labels.iter().map(|&l| !stray(l)).collect();
     let kept = mesh.with_vertices(&keep);
     let vertices = mesh.positions.len() - kept.positions.len();
-    let gap_cm = params.min_gap * 100.0;
+    let gap_cm = gap * 100.0;
     let words = format!(
         "{pieces} stray piece{} of the scan ({vertices} vertices), each more than {gap_cm:.0} cm \
          from the body, {} left out",
@@ -119,6 +129,20 @@ pub fn remove_strays(mesh: &Mesh, to_m: f64, params: &StrayParams) -> Option<(Me
             words,
         },
     ))
+}
+
+/// The median length of the triangles' first edges (the mesh's units; 0 without triangles).
+fn median_edge(mesh: &Mesh) -> f64 {
+    let mut lengths: Vec<f64> = mesh
+        .triangles
+        .iter()
+        .map(|t| (mesh.positions[t[1] as usize] - mesh.positions[t[0] as usize]).norm())
+        .collect();
+    if lengths.is_empty() {
+        return 0.0;
+    }
+    let k = lengths.len() / 2;
+    *lengths.select_nth_unstable_by(k, |a, b| a.total_cmp(b)).1
 }
 
 #[cfg(test)]
@@ -181,8 +205,10 @@ mod tests {
         add_speck(&mut mesh, [320.0, 0.0, 0.0]);
         // A lone vertex: no triangle, stays.
         mesh.positions.push(Point3::new(5000.0, 0.0, 0.0));
+        // Edges of 30 cm: the gap from the edges is left out here (next test).
         let params = StrayParams {
             max_share: 0.02,
+            gap_edges: 0.0,
             ..StrayParams::default()
         };
         let (kept, removal) = remove_strays(&mesh, 0.001, &params).expect("one stray piece");
@@ -216,10 +242,32 @@ mod tests {
             }
             let params = StrayParams {
                 max_share: 0.02,
+                gap_edges: 0.0,
                 ..StrayParams::default()
             };
             let (_, removal) = remove_strays(&mesh, to_m, &params).expect("the speck is stray");
             assert_eq!(removal.pieces, 1, "scale {scale}");
         }
+    }
+
+    #[test]
+    fn on_a_coarse_mesh_the_gap_grows_with_its_edges() {
+        // The body's edges are 30 cm (median), so the gap is 4 × 0.3 = 1.2 m: a speck 10 cm off
+        // stays, one 2 m off goes.
+        let mut mesh = body(40);
+        add_speck(&mut mesh, [400.0, 0.0, 0.0]);
+        add_speck(&mut mesh, [2300.0, 0.0, 0.0]);
+        let params = StrayParams {
+            max_share: 0.02,
+            ..StrayParams::default()
+        };
+        let (kept, removal) = remove_strays(&mesh, 0.001, &params).expect("the far speck");
+        assert_eq!(removal.pieces, 1);
+        assert!(kept.positions.iter().all(|p| p.x < 1000.0));
+        assert!(
+            removal.words.contains("more than 120 cm"),
+            "{}",
+            removal.words
+        );
     }
 }
