@@ -6,8 +6,8 @@ import { execFileSync } from 'node:child_process';
 import { mkdtempSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
-import { expect, test } from '@playwright/test';
-import { dropFiles, waitForLoads } from './fixtures';
+import { expect, test, type Page } from '@playwright/test';
+import { dropFiles, waitForLoads, type TestFile } from './fixtures';
 import { shapeReady } from './steps';
 import { bodyspaceBinary, synthSubjects } from './synth';
 
@@ -35,6 +35,16 @@ function alignNatively(
   }
 }
 
+/** Drops a scan and its landmark file on the open page and aligns it with the panel's defaults: the RMS (mm) the page shows. */
+async function alignSingle(page: Page, files: TestFile[]): Promise<number> {
+  await dropFiles(page, files);
+  await waitForLoads(page, 1);
+  await expect(page.locator('body')).toHaveAttribute('data-rbf-state', 'done', { timeout: 60_000 });
+  await page.getByTestId('align-run').click();
+  await expect(page.locator('body')).toHaveAttribute('data-align-state', 'done', { timeout: 240_000 });
+  return Number(await page.getByTestId('align-rms').getAttribute('data-rms-mm'));
+}
+
 test('the command line, the single scan and the batch give the same fit of the same files', async ({ page }) => {
   test.setTimeout(420_000);
   const files = synthSubjects(2, 31);
@@ -49,12 +59,7 @@ test('the command line, the single scan and the batch give the same fit of the s
   await shapeReady(page);
 
   // The single scan: dropped with its landmark file, aligned with the panel's defaults.
-  await dropFiles(page, [scan, lnd]);
-  await waitForLoads(page, 1);
-  await expect(page.locator('body')).toHaveAttribute('data-rbf-state', 'done', { timeout: 60_000 });
-  await page.getByTestId('align-run').click();
-  await expect(page.locator('body')).toHaveAttribute('data-align-state', 'done', { timeout: 240_000 });
-  const single = Number(await page.getByTestId('align-rms').getAttribute('data-rms-mm'));
+  const single = await alignSingle(page, [scan, lnd]);
   expect(single.toFixed(2), `single scan ${single} mm, command line ${native.quality.rms_mm} mm`).toBe(expected);
 
   // The batch: both subjects dropped at once, each aligned in a pool worker.
@@ -83,12 +88,7 @@ for (const [scannerClass, field] of [
 
     await page.goto('./?debug');
     await expect(page.locator('body')).toHaveAttribute('data-template-ready', 'true', { timeout: 60_000 });
-    await dropFiles(page, [scan, lnd]);
-    await waitForLoads(page, 1);
-    await expect(page.locator('body')).toHaveAttribute('data-rbf-state', 'done', { timeout: 60_000 });
-    await page.getByTestId('align-run').click();
-    await expect(page.locator('body')).toHaveAttribute('data-align-state', 'done', { timeout: 240_000 });
-    const single = Number(await page.getByTestId('align-rms').getAttribute('data-rms-mm'));
+    const single = await alignSingle(page, [scan, lnd]);
     expect(single.toFixed(2)).toBe(native.quality.rms_mm.toFixed(2));
     await expect(page.getByTestId('align-check')).toContainText(removed!.words);
     await expect(page.getByTestId('align-check')).not.toHaveAttribute('data-flags', /high_rms/);

@@ -150,28 +150,20 @@ mod tests {
     use super::*;
     use nalgebra::Point3;
 
-    /// A closed box (8 vertices, 12 triangles) from `lo` to `hi`, appended to `mesh`.
+    /// A closed box (the unit cube's 8 vertices and 12 triangles) from `lo` to `hi`, appended
+    /// to `mesh`.
     fn add_box(mesh: &mut Mesh, lo: [f64; 3], hi: [f64; 3]) {
         let base = mesh.positions.len() as u32;
-        for k in 0..8 {
-            mesh.positions.push(Point3::new(
-                if k & 1 == 0 { lo[0] } else { hi[0] },
-                if k & 2 == 0 { lo[1] } else { hi[1] },
-                if k & 4 == 0 { lo[2] } else { hi[2] },
-            ));
-        }
-        let faces = [
-            [0, 2, 3, 1],
-            [4, 5, 7, 6],
-            [0, 1, 5, 4],
-            [2, 6, 7, 3],
-            [0, 4, 6, 2],
-            [1, 3, 7, 5],
-        ];
-        for [a, b, c, d] in faces {
-            mesh.triangles.push([base + a, base + b, base + c]);
-            mesh.triangles.push([base + a, base + c, base + d]);
-        }
+        let cube = crate::mesh::topology::tests::cube();
+        mesh.positions.extend(cube.positions.iter().map(|p| {
+            Point3::new(
+                lo[0] + p.x * (hi[0] - lo[0]),
+                lo[1] + p.y * (hi[1] - lo[1]),
+                lo[2] + p.z * (hi[2] - lo[2]),
+            )
+        }));
+        mesh.triangles
+            .extend(cube.triangles.iter().map(|t| t.map(|v| base + v)));
     }
 
     /// A speck: one triangle (3 vertices) at `at`, 10 mm across, appended to `mesh`.
