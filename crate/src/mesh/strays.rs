@@ -6,11 +6,11 @@
 //! The scan's pieces are its connected components ([`component_labels`]). The body's pieces are
 //! the largest and every piece holding at least `max_share` of the triangulated vertices (a body
 //! exported in parts: torso, arms, legs); a smaller piece is stray when every vertex of it lies
-//! farther than the gap from every vertex of the body's pieces: `min_gap`, or `gap_edges` times
-//! the scan's median edge length where that is more (a coarse scan leaves its toes and
-//! hands in pieces several centimetres apart: at a 20 mm step, 49 vertices of a body's own would
-//! otherwise have gone). A small piece close to the body (a finger or an ear cut off by a hole, a
-//! floor remnant under a foot) stays. Vertices no triangle uses are not pieces and stay as they
+//! farther than the gap from every vertex of the body's pieces: `min_gap` (8 cm), or `gap_edges`
+//! times the scan's median edge length where that is more (a coarse scan leaves its toes and
+//! hands in pieces several centimetres apart). A small piece close to the body (the toes' or
+//! fingertips' slices of a slice scanner, 37–52 mm from the rest; a finger or an ear cut off by
+//! a hole; a floor remnant under a foot) stays. Vertices no triangle uses are not pieces and stay as they
 //! are (nothing matches or measures them).
 
 use kiddo::{ImmutableKdTree, SquaredEuclidean};
@@ -27,11 +27,11 @@ pub struct StrayParams {
     /// 0.01.
     pub max_share: f64,
     /// A smaller piece is stray when all of it lies farther than this from the body's pieces
-    /// (m); default 0.03 (the zoo's stray pieces float at least 10 cm off, a foot's floor
-    /// remnant within 1 cm).
+    /// (m); default 0.08 (a slice scanner leaves the toes' and fingertips' slices in pieces
+    /// 37–52 mm from the rest of the body; the zoo's stray pieces float at least 10 cm off).
     pub min_gap: f64,
     /// …or farther than this many times the scan's median edge length, where that is more;
-    /// default 4 (a scan at 3–4 mm keeps the 3 cm).
+    /// default 4 (a scan at 3–4 mm keeps the 8 cm).
     pub gap_edges: f64,
 }
 
@@ -39,7 +39,7 @@ impl Default for StrayParams {
     fn default() -> Self {
         Self {
             max_share: 0.01,
-            min_gap: 0.03,
+            min_gap: 0.08,
             gap_edges: 4.0,
         }
     }
