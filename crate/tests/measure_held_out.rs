@@ -10,6 +10,7 @@
 
 mod synth_support;
 
+use bodyspace::align::QualityFlag;
 use bodyspace::measure::{upright, BodyMeasurer, Measure, MeasureParams, Trust};
 use bodyspace::subject::{fit_subject, SubjectInput, SubjectOptions};
 use bodyspace::synth::*;
@@ -115,10 +116,15 @@ fn landmark_free_fits_measure_the_body_defined_ones_and_doubt_the_others() {
             &mut (),
         )
         .unwrap();
+        // The fit itself is good; the estimate may doubt itself (subject 2, arms hanging 8° from
+        // the body: its upper arms 42 mm apart in length), which the report then says.
+        let quality = fit.report.quality.as_ref().unwrap();
         assert!(
-            !fit.report.flagged(),
-            "subject {index} flagged: {:?}",
-            fit.report.quality
+            quality
+                .flags
+                .iter()
+                .all(|f| *f == QualityFlag::LandmarkEstimate),
+            "subject {index} flagged: {quality:?}"
         );
         let measure = |body: &[Point3<f64>]| {
             measurer
