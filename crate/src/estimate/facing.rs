@@ -17,7 +17,7 @@
 
 use nalgebra::{Point3, Vector3};
 
-use super::up::{quantile, EXTENT_PERCENTILE};
+use super::up::{quantile, triangulated, EXTENT_PERCENTILE};
 
 /// The feet and the lower legs just above them, fractions of the extent from the bottom (the
 /// feet's with every point under the robust bottom).
@@ -45,18 +45,7 @@ pub fn feet_forward(
 ) -> Option<FeetForward> {
     let up = up.try_normalize(1e-12)?;
     let depth = (depth - up * depth.dot(&up)).try_normalize(1e-12)?;
-    let mut used = vec![false; positions.len()];
-    for t in triangles {
-        for &v in t {
-            used[v as usize] = true;
-        }
-    }
-    let points: Vec<&Point3<f64>> = positions
-        .iter()
-        .zip(&used)
-        .filter(|(_, u)| **u)
-        .map(|(p, _)| p)
-        .collect();
+    let points = triangulated(positions, triangles);
     let heights: Vec<f64> = points.iter().map(|p| p.coords.dot(&up)).collect();
     let lo = quantile(&heights, EXTENT_PERCENTILE)?;
     let extent = quantile(&heights, 1.0 - EXTENT_PERCENTILE)? - lo;

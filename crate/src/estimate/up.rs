@@ -47,18 +47,7 @@ pub fn head_end(
     triangles: &[[u32; 3]],
     decisive: f64,
 ) -> Option<HeadEnd> {
-    let mut used = vec![false; positions.len()];
-    for t in triangles {
-        for &v in t {
-            used[v as usize] = true;
-        }
-    }
-    let points: Vec<Point3<f64>> = positions
-        .iter()
-        .zip(&used)
-        .filter(|(_, u)| **u)
-        .map(|(p, _)| *p)
-        .collect();
+    let points = triangulated(positions, triangles);
     let axes = principal_axes(&points)?;
     let up = axes.column(0).into_owned();
     let heights: Vec<f64> = points.iter().map(|p| p.coords.dot(&up)).collect();
@@ -98,6 +87,22 @@ pub fn head_end(
         head_ratio,
         feet_ratio,
     })
+}
+
+/// The vertices of `positions` that `triangles` use (lone stray points left out), in order.
+pub(super) fn triangulated(positions: &[Point3<f64>], triangles: &[[u32; 3]]) -> Vec<Point3<f64>> {
+    let mut used = vec![false; positions.len()];
+    for t in triangles {
+        for &v in t {
+            used[v as usize] = true;
+        }
+    }
+    positions
+        .iter()
+        .zip(&used)
+        .filter(|(_, u)| **u)
+        .map(|(p, _)| *p)
+        .collect()
 }
 
 fn in_slab(f: f64, (a, b): (f64, f64)) -> bool {
