@@ -241,6 +241,53 @@ fn the_neck_girth_is_its_least_wherever_the_neck_landmarks_are() {
     }
 }
 
+/// The neck measured with its Tragions turned `turn` ring steps towards the back (both ears
+/// behind the neck's axis: the landmarks' axis leans back) and `params`.
+fn neck_with_ears_turned(turn: usize, params: MeasureParams) -> f64 {
+    let (p, t) = body();
+    let weights = vec![[0.0, 0.0, 0.0, 1.0, 0.0, 0.0f32]; p.len() / 3];
+    let landmarks: Vec<(String, u32)> = landmarks(&[], 0.0)
+        .into_iter()
+        .map(|(name, v)| match name.as_str() {
+            "Rt. Tragion" => (name, at(1.65, RIGHT + turn)),
+            "Lt. Tragion" => (name, at(1.65, LEFT - turn)),
+            _ => (name, v),
+        })
+        .collect();
+    let measurer = BodyMeasurer::new(&p, &t, &weights, &landmarks, params).unwrap();
+    measurer
+        .measure(&p)
+        .unwrap()
+        .get(Measure::NeckGirth)
+        .unwrap()
+}
+
+#[test]
+fn the_neck_girth_is_square_to_the_neck_when_the_landmarks_axis_leans() {
+    // The ears 45° round towards the back: the landmarks' axis leans back about 17° from the
+    // neck's (vertical) axis. The tape is still the neck's square section, the 128-gon of radius
+    // NECK_R; square to the landmarks' axis (no tilt searched) it is an oblique, longer cut.
+    let polygon = AROUND as f64 * 2.0 * NECK_R * (PI / AROUND as f64).sin();
+    let got = neck_with_ears_turned(AROUND / 8, MeasureParams::default());
+    assert!(
+        (got - polygon).abs() < 0.001,
+        "neck {} vs {} mm",
+        mm(got),
+        mm(polygon)
+    );
+    let square_to_landmarks = MeasureParams {
+        neck_tilt_max_deg: 0.0,
+        ..MeasureParams::default()
+    };
+    let oblique = neck_with_ears_turned(AROUND / 8, square_to_landmarks);
+    assert!(
+        oblique > polygon + 0.005,
+        "square to the leaning axis {} vs {} mm",
+        mm(oblique),
+        mm(polygon)
+    );
+}
+
 #[test]
 fn stature_is_the_crown_and_moves_with_no_landmark() {
     let m = measure(&[], 0.0);

@@ -29,7 +29,7 @@ use super::neck_base::{neck_base_tape, NeckBaseTape};
 use super::params::MeasureParams;
 use super::parting::{parting_level, torso_alone, PartingSearch};
 use super::section::{plane_section, Plane, SectionLoop};
-use super::surface::{fullest_head, narrowest_neck};
+use super::surface::{fullest_head, narrowest_neck, squarest_neck};
 use super::tape::{closed_length, convex_hull, tape, LoopChoice};
 use super::vec3::{distance, midpoint, sub};
 use crate::template::Segment;
@@ -98,6 +98,8 @@ impl BodyMeasurer {
         }
         let positive = [
             ("neck_step", params.neck_step),
+            ("neck_tilt_step_deg", params.neck_tilt_step_deg),
+            ("neck_tilt_radius", params.neck_tilt_radius),
             ("head_step", params.head_step),
             ("parting_resolution", params.parting_resolution),
             ("prominence_depth", params.prominence_depth),
@@ -109,6 +111,7 @@ impl BodyMeasurer {
         ];
         let non_negative = [
             ("neck_band", params.neck_band),
+            ("neck_tilt_max_deg", params.neck_tilt_max_deg),
             ("head_search_above", params.head_search_above),
             ("head_search_below", params.head_search_below),
             ("hip_band_below", params.hip_band_below),
@@ -394,9 +397,25 @@ impl BodyMeasurer {
                 let (base, axis) = b.neck_axis();
                 let f = narrowest_neck(b.neck(), p);
                 let at = [0, 1, 2].map(|k| base[k] + f * axis[k]);
-                let near = b.neck().and_then(|n| n.reaching(f));
-                let triangles = near.map_or(region(Region::HeadAndTorso), Cow::Owned);
-                around(Plane::new(at, axis)?, triangles, at)
+                // NECK: Cervicale, Suprasternale (the neck's lean is towards the front).
+                let forward = sub(a(1), a(0));
+                let head_and_torso = &self.regions[Region::HeadAndTorso as usize];
+                match squarest_neck(
+                    b.positions,
+                    &self.triangles,
+                    head_and_torso,
+                    at,
+                    axis,
+                    forward,
+                    p,
+                ) {
+                    Some((normal, near)) => around(Plane::new(at, normal)?, Cow::Owned(near), at),
+                    None => {
+                        let near = b.neck().and_then(|n| n.reaching(f));
+                        let triangles = near.map_or(region(Region::HeadAndTorso), Cow::Owned);
+                        around(Plane::new(at, axis)?, triangles, at)
+                    }
+                }
             }
             Measure::HeadGirth => {
                 let sellion = a(0)[up];

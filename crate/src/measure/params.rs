@@ -35,6 +35,15 @@ pub struct MeasureParams {
     /// apple, where the neck is narrowest); defaults 0.2 and 0.025.
     pub neck_band: f64,
     pub neck_step: f64,
+    /// The neck girth's tape, through the narrowest level on that axis, is square to the neck
+    /// as the body holds it, not to the landmarks' axis: the least of the planes tilted from
+    /// square to the axis by up to `neck_tilt_max_deg`, every `neck_tilt_step_deg` (first along
+    /// the neck's lean, then across), cut from the triangles within `neck_tilt_radius` of the
+    /// point (`surface.rs`, `squarest_neck`); defaults 20°, 5° and 0.12 m (twice a neck's
+    /// radius).
+    pub neck_tilt_max_deg: f64,
+    pub neck_tilt_step_deg: f64,
+    pub neck_tilt_radius: f64,
     /// The hip level is the level of greatest buttock prominence (ISO 8559-1 5.3.13) among the
     /// torso's and legs' vertices from `hip_band_below` under to `hip_band_above` over the
     /// landmarks' guess (never under `hip_above_crotch` over the Crotch); defaults 0.06 m and
@@ -107,6 +116,9 @@ impl Default for MeasureParams {
             neck_fraction: 0.25,
             neck_band: 0.2,
             neck_step: 0.025,
+            neck_tilt_max_deg: 20.0,
+            neck_tilt_step_deg: 5.0,
+            neck_tilt_radius: 0.12,
             hip_band_below: 0.06,
             hip_band_above: 0.10,
             bust_band_below: 0.04,

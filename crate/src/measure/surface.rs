@@ -13,7 +13,7 @@
 use super::params::MeasureParams;
 use super::section::{plane_section, Plane};
 use super::tape::{tape, LoopChoice};
-use super::vec3::{dot, sub, unit};
+use super::vec3::{cross, dot, scale, sub, unit};
 use std::ops::RangeInclusive;
 
 /// The prominence of a set of vertices along a direction.
@@ -321,6 +321,109 @@ pub(super) fn narrowest_neck(girths_along: Option<&GirthsAlong>, params: &Measur
         f += p.neck_step * parabola_shift(girths[i - 1], girths[i], girths[i + 1], true);
     }
     f
+}
+
+/// ISO 8559-1 5.3.2's "perpendicular to the neck's axis", the axis found on the body: the unit
+/// normal of the least tape through `at` (the narrowest level [`narrowest_neck`] found on the
+/// landmarks' `axis`) around the loop that encloses `at`, cut from the triangles of `region` with
+/// a corner within `neck_tilt_radius` of it, over planes tilted from square to `axis` by up to
+/// `neck_tilt_max_deg` every `neck_tilt_step_deg`: first towards `forward` (Cervicale →
+/// Suprasternale, the neck's lean), then across at the best lean, each refined by the parabola
+/// through the least sample and its neighbours. The least section of a tube through a point is
+/// the one square to the tube there, so the Cervicale's and the Tragions' guesses, which set the
+/// landmarks' axis, no longer tilt the tape: estimated a centimetre off they leaned it 5–15° and
+/// lengthened it by 3–18 mm. Returns the normal and those triangles; `axis` itself (unit) when
+/// no tilted plane has such a loop.
+pub(super) fn squarest_neck(
+    positions: &[f32],
+    triangles: &[[u32; 3]],
+    region: &[u32],
+    at: [f64; 3],
+    axis: [f64; 3],
+    forward: [f64; 3],
+    params: &MeasureParams,
+) -> Option<([f64; 3], Vec<u32>)> {
+    let p = params;
+    let n0 = unit(axis)?;
+    let lean = unit(sub(forward, scale(n0, dot(forward, n0))))?;
+    let across = cross(n0, lean);
+    let r2 = p.neck_tilt_radius * p.neck_tilt_radius;
+    let near: Vec<u32> = region
+        .iter()
+        .copied()
+        .filter(|&t| {
+            triangles[t as usize].iter().any(|&v| {
+                let d = sub(vertex(positions, v), at);
+                dot(d, d) <= r2
+            })
+        })
+        .collect();
+    let normal = |lean_deg: f64, across_deg: f64| {
+        let (a, b) = (lean_deg.to_radians(), across_deg.to_radians());
+        [0, 1, 2]
+            .map(|k| n0[k] * a.cos() * b.cos() + lean[k] * a.sin() * b.cos() + across[k] * b.sin())
+    };
+    let girth = |n: [f64; 3]| -> f64 {
+        let Some(plane) = Plane::new(at, n) else {
+            return f64::INFINITY;
+        };
+        let loops = plane_section(positions, triangles, &near, &plane);
+        tape(&loops, LoopChoice::Around([0.0, 0.0]))
+            .filter(|t| hull_contains(&t.hull, [0.0, 0.0]))
+            .map_or(f64::INFINITY, |t| t.girth)
+    };
+    let steps = (p.neck_tilt_max_deg / p.neck_tilt_step_deg).floor() as i64;
+    let step = p.neck_tilt_step_deg;
+    let best_lean = least_tilt(&|i| girth(normal(i as f64 * step, 0.0)), steps)? * step;
+    let best_across = least_tilt(&|i| girth(normal(best_lean, i as f64 * step)), steps)? * step;
+    Some((normal(best_lean, best_across), near))
+}
+
+/// The tilt (in steps, −`steps`..=`steps`) of the least `girth_at` (in whole steps): from 0
+/// downhill to the first sample that both its neighbours exceed (the girth of a tube against the
+/// tilt of its cut has one valley), refined by the parabola through it and its neighbours;
+/// `None` when no sample on the way is finite.
+fn least_tilt(girth_at: &dyn Fn(i64) -> f64, steps: i64) -> Option<f64> {
+    // Samples taken so far, at tilts −steps..=steps (index tilt + steps); NaN: not yet taken.
+    let mut taken = vec![f64::NAN; 2 * steps as usize + 1];
+    let mut at = |i: i64| -> f64 {
+        let k = (i + steps) as usize;
+        if taken[k].is_nan() {
+            taken[k] = girth_at(i);
+        }
+        taken[k]
+    };
+    let (mut i, mut g): (i64, f64) = (0, at(0));
+    loop {
+        let mut next = None;
+        for j in [i - 1, i + 1] {
+            if j.abs() <= steps {
+                let gj = at(j);
+                let lower = gj < g || (!g.is_finite() && gj.is_finite());
+                if lower && next.is_none_or(|(_, gn): (i64, f64)| gj < gn) {
+                    next = Some((j, gj));
+                }
+            }
+        }
+        match next {
+            Some(n) => (i, g) = n,
+            None => break,
+        }
+    }
+    if !g.is_finite() {
+        return None;
+    }
+    let shift = if i.abs() < steps {
+        let (l, r) = (at(i - 1), at(i + 1));
+        if l.is_finite() && r.is_finite() {
+            parabola_shift(l, g, r, true)
+        } else {
+            0.0
+        }
+    } else {
+        0.0
+    };
+    Some(i as f64 + shift)
 }
 
 /// ISO 7250-1's head circumference, the greatest girth of the head above the eyebrow ridges, taken
