@@ -37,10 +37,10 @@ pub struct MeasureParams {
     pub neck_step: f64,
     /// The neck girth's tape, through the narrowest level on that axis, is square to the neck
     /// as the body holds it, not to the landmarks' axis: the least of the planes tilted from
-    /// square to the axis by up to `neck_tilt_max_deg`, every `neck_tilt_step_deg` (first along
-    /// the neck's lean, then across), cut from the triangles within `neck_tilt_radius` of the
-    /// point (`surface.rs`, `squarest_neck`); defaults 20°, 5° and 0.12 m (twice a neck's
-    /// radius).
+    /// square to the axis by up to `neck_tilt_max_deg`, in steps of `neck_tilt_step_deg` walked
+    /// downhill from square (first along the neck's lean, then across), cut from the triangles
+    /// within `neck_tilt_radius` of the point (`surface.rs`, `squarest_neck`); defaults 20°, 5°
+    /// and 0.12 m (twice a neck's radius).
     pub neck_tilt_max_deg: f64,
     pub neck_tilt_step_deg: f64,
     pub neck_tilt_radius: f64,

@@ -327,13 +327,13 @@ pub(super) fn narrowest_neck(girths_along: Option<&GirthsAlong>, params: &Measur
 /// normal of the least tape through `at` (the narrowest level [`narrowest_neck`] found on the
 /// landmarks' `axis`) around the loop that encloses `at`, cut from the triangles of `region` with
 /// a corner within `neck_tilt_radius` of it, over planes tilted from square to `axis` by up to
-/// `neck_tilt_max_deg` every `neck_tilt_step_deg`: first towards `forward` (Cervicale →
-/// Suprasternale, the neck's lean), then across at the best lean, each refined by the parabola
-/// through the least sample and its neighbours. The least section of a tube through a point is
+/// `neck_tilt_max_deg` in steps of `neck_tilt_step_deg` ([`least_tilt`]: downhill from square,
+/// then the parabola): first towards `forward` (Cervicale → Suprasternale, the neck's lean),
+/// then across at the best lean. The least section of a tube through a point is
 /// the one square to the tube there, so the Cervicale's and the Tragions' guesses, which set the
 /// landmarks' axis, no longer tilt the tape: estimated a centimetre off they leaned it 5–15° and
-/// lengthened it by 3–18 mm. Returns the normal and those triangles; `axis` itself (unit) when
-/// no tilted plane has such a loop.
+/// lengthened it by 3–18 mm. Returns the normal and those triangles; `None` when the axis has no
+/// length or no plane has such a loop (the tape is then taken square to `axis`).
 pub(super) fn squarest_neck(
     positions: &[f32],
     triangles: &[[u32; 3]],
