@@ -1,7 +1,8 @@
 //! A body point found on the surface around a landmark's guess rather than taken from the
 //! landmark's vertex, so that a landmark a few centimetres off names the same point: the
 //! **prominence** of a part along a direction, and with it the hip level ([`buttock_level`])
-//! and the bust level ([`bust_level`]); the neck's narrowest level ([`narrowest_neck`]) and the head's widest ([`fullest_head`]).
+//! and the bust level ([`bust_level`]); the neck's narrowest level ([`narrowest_neck`]), the
+//! neck's own axis there ([`squarest_neck`]) and the head's widest ([`fullest_head`]).
 //! Parameters: [`MeasureParams`].
 //!
 //! Of the candidate vertices pᵢ and a unit direction d, the prominence's extent is
