@@ -348,15 +348,20 @@ pub(super) fn squarest_neck(
     let n0 = unit(axis)?;
     let lean = unit(sub(forward, scale(n0, dot(forward, n0))))?;
     let across = cross(n0, lean);
-    let r2 = p.neck_tilt_radius * p.neck_tilt_radius;
+    // A plane through `at` tilted at most θ from square to n0 stays within r·tan θ of `at`
+    // along n0 at distance r from it: only triangles with a corner in that slab of the ball can
+    // hold the loop.
+    let r = p.neck_tilt_radius;
+    let slab = r * p.neck_tilt_max_deg.to_radians().tan() + 1e-9;
     let near: Vec<u32> = region
         .iter()
         .copied()
         .filter(|&t| {
-            triangles[t as usize].iter().any(|&v| {
-                let d = sub(vertex(positions, v), at);
-                dot(d, d) <= r2
-            })
+            let c = triangles[t as usize].map(|v| sub(vertex(positions, v), at));
+            let along = c.map(|d| dot(d, n0));
+            along.iter().any(|&a| a <= slab)
+                && along.iter().any(|&a| a >= -slab)
+                && c.iter().any(|d| dot(*d, *d) <= r * r)
         })
         .collect();
     let normal = |lean_deg: f64, across_deg: f64| {
