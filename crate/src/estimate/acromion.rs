@@ -21,7 +21,9 @@
 use nalgebra::Point3;
 
 use super::params::AcromionParams;
-use crate::landmarks::shoulder::{acromion_at, acromion_indices, shoulder_point, ShoulderFrame};
+use crate::landmarks::shoulder::{
+    acromion_at, acromion_indices, shoulder_point, Cap, ShoulderFrame,
+};
 use crate::mesh::surface_points::surface_near;
 use crate::mesh::Mesh;
 
@@ -64,7 +66,13 @@ pub fn place_acromions(
                 params.radius * s,
                 params.spacing * s,
             );
-            let window = (params.radius * s, params.edge * s, params.cap * s);
+            let window = (
+                params.radius * s,
+                params.edge * s,
+                Cap::even(params.cap * s),
+            );
+            // The scan's points alike: its grids are laid anew on every scan anyway.
+            let points: Vec<_> = points.into_iter().map(|p| (p, 1.0)).collect();
             shoulder_point(&points, at, &d, window, params.min_points)
         };
     let mut out = [None, None];

@@ -20,6 +20,7 @@
 use nalgebra::{Point3, Vector3};
 
 use super::CAESAR_LANDMARKS;
+use crate::mesh::surface_points::SurfacePoint;
 
 /// The trunk's frame at one shoulder and the upper arm's direction, unit vectors.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -111,34 +112,65 @@ impl ShoulderFrame {
     }
 }
 
-/// The centroid of the `points` within `cap` of their furthest reach along `direction` (unit)
-/// from `centre`; `None` without points.
-pub fn furthest_reach(
-    points: &[Point3<f64>],
-    centre: &Point3<f64>,
-    direction: &Vector3<f64>,
-    cap: f64,
-) -> Option<Point3<f64>> {
-    let reach = |p: &Point3<f64>| (p - centre).dot(direction);
-    let top = points.iter().map(reach).fold(f64::NEG_INFINITY, f64::max);
-    let (sum, n) = points
-        .iter()
-        .filter(|p| reach(p) >= top - cap)
-        .fold((Vector3::zeros(), 0usize), |(s, n), p| {
-            (s + p.coords, n + 1)
-        });
-    (n > 0).then(|| Point3::from(sum / n as f64))
+/// How far into the furthest reach the shoulder point's centroid takes the points (m below the
+/// reach along the search's direction): every point within `depth` alike when `taper` is 0, or,
+/// with `taper` > 0, each weighted 1 down to `depth − taper/2` and 0 from `depth + taper/2`,
+/// linearly between, so that the centroid moves continuously as the points move.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Cap {
+    pub depth: f64,
+    pub taper: f64,
 }
 
-/// The shoulder point among `points` (on a surface, within `radius` of `centre`): the
+impl Cap {
+    /// Every point within `depth` alike.
+    pub fn even(depth: f64) -> Cap {
+        Cap { depth, taper: 0.0 }
+    }
+
+    /// A point's weight `below` (m) the furthest reach.
+    fn weight(&self, below: f64) -> f64 {
+        if self.taper <= 0.0 {
+            return if below <= self.depth { 1.0 } else { 0.0 };
+        }
+        ((self.depth + 0.5 * self.taper - below) / self.taper).clamp(0.0, 1.0)
+    }
+}
+
+/// The centroid of the `points` in the `cap` of their furthest reach along `direction` (unit)
+/// from `centre`, each weighted by its [`Cap`] weight times the area it stands for; `None`
+/// without points.
+pub fn furthest_reach(
+    points: &[SurfacePoint],
+    centre: &Point3<f64>,
+    direction: &Vector3<f64>,
+    cap: Cap,
+) -> Option<Point3<f64>> {
+    let reach = |p: &Point3<f64>| (p - centre).dot(direction);
+    let top = points
+        .iter()
+        .map(|(p, _)| reach(p))
+        .fold(f64::NEG_INFINITY, f64::max);
+    let (sum, total) = points
+        .iter()
+        .map(|(p, area)| (p, area * cap.weight(top - reach(p))))
+        .filter(|(_, w)| *w > 0.0)
+        .fold((Vector3::zeros(), 0.0), |(s, t), (p, w)| {
+            (s + p.coords * w, t + w)
+        });
+    (total > 0.0).then(|| Point3::from(sum / total))
+}
+
+/// The shoulder point among `points` (on a surface, within `radius` of `centre`, each with the
+/// area it stands for): the
 /// [`furthest_reach`] along `direction` (unit) with cap `cap`. `None` with fewer than
 /// `min_points` points, or when the point lies farther than `radius − edge` from `centre` (the
 /// surface reaches on beyond the window).
 pub fn shoulder_point(
-    points: &[Point3<f64>],
+    points: &[SurfacePoint],
     centre: &Point3<f64>,
     direction: &Vector3<f64>,
-    (radius, edge, cap): (f64, f64, f64),
+    (radius, edge, cap): (f64, f64, Cap),
     min_points: usize,
 ) -> Option<Point3<f64>> {
     if points.len() < min_points {
@@ -148,15 +180,16 @@ pub fn shoulder_point(
     ((found - centre).norm() <= radius - edge).then_some(found)
 }
 
-/// The shoulder point on a surface (`surface(c)`: its points within `radius` of c) found from
+/// The shoulder point on a surface (`surface(c)`: its points within `radius` of c, each with
+/// the area it stands for) found from
 /// `guess`: [`shoulder_point`] around the guess and, while it is not sure because the reach ran
 /// to the window's edge, around where that search ended, at most `searches` searches in all.
 /// With one search, [`shoulder_point`] around the guess. `None` when the last is not sure too.
 pub fn climb_to_shoulder_point(
-    surface: &dyn Fn(&Point3<f64>) -> Vec<Point3<f64>>,
+    surface: &dyn Fn(&Point3<f64>) -> Vec<SurfacePoint>,
     guess: &Point3<f64>,
     direction: &Vector3<f64>,
-    (radius, edge, cap): (f64, f64, f64),
+    (radius, edge, cap): (f64, f64, Cap),
     min_points: usize,
     searches: usize,
 ) -> Option<Point3<f64>> {
@@ -232,7 +265,9 @@ mod tests {
             .filter(|p| (*p - guess).norm() <= 0.05)
             .copied()
             .collect();
-        let found = shoulder_point(&near, &guess, &d, (0.05, 0.01, 0.002), 50).unwrap();
+        let even = |points: &[Point3<f64>]| points.iter().map(|p| (*p, 1.0)).collect::<Vec<_>>();
+        let found =
+            shoulder_point(&even(&near), &guess, &d, (0.05, 0.01, Cap::even(0.002)), 50).unwrap();
         assert!((found - truth).norm() < 0.003, "{found} against {truth}");
         // Turned, moved and twice the size: the same point, turned, moved and doubled.
         let motion = Similarity {
@@ -246,16 +281,43 @@ mod tests {
         };
         let moved = motion.apply_all(&near);
         let again = shoulder_point(
-            &moved,
+            &even(&moved),
             &motion.apply(&guess),
             &(motion.rotation * d),
-            (0.1, 0.02, 0.004),
+            (0.1, 0.02, Cap::even(0.004)),
             50,
         )
         .unwrap();
         assert!((again - motion.apply(&found)).norm() < 1e-9);
         // A window that holds only the rising slope: the reach runs on to its edge.
-        assert!(shoulder_point(&near, &guess, &d, (0.012, 0.01, 0.002), 5).is_none());
+        assert!(
+            shoulder_point(&even(&near), &guess, &d, (0.012, 0.01, Cap::even(0.002)), 5).is_none()
+        );
+    }
+
+    #[test]
+    fn a_tapered_cap_takes_a_point_in_gradually() {
+        // The reach's top at height 0 and one more point sinking from 3 to 5 mm below it, at
+        // x = 1: an even cap of 4 mm drops it at once; one tapered over 2 mm lets it go evenly.
+        let centroid_x = |cap: Cap, below: f64| {
+            let points = [
+                (Point3::new(0.0, 0.0, 0.0), 1.0),
+                (Point3::new(1.0, -below, 0.0), 1.0),
+            ];
+            furthest_reach(&points, &Point3::origin(), &Vector3::y(), cap)
+                .unwrap()
+                .x
+        };
+        let tapered = Cap {
+            depth: 0.004,
+            taper: 0.002,
+        };
+        assert_eq!(centroid_x(Cap::even(0.004), 0.00399), 0.5);
+        assert_eq!(centroid_x(Cap::even(0.004), 0.00401), 0.0);
+        assert!((centroid_x(tapered, 0.004) - 1.0 / 3.0).abs() < 1e-12);
+        assert_eq!(centroid_x(tapered, 0.003), 0.5);
+        assert_eq!(centroid_x(tapered, 0.005), 0.0);
+        assert!((centroid_x(tapered, 0.00399) - centroid_x(tapered, 0.00401)).abs() < 0.01);
     }
 
     #[test]

@@ -23,10 +23,10 @@ use nalgebra::{Point3, Vector3};
 use super::definitions::SHOULDERS;
 use super::params::MeasureParams;
 use crate::landmarks::shoulder::{
-    acromion_at, climb_to_shoulder_point, shoulder_point, ShoulderFrame,
+    acromion_at, climb_to_shoulder_point, shoulder_point, Cap, ShoulderFrame,
 };
 use crate::landmarks::CAESAR_LANDMARKS;
-use crate::mesh::surface_points::{surface_near, SurfaceWindows};
+use crate::mesh::surface_points::{grid_steps, SurfacePoint, SurfaceWindows};
 
 /// One shoulder's template side: its Acromion at rest, the template's surface around it, and the
 /// triangles a body's search may take.
@@ -34,12 +34,15 @@ use crate::mesh::surface_points::{surface_near, SurfaceWindows};
 struct Side {
     /// The template's Acromion vertex at rest.
     rest_acromion: Point3<f64>,
-    /// The template's surface points within `acromion_radius` of it, `acromion_spacing` apart.
-    rest_points: Vec<Point3<f64>>,
+    /// The template's surface points within `acromion_radius` of it, `acromion_spacing` apart,
+    /// each with the area it stands for.
+    rest_points: Vec<SurfacePoint>,
     /// Template vertices of the triangles within reach of the search (every search's window,
     /// `acromion_searches` of them in a row, at rest) and those triangles in their indices.
     vertices: Vec<u32>,
     triangles: Vec<[u32; 3]>,
+    /// Those triangles' sampling grids, laid at rest and held on every body (`grid_steps`).
+    steps: Vec<u32>,
 }
 
 /// The acromia's search on the bodies of one template, prepared once.
@@ -111,15 +114,13 @@ impl AcromionSearch {
                 .collect();
             let local_rest: Vec<Point3<f64>> =
                 vertices.iter().map(|&w| rest_points[w as usize]).collect();
+            let steps = grid_steps(&local_rest, &triangles, p.acromion_spacing);
+            let windows = SurfaceWindows::held(&local_rest, &triangles, &steps);
+            let rest_points = windows.near_with_areas(&at, p.acromion_radius, p.acromion_spacing);
             Side {
                 rest_acromion: at,
-                rest_points: surface_near(
-                    &local_rest,
-                    &triangles,
-                    &at,
-                    p.acromion_radius,
-                    p.acromion_spacing,
-                ),
+                rest_points,
+                steps,
                 vertices,
                 triangles,
             }
@@ -152,7 +153,11 @@ impl AcromionSearch {
         let (Some(rest), Some(frames)) = (self.rest_frames, frames) else {
             return out;
         };
-        let window = (p.acromion_radius, p.acromion_edge, p.acromion_cap);
+        let cap = Cap {
+            depth: p.acromion_cap,
+            taper: p.acromion_cap_taper,
+        };
+        let window = (p.acromion_radius, p.acromion_edge, cap);
         for (side, s) in self.sides.iter().enumerate() {
             let (frame, own) = (&frames[side], &rest[side]);
             let Some((dl, du)) = frame.direction(p.acromion_max_abduction_deg) else {
@@ -169,8 +174,9 @@ impl AcromionSearch {
             };
             let offset = own.components(&(s.rest_acromion - template_point));
             let local: Vec<Point3<f64>> = s.vertices.iter().map(|&v| point(positions, v)).collect();
-            let windows = SurfaceWindows::new(&local, &s.triangles);
-            let surface = |c: &Point3<f64>| windows.near(c, p.acromion_radius, p.acromion_spacing);
+            let windows = SurfaceWindows::held(&local, &s.triangles, &s.steps);
+            let surface =
+                |c: &Point3<f64>| windows.near_with_areas(c, p.acromion_radius, p.acromion_spacing);
             let direction = frame.vector([dl, du, 0.0]);
             let Some(found) = climb_to_shoulder_point(
                 &surface,
@@ -185,8 +191,9 @@ impl AcromionSearch {
             let o = &mut out[side];
             o.shoulder_point = Some([found.x, found.y, found.z]);
             let medial = frame.vector([-du, dl, 0.0]);
+            let near: Vec<Point3<f64>> = surface(&found).into_iter().map(|(q, _)| q).collect();
             o.rises = turn_rises(
-                &surface(&found),
+                &near,
                 &found,
                 &direction,
                 &medial,

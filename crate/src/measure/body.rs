@@ -111,6 +111,7 @@ impl BodyMeasurer {
         ];
         let non_negative = [
             ("neck_band", params.neck_band),
+            ("acromion_cap_taper", params.acromion_cap_taper),
             ("neck_tilt_max_deg", params.neck_tilt_max_deg),
             ("head_search_above", params.head_search_above),
             ("head_search_below", params.head_search_below),

@@ -78,17 +78,22 @@ pub struct MeasureParams {
     pub prominence_depth: f64,
     /// The acromia (ISO 7250-1 biacromial breadth: `acromion.rs`, the shoulder's rule of
     /// `landmarks::shoulder`) are sought among the surface points `acromion_spacing` apart within
-    /// `acromion_radius` of the Acromion vertex; the shoulder point is the centroid of those
-    /// within `acromion_cap` of the furthest reach, not sure nearer than `acromion_edge` to the
+    /// `acromion_radius` of the Acromion vertex (each triangle's grid laid on the template at rest
+    /// and carried by the body, so the points move with the body); the shoulder point is the
+    /// centroid of those within `acromion_cap` of the furthest reach, weighted down linearly over
+    /// `acromion_cap_taper` about that depth (`landmarks::shoulder::Cap`: bodies a little apart
+    /// get acromia a little apart), not sure nearer than `acromion_edge` to the
     /// window's edge, where the search starts again around it, `acromion_searches` searches in
     /// all; fewer than `acromion_min_points` points, no search; an upper arm raised more than
     /// `acromion_max_abduction_deg` from hanging down has no shoulder point. Defaults 0.045 m,
-    /// 0.003 m, 0.004 m, 0.01 m, 4, 50 and 60°: the estimate's (`AcromionParams`) but for the
+    /// 0.003 m, 0.004 m, 0.001 m, 0.01 m, 4, 50 and 60°: the estimate's (`AcromionParams`) but for
+    /// the taper (none there: its points are the scan's) and the
     /// window (35 mm there: the climb from the fit's vertex needs room) and the arm (30° there:
     /// the held-out bodies hold their arms out 3–49°).
     pub acromion_radius: f64,
     pub acromion_spacing: f64,
     pub acromion_cap: f64,
+    pub acromion_cap_taper: f64,
     pub acromion_edge: f64,
     pub acromion_searches: usize,
     pub acromion_min_points: usize,
@@ -133,6 +138,7 @@ impl Default for MeasureParams {
             acromion_radius: 0.045,
             acromion_spacing: 0.003,
             acromion_cap: 0.004,
+            acromion_cap_taper: 0.001,
             acromion_edge: 0.01,
             acromion_searches: 4,
             acromion_min_points: 50,
