@@ -118,6 +118,13 @@ fn landmarks() -> Vec<(String, u32)> {
         .collect()
 }
 
+/// A smooth bump in latitude and longitude around the Acromions' latitude at longitude `centre`:
+/// how far (a fraction of the slide) a vertex at (`e`, `o`) slides along the surface.
+fn bump(e: f64, o: f64, centre: f64) -> f64 {
+    let d = (o - centre + PI).rem_euclid(2.0 * PI) - PI;
+    (-((e - ETA_A).powi(2) + d * d) / (2.0 * 0.35f64.powi(2))).exp()
+}
+
 fn point(p: &[f32], v: u32) -> [f64; 3] {
     let i = 3 * v as usize;
     [p[i] as f64, p[i + 1] as f64, p[i + 2] as f64]
@@ -159,10 +166,6 @@ fn acromia_2_cm_off_on_the_same_shoulders_move_breadth_and_height_at_most_2_mm()
     );
     // The same torso, its shoulders' vertices slid along the surface: up towards the neck, down
     // onto the side, on one side or both (a smooth bump in latitude around each Acromion).
-    let bump = |e: f64, o: f64, centre: f64| {
-        let d = (o - centre + PI).rem_euclid(2.0 * PI) - PI;
-        (-((e - ETA_A).powi(2) + d * d) / (2.0 * 0.35f64.powi(2))).exp()
-    };
     for (right, left) in [(0.26, 0.26), (-0.24, -0.24), (0.26, -0.24), (0.0, 0.26)] {
         let (p, _) = torso(&|e, o| right * bump(e, o, 0.0) + left * bump(e, o, PI));
         let off = [rt, lt].map(|v| distance(point(&p, v), point(&rest, v)));
@@ -260,10 +263,6 @@ fn an_arm_out_55_degrees_under_a_shoulder_rising_to_the_neck_keeps_the_acromion_
         .map(|i| -0.5 * i as f64 / 1000.0)
         .find(|s| distance(surface(ETA_A + s, 0.0), turn) >= 0.03)
         .unwrap();
-    let bump = |e: f64, o: f64, centre: f64| {
-        let d = (o - centre + PI).rem_euclid(2.0 * PI) - PI;
-        (-((e - ETA_A).powi(2) + d * d) / (2.0 * 0.35f64.powi(2))).exp()
-    };
     let (slid, _) = torso(&|e, o| slide * (bump(e, o, 0.0) + bump(e, o, PI)));
     let vertex_of = |name: &str| names.iter().find(|(n, _)| n == name).unwrap().1;
     let (rt, lt) = (vertex_of("Rt. Acromion"), vertex_of("Lt. Acromion"));
@@ -326,10 +325,6 @@ fn shoulder_breadth_moves_continuously_as_the_vertices_slide_over_the_same_shoul
     let names = landmarks();
     let breadth_with = |params: MeasureParams| {
         let measurer = BodyMeasurer::new(&rest, &triangles, &weights, &names, params).unwrap();
-        let bump = |e: f64, o: f64, centre: f64| {
-            let d = (o - centre + PI).rem_euclid(2.0 * PI) - PI;
-            (-((e - ETA_A).powi(2) + d * d) / (2.0 * 0.35f64.powi(2))).exp()
-        };
         (0..=120)
             .map(|i| {
                 let s = 0.26 * i as f64 / 120.0;
