@@ -317,9 +317,9 @@ fn shoulder_breadth_moves_continuously_as_the_vertices_slide_over_the_same_shoul
     // The torso's shoulders meshed again and again, their vertices slid a little further along
     // the surface each time (0 to 2 cm in 120 steps): every triangle there stretches or shrinks,
     // and where a grid laid anew crossed a multiple of the spacing, the points would jump. The
-    // breadth's true value does not change; measured, it drifts by a tenth of a millimetre with
-    // the sampling, and between bodies 0.2 mm apart it moves by hundredths of one, never in a
-    // jump.
+    // breadth's true value does not change; measured, it drifts by a few hundredths of a
+    // millimetre with the sampling, and between bodies 0.2 mm apart it moves by about one
+    // hundredth, never in a jump.
     let (rest, triangles) = torso(&|_, _| 0.0);
     let weights = vec![[0.0, 0.0, 0.0, 1.0, 0.0, 0.0f32]; rest.len() / 3];
     let names = landmarks();
