@@ -162,10 +162,9 @@ pub fn furthest_reach(
 }
 
 /// The shoulder point among `points` (on a surface, within `radius` of `centre`, each with the
-/// area it stands for): the
-/// [`furthest_reach`] along `direction` (unit) with cap `cap`. `None` with fewer than
-/// `min_points` points, or when the point lies farther than `radius − edge` from `centre` (the
-/// surface reaches on beyond the window).
+/// area it stands for): the [`furthest_reach`] along `direction` (unit) with cap `cap`. `None`
+/// with fewer than `min_points` points, or when the point lies farther than `radius − edge` from
+/// `centre` (the surface reaches on beyond the window).
 pub fn shoulder_point(
     points: &[SurfacePoint],
     centre: &Point3<f64>,
@@ -181,9 +180,9 @@ pub fn shoulder_point(
 }
 
 /// The shoulder point on a surface (`surface(c)`: its points within `radius` of c, each with
-/// the area it stands for) found from
-/// `guess`: [`shoulder_point`] around the guess and, while it is not sure because the reach ran
-/// to the window's edge, around where that search ended, at most `searches` searches in all.
+/// the area it stands for) found from `guess`: [`shoulder_point`] around the guess and, while it
+/// is not sure because the reach ran to the window's edge, around where that search ended, at
+/// most `searches` searches in all.
 /// With one search, [`shoulder_point`] around the guess. `None` when the last is not sure too.
 pub fn climb_to_shoulder_point(
     surface: &dyn Fn(&Point3<f64>) -> Vec<SurfacePoint>,
