@@ -111,10 +111,11 @@ impl<'a> SurfaceWindows<'a> {
     /// within `radius` of `centre` (those with a corner within `radius` plus their longest edge
     /// of it, sampled, then the samples within `radius` kept).
     pub fn near(&self, centre: &Point3<f64>, radius: f64, spacing: f64) -> Vec<Point3<f64>> {
-        self.near_with_areas(centre, radius, spacing)
-            .into_iter()
-            .map(|(p, _)| p)
-            .collect()
+        let mut out = Vec::new();
+        self.each_grid(centre, radius, spacing, |_, _, kept| {
+            out.extend_from_slice(kept)
+        });
+        out
     }
 
     /// [`SurfaceWindows::near`], each point with the area it stands for (its triangle's area
@@ -126,8 +127,24 @@ impl<'a> SurfaceWindows<'a> {
         radius: f64,
         spacing: f64,
     ) -> Vec<SurfacePoint> {
-        let r2 = radius * radius;
         let mut out = Vec::new();
+        self.each_grid(centre, radius, spacing, |c, all, kept| {
+            let area = 0.5 * (c[1] - c[0]).cross(&(c[2] - c[0])).norm() / all as f64;
+            out.extend(kept.iter().map(|p| (*p, area)));
+        });
+        out
+    }
+
+    /// For each triangle that may reach within `radius` of `centre`, `visit(corners, points on
+    /// its grid, those of them within radius)`.
+    fn each_grid(
+        &self,
+        centre: &Point3<f64>,
+        radius: f64,
+        spacing: f64,
+        mut visit: impl FnMut(&[Point3<f64>; 3], usize, &[Point3<f64>]),
+    ) {
+        let r2 = radius * radius;
         let mut points = Vec::new();
         for (k, (t, &longest)) in self.triangles.iter().zip(&self.longest).enumerate() {
             let c = corners(self.positions, t);
@@ -137,15 +154,10 @@ impl<'a> SurfaceWindows<'a> {
             let n = self.steps.map_or_else(|| steps(longest, spacing), |s| s[k]);
             points.clear();
             grid(&c, n, &mut points);
-            let area = 0.5 * (c[1] - c[0]).cross(&(c[2] - c[0])).norm() / points.len() as f64;
-            out.extend(
-                points
-                    .iter()
-                    .filter(|p| (*p - centre).norm_squared() <= r2)
-                    .map(|p| (*p, area)),
-            );
+            let all = points.len();
+            points.retain(|p| (p - centre).norm_squared() <= r2);
+            visit(&c, all, &points);
         }
-        out
     }
 }
 
