@@ -228,7 +228,9 @@ mod native {
         let index = SurfaceIndex::new(&scan_m).map_err(|e| e.to_string())?;
         let truth_stats = DistanceStats::of(
             scan_to_template_distances(&truth, &base.mesh().triangles, &index)
-                .map_err(|e| e.to_string())?,
+                .map_err(|e| e.to_string())?
+                .iter()
+                .map(|s| s.distance),
         );
         let report = &alignment.report;
         let fine = report.fine.as_ref().ok_or("no fine alignment")?;

@@ -176,11 +176,12 @@ scan→template RMS {:.3} mm mean {:+.3} mm sd {:.3} mm; template→scan RMS {:.
                     rep.scan_to_template.std_dev * 1e3,
                     rep.template_to_scan.rms * 1e3,
                 );
-                if let Ok(mut d) = bodyspace::align::report::scan_to_template_distances(
+                if let Ok(d) = bodyspace::align::report::scan_to_template_distances(
                     &r.positions,
                     &template.triangles,
                     &index,
                 ) {
+                    let mut d: Vec<f64> = d.iter().map(|s| s.distance).collect();
                     let worst = d
                         .iter()
                         .enumerate()

@@ -391,3 +391,63 @@ fn stray_pieces_are_left_out_of_the_fit_and_said() {
         }
     }
 }
+
+#[test]
+fn a_part_of_the_scan_the_fit_does_not_reach_is_flagged_and_named() {
+    // A rod 24 cm long grows out of the left hand, joined to it (no stray piece): no template
+    // part can follow it, so its far end stays uncovered by the fit, near the left arm.
+    let (template, scan, landmarks) = subject();
+    let at = |name: &str| landmarks.get(name).unwrap();
+    let hand = at("Lt. Dactylion");
+    let out = {
+        let across = hand - at("Rt. Dactylion");
+        Vector3::new(across.x, 0.0, across.z).normalize()
+    };
+    let start = scan
+        .positions
+        .iter()
+        .enumerate()
+        .min_by(|a, b| (*a.1 - hand).norm().total_cmp(&(*b.1 - hand).norm()))
+        .unwrap()
+        .0 as u32;
+    let mut rod = scan.clone();
+    let mut previous = [start, start];
+    for k in 1..=24 {
+        let p = scan.positions[start as usize] + out * (0.01 * k as f64);
+        let base = rod.positions.len() as u32;
+        rod.positions.extend([p, p + Vector3::new(0.0, 0.008, 0.0)]);
+        rod.triangles.push([previous[0], base, previous[1]]);
+        rod.triangles.push([previous[1], base, base + 1]);
+        previous = [base, base + 1];
+    }
+    let fit = |mesh: &Mesh| {
+        let input = SubjectInput {
+            name: "rod".to_string(),
+            scan: mesh.clone(),
+            units: None,
+            given: Some(GivenLandmarks {
+                set: landmarks.clone(),
+                units: None,
+                file: String::new(),
+            }),
+        };
+        fit_subject(&template, None, &input, None, &options(), &mut ()).unwrap()
+    };
+    let (clean, with_rod) = (fit(&scan), fit(&rod));
+    let quality = |f: &bodyspace::subject::SubjectFit| f.report.quality.clone().unwrap();
+    let clean = quality(&clean);
+    assert!(
+        !clean.flags.iter().any(|f| f.name() == "uncovered_scan"),
+        "{clean:?}"
+    );
+    assert!(clean.uncovered_scan_vertices <= 6, "{clean:?}");
+    let q = quality(&with_rod);
+    assert!(
+        q.flags.iter().any(|f| f.name() == "uncovered_scan"),
+        "{:?}",
+        (q.uncovered_scan_vertices, q.scan_vertices, &q.flags)
+    );
+    assert!(q.uncovered_scan_vertices >= 20, "{q:?}");
+    let near = q.uncovered_near.as_deref().unwrap_or("");
+    assert!(near.starts_with("left "), "{near}");
+}

@@ -307,7 +307,7 @@ export interface AlignResult {
 }
 
 /** A reason to look at a fit again (`align/quality.rs` `QualityFlag`, docs/batch.md). */
-export type QualityFlag = 'high_rms' | 'unmatched' | 'fold_overs' | 'suspicious_landmarks' | 'landmark_estimate';
+export type QualityFlag = 'high_rms' | 'unmatched' | 'fold_overs' | 'uncovered_scan' | 'suspicious_landmarks' | 'landmark_estimate';
 
 /** The core's `QualityReport`: the measures behind the flags and the flags raised. */
 export interface QualityReport {
@@ -318,11 +318,23 @@ export interface QualityReport {
   compared_triangles: number;
   folded_triangles: number;
   folded_fraction: number;
+  scan_vertices: number;
+  /** Scan vertices farther than `thresholds.uncovered_mm` from the fit: part of the body the fit did not reach. */
+  uncovered_scan_vertices: number;
+  uncovered_share: number;
+  /** The template part nearest most of them (`left forearm`, `head`, …); null when there are none. */
+  uncovered_near: string | null;
   suspicious_landmarks: string[];
   /** Why the landmark estimate the warp used doubts itself, in words (empty: it did not, or none ran). */
   landmark_estimate: string[];
   flags: QualityFlag[];
-  thresholds: { max_rms_mm: number; max_unmatched_fraction: number; max_folded_fraction: number };
+  thresholds: {
+    max_rms_mm: number;
+    max_unmatched_fraction: number;
+    max_folded_fraction: number;
+    uncovered_mm: number;
+    max_uncovered_share: number;
+  };
 }
 
 /** Sent after every L-BFGS iteration: the core's `Progress`. */

@@ -42,6 +42,11 @@ export function qualityText(q: QualityReport): string {
   if (q.flags.includes('high_rms')) parts.push(`RMS ${q.rms_mm?.toFixed(2)} mm > ${t.max_rms_mm} mm`);
   if (q.flags.includes('unmatched')) parts.push(`${(q.unmatched_fraction * 100).toFixed(0)} % unmatched > ${t.max_unmatched_fraction * 100} %`);
   if (q.flags.includes('fold_overs')) parts.push(`${(q.folded_fraction * 100).toFixed(1)} % folded > ${t.max_folded_fraction * 100} %`);
+  if (q.flags.includes('uncovered_scan'))
+    parts.push(
+      `${(q.uncovered_share * 1000).toFixed(1)} ‰ of the scan (${q.uncovered_scan_vertices} points) lies more than ${t.uncovered_mm} mm from the fit, ` +
+        `most near the ${q.uncovered_near ?? 'template'}: the fit missed part of the body (limit ${t.max_uncovered_share * 1000} ‰)`,
+    );
   if (q.flags.includes('suspicious_landmarks')) parts.push(`suspicious landmarks left out: ${q.suspicious_landmarks.join(', ')}`);
   if (q.flags.includes('landmark_estimate')) parts.push(`landmark estimate: ${q.landmark_estimate.join('; ')}`);
   return parts.join('; ');
@@ -65,6 +70,7 @@ export function flagName(flag: QualityFlag): string {
     high_rms: 'high RMS',
     unmatched: 'unmatched template',
     fold_overs: 'fold-overs',
+    uncovered_scan: 'scan not covered',
     suspicious_landmarks: 'suspicious landmarks',
     landmark_estimate: 'doubtful landmark estimate',
   };

@@ -293,8 +293,8 @@ pub fn fine_align(
     }
     let elapsed_ms = now_ms() - start;
     let per_vertex_distance = template_to_scan_distances(&positions, triangles, scan);
-    let scan_to_template =
-        DistanceStats::of(scan_to_template_distances(&positions, triangles, scan)?);
+    let scan_distances = scan_to_template_distances(&positions, triangles, scan)?;
+    let scan_to_template = DistanceStats::of(scan_distances.iter().map(|s| s.distance));
     let template_to_scan = DistanceStats::of(
         per_vertex_distance
             .iter()
@@ -317,6 +317,7 @@ pub fn fine_align(
             converged,
             curve,
             per_vertex_distance,
+            scan_distances,
         },
     })
 }

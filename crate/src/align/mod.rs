@@ -65,6 +65,7 @@ pub use pipeline::{align_scan, AlignInput, Alignment, PipelineError};
 pub use quality::{assess, folded_triangles, QualityFlag, QualityReport, QualityThresholds};
 pub use report::{
     scan_to_template_distances, template_to_scan_distances, AlignReport, CurvePoint, DistanceStats,
+    ScanDistance,
 };
 pub use surface_index::{FaceMatch, Match, MatchQuery, SurfaceIndex};
 pub use weights::{data_weights, HAND_EAR_WEIGHT};

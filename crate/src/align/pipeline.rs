@@ -24,6 +24,7 @@ use super::fine_input::FineAlignInput;
 use super::observer::AlignObserver;
 use super::params::AlignParams;
 use super::part_pose::pose_parts;
+use super::report::{AlignReport, ScanDistance};
 use super::surface_index::SurfaceIndex;
 use super::weights::data_weights;
 use crate::landmarks::LandmarkSet;
@@ -75,6 +76,9 @@ pub struct Alignment {
     pub warped: Vec<Point3<f64>>,
     /// `#V` signed distance (metres) of each fitted vertex to the scan (empty with `rough_only`).
     pub per_vertex_distance: Vec<f64>,
+    /// Each scan vertex's distance to the fit and the template vertex nearest it (empty with
+    /// `rough_only`).
+    pub scan_distances: Vec<ScanDistance>,
     /// The factor that took the scan's units to metres (divide by it to write in scan units).
     pub scale_to_metres: f64,
     /// Everything the run measured, ready for JSON.
@@ -166,6 +170,7 @@ pub fn align_scan(
             positions: warp.positions.clone(),
             warped: warp.positions,
             per_vertex_distance: Vec::new(),
+            scan_distances: Vec::new(),
             scale_to_metres: to_m,
             report,
         });
@@ -182,11 +187,11 @@ pub fn align_scan(
         weights: &weights[..warp.positions.len()],
         anchors: &anchors,
     };
-    let (positions, per_vertex_distance, fine) = match coarse_to_fine {
+    let (positions, (per_vertex_distance, scan_distances), fine) = match coarse_to_fine {
         None => {
             let result = fine_align(&base_input, &params.fine, observer)?;
             let fine = FineReport::of(&result.report, true);
-            (result.positions, result.report.per_vertex_distance, fine)
+            (result.positions, distances(result.report), fine)
         }
         Some(refinement) => {
             let result = coarse_to_fine_align(
@@ -200,7 +205,7 @@ pub fn align_scan(
                 observer,
             )?;
             let fine = FineReport::of_coarse_to_fine(&result, params.fine_stage.max_iterations);
-            (result.positions, result.report.per_vertex_distance, fine)
+            (result.positions, distances(result.report), fine)
         }
     };
     report.fine = Some(fine);
@@ -209,9 +214,15 @@ pub fn align_scan(
         positions,
         warped: warp.positions,
         per_vertex_distance,
+        scan_distances,
         scale_to_metres: to_m,
         report,
     })
+}
+
+/// A fine alignment's per-vertex distances both ways, taken out of its report.
+fn distances(report: AlignReport) -> (Vec<f64>, Vec<ScanDistance>) {
+    (report.per_vertex_distance, report.scan_distances)
 }
 
 #[cfg(test)]

@@ -11,7 +11,12 @@
 //!    the fit slid off it.
 //! 3. [`QualityFlag::FoldOvers`] — template triangles whose normal turned against the same
 //!    triangle of the RBF-warped template: fine alignment folded the surface over itself.
-//! 4. [`QualityFlag::SuspiciousLandmarks`] — given landmarks far from where the others of their
+//! 4. [`QualityFlag::UncoveredScan`] — too large a share of the scan's vertices lies farther than
+//!    `uncovered_mm` from the fit: part of the body (a hand, a forearm) was not reached by the
+//!    template, which lies on the scan elsewhere; the template → scan measures cannot see it, and
+//!    the RMS hardly moves (0.4 mm on the case that found it). Its report names the template part
+//!    nearest most of the uncovered scan.
+//! 5. [`QualityFlag::SuspiciousLandmarks`] — given landmarks far from where the others of their
 //!    part (or the landmark estimate's fit) put them (`estimate/suspicious.rs`): a
 //!    swapped Lt./Rt. pair, a typo, a landmark on the wrong body part. The caller that checked the
 //!    landmarks adds it with [`QualityReport::add_suspicious_landmarks`]; the warp ran without
@@ -21,6 +26,8 @@ use nalgebra::Point3;
 use serde::{Deserialize, Serialize};
 
 use super::pipeline::Alignment;
+use crate::template::parts::{dominant_part, parts};
+use crate::template::Template;
 
 /// Thresholds of the quality flags, with the defaults docs/batch.md justifies.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
@@ -39,6 +46,14 @@ pub struct QualityThresholds {
     /// against the RBF-warped template. Default 0.03 (3 %, ≈ 800 of 26,756 triangles): good
     /// fits flip 0.5–1.3 %, a scan missing a leg 6.6 %, swapped landmarks 7.1 %.
     pub max_folded_fraction: f64,
+    /// A scan vertex farther than this from the fit is uncovered (mm). Default 20 mm: on good
+    /// fits of the tuning seeds (2026, 101, 202 and the zoo's 4242) at most 6 scan vertices lie
+    /// that far, from scans of 13K to 820K vertices.
+    pub uncovered_mm: f64,
+    /// Flag a fit where more than this share of the scan's vertices is uncovered. Default 0.0004
+    /// (0.4 ‰): good tuning fits 0–0.09 ‰, a fit whose left hand missed the scan's 0.89 ‰
+    /// (docs/batch.md).
+    pub max_uncovered_share: f64,
 }
 
 impl Default for QualityThresholds {
@@ -47,6 +62,8 @@ impl Default for QualityThresholds {
             max_rms_mm: 2.0,
             max_unmatched_fraction: 0.65,
             max_folded_fraction: 0.03,
+            uncovered_mm: 20.0,
+            max_uncovered_share: 0.0004,
         }
     }
 }
@@ -61,6 +78,8 @@ pub enum QualityFlag {
     Unmatched,
     /// Flipped triangles above [`QualityThresholds::max_folded_fraction`].
     FoldOvers,
+    /// Uncovered scan above [`QualityThresholds::max_uncovered_share`].
+    UncoveredScan,
     /// Given landmarks that look wrong (listed in [`QualityReport::suspicious_landmarks`]).
     SuspiciousLandmarks,
     /// The landmark estimate the warp used called itself doubtful or failed (its reasons in
@@ -75,6 +94,7 @@ impl QualityFlag {
             Self::HighRms => "high_rms",
             Self::Unmatched => "unmatched",
             Self::FoldOvers => "fold_overs",
+            Self::UncoveredScan => "uncovered_scan",
             Self::SuspiciousLandmarks => "suspicious_landmarks",
             Self::LandmarkEstimate => "landmark_estimate",
         }
@@ -96,6 +116,14 @@ pub struct QualityReport {
     /// Of those, the ones whose normal points against the warped triangle's.
     pub folded_triangles: usize,
     pub folded_fraction: f64,
+    /// Scan vertices compared with the fit.
+    pub scan_vertices: usize,
+    /// Of those, the ones farther than [`QualityThresholds::uncovered_mm`] from it.
+    pub uncovered_scan_vertices: usize,
+    pub uncovered_share: f64,
+    /// The template part (`template::parts`: `left forearm`, `head`, …) nearest most of the
+    /// uncovered scan vertices; `None` when there are none.
+    pub uncovered_near: Option<String>,
     /// Given landmarks that looked wrong and were left out of the warp (names).
     pub suspicious_landmarks: Vec<String>,
     /// Why the landmark estimate the warp used doubts itself, in words (empty: it did not, or
@@ -159,13 +187,13 @@ pub fn folded_triangles(
     (compared, folded)
 }
 
-/// The quality of `alignment`: its fine report's RMS and matched vertices, and fold-overs of
-/// `base_triangles` (the base template's, `#F × 3`, which index the warped template and the
-/// first vertices of the fit at either resolution) between `alignment.warped` and
-/// `alignment.positions`.
+/// The quality of `alignment`: its fine report's RMS and matched vertices, fold-overs of the
+/// `base` template's triangles (which index the warped template and the first vertices of the fit
+/// at either resolution) between `alignment.warped` and `alignment.positions`, and the scan the
+/// fit left uncovered, named by `base`'s parts.
 pub fn assess(
     alignment: &Alignment,
-    base_triangles: &[[u32; 3]],
+    base: &Template,
     thresholds: &QualityThresholds,
 ) -> QualityReport {
     let fine = alignment.report.fine.as_ref();
@@ -182,9 +210,20 @@ pub fn assess(
         }
     };
     let unmatched_fraction = fraction(unmatched_vertices, weighted_vertices);
-    let (compared_triangles, folded) =
-        folded_triangles(base_triangles, &alignment.warped, &alignment.positions);
+    let (compared_triangles, folded) = folded_triangles(
+        &base.mesh().triangles,
+        &alignment.warped,
+        &alignment.positions,
+    );
     let folded_fraction = fraction(folded, compared_triangles);
+    let uncovered: Vec<u32> = alignment
+        .scan_distances
+        .iter()
+        .filter(|s| s.distance.abs() * 1000.0 > thresholds.uncovered_mm)
+        .map(|s| s.nearest_vertex)
+        .collect();
+    let scan_vertices = alignment.scan_distances.len();
+    let uncovered_share = fraction(uncovered.len(), scan_vertices);
     let flags = [
         (
             rms_mm.is_some_and(|r| r.is_nan() || r > thresholds.max_rms_mm),
@@ -198,6 +237,10 @@ pub fn assess(
             folded_fraction > thresholds.max_folded_fraction,
             QualityFlag::FoldOvers,
         ),
+        (
+            uncovered_share > thresholds.max_uncovered_share,
+            QualityFlag::UncoveredScan,
+        ),
     ]
     .into_iter()
     .filter_map(|(raised, flag)| raised.then_some(flag))
@@ -210,11 +253,31 @@ pub fn assess(
         compared_triangles,
         folded_triangles: folded,
         folded_fraction,
+        scan_vertices,
+        uncovered_scan_vertices: uncovered.len(),
+        uncovered_share,
+        uncovered_near: nearest_part(base, &uncovered),
         suspicious_landmarks: Vec::new(),
         landmark_estimate: Vec::new(),
         flags,
         thresholds: *thresholds,
     }
+}
+
+/// The name of the part of `template` (`template::parts`, each vertex in its dominant part) that
+/// holds most of `vertices` (indices into `template`; others are ignored); `None` when none does.
+pub fn nearest_part(template: &Template, vertices: &[u32]) -> Option<String> {
+    if vertices.is_empty() {
+        return None;
+    }
+    let parts = parts(template);
+    let n = template.mesh().vertex_count() as u32;
+    let mut count = vec![0usize; parts.len()];
+    for &v in vertices.iter().filter(|&&v| v < n) {
+        count[dominant_part(&parts, v)] += 1;
+    }
+    let most = (0..parts.len()).max_by_key(|&p| count[p])?;
+    (count[most] > 0).then(|| parts[most].name.to_string())
 }
 
 #[cfg(test)]

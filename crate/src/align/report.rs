@@ -93,6 +93,10 @@ pub struct AlignReport {
     /// Signed distance (m) of each fitted template vertex to the scan, `#V` (heat map).
     #[serde(skip)]
     pub per_vertex_distance: Vec<f64>,
+    /// Each scan vertex's distance to the fitted template and where on the template it lies
+    /// (the quality check's "scan the fit left uncovered", `quality.rs`).
+    #[serde(skip)]
+    pub scan_distances: Vec<ScanDistance>,
 }
 
 const EXACT: MatchQuery = MatchQuery {
@@ -122,22 +126,36 @@ pub fn template_to_scan_distances(
         .collect()
 }
 
-/// Signed distances of every scan vertex used by a triangle to the fitted template surface, positive when the scan
-/// lies outside the template (along the template face normal).
+/// One scan vertex's distance to the fitted template surface.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ScanDistance {
+    /// Signed distance (metres), positive when the scan lies outside the template (along the
+    /// template face normal).
+    pub distance: f64,
+    /// The template vertex nearest the closest point (its triangle's corner of largest weight):
+    /// where on the body the scan vertex is.
+    pub nearest_vertex: u32,
+}
+
+/// The distance of every scan vertex used by a triangle to the fitted template surface.
 pub fn scan_to_template_distances(
     fitted: &[Point3<f64>],
     triangles: &[[u32; 3]],
     scan: &SurfaceIndex,
-) -> Result<Vec<f64>, AlignError> {
+) -> Result<Vec<ScanDistance>, AlignError> {
     let template = SurfaceIndex::from_parts("fitted template", fitted, triangles)?;
     Ok(scan
         .surface_vertices()
-        .map(|s| match template.closest(s, None, &EXACT) {
-            Some(m) => {
-                let d = s - m.point;
-                d.norm().copysign(d.dot(&m.normal))
-            }
-            None => 0.0,
+        .filter_map(|s| {
+            let m = template.closest_face(s, None, &EXACT)?;
+            let d = s - m.point;
+            let corner = (0..3)
+                .max_by(|&a, &b| m.barycentric[a].total_cmp(&m.barycentric[b]))
+                .unwrap_or(0);
+            Some(ScanDistance {
+                distance: d.norm().copysign(d.dot(&m.normal)),
+                nearest_vertex: m.corners[corner],
+            })
         })
         .collect())
 }

@@ -124,11 +124,7 @@ fn outcome(template: &TemplateHandle, alignment: Alignment) -> Result<AlignOutco
     // and the first vertices of a fit at either resolution (as `bodyspace batch` does).
     let quality = alignment.report.fine.is_some().then(|| {
         let base = template.base.as_ref().unwrap_or(&template.template);
-        assess(
-            &alignment,
-            &base.mesh().triangles,
-            &QualityThresholds::default(),
-        )
+        assess(&alignment, base, &QualityThresholds::default())
     });
     let json = |e: serde_json::Error| JsError::new(&e.to_string());
     let mesh = Mesh::new(

@@ -175,6 +175,7 @@ impl QualityArgs {
             max_rms_mm: self.max_rms_mm,
             max_unmatched_fraction: self.max_unmatched,
             max_folded_fraction: self.max_folded,
+            ..QualityThresholds::default()
         })
     }
 }

@@ -119,7 +119,7 @@ pub fn fit_subject(
         }
     };
     let quality = alignment.report.fine.is_some().then(|| {
-        let mut quality = assess(&alignment, &base.mesh().triangles, &options.thresholds);
+        let mut quality = assess(&alignment, base, &options.thresholds);
         quality.add_suspicious_landmarks(
             landmarks
                 .report
