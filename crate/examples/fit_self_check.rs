@@ -11,13 +11,15 @@
 //! flags and each base vertex's distance to the scan) and reuses it, so that a change of the
 //! check alone is measured in seconds. Prints per subject: the RMS and correspondence of both
 //! fits, the landmark-free fit's excess RMS, its flags (as cached), the template vertices beyond
-//! 20 mm from the scan, the limb part farthest from it beside the other side's (RMS), and the
-//! share of the scan beyond 10 and 20 mm from the fit with the part nearest most of it (what
-//! `uncovered_scan` judges, `align/quality.rs`); then how many fits are good (within 0.2 mm),
-//! flagged, and silently worse.
+//! 20 mm from the scan, the limb part farthest from it against the other side's (RMS, soles left
+//! out: what `uneven_limb` judges), and the share of the scan beyond 10 and 20 mm from the fit
+//! with the part nearest most of it (what `uncovered_scan` judges, `align/quality.rs`); then how
+//! many fits are good (within 0.2 mm), flagged, and silently worse, and how uneven the limbs of the
+//! fits without `uneven_limb` are.
 
 #[cfg(not(target_arch = "wasm32"))]
 mod native {
+    use bodyspace::align::UnevenFit;
     use bodyspace::cli::subject_args::compare_with_truth_file;
     use bodyspace::subject::{fit_subject, read_subject, SubjectOptions};
     use bodyspace::template::Template;
@@ -134,11 +136,60 @@ mod native {
         let part_of: Vec<usize> = (0..template.mesh().vertex_count() as u32)
             .map(|v| bodyspace::template::parts::dominant_part(&parts, v))
             .collect();
+        let part_names: Vec<&str> = parts.iter().map(|p| p.name).collect();
         let weights = bodyspace::align::data_weights(
             &template,
             bodyspace::align::FineAlignParams::default().sole_weight,
         );
-        println!("| subject | RMS with / without (mm) | excess | correspondence with / without (mm) | flags without | far > 20 mm | worst limb part: RMS / other side (mm) | scan > 10 / 20 mm (‰) | most of it near |");
+        let without_soles = bodyspace::align::data_weights(&template, 0.0);
+
+        // Each limb part's RMS to the scan against its other side's, soles left out (no scanner
+        // sees them): what `uneven_limb` judges.
+        let limb_pairs = |judged: &Judged| {
+            let distances_m: Vec<f64> = judged
+                .distances_mm
+                .iter()
+                .map(|&d| d as f64 / 1e3)
+                .collect();
+            bodyspace::align::uneven_fits(
+                &distances_m,
+                &without_soles,
+                &part_of,
+                &part_names,
+                (1.0, f64::NEG_INFINITY),
+            )
+        };
+        let worse_better = |u: &UnevenFit| {
+            (
+                u.left_rms_mm.max(u.right_rms_mm),
+                u.left_rms_mm.min(u.right_rms_mm),
+            )
+        };
+        let ratio = |u: &UnevenFit| {
+            let (worse, better) = worse_better(u);
+            worse / better
+        };
+        let farthest_limb = |judged: &Judged| {
+            limb_pairs(judged)
+                .iter()
+                .max_by(|a, b| ratio(a).total_cmp(&ratio(b)))
+                .map_or("none".to_string(), |u| {
+                    let side = if u.left_rms_mm > u.right_rms_mm {
+                        "left"
+                    } else {
+                        "right"
+                    };
+                    let (worse, better) = worse_better(u);
+                    format!(
+                        "{side} {} {worse:.1} / {better:.1} ({:.1}×)",
+                        u.part,
+                        ratio(u)
+                    )
+                })
+        };
+        // Over the fits that do not raise `uneven_limb`: the largest ratio and difference.
+        let mut unflagged_limbs = (0.0f64, 0.0f64);
+        println!("| subject | RMS with / without (mm) | excess | correspondence with / without (mm) | flags without | far > 20 mm | limb part farthest from the scan against its other side, soles left out, with / without landmarks: RMS / other (mm) | scan > 10 / 20 mm (‰) | most of it near |");
         println!("| --- | --- | --- | --- | --- | --- | --- | --- | --- |");
         let (mut good, mut flagged, mut silent) = (0, 0, Vec::new());
         for id in 1..=n {
@@ -148,36 +199,22 @@ mod native {
             let with = fit(&dir, cache.as_deref(), &template, id, true)?;
             let without = fit(&dir, cache.as_deref(), &template, id, false)?;
             let excess = without.rms_mm - with.rms_mm;
+            for judged in [&with, &without] {
+                if !judged.flags.iter().any(|f| f == "uneven_limb") {
+                    for u in limb_pairs(judged) {
+                        let (worse, better) = worse_better(&u);
+                        unflagged_limbs.0 = unflagged_limbs.0.max(ratio(&u));
+                        unflagged_limbs.1 = unflagged_limbs.1.max(worse - better);
+                    }
+                }
+            }
             let far = without
                 .distances_mm
                 .iter()
                 .zip(&weights)
                 .filter(|&(&d, &w)| w > 0.0 && d.abs() > 20.0)
                 .count();
-            let mut sums = vec![(0.0f64, 0usize); parts.len()];
-            for ((&d, &w), &p) in without.distances_mm.iter().zip(&weights).zip(&part_of) {
-                if w > 0.0 {
-                    sums[p].0 += (d as f64).powi(2);
-                    sums[p].1 += 1;
-                }
-            }
-            let rms: Vec<f64> = sums
-                .iter()
-                .map(|&(s, c)| (s / c.max(1) as f64).sqrt())
-                .collect();
-            let worst = (0..parts.len())
-                .filter(|&p| {
-                    parts[p].name.starts_with("left ") || parts[p].name.starts_with("right ")
-                })
-                .max_by(|&a, &b| rms[a].total_cmp(&rms[b]))
-                .unwrap();
-            let name = parts[worst].name;
-            let other_name = if let Some(rest) = name.strip_prefix("left ") {
-                format!("right {rest}")
-            } else {
-                format!("left {}", name.trim_start_matches("right "))
-            };
-            let other = parts.iter().position(|p| p.name == other_name).unwrap();
+            let worst_limb = farthest_limb(&without);
             let beyond = |mm: f32| without.scan_far.iter().filter(|s| s.0.abs() > mm).count();
             let per_mille = |k: usize| 1000.0 * k as f64 / without.scan_vertices.max(1) as f64;
             let mut near = vec![0usize; parts.len()];
@@ -186,14 +223,13 @@ mod native {
             }
             let most = (0..parts.len()).max_by_key(|&p| near[p]).unwrap();
             println!(
-                "| {id:03} | {:.3} / {:.3} | {excess:+.3} | {:.2} / {:.2} | {} | {far} | {name} {:.1} / {:.1} | {:.1} / {:.1} | {} {} |",
+                "| {id:03} | {:.3} / {:.3} | {excess:+.3} | {:.2} / {:.2} | {} | {far} | {} / {worst_limb} | {:.1} / {:.1} | {} {} |",
                 with.rms_mm,
                 without.rms_mm,
                 with.correspondence_mm,
                 without.correspondence_mm,
                 if without.flags.is_empty() { "none".to_string() } else { without.flags.join(", ") },
-                rms[worst],
-                rms[other],
+                farthest_limb(&with),
                 per_mille(beyond(10.0)),
                 per_mille(beyond(20.0)),
                 parts[most].name,
@@ -213,6 +249,10 @@ mod native {
         println!(
             "\nwithin 0.2 mm: {good}; worse but flagged: {flagged}; silently worse: {} {silent:?}",
             silent.len()
+        );
+        println!(
+            "fits without uneven_limb: limb parts at most {:.2} times and {:.1} mm farther from the scan than the other side",
+            unflagged_limbs.0, unflagged_limbs.1
         );
         Ok(())
     }

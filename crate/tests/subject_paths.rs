@@ -451,3 +451,50 @@ fn a_part_of_the_scan_the_fit_does_not_reach_is_flagged_and_named() {
     let near = q.uncovered_near.as_deref().unwrap_or("");
     assert!(near.starts_with("left "), "{near}");
 }
+
+#[test]
+fn a_limb_the_fit_leaves_off_the_scan_is_flagged_and_named() {
+    // The scan's left foot cut away (every point within 6 cm of the heel–toe line): the template's
+    // left foot, placed by the landmarks, finds no scan under it while the right one does. The
+    // body's RMS hardly sees it (its measure runs from the scan to the template).
+    let (template, scan, landmarks) = subject();
+    let at = |name: &str| landmarks.get(name).unwrap();
+    let (heel, toe) = (at("Lt. Calcaneous, Post."), at("Lt. Digit II"));
+    let near_the_foot = |p: &Point3<f64>| {
+        let along = (toe - heel).normalize();
+        let t = (p - heel).dot(&along).clamp(0.0, (toe - heel).norm());
+        (p - (heel + along * t)).norm() < 0.06
+    };
+    let keep: Vec<bool> = scan.positions.iter().map(|p| !near_the_foot(p)).collect();
+    let footless = scan.with_vertices(&keep);
+    assert!(footless.positions.len() < scan.positions.len() - 50);
+    let fit = |mesh: &Mesh| {
+        let input = SubjectInput {
+            name: "foot".to_string(),
+            scan: mesh.clone(),
+            units: None,
+            given: Some(GivenLandmarks {
+                set: landmarks.clone(),
+                units: None,
+                file: String::new(),
+            }),
+        };
+        let fitted = fit_subject(&template, None, &input, None, &options(), &mut ()).unwrap();
+        fitted.report.quality.unwrap()
+    };
+    let clean = fit(&scan);
+    assert!(clean.uneven_limbs.is_empty(), "{:?}", clean.uneven_limbs);
+    assert!(!clean.flags.iter().any(|f| f.name() == "uneven_limb"));
+    let q = fit(&footless);
+    assert!(
+        q.flags.iter().any(|f| f.name() == "uneven_limb"),
+        "{:?}",
+        (&q.flags, &q.uneven_limbs, q.rms_mm)
+    );
+    let limb = q.uneven_limbs.iter().find(|u| u.part == "lower leg");
+    let limb = limb.unwrap_or_else(|| panic!("{:?}", q.uneven_limbs));
+    assert!(
+        limb.left_rms_mm > 2.5 * limb.right_rms_mm && limb.left_rms_mm > 10.0,
+        "{limb:?}"
+    );
+}

@@ -64,6 +64,7 @@ const quality: Keys<QualityReport> = {
   uncovered_scan_vertices: true,
   uncovered_share: true,
   uncovered_near: true,
+  uneven_limbs: true,
   suspicious_landmarks: true,
   landmark_estimate: true,
   flags: true,

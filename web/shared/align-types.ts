@@ -1,6 +1,6 @@
 // Inputs and results of the RBF warp (paper §3.1) and fine alignment (§3.2). No DOM here.
 import type { DistanceHeat } from './heat-scale';
-import type { ScanRemoval, SelfCheck } from './landmark-entry';
+import type { ScanRemoval, SelfCheck, UnevenFit } from './landmark-entry';
 import type { Orientation } from './orientation';
 import type { TemplateResolution } from './template-data';
 import type { Units } from './results';
@@ -307,7 +307,7 @@ export interface AlignResult {
 }
 
 /** A reason to look at a fit again (`align/quality.rs` `QualityFlag`, docs/batch.md). */
-export type QualityFlag = 'high_rms' | 'unmatched' | 'fold_overs' | 'uncovered_scan' | 'suspicious_landmarks' | 'landmark_estimate';
+export type QualityFlag = 'high_rms' | 'unmatched' | 'fold_overs' | 'uncovered_scan' | 'uneven_limb' | 'suspicious_landmarks' | 'landmark_estimate';
 
 /** The core's `QualityReport`: the measures behind the flags and the flags raised. */
 export interface QualityReport {
@@ -324,6 +324,8 @@ export interface QualityReport {
   uncovered_share: number;
   /** The template part nearest most of them (`left forearm`, `head`, …); null when there are none. */
   uncovered_near: string | null;
+  /** Limb parts that fit much farther from the scan than on the other side (soles left out). */
+  uneven_limbs: UnevenFit[];
   suspicious_landmarks: string[];
   /** Why the landmark estimate the warp used doubts itself, in words (empty: it did not, or none ran). */
   landmark_estimate: string[];
@@ -334,6 +336,8 @@ export interface QualityReport {
     max_folded_fraction: number;
     uncovered_mm: number;
     max_uncovered_share: number;
+    uneven_limb_ratio: number;
+    uneven_limb_mm: number;
   };
 }
 

@@ -69,8 +69,16 @@ export interface SelfCheckEvidence {
   contradicting: string[];
   /** Limb segments whose left and right lengths disagree. */
   asymmetric: Asymmetry[];
-  /** Limb parts whose fit lies much farther from the scan on one side (`UnevenFit`). */
-  uneven: { part: string; left_rms_mm: number; right_rms_mm: number }[];
+  /** Limb parts whose fit lies much farther from the scan on one side. */
+  uneven: UnevenFit[];
+}
+
+/** A limb's part whose fit lies much farther from the scan on one side than on the other (the
+ * core's `align::UnevenFit`): its part without the side (`lower leg`) and both sides' RMS (mm). */
+export interface UnevenFit {
+  part: string;
+  left_rms_mm: number;
+  right_rms_mm: number;
 }
 
 /** What the core took off a scan before fitting it (stray pieces, a floor), and that in words. */

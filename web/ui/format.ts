@@ -47,6 +47,14 @@ export function qualityText(q: QualityReport): string {
       `${(q.uncovered_share * 1000).toFixed(1)} ‰ of the scan (${q.uncovered_scan_vertices} points) lies more than ${t.uncovered_mm} mm from the fit, ` +
         `most near the ${q.uncovered_near ?? 'template'}: the fit missed part of the body (limit ${t.max_uncovered_share * 1000} ‰)`,
     );
+  if (q.flags.includes('uneven_limb'))
+    for (const u of q.uneven_limbs) {
+      const [side, worse, other] = u.left_rms_mm > u.right_rms_mm ? ['left', u.left_rms_mm, u.right_rms_mm] : ['right', u.right_rms_mm, u.left_rms_mm];
+      parts.push(
+        `the ${side} ${u.part} lies ${worse.toFixed(1)} mm RMS from the scan, the other side ${other.toFixed(1)} mm: ` +
+          `the fit missed that limb, or the scan lacks part of it (limit ${t.uneven_limb_ratio} times and ${t.uneven_limb_mm} mm)`,
+      );
+    }
   if (q.flags.includes('suspicious_landmarks')) parts.push(`suspicious landmarks left out: ${q.suspicious_landmarks.join(', ')}`);
   if (q.flags.includes('landmark_estimate')) parts.push(`landmark estimate: ${q.landmark_estimate.join('; ')}`);
   return parts.join('; ');
@@ -71,6 +79,7 @@ export function flagName(flag: QualityFlag): string {
     unmatched: 'unmatched template',
     fold_overs: 'fold-overs',
     uncovered_scan: 'scan not covered',
+    uneven_limb: 'limb off the scan',
     suspicious_landmarks: 'suspicious landmarks',
     landmark_estimate: 'doubtful landmark estimate',
   };

@@ -13,6 +13,7 @@
 //! * [`lbfgs`] — allocation-free L-BFGS with exact line search on the quadratic inner problem.
 //! * [`SurfaceIndex`] (`surface_index.rs`) — closest points on a triangle mesh, built once per mesh.
 //! * [`surface`] — closest point on a triangle, one-rings.
+//! * [`uneven_fit`] — a limb fitted much farther from the scan on one side than on the other.
 //! * [`weights`] — the per-vertex data weights from the template's region flags.
 //! * [`anchors`] — landmark anchors (optional, weight 0 by default).
 //! * [`report`] — the paper's Table 1 statistics, per-vertex distances, the convergence curve.
@@ -20,7 +21,8 @@
 //! * [`correspondence`] — correspondence error against a ground truth.
 //! * [`correspondence_split`] — that error over many subjects split as a shape model sees it:
 //!   the part common to all subjects and each subject's own (leave one out).
-//! * [`quality`] — quality flags of a finished alignment (RMS, unmatched vertices, fold-overs).
+//! * [`quality`] — quality flags of a finished alignment (RMS, unmatched vertices, fold-overs,
+//!   uncovered scan, uneven limbs).
 //! * [`FineAlignInput`] (`fine_input.rs`) — what fine alignment works on.
 //! * [`AlignParams`], [`FineAlignParams`], [`FineStageParams`] (`params.rs`) — every parameter
 //!   with its default; [`AlignError`] (`error.rs`).
@@ -45,6 +47,7 @@ pub mod report;
 pub mod scan_term;
 pub mod surface;
 pub mod surface_index;
+pub mod uneven_fit;
 pub mod weights;
 
 pub use alignment_report::{AlignmentReport, FineReport, WarpReport};
@@ -68,4 +71,5 @@ pub use report::{
     ScanDistance,
 };
 pub use surface_index::{FaceMatch, Match, MatchQuery, SurfaceIndex};
+pub use uneven_fit::{uneven_fits, UnevenFit};
 pub use weights::{data_weights, HAND_EAR_WEIGHT};

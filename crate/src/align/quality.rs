@@ -16,7 +16,12 @@
 //!    template, which lies on the scan elsewhere; the template → scan measures cannot see it, and
 //!    the RMS hardly moves (0.4 mm on the case that found it). Its report names the template part
 //!    nearest most of the uncovered scan.
-//! 5. [`QualityFlag::SuspiciousLandmarks`] — given landmarks far from where the others of their
+//! 5. [`QualityFlag::UnevenLimb`] — a limb's part (upper arm, forearm with the hand, thigh, lower
+//!    leg with the foot) lies far farther from the scan than the same part on the other side
+//!    (`uneven_fit.rs`; the soles, which no scanner sees, left out): a foot left beside its scan, an
+//!    arm posed wrongly. The body's RMS hides it (+0.07 mm on the case that found it); the report
+//!    names the part and both sides' RMS.
+//! 6. [`QualityFlag::SuspiciousLandmarks`] — given landmarks far from where the others of their
 //!    part (or the landmark estimate's fit) put them (`estimate/suspicious.rs`): a
 //!    swapped Lt./Rt. pair, a typo, a landmark on the wrong body part. The caller that checked the
 //!    landmarks adds it with [`QualityReport::add_suspicious_landmarks`]; the warp ran without
@@ -26,6 +31,8 @@ use nalgebra::Point3;
 use serde::{Deserialize, Serialize};
 
 use super::pipeline::Alignment;
+use super::uneven_fit::{uneven_fits, UnevenFit};
+use super::weights::data_weights;
 use crate::template::parts::{dominant_part, parts};
 use crate::template::Template;
 
@@ -54,6 +61,13 @@ pub struct QualityThresholds {
     /// (0.4 ‰): good tuning fits 0–0.09 ‰, a fit whose left hand missed the scan's 0.89 ‰
     /// (docs/batch.md).
     pub max_uncovered_share: f64,
+    /// Flag a fit where a limb's part lies more than this many times farther from the scan (RMS
+    /// over its vertices, soles left out) than the same part on the other side, ...
+    pub uneven_limb_ratio: f64,
+    /// ... and farther by more than this (mm). Defaults 2.5 and 5 mm: good fits of the tuning
+    /// seeds differ by at most 1.8 times and 2.4 mm; a foot the fit left beside its scan 3.1
+    /// times and 13 mm (docs/batch.md).
+    pub uneven_limb_mm: f64,
 }
 
 impl Default for QualityThresholds {
@@ -64,6 +78,8 @@ impl Default for QualityThresholds {
             max_folded_fraction: 0.03,
             uncovered_mm: 20.0,
             max_uncovered_share: 0.0004,
+            uneven_limb_ratio: 2.5,
+            uneven_limb_mm: 5.0,
         }
     }
 }
@@ -80,6 +96,9 @@ pub enum QualityFlag {
     FoldOvers,
     /// Uncovered scan above [`QualityThresholds::max_uncovered_share`].
     UncoveredScan,
+    /// A limb's part much farther from the scan than on the other side
+    /// ([`QualityThresholds::uneven_limb_ratio`], [`QualityThresholds::uneven_limb_mm`]).
+    UnevenLimb,
     /// Given landmarks that look wrong (listed in [`QualityReport::suspicious_landmarks`]).
     SuspiciousLandmarks,
     /// The landmark estimate the warp used called itself doubtful or failed (its reasons in
@@ -95,6 +114,7 @@ impl QualityFlag {
             Self::Unmatched => "unmatched",
             Self::FoldOvers => "fold_overs",
             Self::UncoveredScan => "uncovered_scan",
+            Self::UnevenLimb => "uneven_limb",
             Self::SuspiciousLandmarks => "suspicious_landmarks",
             Self::LandmarkEstimate => "landmark_estimate",
         }
@@ -124,6 +144,9 @@ pub struct QualityReport {
     /// The template part (`template::parts`: `left forearm`, `head`, …) nearest most of the
     /// uncovered scan vertices; `None` when there are none.
     pub uncovered_near: Option<String>,
+    /// The limb parts that fit much farther from the scan than on the other side, with both
+    /// sides' RMS (mm).
+    pub uneven_limbs: Vec<UnevenFit>,
     /// Given landmarks that looked wrong and were left out of the warp (names).
     pub suspicious_landmarks: Vec<String>,
     /// Why the landmark estimate the warp used doubts itself, in words (empty: it did not, or
@@ -190,7 +213,8 @@ pub fn folded_triangles(
 /// The quality of `alignment`: its fine report's RMS and matched vertices, fold-overs of the
 /// `base` template's triangles (which index the warped template and the first vertices of the fit
 /// at either resolution) between `alignment.warped` and `alignment.positions`, and the scan the
-/// fit left uncovered, named by `base`'s parts.
+/// fit left uncovered, named by `base`'s parts, and each limb part's distance to the scan against
+/// the other side's.
 pub fn assess(
     alignment: &Alignment,
     base: &Template,
@@ -224,6 +248,7 @@ pub fn assess(
         .collect();
     let scan_vertices = alignment.scan_distances.len();
     let uncovered_share = fraction(uncovered.len(), scan_vertices);
+    let uneven_limbs = uneven_limbs(alignment, base, thresholds);
     let flags = [
         (
             rms_mm.is_some_and(|r| r.is_nan() || r > thresholds.max_rms_mm),
@@ -241,6 +266,7 @@ pub fn assess(
             uncovered_share > thresholds.max_uncovered_share,
             QualityFlag::UncoveredScan,
         ),
+        (!uneven_limbs.is_empty(), QualityFlag::UnevenLimb),
     ]
     .into_iter()
     .filter_map(|(raised, flag)| raised.then_some(flag))
@@ -257,11 +283,35 @@ pub fn assess(
         uncovered_scan_vertices: uncovered.len(),
         uncovered_share,
         uncovered_near: nearest_part(base, &uncovered),
+        uneven_limbs,
         suspicious_landmarks: Vec::new(),
         landmark_estimate: Vec::new(),
         flags,
         thresholds: *thresholds,
     }
+}
+
+/// The limb parts of `base` (`template::parts`) whose fit in `alignment` lies much farther from
+/// the scan than on the other side: the RMS of the template → scan distances over each part's
+/// vertices with a data weight, the soles left out (no scanner sees them; on good fits they make a
+/// lower leg's RMS 4–7 mm).
+fn uneven_limbs(
+    alignment: &Alignment,
+    base: &Template,
+    thresholds: &QualityThresholds,
+) -> Vec<UnevenFit> {
+    let parts = parts(base);
+    let part_of: Vec<usize> = (0..base.mesh().vertex_count() as u32)
+        .map(|v| dominant_part(&parts, v))
+        .collect();
+    let names: Vec<&str> = parts.iter().map(|p| p.name).collect();
+    uneven_fits(
+        &alignment.per_vertex_distance,
+        &data_weights(base, 0.0),
+        &part_of,
+        &names,
+        (thresholds.uneven_limb_ratio, thresholds.uneven_limb_mm),
+    )
 }
 
 /// The name of the part of `template` (`template::parts`, each vertex in its dominant part) that

@@ -9,8 +9,9 @@
 
 use serde::{Deserialize, Serialize};
 
-use super::bilateral::{Asymmetry, UnevenFit};
+use super::bilateral::Asymmetry;
 use super::params::SelfCheckParams;
+use crate::align::UnevenFit;
 
 /// The estimate's verdict on itself.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]

@@ -28,7 +28,7 @@ use std::borrow::Cow;
 use nalgebra::{Point3, Vector3};
 
 use super::acromion::{place_acromions, RestTemplate};
-use super::bilateral::{asymmetries, uneven_fits};
+use super::bilateral::asymmetries;
 use super::caesar_points::{given_landmarks, landmark_rest};
 use super::candidates::{even_sample, fit_similarity, prefer_torso, FittedCandidate};
 use super::check::{judge_given, CheckParams, NEARLY_FULL};
@@ -49,7 +49,8 @@ use super::tick::Ticker;
 use super::typical_error::typical_error_mm;
 use super::up::head_end;
 use crate::align::{
-    data_weights, fine_align, AlignObserver, FineAlignInput, FineAlignParams, SurfaceIndex,
+    data_weights, fine_align, uneven_fits, AlignObserver, FineAlignInput, FineAlignParams,
+    SurfaceIndex,
 };
 use crate::landmarks::shoulder::acromion_indices;
 use crate::landmarks::{

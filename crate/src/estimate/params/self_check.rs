@@ -42,7 +42,7 @@ pub struct SelfCheckParams {
     pub max_bilateral_mm: f64,
     /// A limb's part (upper arm, forearm, thigh, lower leg) whose fit's RMS to the scan is above
     /// `uneven_fit.0` times the other side's and above it by more than `uneven_fit.1` mm makes
-    /// the estimate doubtful (`bilateral::uneven_fits`). Default (2.5, 6 mm): see
+    /// the estimate doubtful (`align::uneven_fits`). Default (2.5, 6 mm): see
     /// docs/landmarks-estimate.md, "Self-check".
     pub uneven_fit: (f64, f64),
     /// The confidences of a doubtful estimate are multiplied by this. Default 0.5.
