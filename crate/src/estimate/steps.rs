@@ -384,7 +384,7 @@ pub fn estimate_landmarks(
         &best,
         (&landmark_rest, &landmark_vertices),
         &parts,
-        &weights,
+        (&weights, &data_weights(&template, 0.0)),
         moved_rms_mm(&posed, &fine.positions, &weights),
         params,
     );
@@ -489,13 +489,14 @@ pub fn estimate_landmarks(
 
 /// The estimate's check of itself (`self_check.rs`) from its landmark-free fit `fine`, the
 /// chosen frame `best`, the template's landmark vertices (at rest, and their indices), its
-/// parts, and how far the fine fit moved the template (`moved_mm`).
+/// parts, its data weights (and the same without the soles, which no scanner sees: the limbs are
+/// compared without them) and how far the fine fit moved the template (`moved_mm`).
 fn check_itself(
     fine: &crate::align::FineAlignResult,
     best: &crate::mesh::similarity::Similarity,
     (landmark_rest, landmark_vertices): (&[Point3<f64>], &[u32]),
     parts: &[crate::template::parts::Part],
-    weights: &[f64],
+    (weights, without_soles): (&[f64], &[f64]),
     moved_mm: f64,
     params: &EstimateParams,
 ) -> SelfCheck {
@@ -518,7 +519,7 @@ fn check_itself(
         asymmetric: asymmetries(&positions, 1000.0, params.self_check.max_bilateral_mm),
         uneven: uneven_fits(
             &fine.report.per_vertex_distance,
-            weights,
+            without_soles,
             &part_of,
             &part_names,
             params.self_check.uneven_fit,

@@ -40,10 +40,10 @@ pub struct SelfCheckParams {
     /// 35 mm; a right knee misplaced 71 mm up the leg gave 68 and 93 mm, a radiale misplaced
     /// 99 mm gave 52 mm (docs/landmarks-estimate.md, "Self-check").
     pub max_bilateral_mm: f64,
-    /// A limb's part (upper arm, forearm, thigh, lower leg) whose fit's RMS to the scan is above
-    /// `uneven_fit.0` times the other side's and above it by more than `uneven_fit.1` mm makes
-    /// the estimate doubtful (`align::uneven_fits`). Default (2.5, 6 mm): see
-    /// docs/landmarks-estimate.md, "Self-check".
+    /// A limb's part (upper arm, forearm, thigh, lower leg) whose fit's RMS to the scan (the soles
+    /// left out) is above `uneven_fit.0` times the other side's and above it by more than
+    /// `uneven_fit.1` mm makes the estimate doubtful (`align::uneven_fits`). Default (2.5, 6 mm):
+    /// see docs/landmarks-estimate.md, "Self-check".
     pub uneven_fit: (f64, f64),
     /// The confidences of a doubtful estimate are multiplied by this. Default 0.5.
     pub doubtful_factor: f64,
