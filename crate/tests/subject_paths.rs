@@ -392,6 +392,26 @@ fn stray_pieces_are_left_out_of_the_fit_and_said() {
     }
 }
 
+/// The quality report of `scan` fitted from `landmarks` (metres, the scan's frame) by the one path.
+fn quality_with_landmarks(
+    template: &Template,
+    scan: &Mesh,
+    landmarks: &LandmarkSet,
+) -> bodyspace::align::QualityReport {
+    let input = SubjectInput {
+        name: "subject".to_string(),
+        scan: scan.clone(),
+        units: None,
+        given: Some(GivenLandmarks {
+            set: landmarks.clone(),
+            units: None,
+            file: String::new(),
+        }),
+    };
+    let fitted = fit_subject(template, None, &input, None, &options(), &mut ()).unwrap();
+    fitted.report.quality.unwrap()
+}
+
 #[test]
 fn a_part_of_the_scan_the_fit_does_not_reach_is_flagged_and_named() {
     // A rod 24 cm long grows out of the left hand, joined to it (no stray piece): no template
@@ -420,28 +440,13 @@ fn a_part_of_the_scan_the_fit_does_not_reach_is_flagged_and_named() {
         rod.triangles.push([previous[1], base, base + 1]);
         previous = [base, base + 1];
     }
-    let fit = |mesh: &Mesh| {
-        let input = SubjectInput {
-            name: "rod".to_string(),
-            scan: mesh.clone(),
-            units: None,
-            given: Some(GivenLandmarks {
-                set: landmarks.clone(),
-                units: None,
-                file: String::new(),
-            }),
-        };
-        fit_subject(&template, None, &input, None, &options(), &mut ()).unwrap()
-    };
-    let (clean, with_rod) = (fit(&scan), fit(&rod));
-    let quality = |f: &bodyspace::subject::SubjectFit| f.report.quality.clone().unwrap();
-    let clean = quality(&clean);
+    let fit = |mesh: &Mesh| quality_with_landmarks(&template, mesh, &landmarks);
+    let (clean, q) = (fit(&scan), fit(&rod));
     assert!(
         !clean.flags.iter().any(|f| f.name() == "uncovered_scan"),
         "{clean:?}"
     );
     assert!(clean.uncovered_scan_vertices <= 6, "{clean:?}");
-    let q = quality(&with_rod);
     assert!(
         q.flags.iter().any(|f| f.name() == "uncovered_scan"),
         "{:?}",
@@ -468,20 +473,7 @@ fn a_limb_the_fit_leaves_off_the_scan_is_flagged_and_named() {
     let keep: Vec<bool> = scan.positions.iter().map(|p| !near_the_foot(p)).collect();
     let footless = scan.with_vertices(&keep);
     assert!(footless.positions.len() < scan.positions.len() - 50);
-    let fit = |mesh: &Mesh| {
-        let input = SubjectInput {
-            name: "foot".to_string(),
-            scan: mesh.clone(),
-            units: None,
-            given: Some(GivenLandmarks {
-                set: landmarks.clone(),
-                units: None,
-                file: String::new(),
-            }),
-        };
-        let fitted = fit_subject(&template, None, &input, None, &options(), &mut ()).unwrap();
-        fitted.report.quality.unwrap()
-    };
+    let fit = |mesh: &Mesh| quality_with_landmarks(&template, mesh, &landmarks);
     let clean = fit(&scan);
     assert!(clean.uneven_limbs.is_empty(), "{:?}", clean.uneven_limbs);
     assert!(!clean.flags.iter().any(|f| f.name() == "uneven_limb"));
