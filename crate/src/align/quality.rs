@@ -17,7 +17,7 @@
 //!    the RMS hardly moves (0.4 mm on the case that found it). Its report names the template part
 //!    nearest most of the uncovered scan.
 //! 5. [`QualityFlag::UnevenLimb`] — a limb's part (upper arm, forearm with the hand, thigh, lower
-//!    leg with the foot) lies far farther from the scan than the same part on the other side
+//!    leg with the foot) lies much farther from the scan than the same part on the other side
 //!    (`uneven_fit.rs`; the soles, which no scanner sees, left out): a foot left beside its scan, an
 //!    arm posed wrongly. The body's RMS hides it (+0.07 mm on the case that found it); the report
 //!    names the part and both sides' RMS.

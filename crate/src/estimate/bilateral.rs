@@ -4,8 +4,8 @@
 //! elbow turns the bones, it does not lengthen them. An estimate whose segments differ between
 //! the sides by far more than people's do has misplaced a landmark along the limb: the surface
 //! fit cannot see that (the template slid along a smooth leg still lies on the scan), so the
-//! self-check asks this (`self_check.rs`). Its companion, a limb fitted far closer on one side than
-//! on the other, is a property of any fit and lives with the fit's checks
+//! self-check asks this (`self_check.rs`). Its companion, a limb fitted much farther from the scan
+//! on one side than on the other, is a property of any fit and lives with the fit's checks
 //! (`align/uneven_fit.rs`).
 
 use nalgebra::Point3;
