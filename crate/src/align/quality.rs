@@ -33,7 +33,7 @@ use serde::{Deserialize, Serialize};
 use super::pipeline::Alignment;
 use super::uneven_fit::{uneven_fits, UnevenFit};
 use super::weights::data_weights;
-use crate::template::parts::{dominant_part, parts};
+use crate::template::parts::{dominant_part, parts, Part};
 use crate::template::Template;
 
 /// Thresholds of the quality flags, with the defaults docs/batch.md justifies.
@@ -248,7 +248,11 @@ pub fn assess(
         .collect();
     let scan_vertices = alignment.scan_distances.len();
     let uncovered_share = fraction(uncovered.len(), scan_vertices);
-    let uneven_limbs = uneven_limbs(alignment, base, thresholds);
+    let parts = parts(base);
+    let part_of: Vec<usize> = (0..base.mesh().vertex_count() as u32)
+        .map(|v| dominant_part(&parts, v))
+        .collect();
+    let uneven_limbs = uneven_limbs(alignment, base, (&parts, &part_of), thresholds);
     let flags = [
         (
             rms_mm.is_some_and(|r| r.is_nan() || r > thresholds.max_rms_mm),
@@ -282,7 +286,7 @@ pub fn assess(
         scan_vertices,
         uncovered_scan_vertices: uncovered.len(),
         uncovered_share,
-        uncovered_near: nearest_part(base, &uncovered),
+        uncovered_near: nearest_part((&parts, &part_of), &uncovered),
         uneven_limbs,
         suspicious_landmarks: Vec::new(),
         landmark_estimate: Vec::new(),
@@ -291,40 +295,34 @@ pub fn assess(
     }
 }
 
-/// The limb parts of `base` (`template::parts`) whose fit in `alignment` lies much farther from
-/// the scan than on the other side: the RMS of the template → scan distances over each part's
-/// vertices with a data weight, the soles left out (no scanner sees them; on good fits they make a
-/// lower leg's RMS 4–7 mm).
+/// The limb parts of `base` (its `parts`, and each vertex's dominant part `part_of`) whose fit in
+/// `alignment` lies much farther from the scan than on the other side: the RMS of the template →
+/// scan distances over each part's vertices with a data weight, the soles left out (no scanner
+/// sees them; on good fits they make a lower leg's RMS 4–7 mm).
 fn uneven_limbs(
     alignment: &Alignment,
     base: &Template,
+    (parts, part_of): (&[Part], &[usize]),
     thresholds: &QualityThresholds,
 ) -> Vec<UnevenFit> {
-    let parts = parts(base);
-    let part_of: Vec<usize> = (0..base.mesh().vertex_count() as u32)
-        .map(|v| dominant_part(&parts, v))
-        .collect();
     let names: Vec<&str> = parts.iter().map(|p| p.name).collect();
     uneven_fits(
         &alignment.per_vertex_distance,
         &data_weights(base, 0.0),
-        &part_of,
+        part_of,
         &names,
         (thresholds.uneven_limb_ratio, thresholds.uneven_limb_mm),
     )
 }
 
-/// The name of the part of `template` (`template::parts`, each vertex in its dominant part) that
-/// holds most of `vertices` (indices into `template`; others are ignored); `None` when none does.
-pub fn nearest_part(template: &Template, vertices: &[u32]) -> Option<String> {
-    if vertices.is_empty() {
-        return None;
-    }
-    let parts = parts(template);
-    let n = template.mesh().vertex_count() as u32;
+/// The name of the part (of `parts`, each vertex in its dominant part `part_of`) that holds most
+/// of `vertices` (template indices; others are ignored); `None` when none does.
+fn nearest_part((parts, part_of): (&[Part], &[usize]), vertices: &[u32]) -> Option<String> {
     let mut count = vec![0usize; parts.len()];
-    for &v in vertices.iter().filter(|&&v| v < n) {
-        count[dominant_part(&parts, v)] += 1;
+    for &v in vertices {
+        if let Some(&p) = part_of.get(v as usize) {
+            count[p] += 1;
+        }
     }
     let most = (0..parts.len()).max_by_key(|&p| count[p])?;
     (count[most] > 0).then(|| parts[most].name.to_string())
