@@ -11,6 +11,7 @@
 //! * [`volume`]: enclosed volume and surface area.
 //! * [`summary`]: the one-look summary of a loaded scan.
 //! * [`surface_points`]: points spread over a mesh's triangles, everywhere or near a point.
+//! * [`tip`]: where a surface stands out farthest in one direction near a point (a nose's tip).
 //! * [`strays`]: small pieces of a scan floating apart from the body, found and taken off.
 //! * `test_points` (tests only): small point sets the unit tests of several modules share.
 
@@ -25,6 +26,7 @@ pub mod summary;
 pub mod surface_points;
 #[cfg(test)]
 pub(crate) mod test_points;
+pub mod tip;
 pub mod topology;
 pub mod trimesh;
 pub mod units;

@@ -11,12 +11,13 @@
 //! * [`segment`]: the six segments; [`error`]: the error enum `TemplateError`.
 //! * [`body_part`]: head, torso, arms, hands, legs, feet per vertex, for reports.
 //! * [`parts`]: the rigid parts (segments split at elbow and knee), their poses and blend;
-//!   [`hand`]: each hand's vertices and its turn about the wrist.
+//!   [`hand`]: each hand's vertices and its turn about the wrist; [`face`]: its nose tip.
 //! * `fixture` (tests only): the base template with its parts and hands, as unit tests take it.
 
 pub mod body_part;
 pub mod build;
 pub mod error;
+pub mod face;
 #[cfg(test)]
 pub(crate) mod fixture;
 pub mod flags;
