@@ -42,6 +42,8 @@ pub struct SegmentParams {
     pub bent_arm: BentArmParams,
     /// The torso's length from the height of the buttocks.
     pub buttocks: ButtocksParams,
+    /// The head's nose tip pulled to the scan's.
+    pub face: FaceParams,
 }
 
 impl Default for SegmentParams {
@@ -58,6 +60,7 @@ impl Default for SegmentParams {
             swing: ArmSwingParams::default(),
             bent_arm: BentArmParams::default(),
             buttocks: ButtocksParams::default(),
+            face: FaceParams::default(),
         }
     }
 }
@@ -162,6 +165,33 @@ impl Default for ButtocksParams {
             min_prominence: 0.01,
             min_points: 3,
             stretch_range: (0.85, 1.15),
+        }
+    }
+}
+
+/// The head's nose tip pulled to the scan's in the segment-wise fit (`segments.rs`): the scan's
+/// nose tip is the tip (`mesh::tip`) of its surface near where the head's pose puts the
+/// template's, seen from the torso's front.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(default)]
+pub struct FaceParams {
+    /// The scan's nose tip is looked for within this distance (m) of the posed template's.
+    /// Default 4 cm: heads slid down by up to 2.6 cm (docs/landmarks-estimate.md).
+    pub radius: f64,
+    /// A point's surroundings (m), which its tip stands out from. Default 2 cm: a nose's
+    /// half-width.
+    pub surroundings: f64,
+    /// The nose tip counts as this share of the head's matched vertices (0 leaves it out).
+    /// Default 0.2, as the joint.
+    pub share: f64,
+}
+
+impl Default for FaceParams {
+    fn default() -> Self {
+        Self {
+            radius: 0.04,
+            surroundings: 0.02,
+            share: 0.2,
         }
     }
 }
