@@ -34,7 +34,7 @@ use super::profile::{fraction, knee_from_front, profile, reach, register, LimbLi
 use super::tick::Ticker;
 use crate::mesh::normals::vertex_normals;
 use crate::mesh::similarity::{similarity, Similarity};
-use crate::mesh::surface_points::surface_samples;
+use crate::mesh::surface_points::{surface_samples, thinned};
 use crate::mesh::tip::tip;
 use crate::mesh::Mesh;
 use crate::template::face::nose_tip;
@@ -103,10 +103,23 @@ pub fn fit_segments(
         .position(|p| p.name == "head")
         .zip(nose_tip(template))
         .filter(|_| params.face.share > 0.0)
-        .map(|(head, nose)| Face {
-            head,
-            nose,
-            scan: &scan_surface,
+        .map(|(head, nose)| {
+            // Only the scan's surface near where the start puts the nose is ever looked at, no
+            // denser than the samples' spacing (a dense scan gives one sample per triangle).
+            let start_nose = start.apply(&rest[nose as usize]);
+            let reach = params.face.reach;
+            Face {
+                head,
+                nose,
+                scan: thinned(
+                    &scan_surface
+                        .iter()
+                        .filter(|p| (*p - start_nose).norm_squared() <= reach * reach)
+                        .copied()
+                        .collect::<Vec<_>>(),
+                    params.surface_spacing,
+                ),
+            }
         });
     let fit = Fit {
         template,
@@ -172,14 +185,14 @@ struct Fit<'a> {
     matching: &'a Matching<'a>,
     dominant: Vec<Option<usize>>,
     params: &'a SegmentParams,
-    face: Option<Face<'a>>,
+    face: Option<Face>,
 }
 
 /// The head's part, the template's nose tip and the scan's surface it is found on.
-struct Face<'a> {
+struct Face {
     head: usize,
     nose: u32,
-    scan: &'a [Point3<f64>],
+    scan: Vec<Point3<f64>>,
 }
 
 impl Fit<'_> {
@@ -189,7 +202,7 @@ impl Fit<'_> {
     /// `None` when no scan point lies near.
     fn nose_tip(
         &self,
-        face: &Face<'_>,
+        face: &Face,
         head: &Part,
         pose: &PartPose,
         torso: &PartPose,
@@ -199,7 +212,7 @@ impl Fit<'_> {
         let near = head.apply(pose, &nose);
         let params = &self.params.face;
         tip(
-            face.scan,
+            &face.scan,
             &near,
             params.radius,
             &forward,

@@ -12,12 +12,13 @@
 //! afternoon of 2026-11-25); the Acromions' rows measured again 2026-11-27 with the same
 //! command once they were found on the scan's shoulder (`acromion.rs`; 23.6 / 22.6 → 16.6 /
 //! 17.5 mm, the other rows unchanged); the head's nine rows measured again 2026-12-03 with the
-//! same command once the head was held by its nose tip (`segments.rs`; Sellion 13.5 → 3.2,
-//! Supramenton 15.3 → 2.1, the Infraorbitales 18.6 / 18.7 → 4.3 / 3.9, the Tragions and Gonions
-//! 11.9–13.2 → 4.8–5.4, Nuchale 18.4 → 17.5 mm; on held-out subjects the head's landmarks are
-//! 6–7 mm off on average, docs/landmarks-estimate.md). Regenerate it with the same command when the method or the
-//! template's landmark vertices change; the held-out figures in docs/landmarks-estimate.md say
-//! how well it ranks the errors of subjects it was not measured on. The figures are data, in
+//! same command once the head was held by its nose tip (`segments.rs`; Sellion 13.5 → 3.5,
+//! Supramenton 15.3 → 2.2, the Infraorbitales 18.6 / 18.7 → 4.9 / 3.9, the Tragions and Gonions
+//! 11.9–13.2 → 4.3–6.1, Nuchale 18.4 → 17.6 mm; Spearman's ρ between confidence and error on
+//! those subjects −0.44 → −0.57; on held-out subjects the head's landmarks are 6–7 mm off on
+//! average, docs/landmarks-estimate.md). Regenerate it with the same command when the method or
+//! the template's landmark vertices change; the held-out figures in docs/landmarks-estimate.md
+//! say how well it ranks the errors of subjects it was not measured on. The figures are data, in
 //! `typical_error.csv` (CAESAR order, one row a landmark).
 
 use std::sync::OnceLock;

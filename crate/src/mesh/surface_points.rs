@@ -59,6 +59,18 @@ fn grid([a, b, c]: &[Point3<f64>; 3], n: u32, out: &mut Vec<Point3<f64>>) {
     }
 }
 
+/// One of `points` per cube of side `cell` (m) in a grid from the origin, the first in it: the
+/// points of a dense mesh's [`surface_samples`] (one per triangle at least) no denser than
+/// `cell` apart, in their order.
+pub fn thinned(points: &[Point3<f64>], cell: f64) -> Vec<Point3<f64>> {
+    let mut seen = std::collections::HashSet::new();
+    points
+        .iter()
+        .filter(|p| seen.insert((p.coords / cell).map(|c| c.floor() as i64)))
+        .copied()
+        .collect()
+}
+
 /// Points spread `spacing` apart over the triangles of a mesh (`positions`, `triangles`) that
 /// lie within `radius` of `centre` (barycentric grids, as [`surface_samples`]).
 pub fn surface_near(
@@ -173,6 +185,16 @@ fn corners(positions: &[Point3<f64>], t: &[u32; 3]) -> [Point3<f64>; 3] {
 
 #[cfg(test)]
 mod tests {
+
+    #[test]
+    fn thinning_keeps_one_point_per_cell() {
+        let points: Vec<Point3<f64>> = (0..100)
+            .map(|i| Point3::new(i as f64 * 0.001, 0.0005, 0.0005))
+            .collect();
+        let kept = thinned(&points, 0.01);
+        assert_eq!(kept.len(), 10);
+        assert_eq!(kept[1], points[10]);
+    }
     use super::*;
 
     /// A flat square `size` m across in the z = 0 plane, `n` × `n` cells each cut in two.
