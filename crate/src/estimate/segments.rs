@@ -197,9 +197,10 @@ struct Face {
 
 impl Fit<'_> {
     /// The template's nose tip (at rest) and the scan's nose tip near where the head's `pose`
-    /// puts it, seen from the front of the torso (`torso`'s pose; the head's own front turned the
-    /// head further each iteration, its face off the scan's by 11 cm on held-out seed 2727);
-    /// `None` when no scan point lies near.
+    /// puts it, seen from the front of the torso (`torso`'s pose): the point farthest along the
+    /// head's own front turned the head back further each iteration, its face 11 cm off on
+    /// held-out 2727/004 (head flexed 12°; 7 cm off along the torso's front), hence the tip that
+    /// stands out from its surroundings. `None` when no scan point lies near.
     fn nose_tip(
         &self,
         face: &Face,

@@ -1,7 +1,7 @@
-//! The template's face: its nose tip (pronasale), the point of the face that stands out most. A
-//! fit or the landmark estimate finds the scan's nose tip near where the template's lies
-//! (`mesh::tip`) and compares the two: nearest points slide a head's surface over the scan's
-//! head freely, the nose tip does not slide.
+//! The template's face: its nose tip (pronasale), the point of the face that stands out most.
+//! The landmark estimate's segment-wise fit pulls it to the scan's nose tip (`mesh::tip`,
+//! `estimate/segments.rs`): nearest points slide a head's surface over the scan's head freely,
+//! the nose tip does not slide.
 
 use crate::template::{Segment, Template};
 
