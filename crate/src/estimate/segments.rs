@@ -112,11 +112,9 @@ pub fn fit_segments(
                 head,
                 nose,
                 scan: thinned(
-                    &scan_surface
+                    scan_surface
                         .iter()
-                        .filter(|p| (*p - start_nose).norm_squared() <= reach * reach)
-                        .copied()
-                        .collect::<Vec<_>>(),
+                        .filter(|p| (*p - start_nose).norm_squared() <= reach * reach),
                     params.surface_spacing,
                 ),
             }

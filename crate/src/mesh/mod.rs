@@ -11,7 +11,8 @@
 //! * [`volume`]: enclosed volume and surface area.
 //! * [`summary`]: the one-look summary of a loaded scan.
 //! * [`surface_points`]: points spread over a mesh's triangles, everywhere or near a point.
-//! * [`tip`]: where a surface stands out farthest in one direction near a point (a nose's tip).
+//! * [`tip`]: where a surface near a point stands out most from its surroundings in one direction
+//!   (a nose's tip).
 //! * [`strays`]: small pieces of a scan floating apart from the body, found and taken off.
 //! * `test_points` (tests only): small point sets the unit tests of several modules share.
 

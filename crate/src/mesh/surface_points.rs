@@ -62,10 +62,13 @@ fn grid([a, b, c]: &[Point3<f64>; 3], n: u32, out: &mut Vec<Point3<f64>>) {
 /// One of `points` per cube of side `cell` (m) in a grid from the origin, the first in it: the
 /// points of a dense mesh's [`surface_samples`] (one per triangle at least) no denser than
 /// `cell` apart, in their order.
-pub fn thinned(points: &[Point3<f64>], cell: f64) -> Vec<Point3<f64>> {
+pub fn thinned<'a>(
+    points: impl IntoIterator<Item = &'a Point3<f64>>,
+    cell: f64,
+) -> Vec<Point3<f64>> {
     let mut seen = std::collections::HashSet::new();
     points
-        .iter()
+        .into_iter()
         .filter(|p| seen.insert((p.coords / cell).map(|c| c.floor() as i64)))
         .copied()
         .collect()
