@@ -183,3 +183,63 @@ fn a_parts_scan_is_split_and_a_crown_cut_scan_has_nothing_above_the_cut() {
     let n = decimated.scan.mesh.positions.len();
     assert!((7_000..=14_000).contains(&n), "decimated to {n} vertices");
 }
+
+/// An arm raised beside or above the head is placed 3–4 cm off at the elbow, where an arm
+/// hanging by the body is placed 1 cm off (docs/landmarks-estimate.md, "A raised arm's
+/// confidence"): its landmarks' confidences say so, against the other arm's.
+#[test]
+fn a_raised_arm_says_its_landmarks_are_unsure() {
+    let (template, data) = load();
+    let zoo = Zoo {
+        data: &data,
+        template: &template,
+        scanner: ScannerParams {
+            vertical_step: 0.006,
+            horizontal_step: 0.006,
+            ..PopulationProfile::HeldOut.scanner()
+        },
+        params: ZooParams::default(),
+    };
+    let frame = zoo_frames()[0];
+    let elbow = [
+        "Olecranon",
+        "Radiale",
+        "Humeral Lateral Epicn",
+        "Humeral Medial Epicn",
+    ];
+    for index in [30, 31] {
+        let id = SubjectId {
+            profile: PopulationProfile::HeldOut,
+            seed: SEED,
+            index,
+        };
+        let subject = zoo.scanned(id, ScannerClass::ArmRaised);
+        let pose = &subject.params.pose;
+        let (raised, down) = if pose.left_shoulder_abduction > pose.right_shoulder_abduction {
+            ("Lt.", "Rt.")
+        } else {
+            ("Rt.", "Lt.")
+        };
+        let c = placed(&template, subject, &frame);
+        let e = estimate_bare(&template, &c, &EstimateParams::default());
+        let confidence = |side: &str| {
+            let of = |name: &str| {
+                e.report
+                    .landmarks
+                    .iter()
+                    .find(|l| l.name == format!("{side} {name}"))
+                    .unwrap()
+                    .confidence
+            };
+            elbow.iter().map(|n| of(n)).sum::<f64>() / elbow.len() as f64
+        };
+        let (up, hanging) = (confidence(raised), confidence(down));
+        eprintln!(
+            "subject {index}: {raised} arm raised, elbow confidence {up:.2} against {hanging:.2}"
+        );
+        assert!(
+            up < 0.3 && up < 0.6 * hanging,
+            "{index}: {up:.2} vs {hanging:.2}"
+        );
+    }
+}

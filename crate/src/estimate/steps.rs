@@ -46,13 +46,13 @@ use super::segments::fit_segments;
 use super::self_check::{self_check, Evidence, SelfCheck};
 use super::suspicious::{flag_suspicious, SuspiciousLandmark};
 use super::tick::Ticker;
-use super::typical_error::typical_error_mm;
+use super::typical_error::{raised_arm_typical_error_mm, typical_error_mm};
 use super::up::head_end;
 use crate::align::{
     data_weights, fine_align, uneven_fits, AlignObserver, FineAlignInput, FineAlignParams,
     SurfaceIndex,
 };
-use crate::landmarks::shoulder::acromion_indices;
+use crate::landmarks::shoulder::{acromion_indices, ShoulderFrame};
 use crate::landmarks::{
     definition_sharpness, LandmarkSet, CAESAR_LANDMARKS, CAESAR_LANDMARK_COUNT,
 };
@@ -400,6 +400,10 @@ pub fn estimate_landmarks(
         best.scale,
         &params.acromion,
     );
+    // Per side (right, left): whether the fit holds that arm raised (`raised_arm_deg`).
+    let raised = ShoulderFrame::both(&|k| fine.positions[landmark_vertices[k] as usize])
+        .map(|frames| frames.map(|f| f.abduction_deg().is_some_and(|a| a > params.raised_arm_deg)))
+        .unwrap_or([false, false]);
     let near = neighbourhoods(rest, &landmark_vertices, params.confidence_radius);
     let mut positions = Vec::with_capacity(CAESAR_LANDMARK_COUNT);
     let mut confidences = Vec::with_capacity(CAESAR_LANDMARK_COUNT);
@@ -428,7 +432,16 @@ pub fn estimate_landmarks(
                     &near[k],
                     params.outlier_distance,
                 );
-                let c = confidence(typical_error_mm(k) / 1000.0, sharpness.spread(), r, params)
+                let arm_side = match name.get(..3) {
+                    Some("Rt.") => Some(0),
+                    Some("Lt.") => Some(1),
+                    _ => None,
+                };
+                let typical = arm_side
+                    .filter(|&s| raised[s])
+                    .and_then(|_| raised_arm_typical_error_mm(k))
+                    .unwrap_or_else(|| typical_error_mm(k));
+                let c = confidence(typical / 1000.0, sharpness.spread(), r, params)
                     * checked.factor_for(name)
                     * unsure;
                 (finite.then(|| p / to_m), if finite { c } else { 0.0 })

@@ -87,18 +87,23 @@ impl ShoulderFrame {
     /// when the arm lies mostly along `forward` or is raised more than `max_abduction_deg`
     /// from hanging down.
     pub fn direction(&self, max_abduction_deg: f64) -> Option<(f64, f64)> {
+        if self.abduction_deg()? > max_abduction_deg {
+            return None;
+        }
         let (al, au) = (self.arm.dot(&self.lateral), self.arm.dot(&self.up));
         let n = al.hypot(au);
-        if n < 0.5 {
-            return None;
-        }
         let (al, au) = (al / n, au / n);
-        if al.atan2(-au).to_degrees() > max_abduction_deg {
-            return None;
-        }
         let (dl, du) = (-au, 1.0 + al);
         let norm = dl.hypot(du);
         (norm > 1e-9).then(|| (dl / norm, du / norm))
+    }
+
+    /// How far (degrees) the upper arm is raised from hanging down, in the trunk's frontal plane:
+    /// 0 down along the body, 90 held out level, 180 straight up. `None` when the arm lies mostly
+    /// along `forward`.
+    pub fn abduction_deg(&self) -> Option<f64> {
+        let (al, au) = (self.arm.dot(&self.lateral), self.arm.dot(&self.up));
+        (al.hypot(au) >= 0.5).then(|| al.atan2(-au).to_degrees())
     }
 
     /// `(lateral, up, forward)` components → a vector.

@@ -102,6 +102,12 @@ pub struct EstimateParams {
     /// The local residual (m) that lowers the confidence by a further factor e⁻¹. Default 10 mm:
     /// above the fit's usual 3–5 mm, so only a landmark over a hole or a failed fit drops.
     pub confidence_residual: f64,
+    /// An arm raised more than this (degrees from hanging down, the upper arm in the trunk's
+    /// frontal plane, as the fit placed it) takes its landmarks' typical errors from the raised
+    /// arm's table (`typical_error.rs`), so their confidence says how far off such an arm is
+    /// placed. Default 75°: the held-out profile's arms reach 60° from the body, the zoo's raised
+    /// arms measured 83–149° (docs/landmarks-estimate.md, "A raised arm's confidence").
+    pub raised_arm_deg: f64,
     /// When the estimate calls itself doubtful or failed (`self_check.rs`).
     pub self_check: SelfCheckParams,
     /// Small pieces floating off the body, taken off the scan first (`mesh/strays.rs`; its
@@ -138,6 +144,7 @@ impl Default for EstimateParams {
             confidence_radius: 0.025,
             confidence_error: 0.03,
             confidence_residual: 0.01,
+            raised_arm_deg: 75.0,
             self_check: SelfCheckParams::default(),
             strays: StrayParams::default(),
         }
