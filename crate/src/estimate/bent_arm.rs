@@ -1,15 +1,19 @@
-//! The elbow of an arm bent at it (hands on hips). The limbs' profiles (`profile.rs`) place an
-//! elbow only along a near-straight arm (`SegmentParams::max_bend_deg`): a bent arm kept the template's
-//! upper-arm length (× the body's scale), its forearm held at that elbow, and nearest points
-//! then pulled the forearm and the hand towards the elbow and into the hip. A bent arm shows
-//! its elbow in its shape: the corner where the upper arm's axis meets the forearm's. So here
+//! The elbow of an arm bent at it. Nearest points do not see where along a near-cylindrical arm
+//! the elbow is, and the limbs' profiles (`profile.rs`) placed it 16 mm off on the development
+//! subjects; a bent arm kept the template's upper-arm length (× the body's scale), its forearm
+//! held at that elbow, and nearest points then pulled the forearm and the hand towards the elbow
+//! and into the hip. An arm shows its elbow in its shape: the corner where the upper arm's axis
+//! (from the shoulder joint, inside the shoulder) meets the forearm's. So here, for every arm
+//! bent more than `BentArmParams::min_bend_deg` (the template's straight arm is bent ≈ 39° so),
 //! the forearm (with the hand) is fitted on its own, rigid and not held at the elbow, from its
 //! surface beyond the elbow's blend; the upper arm is stretched along its axis to the point
 //! nearest the forearm's axis, and the forearm, turned as its own fit turned it, is held at that
-//! elbow. The upper arm is then turned about its own axis until the elbow's hinge lies across the
-//! plane of the two axes, as a real elbow's does (`roll_to_hinge`; the segment-wise fit had left
-//! it 47–90° off: the elbows' landmarks 23.8 mm off on held-out seed 7531, 18.8 mm turned). The
-//! segment-wise fit then goes on from there.
+//! elbow. An arm bent more than `SegmentParams::max_bend_deg` (hands on hips) then has its upper
+//! arm turned about its own axis until the elbow's hinge lies across the plane of the two axes,
+//! as a real elbow's does (`roll_to_hinge`; the segment-wise fit had left it 47–90° off: the
+//! elbows' landmarks 23.8 mm off on held-out seed 7531, 18.8 mm turned); a straighter arm is
+//! not turned (the turn moved its shoulder's blend and the Acromions 20–24 → 25–30 mm on the
+//! development subjects). The segment-wise fit then goes on from there.
 
 use nalgebra::{Point3, Rotation3, Vector3};
 
@@ -100,10 +104,12 @@ fn roll_to_hinge(
     Some(())
 }
 
-/// For each arm bent more than `params.max_bend_deg` in `poses` (of `parts`, of `template` at the
-/// resolution fitted): its forearm fitted on its own for `params.bent_arm.forearm_iterations`
-/// (those of `vertices` whose `dominant` part is the forearm, from
-/// `params.bent_arm.forearm_start` of the way to the wrist on, matched by `matching`), the upper arm's stretch set by [`elbow_stretch`] and the
+/// For each arm bent more than `params.bent_arm.min_bend_deg` in `poses` (of `parts`, of
+/// `template` at the resolution fitted): its forearm fitted on its own for
+/// `params.bent_arm.forearm_iterations` (those of `vertices` whose `dominant` part is the
+/// forearm, from `params.bent_arm.forearm_start` of the way to the wrist on, matched by
+/// `matching`), the upper arm's stretch set by [`elbow_stretch`], its hinge turned across the
+/// axes' plane when it is bent more than `params.max_bend_deg` ([`roll_to_hinge`]), and the
 /// forearm held there in its own turn. Returns the upper parts placed.
 pub fn place_bent_elbows(
     template: &Template,
@@ -120,9 +126,8 @@ pub fn place_bent_elbows(
     for arm in arms(parts) {
         let (upper, lower) = (&parts[arm.upper], &parts[arm.lower]);
         let Some(end) = lower.end else { continue };
-        let bent =
-            limb_bend(parts, poses, arm.upper, arm.lower, &end) > params.max_bend_deg.to_radians();
-        if !bent {
+        let bend = limb_bend(parts, poses, arm.upper, arm.lower, &end);
+        if bend <= params.bent_arm.min_bend_deg.to_radians() {
             continue;
         }
         let line = LimbLine {
@@ -172,7 +177,8 @@ pub fn place_bent_elbows(
             continue;
         };
         poses[arm.upper].stretch = stretch;
-        if let Some(hinge) = hinge(template, upper) {
+        let hinge = hinge(template, upper).filter(|_| bend > params.max_bend_deg.to_radians());
+        if let Some(hinge) = hinge {
             roll_to_hinge(
                 upper,
                 &mut poses[arm.upper],
@@ -259,8 +265,49 @@ mod tests {
             let off = across.angle(&normal).to_degrees();
             assert!(off.min(180.0 - off) < 1.0, "{off}°");
         }
-        // A straight arm is left alone.
+        // An arm bent as the template's own (≈ 39° at the elbow: its shoulder joint sits inside
+        // the shoulder) on a scan whose upper arms are 15% longer: its elbow is found there too,
+        // and its upper arm is not turned about its own axis.
+        let mut long_arms = vec![identity; parts.len()];
+        for arm in &arms {
+            long_arms[arm.upper].stretch = 1.15;
+            let elbow = parts[arm.upper].apply(&long_arms[arm.upper], &parts[arm.lower].joint);
+            long_arms[arm.lower].transform.translation = elbow - parts[arm.lower].joint;
+        }
+        let scan = body.posed(&long_arms);
+        let index = SurfaceIndex::new(&scan).unwrap();
+        let matching = Matching::new(&index, &EstimateParams::default());
+        let mut poses = vec![identity; parts.len()];
+        let placed = place_bent_elbows(
+            template,
+            parts,
+            &mut poses,
+            &vertices,
+            &dominant,
+            &matching,
+            &SegmentParams::default(),
+        );
+        assert_eq!(placed.len(), 2);
+        for arm in &arms {
+            let stretch = poses[arm.upper].stretch;
+            assert!((stretch - 1.15).abs() < 0.02, "{stretch}");
+            assert_eq!(
+                poses[arm.upper].transform.rotation,
+                identity.transform.rotation
+            );
+        }
+        // An arm whose forearm runs on in line with its shoulder → elbow line is left alone.
         let mut straight = vec![identity; parts.len()];
+        for arm in &arms {
+            let (upper, lower) = (&parts[arm.upper], &parts[arm.lower]);
+            let r =
+                Rotation3::rotation_between(&lower.axis.unwrap(), &upper.axis.unwrap()).unwrap();
+            straight[arm.lower].transform = Similarity {
+                scale: 1.0,
+                rotation: *r.matrix(),
+                translation: lower.joint.coords - r * lower.joint.coords,
+            };
+        }
         let placed = place_bent_elbows(
             template,
             parts,

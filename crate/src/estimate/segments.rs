@@ -12,10 +12,12 @@
 //! The thigh and the lower leg also stretch along their own axis (about the hip or the knee):
 //! the body's common scale leaves them as long as the template's, whatever the subject's leg
 //! proportions. Nearest points do not see where along a near-cylindrical limb the knee or the
-//! elbow is, so before the last iterations each limb's cross-section profile places its knee or
-//! elbow (`profile.rs`): the thigh's and the upper arm's stretches are set from it and held, the
-//! lower leg's refitted, the forearm kept rigid; a knee is then set by where the front of the
-//! leg steps back to the shin below the patella. Before that the torso's own length (along its
+//! elbow is, so before the last iterations each arm's elbow is placed where its upper arm's and
+//! forearm's axes meet (`bent_arm.rs`) and each leg's cross-section profile places its knee
+//! (`profile.rs`; an arm in line with its shoulder → elbow line is placed so too): the thigh's
+//! and the upper arm's stretches are set from it and held, the lower leg's refitted, the forearm
+//! kept rigid; a knee is then set by where the front of the leg steps back to the shin below the
+//! patella. Before that the torso's own length (along its
 //! axis down from the neck) is set from the height of the buttocks (`buttocks.rs`) and the torso
 //! then held. (Fitting the arm parts' stretch by ICP, a hand
 //! part of its own and pulling a thigh towards where the lower leg puts the knee were measured
@@ -66,11 +68,12 @@ fn fit_stretch(
 /// its (already moved) parent puts it — first the stretch in the part's last placement, then
 /// the rigid motion of the stretched part. After `params.swing.after` iterations each arm is tried
 /// at several turns about its shoulder (`arm_swing.rs`): nearest points alone leave an arm
-/// held down along the body out at the template's A-pose. Before the last `params.profile_iterations` the knees and
-/// elbows are moved along the limbs to where the limbs' cross-section profiles put them
+/// held down along the body out at the template's A-pose. Then each elbow of an arm bent more
+/// than `params.bent_arm.min_bend_deg` goes where its upper arm's and forearm's axes meet
+/// (`bent_arm.rs`). Before the last `params.profile_iterations` the knees (and any straighter
+/// arm's elbow) are moved along the limbs to where the limbs' cross-section profiles put them
 /// (`profile.rs`, [`place_joints`]) and the torso's length is set by the buttocks
-/// (`buttocks.rs`), the torso then held; the elbow of an arm bent more than `params.max_bend_deg` where its
-/// upper arm's and forearm's axes meet (`bent_arm.rs`), both profiles taken from points spread over the surfaces
+/// (`buttocks.rs`), the torso then held, both profiles taken from points spread over the surfaces
 /// (`scan`, metres, is the mesh `matching` indexes): a coarse mesh's vertices alone lie in rings
 /// too far apart. Returns the blended positions, or `None` when the caller cancelled.
 #[allow(clippy::too_many_arguments)]
@@ -342,7 +345,8 @@ fn unfold(parts: &[Part], poses: &mut [PartPose], max_fold_deg: f64) {
     }
 }
 
-/// Moves each knee and elbow along its limb to where the limb's cross-section profile on `scan`
+/// Moves each knee (and the elbow of an arm bent no more than `bent_arm.min_bend_deg`, whose
+/// axes do not meet surely) along its limb to where the limb's cross-section profile on `scan`
 /// puts it (the template's profile from `surface`, points on its surface at rest, registered to
 /// the one from `scan`, points on the scan's surface, `profile.rs`): the upper part's stretch scaled so that the joint's fraction of the
 /// root → end line (hip → ankle, shoulder → wrist) is the profile's; a leg's knee is then moved to
@@ -395,7 +399,13 @@ fn place_joints(
             continue;
         }
         let arm = !parts[lower].stretches;
-        if limb_bend(parts, poses, upper, lower, &end) > params.max_bend_deg.to_radians() {
+        // A bent arm's elbow is where its axes meet (`bent_arm.rs`).
+        let max_bend = if arm {
+            params.bent_arm.min_bend_deg
+        } else {
+            params.max_bend_deg
+        };
+        if limb_bend(parts, poses, upper, lower, &end) > max_bend.to_radians() {
             continue;
         }
         let bend = parts[lower].apply(&poses[lower], &parts[lower].joint);
