@@ -16,7 +16,10 @@
 //! Supramenton 15.3 → 2.2, the Infraorbitales 18.6 / 18.7 → 4.9 / 3.9, the Tragions and Gonions
 //! 11.9–13.2 → 4.3–6.1, Nuchale 18.4 → 17.6 mm; Spearman's ρ between confidence and error on
 //! those subjects −0.44 → −0.57; on held-out subjects the head's landmarks are 6–7 mm off on
-//! average, docs/landmarks-estimate.md). Regenerate it with the same command when the method or
+//! average, docs/landmarks-estimate.md); the arms' eighteen rows (elbows, wrists and hands)
+//! measured again 2026-12-03 with the same command once every elbow was placed where the arm's
+//! axes meet (`bent_arm.rs`; the elbows' 9.7–11.7 → 6.4–9.7 mm, the hands' 6.5–8.8 → 5.1–7.7,
+//! the styloids' 2.6–4.3 → 2.4–4.9). Regenerate it with the same command when the method or
 //! the template's landmark vertices change; the held-out figures in docs/landmarks-estimate.md
 //! say how well it ranks the errors of subjects it was not measured on. The figures are data, in
 //! `typical_error.csv` (CAESAR order, one row a landmark).
@@ -27,9 +30,12 @@
 //! of the arm, either side), measured 2026-12-03 on 16 subjects of the scanner zoo's
 //! `arm-raised` class (`bodyspace synth --scanner-class arm-raised --n 8 --step 4`, seeds 2026
 //! and 4242, then `bodyspace landmarks` on each scan; the raised arms 83–149° from hanging down):
-//! the mean distance of the raised arm's estimated landmarks from the true ones. Their elbows
-//! lie 37–42 mm off, the Acromion 77 mm, where the table above has 10–17 mm
-//! (docs/landmarks-estimate.md, "A raised arm's confidence").
+//! the mean distance of the raised arm's estimated landmarks from the true ones, measured again
+//! the same way once every elbow was placed where the arm's axes meet. The raised arm's
+//! Acromion lies 74 mm off (the fit's guess: a raised shoulder has no shoulder point,
+//! `acromion.rs`), where the table above has 17 mm; its elbow and hand 5–15 mm, a few mm worse
+//! than an arm hanging by the body (37–42 mm before; docs/landmarks-estimate.md, "A raised
+//! arm").
 
 use std::sync::OnceLock;
 
