@@ -184,11 +184,13 @@ fn a_parts_scan_is_split_and_a_crown_cut_scan_has_nothing_above_the_cut() {
     assert!((7_000..=14_000).contains(&n), "decimated to {n} vertices");
 }
 
-/// An arm raised beside or above the head is placed 3–4 cm off at the elbow, where an arm
-/// hanging by the body is placed 1 cm off (docs/landmarks-estimate.md, "A raised arm's
-/// confidence"): its landmarks' confidences say so, against the other arm's.
+/// An arm raised beside or above the head has no shoulder point, so its Acromion is the fit's
+/// guess, 74 mm off on average on the zoo's raised arms (docs/landmarks-estimate.md, "A raised
+/// arm"): its confidence says so, against the other Acromion's, and the upper arm measured
+/// through it does not make the estimate doubtful (it did for every raised arm once the elbow
+/// was placed where the arm's axes meet).
 #[test]
-fn a_raised_arm_says_its_landmarks_are_unsure() {
+fn a_raised_arm_says_its_acromion_is_unsure() {
     let (template, data) = load();
     let zoo = Zoo {
         data: &data,
@@ -201,12 +203,6 @@ fn a_raised_arm_says_its_landmarks_are_unsure() {
         params: ZooParams::default(),
     };
     let frame = zoo_frames()[0];
-    let elbow = [
-        "Olecranon",
-        "Radiale",
-        "Humeral Lateral Epicn",
-        "Humeral Medial Epicn",
-    ];
     for index in [30, 31] {
         let id = SubjectId {
             profile: PopulationProfile::HeldOut,
@@ -223,23 +219,26 @@ fn a_raised_arm_says_its_landmarks_are_unsure() {
         let c = placed(&template, subject, &frame);
         let e = estimate_bare(&template, &c, &EstimateParams::default());
         let confidence = |side: &str| {
-            let of = |name: &str| {
-                e.report
-                    .landmarks
-                    .iter()
-                    .find(|l| l.name == format!("{side} {name}"))
-                    .unwrap()
-                    .confidence
-            };
-            elbow.iter().map(|n| of(n)).sum::<f64>() / elbow.len() as f64
+            e.report
+                .landmarks
+                .iter()
+                .find(|l| l.name == format!("{side} Acromion"))
+                .unwrap()
+                .confidence
         };
         let (up, hanging) = (confidence(raised), confidence(down));
+        let check = &e.report.self_check;
         eprintln!(
-            "subject {index}: {raised} arm raised, elbow confidence {up:.2} against {hanging:.2}"
+            "subject {index}: {raised} arm raised, Acromion confidence {up:.2} against {hanging:.2}, {}: {:?}",
+            check.verdict.name(),
+            check.reasons
         );
-        assert!(
-            up < 0.3 && up < 0.6 * hanging,
-            "{index}: {up:.2} vs {hanging:.2}"
-        );
+        assert!(up < 0.3 * hanging, "{index}: {up:.2} vs {hanging:.2}");
+        let upper_arm = check
+            .evidence
+            .asymmetric
+            .iter()
+            .any(|a| a.segment == "upper arm");
+        assert!(!upper_arm, "{index}: {:?}", check.reasons);
     }
 }
