@@ -14,7 +14,10 @@ mod estimate_support;
 use bodyspace::estimate::{EstimateParams, Verdict};
 use bodyspace::mesh::topology::{component_labels, components};
 use bodyspace::synth::zoo::parts::scan_labels;
-use bodyspace::synth::{PopulationProfile, ScannerClass, ScannerParams, SubjectId, ZooParams};
+use bodyspace::synth::{
+    MakeHumanData, PopulationProfile, ScannerClass, ScannerParams, SubjectId, ZooParams,
+};
+use bodyspace::template::Template;
 use estimate_support::{
     estimate_bare, frame_cosines, landmark_errors, load, placed, zoo_frames, Zoo,
 };
@@ -36,6 +39,25 @@ fn tolerance_mm(class: ScannerClass) -> f64 {
     }
 }
 
+/// The zoo on the held-out profile's scanner at `step` (m) both ways: coarse keeps the tests fast.
+fn zoo_at<'a>(
+    template: &'a Template,
+    data: &'a MakeHumanData,
+    step: f64,
+    params: ZooParams,
+) -> Zoo<'a> {
+    Zoo {
+        data,
+        template,
+        scanner: ScannerParams {
+            vertical_step: step,
+            horizontal_step: step,
+            ..PopulationProfile::HeldOut.scanner()
+        },
+        params,
+    }
+}
+
 /// The classes of what people bring to the scanner (poses, hair, clothing), not the scanner's.
 fn people(class: ScannerClass) -> bool {
     matches!(
@@ -52,20 +74,12 @@ fn every_scanner_class_comes_out_the_right_way_up_in_two_frames() {
     let (template, data) = load();
     let frames = zoo_frames();
     // A coarse scanner (6 mm) and a dense class at 2 mm keep the test fast.
-    let zoo = Zoo {
-        data: &data,
-        template: &template,
-        scanner: ScannerParams {
-            vertical_step: 0.006,
-            horizontal_step: 0.006,
-            ..PopulationProfile::HeldOut.scanner()
-        },
-        params: ZooParams {
-            dense_step: 0.002,
-            slice_ring_step: 0.002,
-            ..ZooParams::default()
-        },
+    let params = ZooParams {
+        dense_step: 0.002,
+        slice_ring_step: 0.002,
+        ..ZooParams::default()
     };
+    let zoo = zoo_at(&template, &data, 0.006, params);
     let mut failures = Vec::new();
     for (i, class) in ScannerClass::ALL.into_iter().enumerate() {
         let id = SubjectId {
@@ -119,16 +133,7 @@ fn every_scanner_class_comes_out_the_right_way_up_in_two_frames() {
 #[test]
 fn a_parts_scan_is_split_and_a_crown_cut_scan_has_nothing_above_the_cut() {
     let (template, data) = load();
-    let zoo = Zoo {
-        data: &data,
-        template: &template,
-        scanner: ScannerParams {
-            vertical_step: 0.008,
-            horizontal_step: 0.008,
-            ..PopulationProfile::HeldOut.scanner()
-        },
-        params: ZooParams::default(),
-    };
+    let zoo = zoo_at(&template, &data, 0.008, ZooParams::default());
     let id = |index| SubjectId {
         profile: PopulationProfile::HeldOut,
         seed: SEED,
@@ -185,23 +190,14 @@ fn a_parts_scan_is_split_and_a_crown_cut_scan_has_nothing_above_the_cut() {
 }
 
 /// An arm raised beside or above the head has no shoulder point, so its Acromion is the fit's
-/// guess, 74 mm off on average on the zoo's raised arms (docs/landmarks-estimate.md, "A raised
-/// arm"): its confidence says so, against the other Acromion's, and the upper arm measured
+/// guess, 74 mm off on average on the zoo's raised arms (docs/landmarks-estimate.md, "Every
+/// elbow where its axes meet; a raised arm"): its confidence says so, against the other Acromion's, and the upper arm measured
 /// through it does not make the estimate doubtful (it did for every raised arm once the elbow
 /// was placed where the arm's axes meet).
 #[test]
 fn a_raised_arm_says_its_acromion_is_unsure() {
     let (template, data) = load();
-    let zoo = Zoo {
-        data: &data,
-        template: &template,
-        scanner: ScannerParams {
-            vertical_step: 0.006,
-            horizontal_step: 0.006,
-            ..PopulationProfile::HeldOut.scanner()
-        },
-        params: ZooParams::default(),
-    };
+    let zoo = zoo_at(&template, &data, 0.006, ZooParams::default());
     let frame = zoo_frames()[0];
     for index in [30, 31] {
         let id = SubjectId {

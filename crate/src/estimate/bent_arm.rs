@@ -230,21 +230,25 @@ mod tests {
             scan_poses[arm.lower].transform = bent_at(elbow);
             start[arm.lower].transform = bent_at(lower.joint);
         }
-        let scan = body.posed(&scan_poses);
-        let index = SurfaceIndex::new(&scan).unwrap();
-        let matching = Matching::new(&index, &EstimateParams::default());
         let vertices: Vec<u32> = (0..rest.len() as u32).step_by(2).collect();
         let dominant = dominant_parts(parts, rest.len());
+        // The elbows placed from `poses` on the template posed as `scan_poses`.
+        let place_on = |scan_poses: &[PartPose], poses: &mut [PartPose]| {
+            let scan = body.posed(scan_poses);
+            let index = SurfaceIndex::new(&scan).unwrap();
+            let matching = Matching::new(&index, &EstimateParams::default());
+            place_bent_elbows(
+                template,
+                parts,
+                poses,
+                &vertices,
+                &dominant,
+                &matching,
+                &SegmentParams::default(),
+            )
+        };
         let mut poses = start.clone();
-        let placed = place_bent_elbows(
-            template,
-            parts,
-            &mut poses,
-            &vertices,
-            &dominant,
-            &matching,
-            &SegmentParams::default(),
-        );
+        let placed = place_on(&scan_poses, &mut poses);
         assert_eq!(placed, arms.iter().map(|a| a.upper).collect::<Vec<_>>());
         for arm in &arms {
             let stretch = poses[arm.upper].stretch;
@@ -274,20 +278,8 @@ mod tests {
             let elbow = parts[arm.upper].apply(&long_arms[arm.upper], &parts[arm.lower].joint);
             long_arms[arm.lower].transform.translation = elbow - parts[arm.lower].joint;
         }
-        let scan = body.posed(&long_arms);
-        let index = SurfaceIndex::new(&scan).unwrap();
-        let matching = Matching::new(&index, &EstimateParams::default());
         let mut poses = vec![identity; parts.len()];
-        let placed = place_bent_elbows(
-            template,
-            parts,
-            &mut poses,
-            &vertices,
-            &dominant,
-            &matching,
-            &SegmentParams::default(),
-        );
-        assert_eq!(placed.len(), 2);
+        assert_eq!(place_on(&long_arms, &mut poses).len(), 2);
         for arm in &arms {
             let stretch = poses[arm.upper].stretch;
             assert!((stretch - 1.15).abs() < 0.02, "{stretch}");
@@ -308,16 +300,7 @@ mod tests {
                 translation: lower.joint.coords - r * lower.joint.coords,
             };
         }
-        let placed = place_bent_elbows(
-            template,
-            parts,
-            &mut straight,
-            &vertices,
-            &dominant,
-            &matching,
-            &SegmentParams::default(),
-        );
-        assert!(placed.is_empty());
+        assert!(place_on(&long_arms, &mut straight).is_empty());
         assert!(straight.iter().all(|p| p.stretch == 1.0));
     }
 

@@ -25,8 +25,8 @@
 //! `typical_error.csv` (CAESAR order, one row a landmark).
 //!
 //! An arm raised beside or above the head (more than `EstimateParams::raised_arm_deg` from
-//! hanging down) is placed far worse than the arms of those subjects, which hang 10–60° from the
-//! body: its landmarks' typical errors are in `typical_error_raised_arm.csv` (one row a landmark
+//! hanging down) is not one of those subjects' (their arms hang 10–60° from the body), and its
+//! Acromion is placed far worse: its landmarks' typical errors are in `typical_error_raised_arm.csv` (one row a landmark
 //! of the arm, either side), measured 2026-12-03 on 16 subjects of the scanner zoo's
 //! `arm-raised` class (`bodyspace synth --scanner-class arm-raised --n 8 --step 4`, seeds 2026
 //! and 4242, then `bodyspace landmarks` on each scan; the raised arms 83–149° from hanging down):
@@ -34,8 +34,8 @@
 //! the same way once every elbow was placed where the arm's axes meet. The raised arm's
 //! Acromion lies 74 mm off (the fit's guess: a raised shoulder has no shoulder point,
 //! `acromion.rs`), where the table above has 17 mm; its elbow and hand 5–15 mm, a few mm worse
-//! than an arm hanging by the body (37–42 mm before; docs/landmarks-estimate.md, "A raised
-//! arm").
+//! than an arm hanging by the body (37–42 mm before; docs/landmarks-estimate.md, "Every elbow
+//! where its axes meet; a raised arm").
 
 use std::sync::OnceLock;
 

@@ -106,7 +106,8 @@ pub struct EstimateParams {
     /// frontal plane, as the fit placed it) takes its landmarks' typical errors from the raised
     /// arm's table (`typical_error.rs`), so their confidence says how far off such an arm is
     /// placed. Default 75°: the held-out profile's arms reach 60° from the body, the zoo's raised
-    /// arms measured 83–149° (docs/landmarks-estimate.md, "A raised arm's confidence").
+    /// arms measured 83–149° (docs/landmarks-estimate.md, "Every elbow where its axes meet; a
+    /// raised arm").
     pub raised_arm_deg: f64,
     /// When the estimate calls itself doubtful or failed (`self_check.rs`).
     pub self_check: SelfCheckParams,

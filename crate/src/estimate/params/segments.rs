@@ -124,10 +124,10 @@ pub struct BentArmParams {
     /// shoulder joint sitting inside the shoulder) has its elbow placed where its upper arm's
     /// and forearm's axes meet, not by the limb's profile. Default 20°: on the development
     /// subjects the arms are fitted at 24–36° (hands on hips 80–106°, raised arms alike), and
-    /// their elbows placed by the axes were 13.0 mm off against 16.3 by the profile
-    /// (docs/landmarks-estimate.md, "Every elbow where its axes meet"); below it the two axes
-    /// run nearly in line and meet nowhere sure. The elbow's hinge is turned across the axes'
-    /// plane only past `SegmentParams::max_bend_deg`.
+    /// their elbows placed by the axes were 13.1 mm off against 16.3 by the profile
+    /// (docs/landmarks-estimate.md, "Every elbow where its axes meet; a raised arm"); below it
+    /// the two axes run nearly in line and meet nowhere sure. The elbow's hinge is turned across
+    /// the axes' plane only past `SegmentParams::max_bend_deg`.
     pub min_bend_deg: f64,
     /// The forearm's own fit takes its vertices (and the hand's) from this fraction of the way
     /// from the elbow to the wrist on: the elbow's blend with the upper arm is left out.
