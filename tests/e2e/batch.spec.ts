@@ -181,8 +181,21 @@ test('a reload in the middle of a batch resumes it by itself; Cancel all is not 
   await waitForLoads(page, 1);
   await expect(body(page)).toHaveAttribute('data-batch-running', '1');
 
-  // Cancel all: nothing finished, all four stopped, and one click starts them again.
-  await page.getByTestId('batch-cancel-all').click();
+  // Cancel all, pressed while the panel redraws with the worker's progress and released after it
+  // has: the button is the one pressed (not a new one each frame), so the click lands. Nothing
+  // finished, all four stopped, and one click starts them again.
+  const cancelAll = page.getByTestId('batch-cancel-all');
+  await cancelAll.scrollIntoViewIfNeeded();
+  const pressed = await cancelAll.elementHandle();
+  const upList = await page.getByTestId('batch-up').elementHandle();
+  const box = (await cancelAll.boundingBox())!;
+  const progress = await page.getByTestId('batch-progress').getAttribute('value');
+  await page.mouse.move(box.x + box.width / 2, box.y + box.height / 2);
+  await page.mouse.down();
+  await page.waitForFunction((before) => document.querySelector('[data-testid="batch-progress"]')?.getAttribute('value') !== before, progress);
+  await page.mouse.up();
+  expect(await pressed!.evaluate((e) => e.isConnected)).toBe(true);
+  expect(await upList!.evaluate((e) => e.isConnected)).toBe(true);
   await expect(body(page)).toHaveAttribute('data-batch-stopped', '4');
   await expect(body(page)).toHaveAttribute('data-batch-finished', '0');
   await expect(page.getByTestId('batch-summary')).toHaveText(/^0 of 4 finished, 4 stopped/);

@@ -6,7 +6,7 @@
 import type { BatchRow, BatchSummary } from '../app/batch';
 import type { MeasurementTrust } from '../shared/align-types';
 import { orientationText, type Orientation } from '../shared/orientation';
-import { byId, h } from './dom';
+import { byId, h, morphChildren } from './dom';
 import { doubtfulMeasurementsText } from './format';
 import { heatLegend } from './heat-legend';
 import { orientationControl } from './orientation-control';
@@ -135,7 +135,11 @@ export class BatchPanel {
     const kept = rows.filter((r) => (r.status === 'ok' || r.status === 'flagged') && !r.excluded && r.fit).length;
     const build = button(kept < 2 ? 'Build model' : `Build model (${kept})`, 'batch-build', () => this.actions.onBuild(), kept < 2);
     if (kept < 2) build.title = `A model needs at least two kept fits; the batch has ${kept}.`;
-    this.root.replaceChildren(
+    // Redrawn every frame while the workers report progress: the live elements are kept where they
+    // stay the same, so a click on Cancel or an open Up list is not lost to the next frame.
+    const next = h(
+      'div',
+      {},
       h('h2', {}, 'Batch'),
       h('p', { class: 'note', 'data-testid': 'batch-summary' }, summaryText(summary, eta)),
       ...(summary.notScans
@@ -159,6 +163,7 @@ export class BatchPanel {
       this.table(rows, button),
       ...(this.selected ? [heatLegend(0, this.selected.legendMaxMm, `${this.selected.subject}: distance of each template vertex to its scan`)] : []),
     );
+    morphChildren(this.root, next);
   }
 
   /**
@@ -194,7 +199,8 @@ export class BatchPanel {
       ...COLUMNS.map(({ key, label, title }) => {
         const th = h('th', { 'data-testid': `batch-sort-${key}`, title, 'aria-sort': key === column ? (descending ? 'descending' : 'ascending') : undefined }, label);
         th.addEventListener('click', () => {
-          this.sort = { column: key, descending: key === column ? !descending : false };
+          const now = this.sort;
+          this.sort = { column: key, descending: key === now.column ? !now.descending : false };
           this.redraw();
         });
         return th;
@@ -223,7 +229,10 @@ export class BatchPanel {
         h('td', { class: 'batch-flags', title: row.reason }, flags, ...doubtfulNote(row)),
         h('td', { class: 'batch-time' }, row.seconds === null ? '—' : row.seconds.toFixed(1)),
       );
-      if (row.fit) tr.addEventListener('click', () => this.actions.onSelect(row.subject));
+      const subject = row.subject;
+      tr.addEventListener('click', () => {
+        if (this.last?.rows.some((r) => r.subject === subject && r.fit)) this.actions.onSelect(subject);
+      });
       return tr;
     });
     return h('div', { class: 'batch-scroll' }, h('table', { class: 'batch-table', 'data-testid': 'batch-table' }, h('thead', {}, head), h('tbody', {}, ...body)));
