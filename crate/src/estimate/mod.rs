@@ -14,7 +14,7 @@
 //!   shared with `align::part_pose`) to the scan's pose.
 //!   [`arm_swing`] — each arm's swing about the shoulder tried from several starts;
 //!   [`bent_arm`] — the elbow of an arm bent at it (hands on hips); [`buttocks`] — the torso's
-//!   length from the height of the buttocks.
+//!   length from the height of the buttocks; [`knees`] — the two knees side against side.
 //! * [`acromion`] — the Acromions on the scan's shoulder near the fit's, after the fine fit.
 //! * [`profile`] — the limbs' cross-section profiles (knees, elbows, the wrist).
 //! * [`hand`] — the hand's pose about the wrist, from the scan's surface beyond it (the
@@ -50,6 +50,7 @@ pub mod facing;
 pub mod forearm_twist;
 pub mod frame;
 pub mod hand;
+pub mod knees;
 pub mod matching;
 pub mod orientation;
 pub mod params;

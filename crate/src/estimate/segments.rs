@@ -30,6 +30,7 @@ use nalgebra::{Point3, Vector3};
 use super::arm_swing::swing_arms;
 use super::bent_arm::place_bent_elbows;
 use super::buttocks::{place_buttocks, psis_midpoint};
+use super::knees::{knee_placements, legs_energy, PlacedKnee};
 use super::matching::Matching;
 use super::params::{ProfileParams, SegmentParams};
 use super::profile::{fraction, knee_from_front, profile, reach, register, LimbLine};
@@ -75,7 +76,9 @@ fn fit_stretch(
 /// (`profile.rs`, [`place_joints`]) and the torso's length is set by the buttocks
 /// (`buttocks.rs`), the torso then held, both profiles taken from points spread over the surfaces
 /// (`scan`, metres, is the mesh `matching` indexes): a coarse mesh's vertices alone lie in rings
-/// too far apart. Returns the blended positions, or `None` when the caller cancelled.
+/// too far apart. Knees far apart along their legs are each tried at the other's distance too,
+/// and the placement whose legs then lie nearest the scan is kept (`knees.rs`). Returns the
+/// blended positions, or `None` when the caller cancelled.
 #[allow(clippy::too_many_arguments)]
 pub fn fit_segments(
     template: &Template,
@@ -171,10 +174,26 @@ pub fn fit_segments(
         );
         held[0] = true;
     }
-    for k in place_joints(parts, &mut poses, &surface, &scan_surface, params, profile) {
+    let knees = place_joints(parts, &mut poses, &surface, &scan_surface, params, profile);
+    for k in knees.held {
         held[k] = true;
     }
-    fit.iterate(&mut poses, &held, after_profile, ticker)?;
+    let mut best: Option<(f64, Vec<PartPose>)> = None;
+    for mut placed in knee_placements(&knees.legs, &poses, &params.knees, params.stretch_range) {
+        fit.iterate(&mut placed, &held, after_profile, ticker)?;
+        let energy = legs_energy(
+            &blend(parts, &placed, rest),
+            &template.mesh().triangles,
+            vertices,
+            &fit.dominant,
+            &knees.legs,
+            matching,
+        );
+        if best.as_ref().is_none_or(|(e, _)| energy < *e) {
+            best = Some((energy, placed));
+        }
+    }
+    let (_, poses) = best?;
     Some(blend(parts, &poses, rest))
 }
 
@@ -355,7 +374,8 @@ fn unfold(parts: &[Part], poses: &mut [PartPose], max_fold_deg: f64) {
 /// stretched to keep the ankle where it was, as a start for its own stretch fit; the forearm
 /// stays rigid and moves with the elbow (stretching it to keep the wrist made the hands worse,
 /// 39 → 48 mm on the development subjects). Returns the upper parts, whose stretch is then held
-/// (holding a lower leg's too left the ankles and feet ≈ 1 mm worse).
+/// (holding a lower leg's too left the ankles and feet ≈ 1 mm worse), and the knees as placed
+/// (compared side against side by the caller, `knees.rs`).
 fn place_joints(
     parts: &[Part],
     poses: &mut [PartPose],
@@ -363,7 +383,7 @@ fn place_joints(
     scan: &[Point3<f64>],
     params: &SegmentParams,
     profile_params: &ProfileParams,
-) -> Vec<usize> {
+) -> PlacedJoints {
     // Each limb: (upper part, lower part, its end), its line at rest and where the fit put it.
     let limbs: Vec<(usize, usize, Point3<f64>)> = parts
         .iter()
@@ -393,7 +413,10 @@ fn place_joints(
     };
     let at_rest: Vec<LimbLine> = limbs.iter().map(|l| line(*l, false)).collect();
     let posed: Vec<LimbLine> = limbs.iter().map(|l| line(*l, true)).collect();
-    let mut held = Vec::new();
+    let mut placed = PlacedJoints {
+        held: Vec::new(),
+        legs: Vec::new(),
+    };
     for (i, &(upper, lower, end)) in limbs.iter().enumerate() {
         if parts[lower].axis.is_none() || parts[upper].axis.is_none() {
             continue;
@@ -430,14 +453,29 @@ fn place_joints(
                 .unwrap_or(f);
         }
         let range = params.stretch_range;
-        let clamp = |s: f64| s.clamp(range.0, range.1);
-        poses[upper].stretch = clamp(poses[upper].stretch * f / now);
-        if !arm {
-            poses[lower].stretch = clamp(poses[lower].stretch * (1.0 - f) / (1.0 - now));
+        if arm {
+            poses[upper].stretch = (poses[upper].stretch * f / now).clamp(range.0, range.1);
+        } else {
+            let mut knee = PlacedKnee {
+                upper,
+                lower,
+                before: now,
+                placed: f,
+                length: (posed[i].end - posed[i].root).norm(),
+                stretches: (poses[upper].stretch, poses[lower].stretch),
+            };
+            knee.placed = knee.place(poses, f, range);
+            placed.legs.push(knee);
         }
-        held.push(upper);
+        placed.held.push(upper);
     }
-    held
+    placed
+}
+
+/// What [`place_joints`] placed: the upper parts whose stretch is then held, and the knees.
+struct PlacedJoints {
+    held: Vec<usize>,
+    legs: Vec<PlacedKnee>,
 }
 
 #[cfg(test)]

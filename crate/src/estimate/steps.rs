@@ -214,6 +214,9 @@ pub fn estimate_landmarks(
     };
     let max_iterations = starts.len() * (params.candidate_iterations + 1)
         + params.segment_iterations * segment_starts
+        // The knees tried at each other's distance (`knees.rs`): two more runs of the last
+        // iterations.
+        + 2 * params.segments.profile_iterations * segment_starts
         + params.segments.swing.iterations
             * (params.segments.swing.turns_deg.len()
                 + params.segments.swing.raised_turns_deg.len())

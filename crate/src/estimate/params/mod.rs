@@ -15,7 +15,9 @@ pub use acromion::AcromionParams;
 pub use check::CheckParams;
 pub use hand::{HandParams, LaidHandParams, WristProfileParams};
 pub use profile::ProfileParams;
-pub use segments::{ArmSwingParams, BentArmParams, ButtocksParams, FaceParams, SegmentParams};
+pub use segments::{
+    ArmSwingParams, BentArmParams, ButtocksParams, FaceParams, KneeParams, SegmentParams,
+};
 pub use self_check::SelfCheckParams;
 
 use serde::{Deserialize, Serialize};

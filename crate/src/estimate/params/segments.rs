@@ -45,6 +45,8 @@ pub struct SegmentParams {
     pub buttocks: ButtocksParams,
     /// The head's nose tip pulled to the scan's.
     pub face: FaceParams,
+    /// The two knees compared side against side (`knees.rs`).
+    pub knees: KneeParams,
 }
 
 impl Default for SegmentParams {
@@ -62,6 +64,7 @@ impl Default for SegmentParams {
             bent_arm: BentArmParams::default(),
             buttocks: ButtocksParams::default(),
             face: FaceParams::default(),
+            knees: KneeParams::default(),
         }
     }
 }
@@ -213,5 +216,22 @@ impl Default for FaceParams {
             share: 0.2,
             reach: 0.2,
         }
+    }
+}
+
+/// Parameters of the knees' comparison side against side (`knees.rs`).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(default)]
+pub struct KneeParams {
+    /// Knees whose distances from their hips differ by more than this (mm) are each tried at
+    /// the other's distance too, and the fit keeps the placement whose legs lie nearest the
+    /// scan. Default 40 mm: the synthetic bodies' thighs differ by at most 14 mm, a misplaced
+    /// knee by 50–90 mm (docs/landmarks-estimate.md, "The knees side against side").
+    pub apart_mm: f64,
+}
+
+impl Default for KneeParams {
+    fn default() -> Self {
+        Self { apart_mm: 40.0 }
     }
 }
