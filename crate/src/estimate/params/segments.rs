@@ -194,7 +194,10 @@ impl Default for ButtocksParams {
 #[serde(default)]
 pub struct FaceParams {
     /// The scan's nose tip is looked for within this distance (m) of the posed template's.
-    /// Default 4 cm: heads slid down by up to 2.6 cm (docs/landmarks-estimate.md).
+    /// Default 6 cm: heads slid down by up to 2.6 cm, and a head tilted back 10–13° (the
+    /// head's and the trunk's extension together) started with the template's nose about 5 cm
+    /// under the scan's, where a search within 4 cm found the chin (docs/landmarks-estimate.md,
+    /// "The nose tip looked for within 6 cm").
     pub radius: f64,
     /// A point's surroundings (m), which its tip stands out from. Default 2 cm: a nose's
     /// half-width.
@@ -211,7 +214,7 @@ pub struct FaceParams {
 impl Default for FaceParams {
     fn default() -> Self {
         Self {
-            radius: 0.04,
+            radius: 0.06,
             surroundings: 0.02,
             share: 0.2,
             reach: 0.2,
