@@ -21,7 +21,9 @@
 //! **Tolerance** ([`tolerance_mm`], [`CheckParams`]): a landmark is suspicious when its residual
 //! exceeds √(tolerance² + (k_s·spread)² + (k_m·misfit)²): the body's own variation within a
 //! rigid group, the landmark definition's spread (`landmarks/sharpness.rs`: 5 / 10 / 25 mm) and
-//! how well the group's other landmarks fit their map on this body. A wrong landmark spoils its
+//! how well the group's other landmarks fit their map on this body; the Acromion of an arm held
+//! raised (its elbow above the Suprasternale) rises with the shoulder girdle, which no rigid group
+//! holds, and its tolerance takes in `raised_acromion_mm` as well. A wrong landmark spoils its
 //! groups' predictions of the others, so the landmark farthest beyond its tolerance stops
 //! predicting, and the rest are predicted again, until every landmark still predicting is
 //! within its tolerance.
@@ -189,13 +191,18 @@ pub fn judge_given(
     params: &CheckParams,
 ) -> GivenCheck {
     let groups = rigid_groups();
+    let raised = raised_acromions(given);
     let expected_from = |trusted: &[(usize, Point3<f64>)]| -> Vec<Option<(Point3<f64>, f64)>> {
         predict_given(landmark_rest, &groups, given, trusted, params)
             .iter()
             .zip(CAESAR_LANDMARKS.iter())
-            .map(|(p, l)| {
+            .enumerate()
+            .map(|(i, (p, l))| {
                 p.map(|p| {
-                    let t = tolerance_mm(l.name, p.misfit * to_mm, params);
+                    let mut t = tolerance_mm(l.name, p.misfit * to_mm, params);
+                    if raised.contains(&i) {
+                        t = t.hypot(params.raised_acromion_mm);
+                    }
                     (p.position, t / to_mm)
                 })
             })
@@ -226,6 +233,35 @@ pub fn judge_given(
         flagged: flag_suspicious(given, &expected, to_mm),
         unjudged,
     }
+}
+
+/// The CAESAR indices of the given Acromions whose arm is held raised: its elbow (the given
+/// humeral epicondyles' midpoint) above the given Suprasternale along the trunk's up (the given
+/// ASIS' midpoint → Suprasternale). On the synthetic populations a raised arm's elbow lies
+/// 36–288 mm above it, any other arm's (hanging, held out to 60°, hands on hips, against the
+/// body) 140 mm or more below. The Acromions themselves are not used, so a swapped pair does
+/// not make its arm look raised.
+fn raised_acromions(given: &[(usize, Point3<f64>)]) -> Vec<usize> {
+    let index = |name: &str| CAESAR_LANDMARKS.iter().position(|l| l.name == name);
+    let at = |name: &str| {
+        let i = index(name)?;
+        given.iter().find(|(j, _)| *j == i).map(|(_, p)| *p)
+    };
+    let Some((sternum, hips)) = at("Suprasternale").zip(at("Rt. ASIS").zip(at("Lt. ASIS"))) else {
+        return Vec::new();
+    };
+    let up = sternum - nalgebra::center(&hips.0, &hips.1);
+    ["Rt.", "Lt."]
+        .iter()
+        .filter_map(|side| {
+            let lateral = at(&format!("{side} Humeral Lateral Epicn"))?;
+            let medial = at(&format!("{side} Humeral Medial Epicn"))?;
+            let elbow = nalgebra::center(&lateral, &medial);
+            ((elbow - sternum).dot(&up) > 0.0)
+                .then(|| index(&format!("{side} Acromion")))
+                .flatten()
+        })
+        .collect()
 }
 
 /// The tolerance (mm) of the landmark `name` predicted by a map its group's others fit with RMS

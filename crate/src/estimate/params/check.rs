@@ -29,6 +29,13 @@ pub struct CheckParams {
     /// prediction is not turned to: it is no turned wrist (a styloid of the other side lies
     /// across the body) and is judged against the forearm as it is. Default 2.
     pub twist_max_off_axis: f64,
+    /// The Acromion of an arm held raised — its elbow (the humeral epicondyles' midpoint) above
+    /// the Suprasternale along the trunk's up (the ASIS' midpoint → Suprasternale) — rises with
+    /// the shoulder girdle, which no rigid group holds: this (mm) is added to its tolerance in
+    /// quadrature. Default 120 mm: correct raised-arm files had their raised Acromion 44–101 mm
+    /// from where the thorax and the upper arm put it (docs/landmarks-estimate.md, "A raised
+    /// arm's Acromion in the check"); a swapped pair lies 300 mm and more off.
+    pub raised_acromion_mm: f64,
 }
 
 impl Default for CheckParams {
@@ -39,6 +46,7 @@ impl Default for CheckParams {
             misfit_factor: 2.5,
             twist_min_bend_deg: 60.0,
             twist_max_off_axis: 2.0,
+            raised_acromion_mm: 120.0,
         }
     }
 }
