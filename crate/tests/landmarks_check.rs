@@ -25,6 +25,15 @@ use synth_support::base_template_and_data;
 const SEED: u64 = 3131;
 const N: u64 = 8;
 
+/// The `held-out` profile's scanner, coarse: only the landmarks are used.
+fn coarse_scanner() -> ScannerParams {
+    ScannerParams {
+        vertical_step: 0.02,
+        horizontal_step: 0.02,
+        ..PopulationProfile::HeldOut.scanner()
+    }
+}
+
 /// Subject `index` of [`SEED`]: whether its hands are on its hips, its correct landmark file
 /// (metres for an even index, else millimetres) and the file's units in mm.
 fn subject(
@@ -32,12 +41,7 @@ fn subject(
     data: &bodyspace::synth::MakeHumanData,
     index: u64,
 ) -> (bool, LandmarkSet, f64) {
-    // A coarse scanner: only the landmarks are used.
-    let scanner = ScannerParams {
-        vertical_step: 0.02,
-        horizontal_step: 0.02,
-        ..PopulationProfile::HeldOut.scanner()
-    };
+    let scanner = coarse_scanner();
     let id = SubjectId {
         profile: PopulationProfile::HeldOut,
         seed: SEED,
@@ -182,11 +186,7 @@ fn a_laid_hand_raises_no_flag_on_its_styloids_and_a_swap_there_is_found() {
 fn a_raised_arms_acromion_raises_no_flag_and_a_swapped_pair_is_still_found() {
     let (template, data) = base_template_and_data();
     let rest = landmark_rest(&template);
-    let scanner = ScannerParams {
-        vertical_step: 0.02,
-        horizontal_step: 0.02,
-        ..PopulationProfile::HeldOut.scanner()
-    };
+    let scanner = coarse_scanner();
     let names = |set: &LandmarkSet, params: &CheckParams| -> Vec<String> {
         judge_given(&rest, &given_landmarks(set), 1.0, params)
             .flagged
