@@ -1,7 +1,8 @@
 //! The two knees, side against side. Each leg's profile places its knee on its own
 //! (`segments.rs`, `place_joints`), and now and then one of them lands far along its leg from
 //! the other: held-out seed 6161's subject 005 had its right knee 70 mm up the leg and the left
-//! right; tuning seed 7531's subject 22 its right knee 40 mm low and its left 11 mm high. People's
+//! where it belongs; tuning seed 7531's subject 22 its knees 40 and 11 mm off along the legs, in
+//! opposite directions. People's
 //! femurs are about as long on the left as on the right (the synthetic bodies' within 14 mm), so
 //! thighs far apart in length mean a misplaced knee — but not which one. The fit decides: when
 //! the two knees' distances from their hips differ by more than
