@@ -178,23 +178,31 @@ pub fn fit_segments(
     for k in knees.held {
         held[k] = true;
     }
-    let mut best: Option<(f64, Vec<PartPose>)> = None;
-    for mut placed in knee_placements(&knees.legs, &poses, &params.knees, params.stretch_range) {
+    let placements = knee_placements(&knees.legs, &poses, &params.knees, params.stretch_range);
+    let compare = placements.len() > 1;
+    // (the legs' energy, the blended positions) of the placement kept; one placement is not
+    // compared.
+    let mut best: Option<(f64, Vec<Point3<f64>>)> = None;
+    for mut placed in placements {
         fit.iterate(&mut placed, &held, after_profile, ticker)?;
-        let energy = legs_energy(
-            &blend(parts, &placed, rest),
-            &template.mesh().triangles,
-            vertices,
-            &fit.dominant,
-            &knees.legs,
-            matching,
-        );
+        let positions = blend(parts, &placed, rest);
+        let energy = if compare {
+            legs_energy(
+                &positions,
+                &template.mesh().triangles,
+                vertices,
+                &fit.dominant,
+                &knees.legs,
+                matching,
+            )
+        } else {
+            0.0
+        };
         if best.as_ref().is_none_or(|(e, _)| energy < *e) {
-            best = Some((energy, placed));
+            best = Some((energy, positions));
         }
     }
-    let (_, poses) = best?;
-    Some(blend(parts, &poses, rest))
+    best.map(|(_, positions)| positions)
 }
 
 /// What the iterations of [`fit_segments`] share.
