@@ -35,7 +35,7 @@ use super::check::{judge_given, CheckParams, NEARLY_FULL};
 use super::confidence::{confidence, neighbourhoods, residual};
 use super::error::EstimateError;
 use super::expected::expected_positions;
-use super::facing::feet_forward;
+use super::facing::body_forward;
 use super::frame::{same_frame, FrameReport};
 use super::hand::pose_hands;
 use super::matching::Matching;
@@ -194,16 +194,22 @@ pub fn estimate_landmarks(
     if given_frame.is_none() && input.orientation.is_none() && params.head_end_decisive > 0.0 {
         if let Some(end) = head_end(&scan.positions, &scan.triangles, params.head_end_decisive) {
             starts.retain(|(_, t)| (t.rotation * Vector3::y()).dot(&end.up) > 0.0);
-            // With up known, the feet may say which way is forward: hair or a pose had made the
-            // back-to-front fit the closer one (issue 31).
+            // With up known, the feet, or the legs when the feet are cut, may say which way is
+            // forward: hair or a pose had made the back-to-front fit the closer one, and a scan
+            // without its feet was fitted back to front by 0.6 % (issue 31).
             // The candidates left face either way along one axis, the body's front-back one.
-            let decisive = params.feet_forward_decisive;
             let depth = starts.first().map(|(_, t)| t.rotation * Vector3::z());
-            if let Some(feet) = depth
-                .filter(|_| decisive > 0.0)
-                .and_then(|d| feet_forward(&scan.positions, &scan.triangles, &end.up, &d, decisive))
-            {
-                starts.retain(|(_, t)| (t.rotation * Vector3::z()).dot(&feet.forward) > 0.0);
+            if let Some(said) = depth.and_then(|d| {
+                body_forward(
+                    &scan.positions,
+                    &scan.triangles,
+                    &end.up,
+                    &d,
+                    params.feet_forward_decisive,
+                    params.legs_forward_decisive,
+                )
+            }) {
+                starts.retain(|(_, t)| (t.rotation * Vector3::z()).dot(&said.forward) > 0.0);
             }
         }
     }
