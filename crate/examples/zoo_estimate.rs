@@ -29,7 +29,7 @@ mod native {
     use super::support::{
         estimate_bare, frame_cosines, landmark_errors, load, placed, zoo_frames, Zoo,
     };
-    use bodyspace::estimate::facing::feet_forward;
+    use bodyspace::estimate::facing::{feet_forward, legs_forward, Forward};
     use bodyspace::estimate::up::head_end;
     use bodyspace::estimate::EstimateParams;
     use bodyspace::synth::population::A_POSE_ARM_DEG;
@@ -136,30 +136,29 @@ mod native {
                                 )
                             },
                         );
-                        // The feet's reach forward (`estimate::facing`), decisive or not, and
-                        // whether it points the way the estimate's frame faces.
-                        let feet = head_end(&c.scan.positions, &c.scan.triangles, 1.0)
-                            .and_then(|h| {
-                                let depth = Vector3::from(r.frame.facing);
-                                feet_forward(
-                                    &c.scan.positions,
-                                    &c.scan.triangles,
-                                    &h.up,
-                                    &depth,
-                                    0.0,
-                                )
-                            })
-                            .map_or("none".to_string(), |f| {
-                                format!(
-                                    "{:.0} mm {}",
-                                    f.reach * to_mm,
-                                    if f.forward.dot(&Vector3::from(r.frame.facing)) > 0.0 {
-                                        "with the facing"
-                                    } else {
-                                        "AGAINST the facing"
-                                    }
-                                )
-                            });
+                        // The feet's reach forward and the thighs' from the calves
+                        // (`estimate::facing`), decisive or not, and whether each points the way
+                        // the estimate's frame faces.
+                        let facing = Vector3::from(r.frame.facing);
+                        let said = |cue: fn(&[_], &[_], &_, &_) -> Option<Forward>| {
+                            head_end(&c.scan.positions, &c.scan.triangles, 1.0)
+                                .and_then(|h| {
+                                    cue(&c.scan.positions, &c.scan.triangles, &h.up, &facing)
+                                })
+                                .map_or("none".to_string(), |f| {
+                                    format!(
+                                        "{:.0} mm {}",
+                                        f.reach * to_mm,
+                                        if f.forward.dot(&facing) > 0.0 {
+                                            "with the facing"
+                                        } else {
+                                            "AGAINST the facing"
+                                        }
+                                    )
+                                })
+                        };
+                        let feet = said(feet_forward);
+                        let legs = said(legs_forward);
                         let energies: Vec<String> = r
                             .candidates
                             .iter()
@@ -175,7 +174,7 @@ mod native {
                             .collect();
                         let check = &r.self_check;
                         println!(
-                            "{:10} {:24} subject {i} ({pose}) {:7} vertices: frame {} (up {} facing {}), mean {mean:6.1} mm, fit RMS {:.2} mm, {:6.0} ms; self-check {} ({}); shape: {shape}; feet: {feet}; candidates {}",
+                            "{:10} {:24} subject {i} ({pose}) {:7} vertices: frame {} (up {} facing {}), mean {mean:6.1} mm, fit RMS {:.2} mm, {:6.0} ms; self-check {} ({}); shape: {shape}; feet: {feet}; legs: {legs}; candidates {}",
                             class.name(),
                             frame.name,
                             c.scan.positions.len(),
