@@ -11,7 +11,7 @@ import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { expect, test } from '@playwright/test';
 import type { DistanceStatsMm, FineReport, LandmarkPolicyReport, MeasurementSupport, MeasurementTrust, QualityReport, SubjectReport, ToTemplate, UnplacedLandmark, WarpReport } from '../../web/shared/align-types';
-import type { EstimateReport, SelfCheck, SelfCheckEvidence } from '../../web/shared/landmark-entry';
+import type { EstimateReport, SelfCheck, SelfCheckEvidence, Uncovered } from '../../web/shared/landmark-entry';
 import { bodyspaceBinary, synthSubjects } from './synth';
 
 /** Every key of `T`: `true` where the core always writes it, `false` where it may leave it out. */
@@ -71,7 +71,8 @@ const quality: Keys<QualityReport> = {
   thresholds: true,
 };
 const selfCheck: Keys<SelfCheck> = { verdict: true, reasons: true, confidence_factor: true, lopsided_factor: true, evidence: true };
-const evidence: Keys<SelfCheckEvidence> = { fit_rms_mm: true, fit_moved_mm: true, stature_m: true, contradicting: true, asymmetric: true, uneven: true };
+const evidence: Keys<SelfCheckEvidence> = { fit_rms_mm: true, fit_moved_mm: true, stature_m: true, contradicting: true, asymmetric: true, uneven: true, facing_margin: true, uncovered: true };
+const uncovered: Keys<Uncovered> = { vertices: true, share: true, near: true };
 const estimateRead: Keys<EstimateReport> = { landmarks: true, frame: true, given: true, estimated: true, flagged: true, self_check: true, fit_rms_mm: true, total_ms: true, strays: false, floor: false };
 const trust: Keys<MeasurementTrust> = { name: true, trust: true, landmarks: true, fit_error_mm: true, expected_error_mm: true, limit_mm: true, chance_over_limit: true, support: true, doubtful: true, words: true };
 const support: Keys<MeasurementSupport> = { at: true, vertices: true, unsupported: true, unsupported_share: true, max_distance_mm: true, doubtful: true };
@@ -163,6 +164,7 @@ test('the TypeScript report types name exactly the fields the core writes', () =
     const check = wrong.landmarks!.estimate_check as Record<string, unknown>;
     expectKeys('SelfCheck', check, selfCheck);
     expectKeys('SelfCheck.evidence', check.evidence as Record<string, unknown>, evidence);
+    expectKeys('SelfCheck.evidence.uncovered', (check.evidence as Record<string, unknown>).uncovered as Record<string, unknown>, uncovered);
     expectRequired('EstimateReport', wrong.landmarks!.estimate as Record<string, unknown>, estimateRead);
     expectKeys('EstimateReport.self_check', (wrong.landmarks!.estimate as Record<string, unknown>).self_check as Record<string, unknown>, selfCheck);
     const typed = wrong as unknown as SubjectReport;

@@ -71,6 +71,20 @@ export interface SelfCheckEvidence {
   asymmetric: Asymmetry[];
   /** Limb parts whose fit lies much farther from the scan on one side. */
   uneven: UnevenFit[];
+  /** When only the fits chose which way the body faces: how close the two facings came (the
+   * difference of their energies over the best's); `null` when the feet, the legs, the person or
+   * given landmarks said. */
+  facing_margin: number | null;
+  /** The scan the landmark-free fit left uncovered (more than 20 mm from it). */
+  uncovered: Uncovered | null;
+}
+
+/** The scan a fit left uncovered (the core's `align::Uncovered`): how many of its vertices, their
+ * share of the scan, and the template part nearest most of them. */
+export interface Uncovered {
+  vertices: number;
+  share: number;
+  near: string | null;
 }
 
 /** A limb's part whose fit lies much farther from the scan on one side than on the other (the

@@ -65,7 +65,10 @@ pub use fine_input::FineAlignInput;
 pub use observer::{AlignObserver, Progress, Stage};
 pub use params::{AlignParams, CorrespondenceMode, FineAlignParams, FineStageParams, Preset};
 pub use pipeline::{align_scan, AlignInput, Alignment, PipelineError};
-pub use quality::{assess, folded_triangles, QualityFlag, QualityReport, QualityThresholds};
+pub use quality::{
+    assess, folded_triangles, uncovered_scan, QualityFlag, QualityReport, QualityThresholds,
+    Uncovered,
+};
 pub use report::{
     scan_to_template_distances, template_to_scan_distances, AlignReport, CurvePoint, DistanceStats,
     ScanDistance,

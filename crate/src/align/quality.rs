@@ -31,6 +31,7 @@ use nalgebra::Point3;
 use serde::{Deserialize, Serialize};
 
 use super::pipeline::Alignment;
+use super::report::ScanDistance;
 use super::uneven_fit::{uneven_fits, UnevenFit};
 use super::weights::data_weights;
 use crate::template::parts::{dominant_part, parts, Part};
@@ -240,18 +241,15 @@ pub fn assess(
         &alignment.positions,
     );
     let folded_fraction = fraction(folded, compared_triangles);
-    let uncovered: Vec<u32> = alignment
-        .scan_distances
-        .iter()
-        .filter(|s| s.distance.abs() * 1000.0 > thresholds.uncovered_mm)
-        .map(|s| s.nearest_vertex)
-        .collect();
-    let scan_vertices = alignment.scan_distances.len();
-    let uncovered_share = fraction(uncovered.len(), scan_vertices);
     let parts = parts(base);
     let part_of: Vec<usize> = (0..base.mesh().vertex_count() as u32)
         .map(|v| dominant_part(&parts, v))
         .collect();
+    let uncovered = uncovered_scan(
+        &alignment.scan_distances,
+        (&parts, &part_of),
+        thresholds.uncovered_mm,
+    );
     let uneven_limbs = uneven_limbs(alignment, base, (&parts, &part_of), thresholds);
     let flags = [
         (
@@ -267,7 +265,7 @@ pub fn assess(
             QualityFlag::FoldOvers,
         ),
         (
-            uncovered_share > thresholds.max_uncovered_share,
+            uncovered.share > thresholds.max_uncovered_share,
             QualityFlag::UncoveredScan,
         ),
         (!uneven_limbs.is_empty(), QualityFlag::UnevenLimb),
@@ -283,10 +281,10 @@ pub fn assess(
         compared_triangles,
         folded_triangles: folded,
         folded_fraction,
-        scan_vertices,
-        uncovered_scan_vertices: uncovered.len(),
-        uncovered_share,
-        uncovered_near: nearest_part((&parts, &part_of), &uncovered),
+        scan_vertices: alignment.scan_distances.len(),
+        uncovered_scan_vertices: uncovered.vertices,
+        uncovered_share: uncovered.share,
+        uncovered_near: uncovered.near,
         uneven_limbs,
         suspicious_landmarks: Vec::new(),
         landmark_estimate: Vec::new(),
@@ -313,6 +311,40 @@ fn uneven_limbs(
         &names,
         (thresholds.uneven_limb_ratio, thresholds.uneven_limb_mm),
     )
+}
+
+/// The scan a fit left uncovered: its vertices farther than `uncovered_mm` from the fit, of
+/// `scan_distances` (each scan vertex's distance to the fit and the template vertex nearest it).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct Uncovered {
+    pub vertices: usize,
+    /// `vertices` as a share of the scan's vertices (0 for no scan).
+    pub share: f64,
+    /// The template part (of `parts`) nearest most of them; `None` when there are none.
+    pub near: Option<String>,
+}
+
+/// The scan the fit left uncovered ([`Uncovered`]), with `part_of` each template vertex's
+/// dominant part of `parts`.
+pub fn uncovered_scan(
+    scan_distances: &[ScanDistance],
+    (parts, part_of): (&[Part], &[usize]),
+    uncovered_mm: f64,
+) -> Uncovered {
+    let nearest: Vec<u32> = scan_distances
+        .iter()
+        .filter(|s| s.distance.abs() * 1000.0 > uncovered_mm)
+        .map(|s| s.nearest_vertex)
+        .collect();
+    Uncovered {
+        vertices: nearest.len(),
+        share: if scan_distances.is_empty() {
+            0.0
+        } else {
+            nearest.len() as f64 / scan_distances.len() as f64
+        },
+        near: nearest_part((parts, part_of), &nearest),
+    }
 }
 
 /// The name of the part (of `parts`, each vertex in its dominant part `part_of`) that holds most

@@ -1,9 +1,10 @@
 //! The estimate's check of itself: every estimate says whether it can be trusted, and why not, in
 //! words. A wrong answer presented as right is the worst bug the product can have, so an
 //! estimate whose template had to be bent far out of shape to meet the scan, whose fitted body is
-//! no person's height, whose fit lies far from the scan or drifted away from it, or whose
-//! landmarks contradict each other (against their rigid groups, or a limb's segment much longer
-//! on one side than on the other: `bilateral.rs`) is `doubtful` or `failed`, and its confidences
+//! no person's height, whose fit lies far from the scan, drifted away from it or left part of the
+//! scan uncovered, or whose landmarks contradict each other (against their rigid groups, or a
+//! limb's segment much longer on one side than on the other: `bilateral.rs`) is `doubtful` or
+//! `failed`, and its confidences
 //! are lowered to say so ([`SelfCheck::confidence_factor`]; the landmarks of a lopsided segment
 //! to [`SelfCheckParams::failed_factor`], [`SelfCheck::factor_for`]).
 
@@ -11,7 +12,7 @@ use serde::{Deserialize, Serialize};
 
 use super::bilateral::Asymmetry;
 use super::params::SelfCheckParams;
-use crate::align::UnevenFit;
+use crate::align::{Uncovered, UnevenFit};
 
 /// The estimate's verdict on itself.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
@@ -85,6 +86,15 @@ pub struct Evidence {
     /// Limb parts whose fit lies much farther from the scan on one side than on the other.
     #[serde(default)]
     pub uneven: Vec<UnevenFit>,
+    /// When nothing but the similarity fits chose which way the body faces (no given landmarks,
+    /// no facing chosen, neither the feet nor the legs saying: `facing.rs`), the difference of
+    /// the energies of the best fit and the best facing the other way, over the best's.
+    #[serde(default)]
+    pub facing_margin: Option<f64>,
+    /// The scan the landmark-free fit left farther than `SelfCheckParams::uncovered.0` from it
+    /// (`None` when not measured).
+    #[serde(default)]
+    pub uncovered: Option<Uncovered>,
 }
 
 /// The estimate's verdict on `evidence` (see the module documentation and [`SelfCheckParams`]).
@@ -141,6 +151,30 @@ pub fn self_check(evidence: &Evidence, params: &SelfCheckParams) -> SelfCheck {
     for u in &evidence.uneven {
         doubtful.push(u.sentence());
     }
+    if let Some(m) = evidence.facing_margin.filter(|m| *m < params.facing_close) {
+        doubtful.push(format!(
+            "neither the feet nor the legs say which way the body faces, and the fits facing \
+             either way came within {:.1} % of each other: it may face the other way; look at \
+             the face, or choose the facing",
+            100.0 * m
+        ));
+    }
+    if let Some(u) = evidence
+        .uncovered
+        .as_ref()
+        .filter(|u| u.share > params.uncovered.1)
+    {
+        doubtful.push(format!(
+            "{:.1} % of the scan lies more than {:.0} mm from the fit{}: the template did not \
+             reach that part of the body (a limb fitted too short or beside the scan); check its \
+             landmarks",
+            100.0 * u.share,
+            params.uncovered.0,
+            u.near
+                .as_ref()
+                .map_or(String::new(), |n| format!(", most of it near the {n}"))
+        ));
+    }
     if evidence.contradicting.len() > params.max_contradicting {
         doubtful.push(format!(
             "{} estimated landmarks lie far from where the others of their part put them ({})",
@@ -178,6 +212,13 @@ mod tests {
             contradicting: vec!["Rt. Dactylion".into()],
             asymmetric: Vec::new(),
             uneven: Vec::new(),
+            facing_margin: Some(0.05),
+            // A floor ring's worth (good tuning estimates: at most 0.065 %).
+            uncovered: Some(Uncovered {
+                vertices: 60,
+                share: 0.0006,
+                near: Some("right lower leg".into()),
+            }),
         }
     }
 
@@ -256,7 +297,26 @@ mod tests {
                 }],
                 ..good()
             },
+            Evidence {
+                facing_margin: Some(0.006),
+                ..good()
+            },
+            Evidence {
+                uncovered: Some(Uncovered {
+                    vertices: 524,
+                    share: 0.0098,
+                    near: Some("left lower leg".into()),
+                }),
+                ..good()
+            },
         ];
+        let uncovered = self_check(&cases[7], &p);
+        assert!(self_check(&cases[6], &p).reasons[0].contains("came within 0.6 %"));
+        assert!(
+            uncovered.reasons[0].starts_with("1.0 % of the scan lies more than 20 mm from the fit, most of it near the left lower leg"),
+            "{:?}",
+            uncovered.reasons
+        );
         for (k, e) in cases.iter().enumerate() {
             let c = self_check(e, &p);
             assert_eq!(c.verdict, Verdict::Doubtful, "case {k}: {c:?}");

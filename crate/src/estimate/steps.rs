@@ -36,7 +36,7 @@ use super::confidence::{confidence, neighbourhoods, residual};
 use super::error::EstimateError;
 use super::expected::expected_positions;
 use super::facing::body_forward;
-use super::frame::{same_frame, FrameReport};
+use super::frame::{same_frame, same_up, FrameReport};
 use super::hand::pose_hands;
 use super::matching::Matching;
 use super::orientation::{candidates_for, Orientation};
@@ -49,8 +49,8 @@ use super::tick::Ticker;
 use super::typical_error::{raised_arm_typical_error_mm, typical_error_mm};
 use super::up::head_end;
 use crate::align::{
-    data_weights, fine_align, uneven_fits, AlignObserver, FineAlignInput, FineAlignParams,
-    SurfaceIndex,
+    data_weights, fine_align, uncovered_scan, uneven_fits, AlignObserver, FineAlignInput,
+    FineAlignParams, SurfaceIndex,
 };
 use crate::landmarks::shoulder::{acromion_indices, ShoulderFrame};
 use crate::landmarks::{
@@ -188,6 +188,13 @@ pub fn estimate_landmarks(
             given_frame = Some(t);
         }
     }
+    // Whether given landmarks, the person or the scan's shape said which way the body faces;
+    // when only the fits did, how close they came is part of the self-check.
+    let mut facing_said = given_frame.is_some()
+        || input
+            .orientation
+            .as_ref()
+            .is_some_and(|o| o.facing.is_some());
     // Without a frame from given landmarks, the scan's shape may say which end is the head: the
     // candidates upside down are then not fitted. Nearest points alone chose upside down on a
     // raw scan (parts, slices, the crown cut, floor remnants) by 1 % of the RMS (issue 31).
@@ -210,6 +217,7 @@ pub fn estimate_landmarks(
                 )
             }) {
                 starts.retain(|(_, t)| (t.rotation * Vector3::z()).dot(&said.forward) > 0.0);
+                facing_said = true;
             }
         }
     }
@@ -273,6 +281,11 @@ pub fn estimate_landmarks(
     if fitted.first().is_none_or(|(_, f)| f.matched == 0.0) {
         return Err(EstimateError::NoMatch);
     }
+    let facing_margin = if facing_said {
+        None
+    } else {
+        facing_margin(&fitted, params.same_frame_deg)
+    };
     // With the frame known, a floor or turntable remnant under the feet is taken off the scan
     // before the body's fit: left in, it was matched as the soles (issue 31).
     let up = fitted[0].1.transform.rotation * Vector3::y();
@@ -400,6 +413,7 @@ pub fn estimate_landmarks(
         &parts,
         (&weights, &data_weights(&template, 0.0)),
         moved_rms_mm(&posed, &fine.positions, &weights),
+        facing_margin,
         params,
     );
     let rest_template = RestTemplate {
@@ -513,7 +527,8 @@ pub fn estimate_landmarks(
 /// The estimate's check of itself (`self_check.rs`) from its landmark-free fit `fine`, the
 /// chosen frame `best`, the template's landmark vertices (at rest, and their indices), its
 /// parts, its data weights (and the same without the soles, which no scanner sees: the limbs are
-/// compared without them) and how far the fine fit moved the template (`moved_mm`). The
+/// compared without them), how far the fine fit moved the template (`moved_mm`) and, when only
+/// the fits chose which way the body faces, how close they came (`facing_margin`). The
 /// Acromion of an arm `raised` (right, left) is left out of the sides' comparison: it is the
 /// fit's guess on a shoulder with no shoulder point (`acromion.rs`), 74 mm off on average on
 /// the zoo's raised arms and its confidence saying so, and the upper arm measured through it
@@ -527,6 +542,7 @@ fn check_itself(
     parts: &[crate::template::parts::Part],
     (weights, without_soles): (&[f64], &[f64]),
     moved_mm: f64,
+    facing_margin: Option<f64>,
     params: &EstimateParams,
 ) -> SelfCheck {
     let part_of: Vec<usize> = (0..weights.len() as u32)
@@ -568,8 +584,26 @@ fn check_itself(
         fit_moved_mm: moved_mm,
         fit_curve_mm: fine.report.curve.iter().map(|c| c.rms * 1000.0).collect(),
         contradicting,
+        facing_margin,
+        uncovered: Some(uncovered_scan(
+            &fine.report.scan_distances,
+            (parts, &part_of),
+            params.self_check.uncovered.0,
+        )),
     };
     self_check(&evidence, &params.self_check)
+}
+
+/// How close the best similarity fit of `fitted` (sorted, the chosen one first) and the best one
+/// facing the other way with the same up came: the difference of their energies over the chosen
+/// one's; `None` without such a pair.
+fn facing_margin<S>(fitted: &[(S, FittedCandidate)], same_frame_deg: f64) -> Option<f64> {
+    let (_, best) = fitted.first()?;
+    let (_, other) = fitted.iter().skip(1).find(|(_, f)| {
+        same_up(&best.transform, &f.transform, same_frame_deg)
+            && !same_frame(&best.transform, &f.transform, same_frame_deg)
+    })?;
+    Some((other.energy - best.energy).abs() / best.energy)
 }
 
 /// RMS (m → mm) of `distance` over the `share` of the vertices with a data weight that lie

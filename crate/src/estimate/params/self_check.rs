@@ -45,6 +45,21 @@ pub struct SelfCheckParams {
     /// `uneven_fit.1` mm makes the estimate doubtful (`align::uneven_fits`). Default (2.5, 6 mm):
     /// see docs/landmarks-estimate.md, "Self-check".
     pub uneven_fit: (f64, f64),
+    /// A scan vertex farther than `uncovered.0` (mm) from the landmark-free fit is uncovered; a
+    /// share of the scan above `uncovered.1` uncovered makes the estimate doubtful: part of the
+    /// body was not reached by the template (legs fitted too short over cut feet, a forearm
+    /// beside its scan). Default (20 mm, 0.003): good estimates leave at most 0.065 % of the scan
+    /// on the tuning zoo (a floor's ring) and 0.16 % on the held-out ones (a turntable's rim); legs
+    /// fitted too short over cut feet left 0.98 % (docs/landmarks-estimate.md, "The scan the
+    /// estimate's fit left uncovered").
+    pub uncovered: (f64, f64),
+    /// When nothing but the similarity fits chose which way the body faces, fits facing either way
+    /// closer than this (their energies' difference over the best's) make the estimate doubtful.
+    /// Default 0.03: with both facings fitted on 120 tuning and held-out zoo scans, the fit
+    /// facing the wrong way came out best twice, 0.3 % and 1.4 % from the right one, and every
+    /// wider gap chose right (docs/landmarks-estimate.md, "Which way the body faces, when only the
+    /// fits say").
+    pub facing_close: f64,
     /// The confidences of a doubtful estimate are multiplied by this. Default 0.5.
     pub doubtful_factor: f64,
     /// The same for a failed one: none stays above 10 %. Default 0.1.
@@ -63,6 +78,8 @@ impl Default for SelfCheckParams {
             max_contradicting: 6,
             max_bilateral_mm: 40.0,
             uneven_fit: (2.5, 6.0),
+            uncovered: (20.0, 0.003),
+            facing_close: 0.03,
             doubtful_factor: 0.5,
             failed_factor: 0.1,
         }
