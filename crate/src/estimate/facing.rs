@@ -1,6 +1,6 @@
 //! Which way a standing body faces, from the shape of its legs seen from the side.
 //!
-//! * **The feet** ([`feet_forward`]): a foot reaches forward of its ankle (heel to toe ≈ 25 cm,
+//! * **The feet**: a foot reaches forward of its ankle (heel to toe ≈ 25 cm,
 //!   the ankle ≈ 5–7 cm in front of the heel), so the scan's points at the feet lie, on average,
 //!   several centimetres forward of those of the lower legs just above them. It holds wherever the
 //!   feet are on the scan, whatever the arms, the hair or the clothes do to the nearest points; a
@@ -8,7 +8,7 @@
 //!   (issue 31, the scanner zoo's `hair`). Cut feet leave the lower legs, which do not reach: the
 //!   feet do not say. A floor or turntable left under the feet spreads around them and shortens
 //!   the reach.
-//! * **The legs** ([`legs_forward`]), when the feet do not say: seen from the side a leg is an S.
+//! * **The legs**, when the feet do not say: seen from the side a leg is an S.
 //!   The front of the thigh is convex (the quadriceps) and the back of the lower leg is convex
 //!   (the calf), while the back of the thigh and the shin are nearly straight; so the thighs'
 //!   points lie forward of the calves'. A bent knee moves both back from the knee alike and
@@ -86,36 +86,18 @@ pub fn body_forward(
     said(FacingCue::Feet, feet_decisive).or_else(|| said(FacingCue::Legs, legs_decisive))
 }
 
-/// The way along `depth` that the feet reach from the lower legs (the front slab `FEET_SLAB`,
-/// the back `SHIN_SLAB`, along `up`), however little; `None` when a slab is empty.
-pub fn feet_forward(
+/// The way along `depth` that `cue` says the body faces, however little: for the feet, the way
+/// they reach from the lower legs (the front slab `FEET_SLAB`, the back `SHIN_SLAB`, along `up`);
+/// for the legs, the way the thighs lie from the calves (`THIGH_SLAB`, `CALF_SLAB`, along the
+/// plumb line). `None` when a slab is empty.
+pub fn cue_says(
+    cue: FacingCue,
     positions: &[Point3<f64>],
     triangles: &[[u32; 3]],
     up: &Vector3<f64>,
     depth: &Vector3<f64>,
 ) -> Option<Forward> {
-    cue_forward(
-        &triangulated(positions, triangles),
-        up,
-        depth,
-        FacingCue::Feet,
-    )
-}
-
-/// The way along `depth` that the thighs lie from the calves (`THIGH_SLAB`, `CALF_SLAB`, along
-/// the plumb line), however little; `None` when a slab is empty.
-pub fn legs_forward(
-    positions: &[Point3<f64>],
-    triangles: &[[u32; 3]],
-    up: &Vector3<f64>,
-    depth: &Vector3<f64>,
-) -> Option<Forward> {
-    cue_forward(
-        &triangulated(positions, triangles),
-        up,
-        depth,
-        FacingCue::Legs,
-    )
+    cue_forward(&triangulated(positions, triangles), up, depth, cue)
 }
 
 /// One cue's verdict on `points` (the scan's triangulated vertices).
@@ -294,9 +276,9 @@ mod tests {
         // along it the thighs would lie 38 mm further back, level with the calves.
         let (points, triangles) = legs(None, 0.02);
         let (up, depth) = (Vector3::y(), Vector3::z());
-        let upright = legs_forward(&points, &triangles, &up, &depth).unwrap();
+        let upright = cue_says(FacingCue::Legs, &points, &triangles, &up, &depth).unwrap();
         let lean = nalgebra::Rotation3::from_axis_angle(&Vector3::x_axis(), 6f64.to_radians());
-        let leaning = legs_forward(&points, &triangles, &(lean * up), &depth).unwrap();
+        let leaning = cue_says(FacingCue::Legs, &points, &triangles, &(lean * up), &depth).unwrap();
         assert!(
             leaning.forward.dot(&depth) > 0.999,
             "{leaning:?} vs {upright:?}"
@@ -315,7 +297,7 @@ mod tests {
         let (up, depth) = (Vector3::y(), Vector3::z());
         let said = body_forward(&points, &triangles, &up, &depth, 0.015, 0.006).unwrap();
         assert_eq!((said.cue, said.forward), (FacingCue::Feet, Vector3::z()));
-        let legs = legs_forward(&points, &triangles, &up, &depth).unwrap();
+        let legs = cue_says(FacingCue::Legs, &points, &triangles, &up, &depth).unwrap();
         assert!(legs.forward.dot(&Vector3::z()) < -0.9995);
     }
 }
