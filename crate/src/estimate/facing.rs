@@ -1,7 +1,7 @@
 //! Which way a standing body faces, from the shape of its legs seen from the side.
 //!
-//! * **The feet**: a foot reaches forward of its ankle (heel to toe ≈ 25 cm,
-//!   the ankle ≈ 5–7 cm in front of the heel), so the scan's points at the feet lie, on average,
+//! * **The feet**: a foot reaches forward of its ankle (heel to toe ≈ 25 cm, the ankle ≈ 5–7 cm
+//!   in front of the heel), so the scan's points at the feet lie, on average,
 //!   several centimetres forward of those of the lower legs just above them. It holds wherever the
 //!   feet are on the scan, whatever the arms, the hair or the clothes do to the nearest points; a
 //!   back-to-front fit had been chosen by 7 % of the similarity's energy on a body with hair
@@ -54,7 +54,8 @@ pub enum FacingCue {
 /// A cue's verdict on which way the body faces.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Forward {
-    /// Forward (unit, ±`depth` made square to up): the way the front slab lies from the back one.
+    /// Forward (unit, ±`depth` made square to up, for the legs to the plumb line): the way the
+    /// front slab lies from the back one.
     pub forward: Vector3<f64>,
     /// How far (the scan's units) the front slab's centroid lies forward of the back one's.
     pub reach: f64,
