@@ -310,7 +310,7 @@ fn a_scan_without_its_feet_faces_the_way_its_legs_say() {
         check_unsaid
             .reasons
             .iter()
-            .any(|r| r.contains("neither the feet nor the legs say which way the body faces")),
+            .any(|r| r.contains("only the fits chose which way the body faces")),
         "{check_unsaid:?}"
     );
     assert!(

@@ -3,10 +3,10 @@
 //! estimate whose template had to be bent far out of shape to meet the scan, whose fitted body is
 //! no person's height, whose fit lies far from the scan, drifted away from it or left part of the
 //! scan uncovered, or whose landmarks contradict each other (against their rigid groups, or a
-//! limb's segment much longer on one side than on the other: `bilateral.rs`) is `doubtful` or
-//! `failed`, and its confidences
-//! are lowered to say so ([`SelfCheck::confidence_factor`]; the landmarks of a lopsided segment
-//! to [`SelfCheckParams::failed_factor`], [`SelfCheck::factor_for`]).
+//! limb's segment much longer on one side than on the other: `bilateral.rs`), or whose facing
+//! only the fits chose, by a hair, is `doubtful` or `failed`, and its confidences are lowered to
+//! say so ([`SelfCheck::confidence_factor`]; the landmarks of a lopsided segment to
+//! [`SelfCheckParams::failed_factor`], [`SelfCheck::factor_for`]).
 
 use serde::{Deserialize, Serialize};
 
@@ -87,8 +87,9 @@ pub struct Evidence {
     #[serde(default)]
     pub uneven: Vec<UnevenFit>,
     /// When nothing but the similarity fits chose which way the body faces (no given landmarks,
-    /// no facing chosen, neither the feet nor the legs saying: `facing.rs`), the difference of
-    /// the energies of the best fit and the best facing the other way, over the best's.
+    /// no facing chosen, neither the feet nor the legs asked or saying: `facing.rs`), the
+    /// difference of the energies of the best fit and the best facing the other way, over the
+    /// best's.
     #[serde(default)]
     pub facing_margin: Option<f64>,
     /// The scan the landmark-free fit left farther than `SelfCheckParams::uncovered.0` from it
@@ -153,9 +154,9 @@ pub fn self_check(evidence: &Evidence, params: &SelfCheckParams) -> SelfCheck {
     }
     if let Some(m) = evidence.facing_margin.filter(|m| *m < params.facing_close) {
         doubtful.push(format!(
-            "neither the feet nor the legs say which way the body faces, and the fits facing \
-             either way came within {:.1} % of each other: it may face the other way; look at \
-             the face, or choose the facing",
+            "only the fits chose which way the body faces, and those facing either way came \
+             within {:.1} % of each other: it may face the other way; look at the face, or \
+             choose the facing",
             100.0 * m
         ));
     }
