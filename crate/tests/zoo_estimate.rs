@@ -20,7 +20,7 @@ use bodyspace::synth::{
 };
 use bodyspace::template::Template;
 use estimate_support::{
-    estimate_bare, frame_cosines, landmark_errors, load, placed, zoo_frames, Zoo,
+    estimate_bare, frame_cosines, landmark_errors, load, placed, zoo_frames, Case, Frame, Zoo,
 };
 
 /// A seed neither tuned on nor reported in the measurement.
@@ -240,6 +240,25 @@ fn a_raised_arm_says_its_acromion_is_unsure() {
     }
 }
 
+/// Held-out subject `index` of `seed` as the `feet-cut` class delivers it at scanner `step` (m),
+/// placed in `frame`: the scan `bodyspace synth --scanner-class feet-cut` (or `--zoo`) writes.
+fn feet_cut_scan(
+    template: &Template,
+    data: &MakeHumanData,
+    step: f64,
+    seed: u64,
+    index: u64,
+    frame: &Frame,
+) -> Case {
+    let zoo = zoo_at(template, data, step, ZooParams::default());
+    let id = SubjectId {
+        profile: PopulationProfile::HeldOut,
+        seed,
+        index,
+    };
+    placed(template, zoo.scanned(id, ScannerClass::FeetCut), frame)
+}
+
 /// A scan whose feet the field of view cut off leaves the feet nothing to say about which way the
 /// body faces. On the blind held-out zoo seed 8461 (subject 4, as `bodyspace synth --zoo --step 4`
 /// writes it) the two facings' similarity fits came 0.6 % apart and the estimate went back to
@@ -251,14 +270,8 @@ fn a_raised_arm_says_its_acromion_is_unsure() {
 #[test]
 fn a_scan_without_its_feet_faces_the_way_its_legs_say() {
     let (template, data) = load();
-    let zoo = zoo_at(&template, &data, 0.004, ZooParams::default());
-    let id = SubjectId {
-        profile: PopulationProfile::HeldOut,
-        seed: 8461,
-        index: 3,
-    };
     let frame = &zoo_frames()[0];
-    let c = placed(&template, zoo.scanned(id, ScannerClass::FeetCut), frame);
+    let c = feet_cut_scan(&template, &data, 0.004, 8461, 3, frame);
     let estimated = |params: &EstimateParams, given: &LandmarkSet| {
         let input = EstimateInput {
             template: &template,
@@ -340,14 +353,8 @@ const CLICKED: [&str; 5] = [
 #[test]
 fn legs_fitted_too_short_leave_the_scan_uncovered_and_say_so() {
     let (template, data) = load();
-    let zoo = zoo_at(&template, &data, 0.005, ZooParams::default());
-    let id = SubjectId {
-        profile: PopulationProfile::HeldOut,
-        seed: 6543,
-        index: 32,
-    };
     let frame = &zoo_frames()[0];
-    let c = placed(&template, zoo.scanned(id, ScannerClass::FeetCut), frame);
+    let c = feet_cut_scan(&template, &data, 0.005, 6543, 32, frame);
     let estimated = |params: &EstimateParams| {
         let e = estimate_bare(&template, &c, params);
         let errors = landmark_errors(&c, &e.positions, e.scale_to_metres * 1000.0);

@@ -78,9 +78,10 @@ pub fn body_forward(
     legs_decisive: f64,
 ) -> Option<Forward> {
     let points = triangulated(positions, triangles);
+    let along_up = Slabs::new(&points, up)?;
     let said = |cue, decisive: f64| {
         (decisive > 0.0)
-            .then(|| cue_forward(&points, up, depth, cue))
+            .then(|| cue_forward(&along_up, depth, cue))
             .flatten()
             .filter(|f| f.share >= decisive)
     };
@@ -98,25 +99,22 @@ pub fn cue_says(
     up: &Vector3<f64>,
     depth: &Vector3<f64>,
 ) -> Option<Forward> {
-    cue_forward(&triangulated(positions, triangles), up, depth, cue)
+    let points = triangulated(positions, triangles);
+    cue_forward(&Slabs::new(&points, up)?, depth, cue)
 }
 
-/// One cue's verdict on `points` (the scan's triangulated vertices).
-fn cue_forward(
-    points: &[Point3<f64>],
-    up: &Vector3<f64>,
-    depth: &Vector3<f64>,
-    cue: FacingCue,
-) -> Option<Forward> {
-    let slabs = Slabs::new(points, up)?;
+/// One cue's verdict on the scan's triangulated vertices in slabs along the given up.
+fn cue_forward(along_up: &Slabs, depth: &Vector3<f64>, cue: FacingCue) -> Option<Forward> {
+    let plumb_slabs;
     let (slabs, front, back) = match cue {
-        FacingCue::Feet => (slabs, FEET_SLAB, SHIN_SLAB),
+        FacingCue::Feet => (along_up, FEET_SLAB, SHIN_SLAB),
         // The thighs and calves lie far apart in height, so they are compared along the plumb
         // line: a principal axis leaning 1° forward or back moves the thighs 3–4 mm against the
         // calves (0.34 % of the extent; it leant −2.2° to +3.3° on the zoo).
         FacingCue::Legs => {
-            let plumb = slabs.centroid(SHOULDER_SLAB)? - slabs.centroid(ANKLE_SLAB)?;
-            (Slabs::new(points, &plumb)?, THIGH_SLAB, CALF_SLAB)
+            let plumb = along_up.centroid(SHOULDER_SLAB)? - along_up.centroid(ANKLE_SLAB)?;
+            plumb_slabs = Slabs::new(along_up.points, &plumb)?;
+            (&plumb_slabs, THIGH_SLAB, CALF_SLAB)
         }
     };
     let depth = (depth - slabs.up * depth.dot(&slabs.up)).try_normalize(1e-12)?;
