@@ -4,6 +4,8 @@
 // (kept only when confirmed); the person picks Up = +z and Facing = −y, estimates again (a
 // landmark moved by hand stays where it was put) and aligns: the fit is as good as the sample's
 // (≤ 2 mm RMS) and nothing is flagged about the estimate.
+// An estimate cancelled after a failed one keeps the failed one's landmarks, and its verdict on
+// them stays on screen.
 import { expect, test, type Page } from '@playwright/test';
 import { sampleFile } from './samples';
 import { openWithSample } from './steps';
@@ -113,4 +115,30 @@ test('an estimate in a wrong frame says it failed; choosing up and estimating ag
   expect(right.rms).toBeLessThanOrEqual(2);
   expect(right.flags.split(' ')).not.toContain('landmark_estimate');
   await expect(page.getByTestId('align-check')).not.toContainText('landmark estimate');
+});
+
+test('an estimate cancelled after a failed one leaves the failed verdict on the landmarks it kept', async ({ page }) => {
+  test.setTimeout(300_000);
+  await openWithSample(page, [sampleFile('scan_001.ply.gz')]);
+  await expect(body(page)).toHaveAttribute('data-estimates', '1', { timeout: 120_000 });
+  await page.getByTestId('estimate-up').selectOption('-z');
+  await estimate(page, 'Estimate again, keeping my edits', 2);
+  await expect(page.getByTestId('estimate-check')).toHaveAttribute('data-verdict', 'failed');
+  // Estimate again, cancelled at its first progress (in the page, so a fast run cannot finish first).
+  await page.evaluate(() => {
+    new MutationObserver((_, observer) => {
+      const cancel = document.querySelector<HTMLButtonElement>('[data-testid="estimate-cancel"]');
+      if (!cancel) return;
+      observer.disconnect();
+      cancel.click();
+    }).observe(document.body, { childList: true, subtree: true });
+  });
+  await page.getByTestId('landmarks-estimate').click();
+  await expect(page.getByTestId('estimate-cancelled')).toBeVisible({ timeout: 60_000 });
+  await expect(body(page)).toHaveAttribute('data-estimates', '2');
+  // The landmarks kept are the failed estimate's: it still says so, and nothing says all is well.
+  await expect(page.getByTestId('estimate-check')).toHaveAttribute('data-verdict', 'failed');
+  await expect(page.getByTestId('estimate-check')).toContainText('choose which way is up');
+  await expect(page.getByTestId('landmarks-suspicious-none')).toHaveCount(0);
+  expect(Math.max(...(await confidences(page)))).toBeLessThanOrEqual(10);
 });

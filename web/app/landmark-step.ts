@@ -167,10 +167,12 @@ export class LandmarkStep {
       this.onEdited(false);
     } catch (error) {
       if (!current()) return;
-      if (error instanceof CancelledError) this.estimate = { state: 'cancelled' };
+      // The landmarks left are the last finished estimate's, and so is the verdict on them.
+      const kept = this.session.estimateReport?.self_check ?? null;
+      if (error instanceof CancelledError) this.estimate = { state: 'cancelled', kept };
       else {
         const message = error instanceof Error ? error.message : String(error);
-        this.estimate = { state: 'error', message };
+        this.estimate = { state: 'error', message, kept };
         this.onError(`Landmark estimate: ${sentence(message)} The scan and the landmarks placed so far are kept.`);
       }
       this.render();

@@ -13,8 +13,8 @@ export type EstimateView =
   | { state: 'none' }
   | { state: 'running'; fraction: number; label: string }
   | { state: 'done'; assumed: string; seconds: number; check: SelfCheck }
-  | { state: 'cancelled' }
-  | { state: 'error'; message: string };
+  | { state: 'cancelled'; kept: SelfCheck | null }
+  | { state: 'error'; message: string; kept: SelfCheck | null };
 
 export interface ToolsView {
   estimate: EstimateView;
@@ -85,7 +85,7 @@ export class LandmarkTools {
       h('p', { class: 'note', 'data-testid': 'landmarks-selected' }, selectedText(view)),
       h('div', { class: 'actions' }, undo, redo, absent),
       h('div', { class: 'actions export' }, h('span', { class: 'label' }, 'Export'), ...exports),
-      ...suspiciousParts(view.suspicious, e.state !== 'done' || e.check.verdict === 'good'),
+      ...suspiciousParts(view.suspicious, (shownCheck(e)?.verdict ?? 'good') === 'good'),
     );
   }
 
@@ -99,12 +99,24 @@ export class LandmarkTools {
     }
     if (e.state === 'done')
       return [h('p', { class: 'note', 'data-testid': 'estimate-assumed' }, `Estimated in ${e.seconds.toFixed(1)} s. Assumed: ${e.assumed}`), ...checkParts(e.check)];
+    // The landmarks kept are the last estimate's: its verdict on them still holds.
+    const kept = (check: SelfCheck | null) => (check ? checkParts(check) : []);
     if (e.state === 'cancelled')
-      return [h('p', { class: 'warn-note', 'data-testid': 'estimate-cancelled' }, 'Estimate cancelled: the scan and the landmarks placed so far are kept.')];
+      return [h('p', { class: 'warn-note', 'data-testid': 'estimate-cancelled' }, 'Estimate cancelled: the scan and the landmarks placed so far are kept.'), ...kept(e.kept)];
     if (e.state === 'error')
-      return [h('p', { class: 'error-note', 'data-testid': 'estimate-error' }, `The estimate failed: ${sentence(e.message)} The scan and the landmarks placed so far are kept; place the landmarks by hand or try again.`)];
+      return [
+        h('p', { class: 'error-note', 'data-testid': 'estimate-error' }, `The estimate failed: ${sentence(e.message)} The scan and the landmarks placed so far are kept; place the landmarks by hand or try again.`),
+        ...kept(e.kept),
+      ];
     return [];
   }
+}
+
+/** The self-check that speaks for the landmarks shown: the estimate's just done, or after a cancelled or failed one the last done one's. */
+function shownCheck(e: EstimateView): SelfCheck | null {
+  if (e.state === 'done') return e.check;
+  if (e.state === 'cancelled' || e.state === 'error') return e.kept;
+  return null;
 }
 
 /** "Estimate landmarks" on a bare set; once an estimate placed some, "Estimate again, keeping my edits". */
