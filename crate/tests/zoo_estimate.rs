@@ -11,7 +11,9 @@
 
 mod estimate_support;
 
-use bodyspace::estimate::{estimate_landmarks, EstimateInput, EstimateParams, Verdict};
+use bodyspace::estimate::{
+    estimate_landmarks, Axis, EstimateInput, EstimateParams, Orientation, Verdict,
+};
 use bodyspace::landmarks::LandmarkSet;
 use bodyspace::mesh::topology::{component_labels, components};
 use bodyspace::synth::zoo::parts::scan_labels;
@@ -22,6 +24,7 @@ use bodyspace::template::Template;
 use estimate_support::{
     estimate_bare, frame_cosines, landmark_errors, load, placed, zoo_frames, Case, Frame, Zoo,
 };
+use nalgebra::Vector3;
 
 /// A seed neither tuned on nor reported in the measurement.
 const SEED: u64 = 5757;
@@ -267,32 +270,35 @@ fn feet_cut_scan(
 /// back to front, so the test sees the difference, and says that only the fits chose the facing
 /// and how close they came; five landmarks clicked on the scan
 /// (the person's way out, issue 31: 4–6 re-anchor the estimate) turn it the right way round.
+/// When the person chose only the up axis, the legs still say the facing (before, a stated up
+/// left the facing to the fits, which went back to front here as without the legs' cue).
 #[test]
 fn a_scan_without_its_feet_faces_the_way_its_legs_say() {
     let (template, data) = load();
     let frame = &zoo_frames()[0];
     let c = feet_cut_scan(&template, &data, 0.004, 8461, 3, frame);
-    let estimated = |params: &EstimateParams, given: &LandmarkSet| {
-        let input = EstimateInput {
-            template: &template,
-            scan: &c.scan,
-            given,
-            units: None,
-            orientation: None,
+    let estimated =
+        |params: &EstimateParams, given: &LandmarkSet, orientation: Option<Orientation>| {
+            let input = EstimateInput {
+                template: &template,
+                scan: &c.scan,
+                given,
+                units: None,
+                orientation,
+            };
+            let e = estimate_landmarks(&input, params, &mut ()).unwrap();
+            let errors = landmark_errors(&c, &e.positions, e.scale_to_metres * 1000.0);
+            let (_, facing) = frame_cosines(frame, e.report.frame.up, e.report.frame.facing);
+            let mean = errors.iter().sum::<f64>() / errors.len() as f64;
+            (facing, mean, e.report.self_check)
         };
-        let e = estimate_landmarks(&input, params, &mut ()).unwrap();
-        let errors = landmark_errors(&c, &e.positions, e.scale_to_metres * 1000.0);
-        let (_, facing) = frame_cosines(frame, e.report.frame.up, e.report.frame.facing);
-        let mean = errors.iter().sum::<f64>() / errors.len() as f64;
-        (facing, mean, e.report.self_check)
-    };
     let none = LandmarkSet::default();
-    let (facing, mean, _) = estimated(&EstimateParams::default(), &none);
+    let (facing, mean, _) = estimated(&EstimateParams::default(), &none, None);
     let unsaid = EstimateParams {
         legs_forward_decisive: 0.0,
         ..EstimateParams::default()
     };
-    let (facing_unsaid, mean_unsaid, check_unsaid) = estimated(&unsaid, &none);
+    let (facing_unsaid, mean_unsaid, check_unsaid) = estimated(&unsaid, &none, None);
     let clicked = LandmarkSet {
         landmarks: c
             .landmarks
@@ -304,11 +310,20 @@ fn a_scan_without_its_feet_faces_the_way_its_legs_say() {
         ..LandmarkSet::default()
     };
     assert_eq!(clicked.landmarks.len(), CLICKED.len());
-    let (facing_clicked, mean_clicked, _) = estimated(&unsaid, &clicked);
+    let (facing_clicked, mean_clicked, _) = estimated(&unsaid, &clicked, None);
+    // The person chose only the up axis (the app's way out): the legs still say the facing.
+    let up = Axis::ALL
+        .into_iter()
+        .find(|a| (frame.rotation * Vector3::z() - a.vector()).norm() < 1e-9)
+        .unwrap();
+    let up_only = Some(Orientation { up, facing: None });
+    let (facing_up, mean_up, _) = estimated(&EstimateParams::default(), &none, up_only);
+    let (facing_up_unsaid, _, _) = estimated(&unsaid, &none, up_only);
     eprintln!(
         "facing {facing:.2}, mean {mean:.1} mm; without the legs facing {facing_unsaid:.2}, \
          mean {mean_unsaid:.1} mm; and with five clicked {facing_clicked:.2}, \
-         {mean_clicked:.1} mm"
+         {mean_clicked:.1} mm; up chosen {facing_up:.2}, {mean_up:.1} mm \
+         (without the legs {facing_up_unsaid:.2})"
     );
     assert!(
         facing > 0.9 && mean < tolerance_mm(ScannerClass::FeetCut),
@@ -329,6 +344,14 @@ fn a_scan_without_its_feet_faces_the_way_its_legs_say() {
     assert!(
         facing_clicked > 0.9 && mean_clicked < tolerance_mm(ScannerClass::FeetCut),
         "five clicked: {facing_clicked:.2}, {mean_clicked:.1} mm"
+    );
+    assert!(
+        facing_up > 0.9 && mean_up < tolerance_mm(ScannerClass::FeetCut),
+        "up chosen: {facing_up:.2}, {mean_up:.1} mm"
+    );
+    assert!(
+        facing_up_unsaid < -0.9,
+        "up chosen, without the legs' cue: facing {facing_up_unsaid:.2}"
     );
 }
 

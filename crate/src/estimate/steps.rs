@@ -195,30 +195,40 @@ pub fn estimate_landmarks(
             .orientation
             .as_ref()
             .is_some_and(|o| o.facing.is_some());
-    // Without a frame from given landmarks, the scan's shape may say which end is the head: the
-    // candidates upside down are then not fitted. Nearest points alone chose upside down on a
-    // raw scan (parts, slices, the crown cut, floor remnants) by 1 % of the RMS (issue 31).
-    if given_frame.is_none() && input.orientation.is_none() && params.head_end_decisive > 0.0 {
-        if let Some(end) = head_end(&scan.positions, &scan.triangles, params.head_end_decisive) {
-            starts.retain(|(_, t)| (t.rotation * Vector3::y()).dot(&end.up) > 0.0);
-            // With up known, the feet, or the legs when the feet are cut, may say which way is
-            // forward: hair or a pose had made the back-to-front fit the closer one, and a scan
-            // without its feet was fitted back to front by 0.6 % (issue 31).
-            // The candidates left face either way along one axis, the body's front-back one.
-            let depth = starts.first().map(|(_, t)| t.rotation * Vector3::z());
-            if let Some(said) = depth.and_then(|d| {
-                body_forward(
-                    &scan.positions,
-                    &scan.triangles,
-                    &end.up,
-                    &d,
-                    params.feet_forward_decisive,
-                    params.legs_forward_decisive,
-                )
-            }) {
-                starts.retain(|(_, t)| (t.rotation * Vector3::z()).dot(&said.forward) > 0.0);
-                facing_said = true;
-            }
+    // Without a frame from given landmarks, the person or else the scan's shape may say which end
+    // is the head: the candidates upside down are then not fitted. Nearest points alone chose
+    // upside down on a raw scan (parts, slices, the crown cut, floor remnants) by 1 % of the RMS
+    // (issue 31).
+    let up_said = match (&given_frame, &input.orientation) {
+        (Some(_), _) => None,
+        (None, Some(o)) => Some(o.up.vector()),
+        (None, None) if params.head_end_decisive > 0.0 => {
+            head_end(&scan.positions, &scan.triangles, params.head_end_decisive).map(|end| {
+                starts.retain(|(_, t)| (t.rotation * Vector3::y()).dot(&end.up) > 0.0);
+                end.up
+            })
+        }
+        (None, None) => None,
+    };
+    // With up known and the facing not said, the feet, or the legs when the feet are cut, may say
+    // which way is forward: hair or a pose had made the back-to-front fit the closer one, and a
+    // scan without its feet was fitted back to front by 0.6 % (issue 31) — also when the person
+    // had chosen only the up axis. The candidates left face either way along one axis, the
+    // body's front-back one.
+    if let Some(up) = up_said.filter(|_| !facing_said) {
+        let depth = starts.first().map(|(_, t)| t.rotation * Vector3::z());
+        if let Some(said) = depth.and_then(|d| {
+            body_forward(
+                &scan.positions,
+                &scan.triangles,
+                &up,
+                &d,
+                params.feet_forward_decisive,
+                params.legs_forward_decisive,
+            )
+        }) {
+            starts.retain(|(_, t)| (t.rotation * Vector3::z()).dot(&said.forward) > 0.0);
+            facing_said = true;
         }
     }
     let segment_starts = if given_m.len() >= 4 {
