@@ -4,20 +4,13 @@
 // landmark brings the hidden scan back; a new scan forgets the pick and the list's scroll.
 import { readFileSync } from 'node:fs';
 import { expect, test, type Page } from '@playwright/test';
-import { dropFiles, waitForLoads, type TestFile } from './fixtures';
-import { sampleFile } from './samples';
+import { dropFiles, waitForLoads } from './fixtures';
+import { partialCsv, sampleFile } from './samples';
 import { openWithSample } from './steps';
 import { synthSubjects } from './synth';
 
 const body = (page: Page) => page.locator('body');
 const row = (page: Page, name: string) => page.getByTestId('landmark-list').locator(`li[data-name="${name}"]`);
-
-/** `landmarks_001.csv` without every landmark whose name is not in `keep`. */
-function partialCsv(keep: (name: string, index: number) => boolean): TestFile {
-  const [header, ...lines] = sampleFile('landmarks_001.csv').bytes.toString('utf8').trim().split('\n');
-  const kept = lines.filter((line, i) => keep(line.replace(/^"([^"]*)".*$|^([^,]*),.*$/, '$1$2'), i));
-  return { name: 'partial.csv', bytes: Buffer.from([header, ...kept].join('\n')) };
-}
 
 /** `x,y,z` of a row's `data-position-mm`. */
 async function positionMm(page: Page, name: string): Promise<number[]> {

@@ -5,9 +5,11 @@
 // landmark moved by hand stays where it was put) and aligns: the fit is as good as the sample's
 // (≤ 2 mm RMS) and nothing is flagged about the estimate.
 // An estimate cancelled after a failed one keeps the failed one's landmarks, and its verdict on
-// them stays on screen.
+// them stays on screen. An estimate back to front (the facing chosen wrong) is re-anchored by
+// five given landmarks, and the page says the landmarks, not the choice, set the facing.
 import { expect, test, type Page } from '@playwright/test';
-import { sampleFile } from './samples';
+import { dropFiles } from './fixtures';
+import { partialCsv, sampleFile } from './samples';
 import { openWithSample } from './steps';
 
 const body = (page: Page) => page.locator('body');
@@ -141,4 +143,35 @@ test('an estimate cancelled after a failed one leaves the failed verdict on the 
   await expect(page.getByTestId('estimate-check')).toContainText('choose which way is up');
   await expect(page.getByTestId('landmarks-suspicious-none')).toHaveCount(0);
   expect(Math.max(...(await confidences(page)))).toBeLessThanOrEqual(10);
+});
+
+test('five given landmarks overrule a facing chosen wrong, and the page says what set the frame', async ({ page }) => {
+  test.setTimeout(600_000);
+  // Without landmarks, the scan's shape says which end is up and the feet which way it faces.
+  await openWithSample(page, [sampleFile('scan_001.ply.gz')]);
+  await expect(body(page)).toHaveAttribute('data-estimates', '1', { timeout: 120_000 });
+  await expect(page.getByTestId('estimate-assumed')).toContainText("up is the scan's +z axis (from the scan's shape) and it faces -y (from the feet)");
+
+  // Facing chosen wrong: the estimate goes back to front and does not call itself good.
+  await page.getByTestId('estimate-up').selectOption('+z');
+  await page.getByTestId('estimate-facing').selectOption('+y');
+  await estimate(page, 'Estimate again, keeping my edits', 2);
+  await expect(page.getByTestId('estimate-assumed')).toContainText("up is the scan's +z axis (as chosen) and it faces +y (as chosen)");
+  await expect(body(page)).not.toHaveAttribute('data-estimate-verdict', 'good');
+
+  // Five landmarks on the face, the neck and the shoulders and a hip bone (a partial file, as a
+  // person clicks them): they re-anchor the estimate the right way round, over the choice, and
+  // the page says the landmarks set the facing — not "as chosen".
+  const CLICKED = ['Sellion', 'Suprasternale', 'Rt. Acromion', 'Lt. Acromion', 'Rt. ASIS'];
+  await dropFiles(page, [partialCsv((name) => CLICKED.includes(name))]);
+  await expect(page.getByTestId('landmark-list').locator('li[data-state="given"]')).toHaveCount(5, { timeout: 60_000 });
+  await estimate(page, 'Estimate again, keeping my edits', 4);
+  await expect(body(page)).toHaveAttribute('data-estimate-verdict', 'good');
+  await expect(page.getByTestId('estimate-assumed')).toContainText("up is the scan's +z axis (as chosen) and it faces -y (from given landmarks, not the chosen +y)");
+  await expect(page.getByTestId('landmark-list').locator('li[data-state="estimated"]')).toHaveCount(68);
+
+  // Aligned: as good as the sample fits (0.92 mm with its true landmarks), nothing about the estimate.
+  const right = await align(page);
+  expect(right.rms).toBeLessThanOrEqual(2);
+  expect(right.flags.split(' ')).not.toContain('landmark_estimate');
 });

@@ -16,7 +16,7 @@ import type { Orientation } from '../shared/orientation';
 import { METRES_PER_UNIT } from '../shared/results';
 import type { TemplateData } from '../shared/template-data';
 import { download } from '../ui/download';
-import { notFitted } from '../ui/format';
+import { basisWords, notFitted } from '../ui/format';
 import { sentence, type EstimateView, type LandmarkFormat } from '../ui/landmark-tools';
 import { LandmarksPanel, type LandmarkFacts } from '../ui/landmarks-panel';
 import { landmarkStyle } from '../view/landmark-style';
@@ -189,9 +189,8 @@ export class LandmarkStep {
   private assumed(report: EstimateReport): string {
     const s = this.session;
     const units = s.scan && s.scanUnits === s.scan.summary.units_detected ? `${s.scanUnits} (detected)` : `${s.scanUnits} (as chosen)`;
-    const o = s.orientation;
-    const up = o ? ' (as chosen)' : '';
-    const facing = o?.facing ? ' (as chosen)' : '';
+    const up = basisWords(report.frame_from.up, s.orientation?.up ?? null);
+    const facing = basisWords(report.frame_from.facing, s.orientation?.facing ?? null);
     return (
       `the body's up is the scan's ${report.frame.up_axis} axis${up} and it faces ${report.frame.facing_axis}${facing}; units ${units}. ` +
       `${report.given} landmarks kept as given, ${report.estimated} estimated (markers from red, low confidence, to green, high); ` +

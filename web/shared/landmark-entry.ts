@@ -107,6 +107,11 @@ export interface EstimateReport {
   landmarks: { name: string; sharpness: Sharpness }[];
   /** The frame assumed: the scan's axis nearest the body's up and facing directions. */
   frame: { up_axis: string; facing_axis: string };
+  /**
+   * What said the frame's up and its facing, in words: "chosen", "given landmarks", "the scan's
+   * shape" (up), "the feet" or "the legs" (facing), "the fits".
+   */
+  frame_from: { up: string; facing: string };
   given: number;
   estimated: number;
   flagged: SuspiciousLandmark[];

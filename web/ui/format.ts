@@ -91,3 +91,15 @@ export function notFitted(removed: (ScanRemoval | undefined)[]): string {
   const words = removed.flatMap((r) => (r ? [r.words] : []));
   return words.length ? ` Not fitted: ${words.join('; ')}.` : '';
 }
+
+/**
+ * What said the frame's up or facing (the core's `FrameBasis` word), as words after the axis:
+ * " (as chosen)", " (from the given landmarks, not the chosen +y)", " (from the legs)", … An
+ * axis the person chose and the core did not take is named, so a choice overruled is never shown as kept.
+ */
+export function basisWords(basis: string, chosen: string | null): string {
+  if (basis === 'chosen') return ' (as chosen)';
+  const overruled = chosen ? `, not the chosen ${chosen}` : '';
+  if (basis === 'the fits') return ` (by the fits alone${overruled})`;
+  return ` (from ${basis}${overruled})`;
+}

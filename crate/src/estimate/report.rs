@@ -3,6 +3,7 @@
 use serde::Serialize;
 
 use super::frame::FrameReport;
+use super::orientation::Orientation;
 use super::self_check::SelfCheck;
 use super::suspicious::SuspiciousLandmark;
 use crate::mesh::floor::FloorRemoval;
@@ -19,6 +20,48 @@ pub struct CandidateReport {
     pub rms_mm: f64,
     /// Fraction of the sampled template vertices that found a match.
     pub matched: f64,
+}
+
+/// What said which way is up and which way the body faces, in words the app shows as they are:
+/// `"chosen"` (the person's orientation), `"given landmarks"`, `"the scan's shape"` (the head's
+/// end narrower than the feet's, up only), `"the feet"` or `"the legs"` (facing only), or `"the
+/// fits"` (the frame candidates' fits alone).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct FrameBasis {
+    pub up: &'static str,
+    pub facing: &'static str,
+}
+
+impl FrameBasis {
+    /// The basis of the assumed `frame`: the person's `chosen` orientation where the frame agrees
+    /// with it, else the given landmarks where their frame ruled out the others (`given_ruled`),
+    /// else the scan's cue (`up_cue`, `facing_cue`), else the fits. A chosen facing that given
+    /// landmarks overruled is thus reported as the landmarks'.
+    pub fn of(
+        frame: &FrameReport,
+        chosen: Option<&Orientation>,
+        given_ruled: bool,
+        up_cue: Option<&'static str>,
+        facing_cue: Option<&'static str>,
+    ) -> Self {
+        let basis = |chose: Option<&str>, axis: &str, cue: Option<&'static str>| {
+            if chose == Some(axis) {
+                "chosen"
+            } else if given_ruled {
+                "given landmarks"
+            } else {
+                cue.unwrap_or("the fits")
+            }
+        };
+        Self {
+            up: basis(chosen.map(|o| o.up.name()), &frame.up_axis, up_cue),
+            facing: basis(
+                chosen.and_then(|o| o.facing).map(|f| f.name()),
+                &frame.facing_axis,
+                facing_cue,
+            ),
+        }
+    }
 }
 
 /// One landmark of the estimate.
@@ -47,6 +90,8 @@ pub struct EstimateReport {
     pub strays: Option<StrayRemoval>,
     /// The frame assumed (the best candidate after the whole fit).
     pub frame: FrameReport,
+    /// What said the frame's up and facing.
+    pub frame_from: FrameBasis,
     /// Every candidate tried, by the energy of its similarity fit (the first is `frame`).
     pub candidates: Vec<CandidateReport>,
     /// Landmarks taken from the given file, and estimated.
@@ -73,4 +118,55 @@ pub struct EstimateReport {
     pub segments_ms: f64,
     pub fine_ms: f64,
     pub total_ms: f64,
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::estimate::orientation::Axis;
+
+    fn frame(up: &str, facing: &str) -> FrameReport {
+        FrameReport {
+            up: [0.0; 3],
+            up_axis: up.to_string(),
+            facing: [0.0; 3],
+            facing_axis: facing.to_string(),
+        }
+    }
+
+    #[test]
+    fn the_frame_is_said_to_come_from_what_decided_it() {
+        let chosen = Orientation {
+            up: Axis::PlusZ,
+            facing: Some(Axis::PlusY),
+        };
+        // The person's choice, where the frame agrees with it.
+        let f = FrameBasis::of(&frame("+z", "+y"), Some(&chosen), false, None, None);
+        assert_eq!((f.up, f.facing), ("chosen", "chosen"));
+        // Given landmarks that overruled the chosen facing are named, not the choice.
+        let f = FrameBasis::of(&frame("+z", "-y"), Some(&chosen), true, None, None);
+        assert_eq!((f.up, f.facing), ("chosen", "given landmarks"));
+        // Up chosen only: the legs said the facing.
+        let up_only = Orientation {
+            facing: None,
+            ..chosen
+        };
+        let f = FrameBasis::of(
+            &frame("+z", "-y"),
+            Some(&up_only),
+            false,
+            None,
+            Some("the legs"),
+        );
+        assert_eq!((f.up, f.facing), ("chosen", "the legs"));
+        // Nothing chosen or given: the scan's cues, else the fits.
+        let f = FrameBasis::of(
+            &frame("+z", "-y"),
+            None,
+            false,
+            Some("the scan's shape"),
+            None,
+        );
+        assert_eq!((f.up, f.facing), ("the scan's shape", "the fits"));
+    }
 }

@@ -35,13 +35,13 @@ use super::check::{judge_given, CheckParams, NEARLY_FULL};
 use super::confidence::{confidence, neighbourhoods, residual};
 use super::error::EstimateError;
 use super::expected::expected_positions;
-use super::facing::body_forward;
+use super::facing::{body_forward, FacingCue};
 use super::frame::{same_frame, same_up, FrameReport};
 use super::hand::pose_hands;
 use super::matching::Matching;
 use super::orientation::{candidates_for, Orientation};
 use super::params::EstimateParams;
-use super::report::{CandidateReport, EstimateReport, LandmarkReport};
+use super::report::{CandidateReport, EstimateReport, FrameBasis, LandmarkReport};
 use super::segments::fit_segments;
 use super::self_check::{self_check, Evidence, SelfCheck};
 use super::suspicious::{flag_suspicious, SuspiciousLandmark};
@@ -199,17 +199,20 @@ pub fn estimate_landmarks(
     // is the head: the candidates upside down are then not fitted. Nearest points alone chose
     // upside down on a raw scan (parts, slices, the crown cut, floor remnants) by 1 % of the RMS
     // (issue 31).
+    let mut up_cue = None;
     let up_said = match (&given_frame, &input.orientation) {
         (Some(_), _) => None,
         (None, Some(o)) => Some(o.up.vector()),
         (None, None) if params.head_end_decisive > 0.0 => {
             head_end(&scan.positions, &scan.triangles, params.head_end_decisive).map(|end| {
                 starts.retain(|(_, t)| (t.rotation * Vector3::y()).dot(&end.up) > 0.0);
+                up_cue = Some("the scan's shape");
                 end.up
             })
         }
         (None, None) => None,
     };
+    let mut facing_cue = None;
     // With up known and the facing not said, the feet, or the legs when the feet are cut, may say
     // which way is forward: hair or a pose had made the back-to-front fit the closer one, and a
     // scan without its feet was fitted back to front by 0.6 % (issue 31) — also when the person
@@ -229,6 +232,10 @@ pub fn estimate_landmarks(
         }) {
             starts.retain(|(_, t)| (t.rotation * Vector3::z()).dot(&said.forward) > 0.0);
             facing_said = true;
+            facing_cue = Some(match said.cue {
+                FacingCue::Feet => "the feet",
+                FacingCue::Legs => "the legs",
+            });
         }
     }
     let segment_starts = if given_m.len() >= 4 {
@@ -265,13 +272,13 @@ pub fn estimate_landmarks(
     // Given landmarks say which way is up and which way the body faces: a candidate turned
     // away from them is not taken, however well it fits (a body with its hands on its hips fitted
     // back to front best, held-out seed 6420).
-    if let Some(frame) = &given_frame {
-        if fitted
+    let given_ruled = given_frame.as_ref().is_some_and(|frame| {
+        fitted
             .iter()
             .any(|(_, f)| same_frame(frame, &f.transform, params.same_frame_deg))
-        {
-            fitted.retain(|(_, f)| same_frame(frame, &f.transform, params.same_frame_deg));
-        }
+    });
+    if let Some(frame) = given_frame.as_ref().filter(|_| given_ruled) {
+        fitted.retain(|(_, f)| same_frame(frame, &f.transform, params.same_frame_deg));
     }
     fitted.sort_by(|a, b| a.1.energy.total_cmp(&b.1.energy));
     let torso: Vec<u32> = sample
@@ -506,6 +513,13 @@ pub fn estimate_landmarks(
         units,
         units_detected: input.units.is_none(),
         strays,
+        frame_from: FrameBasis::of(
+            &FrameReport::of(&best),
+            input.orientation.as_ref(),
+            given_ruled,
+            up_cue,
+            facing_cue,
+        ),
         frame: FrameReport::of(&best),
         candidates,
         given: given.len(),
