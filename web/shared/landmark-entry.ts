@@ -77,6 +77,8 @@ export interface SelfCheckEvidence {
   facing_margin: number | null;
   /** The scan the landmark-free fit left uncovered (more than 20 mm from it). */
   uncovered: Uncovered | null;
+  /** How far (degrees) the fitted head's ear-to-eye line is pitched from the template's (+ up). */
+  head_pitch_deg: number | null;
 }
 
 /** The scan a fit left uncovered (the core's `align::Uncovered`): how many of its vertices, their

@@ -96,6 +96,12 @@ pub struct Evidence {
     /// (`None` when not measured).
     #[serde(default)]
     pub uncovered: Option<Uncovered>,
+    /// How far (degrees) the estimated head is pitched from the template's own head: the pitch
+    /// of the line from the Tragions to the Infraorbitales (`landmarks::head_pitch`) on the fit,
+    /// along the frame's up, less the same on the template at rest (positive: the face turned
+    /// up). `None` when not measured.
+    #[serde(default)]
+    pub head_pitch_deg: Option<f64>,
 }
 
 /// The estimate's verdict on `evidence` (see the module documentation and [`SelfCheckParams`]).
@@ -176,6 +182,19 @@ pub fn self_check(evidence: &Evidence, params: &SelfCheckParams) -> SelfCheck {
                 .map_or(String::new(), |n| format!(", most of it near the {n}"))
         ));
     }
+    if let Some(pitch) = evidence
+        .head_pitch_deg
+        .filter(|p| p.abs() > params.head_pitch_deg)
+    {
+        doubtful.push(format!(
+            "the face is turned {:.0}° {} from the template's (the line from the ears to the \
+             eyes), where a person standing to be scanned holds it near level: the head or the \
+             face may be placed wrongly; check the face's landmarks, or place Sellion and the \
+             Tragions by hand",
+            pitch.abs(),
+            if pitch < 0.0 { "down" } else { "up" }
+        ));
+    }
     if evidence.contradicting.len() > params.max_contradicting {
         doubtful.push(format!(
             "{} estimated landmarks lie far from where the others of their part put them ({})",
@@ -220,6 +239,7 @@ mod tests {
                 share: 0.0006,
                 near: Some("right lower leg".into()),
             }),
+            head_pitch_deg: Some(-8.0),
         }
     }
 
@@ -310,9 +330,14 @@ mod tests {
                 }),
                 ..good()
             },
+            Evidence {
+                head_pitch_deg: Some(-41.0),
+                ..good()
+            },
         ];
         let uncovered = self_check(&cases[7], &p);
         assert!(self_check(&cases[6], &p).reasons[0].contains("came within 0.6 %"));
+        assert!(self_check(&cases[8], &p).reasons[0].starts_with("the face is turned 41° down"));
         assert!(
             uncovered.reasons[0].starts_with("1.0 % of the scan lies more than 20 mm from the fit, most of it near the left lower leg"),
             "{:?}",

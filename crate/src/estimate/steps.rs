@@ -52,6 +52,7 @@ use crate::align::{
     data_weights, fine_align, uncovered_scan, uneven_fits, AlignObserver, FineAlignInput,
     FineAlignParams, SurfaceIndex,
 };
+use crate::landmarks::head_pitch::head_pitch_deg;
 use crate::landmarks::shoulder::{acromion_indices, ShoulderFrame};
 use crate::landmarks::{
     definition_sharpness, LandmarkSet, CAESAR_LANDMARKS, CAESAR_LANDMARK_COUNT,
@@ -600,7 +601,7 @@ fn check_itself(
         ),
         fit_rms_mm: trimmed_rms_mm(&fine.report.per_vertex_distance, weights, 0.95),
         stature_m: {
-            let up = best.rotation * nalgebra::Vector3::y();
+            let up = best.rotation * Vector3::y();
             let heights = fine.positions.iter().map(|p| p.coords.dot(&up));
             heights.clone().fold(f64::NEG_INFINITY, f64::max)
                 - heights.fold(f64::INFINITY, f64::min)
@@ -614,6 +615,9 @@ fn check_itself(
             (parts, &part_of),
             params.self_check.uncovered.0,
         )),
+        head_pitch_deg: head_pitch_deg(&|k| Some(estimated[k].1), &(best.rotation * Vector3::y()))
+            .zip(head_pitch_deg(&|k| Some(landmark_rest[k]), &Vector3::y()))
+            .map(|(fit, template)| fit - template),
     };
     self_check(&evidence, &params.self_check)
 }

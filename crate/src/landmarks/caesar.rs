@@ -114,3 +114,8 @@ pub const CAESAR_LANDMARKS: [CaesarLandmark; CAESAR_LANDMARK_COUNT] = [
     landmark(72, "Lt. Digit II", LeftLeg, &[]),
     landmark(73, "Crotch", Torso, &[LeftLeg, RightLeg]),
 ];
+
+/// The index in [`CAESAR_LANDMARKS`] of the canonical `name`.
+pub fn caesar_index(name: &str) -> Option<usize> {
+    CAESAR_LANDMARKS.iter().position(|l| l.name == name)
+}

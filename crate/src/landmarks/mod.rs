@@ -3,6 +3,7 @@
 //! and the shoulder's rule that places the Acromion on a body's own surface ([`shoulder`]).
 
 pub mod caesar;
+pub mod head_pitch;
 pub mod names;
 pub mod report;
 pub mod set;
@@ -10,7 +11,7 @@ pub mod sharpness;
 pub mod shoulder;
 pub mod virtual_landmarks;
 
-pub use caesar::{CaesarLandmark, CAESAR_LANDMARKS, CAESAR_LANDMARK_COUNT};
+pub use caesar::{caesar_index, CaesarLandmark, CAESAR_LANDMARKS, CAESAR_LANDMARK_COUNT};
 pub use names::canonical_name;
 pub use report::{report, LandmarkReport};
 pub use set::{Landmark, LandmarkSet};

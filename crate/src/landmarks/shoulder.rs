@@ -19,7 +19,7 @@
 
 use nalgebra::{Point3, Vector3};
 
-use super::CAESAR_LANDMARKS;
+use super::caesar::caesar_index;
 use crate::mesh::surface_points::SurfacePoint;
 
 /// The trunk's frame at one shoulder and the upper arm's direction, unit vectors.
@@ -37,10 +37,7 @@ pub struct ShoulderFrame {
 
 /// The CAESAR index of `name`.
 fn index(name: &str) -> usize {
-    CAESAR_LANDMARKS
-        .iter()
-        .position(|l| l.name == name)
-        .expect("the shoulder's landmarks are CAESAR landmarks")
+    caesar_index(name).expect("the shoulder's landmarks are CAESAR landmarks")
 }
 
 /// The CAESAR indices of the right and the left Acromion.

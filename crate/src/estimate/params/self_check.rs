@@ -60,6 +60,10 @@ pub struct SelfCheckParams {
     /// wider gap chose right (docs/landmarks-estimate.md, "Which way the body faces, when only the
     /// fits say").
     pub facing_close: f64,
+    /// A head pitched further than this (degrees) from the template's (the Tragions' →
+    /// Infraorbitales' line, `landmarks::head_pitch`) makes the estimate doubtful. Default 25°
+    /// (docs/landmarks-estimate.md, "A face placed on the throat").
+    pub head_pitch_deg: f64,
     /// The confidences of a doubtful estimate are multiplied by this. Default 0.5.
     pub doubtful_factor: f64,
     /// The same for a failed one: none stays above 10 %. Default 0.1.
@@ -80,6 +84,7 @@ impl Default for SelfCheckParams {
             uneven_fit: (2.5, 6.0),
             uncovered: (20.0, 0.003),
             facing_close: 0.03,
+            head_pitch_deg: 25.0,
             doubtful_factor: 0.5,
             failed_factor: 0.1,
         }
