@@ -19,7 +19,9 @@ use bodyspace::io::{read_landmarks, write_landmarks_csv, write_ply};
 use bodyspace::landmarks::{LandmarkSet, CAESAR_LANDMARKS};
 use bodyspace::mesh::units::Units;
 use bodyspace::synth::{PopulationProfile, SubjectId};
-use estimate_support::{case, case_scanned, frames, load, poses, Case, Frame, PARTIAL};
+use estimate_support::{
+    case, case_scanned, estimate_given, frames, load, poses, Case, Frame, PARTIAL,
+};
 use nalgebra::Vector3;
 
 /// Hands laid on the hips — the wrist bent back, the palm on the hip, the elbow's hinge across
@@ -50,14 +52,7 @@ fn estimate_oriented(
     orientation: Option<Orientation>,
 ) -> LandmarkEstimate {
     let template = bodyspace::template::Template::embedded().unwrap();
-    let input = EstimateInput {
-        template: &template,
-        scan: &c.scan,
-        given,
-        units: None,
-        orientation,
-    };
-    estimate_landmarks(&input, &EstimateParams::default(), &mut ()).unwrap()
+    estimate_given(&template, c, given, orientation, &EstimateParams::default())
 }
 
 /// Mean and worst distance (mm) of the estimated landmarks that were not given.

@@ -11,9 +11,7 @@
 
 mod estimate_support;
 
-use bodyspace::estimate::{
-    estimate_landmarks, Axis, EstimateInput, EstimateParams, Orientation, Verdict,
-};
+use bodyspace::estimate::{Axis, EstimateParams, Orientation, Verdict};
 use bodyspace::landmarks::LandmarkSet;
 use bodyspace::mesh::topology::{component_labels, components};
 use bodyspace::synth::zoo::parts::scan_labels;
@@ -22,7 +20,8 @@ use bodyspace::synth::{
 };
 use bodyspace::template::Template;
 use estimate_support::{
-    estimate_bare, frame_cosines, landmark_errors, load, placed, zoo_frames, Case, Frame, Zoo,
+    estimate_bare, estimate_given, frame_cosines, landmark_errors, load, placed, zoo_frames, Case,
+    Frame, Zoo,
 };
 use nalgebra::Vector3;
 
@@ -279,14 +278,7 @@ fn a_scan_without_its_feet_faces_the_way_its_legs_say() {
     let c = feet_cut_scan(&template, &data, 0.004, 8461, 3, frame);
     let estimated =
         |params: &EstimateParams, given: &LandmarkSet, orientation: Option<Orientation>| {
-            let input = EstimateInput {
-                template: &template,
-                scan: &c.scan,
-                given,
-                units: None,
-                orientation,
-            };
-            let e = estimate_landmarks(&input, params, &mut ()).unwrap();
+            let e = estimate_given(&template, &c, given, orientation, params);
             let errors = landmark_errors(&c, &e.positions, e.scale_to_metres * 1000.0);
             let (_, facing) = frame_cosines(frame, e.report.frame.up, e.report.frame.facing);
             let mean = errors.iter().sum::<f64>() / errors.len() as f64;

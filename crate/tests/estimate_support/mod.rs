@@ -5,7 +5,9 @@
 //! node_modules.
 #![allow(dead_code)]
 
-use bodyspace::estimate::{estimate_landmarks, EstimateInput, EstimateParams, LandmarkEstimate};
+use bodyspace::estimate::{
+    estimate_landmarks, EstimateInput, EstimateParams, LandmarkEstimate, Orientation,
+};
 use bodyspace::landmarks::{Landmark, LandmarkSet};
 use bodyspace::mesh::Mesh;
 use bodyspace::synth::output::to_output_frame;
@@ -238,12 +240,24 @@ pub fn estimate_bare(
     case: &Case,
     params: &EstimateParams,
 ) -> LandmarkEstimate {
+    estimate_given(template, case, &LandmarkSet::default(), None, params)
+}
+
+/// The estimate of `case`'s scan with landmarks `given` and the person's `orientation`, units
+/// detected.
+pub fn estimate_given(
+    template: &Template,
+    case: &Case,
+    given: &LandmarkSet,
+    orientation: Option<Orientation>,
+    params: &EstimateParams,
+) -> LandmarkEstimate {
     let input = EstimateInput {
         template,
         scan: &case.scan,
-        given: &LandmarkSet::default(),
+        given,
         units: None,
-        orientation: None,
+        orientation,
     };
     estimate_landmarks(&input, params, &mut ()).unwrap()
 }
