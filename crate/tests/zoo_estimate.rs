@@ -400,7 +400,8 @@ fn legs_fitted_too_short_leave_the_scan_uncovered_and_say_so() {
 /// nose tip was found on the throat: Sellion 83 mm low, the face 80–88 mm off, the estimate
 /// 23.7 mm off on average and called good. The line from the ears to the eyes was turned 48°
 /// down from the template's, where good estimates of the tuning and held-out zoos stay within
-/// 15°. With the head's pitch judged it is doubtful and says so; with it out of reach, good.
+/// 15°. With the head's pitch judged it is doubtful and says so, and the head's landmarks'
+/// confidences drop to the failed factor; with it out of reach, good.
 #[test]
 fn a_face_turned_far_down_is_doubtful() {
     let (template, data) = load();
@@ -420,12 +421,12 @@ fn a_face_turned_far_down_is_doubtful() {
     let estimated = |params: &EstimateParams| {
         let e = estimate_bare(&template, &c, params);
         let errors = landmark_errors(&c, &e.positions, e.scale_to_metres * 1000.0);
-        (errors[0], e.report.self_check)
+        (errors[0], e.confidence[0], e.report.self_check)
     };
-    let (sellion, check) = estimated(&EstimateParams::default());
+    let (sellion, confidence, check) = estimated(&EstimateParams::default());
     let mut unjudged = EstimateParams::default();
     unjudged.self_check.head_pitch_deg = 90.0;
-    let (_, check_unjudged) = estimated(&unjudged);
+    let (_, confidence_unjudged, check_unjudged) = estimated(&unjudged);
     eprintln!("Sellion {sellion:.1} mm off, {check:?}; unjudged {check_unjudged:?}");
     assert!(
         sellion > 50.0,
@@ -441,4 +442,9 @@ fn a_face_turned_far_down_is_doubtful() {
         check.reasons
     );
     assert_eq!(check_unjudged.verdict, Verdict::Good, "{check_unjudged:?}");
+    // The face's confidences say it: no more than 10 %, where the unjudged estimate gave more.
+    assert!(
+        confidence <= 0.1 && confidence_unjudged > 0.1,
+        "Sellion's confidence {confidence:.2}, unjudged {confidence_unjudged:.2}"
+    );
 }

@@ -43,8 +43,10 @@ export interface SelfCheck {
   verdict: Verdict;
   reasons: string[];
   confidence_factor: number;
-  /** The factor of the landmarks of a lopsided segment (`evidence.asymmetric`) instead. */
+  /** The factor of the landmarks in `lowered` instead. */
   lopsided_factor: number;
+  /** The landmarks the check takes for misplaced: a lopsided segment's ends, the head's when the face is turned. */
+  lowered: string[];
   evidence: SelfCheckEvidence;
 }
 

@@ -136,8 +136,8 @@ function checkParts(check: SelfCheck): HTMLElement[] {
   const headline = failed
     ? 'The estimate failed its own check: do not trust these landmarks.'
     : 'The estimate doubts itself: check these landmarks before you trust them.';
-  const lopsided = check.evidence.asymmetric.length
-    ? ` (those of a segment longer on one side than on the other to ${(Math.min(check.lopsided_factor, check.confidence_factor) * 100).toFixed(0)} %)`
+  const lopsided = check.lowered.length
+    ? ` (those it takes for misplaced — ${check.lowered.length} of them — to ${(Math.min(check.lopsided_factor, check.confidence_factor) * 100).toFixed(0)} %)`
     : '';
   const confidence = `Their confidences are lowered to ${(check.confidence_factor * 100).toFixed(0)} % of what they would be${lopsided}.`;
   return [

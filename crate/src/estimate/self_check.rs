@@ -4,8 +4,9 @@
 //! no person's height, whose fit lies far from the scan, drifted away from it or left part of the
 //! scan uncovered, or whose landmarks contradict each other (against their rigid groups, or a
 //! limb's segment much longer on one side than on the other: `bilateral.rs`), or whose facing
-//! only the fits chose, by a hair, is `doubtful` or `failed`, and its confidences are lowered to
-//! say so ([`SelfCheck::confidence_factor`]; the landmarks of a lopsided segment to
+//! only the fits chose, by a hair, or whose face is turned far from level, is `doubtful` or
+//! `failed`, and its confidences are lowered to say so ([`SelfCheck::confidence_factor`]; the
+//! landmarks of a lopsided segment, and the head's when the face is turned, to
 //! [`SelfCheckParams::failed_factor`], [`SelfCheck::factor_for`]).
 
 use serde::{Deserialize, Serialize};
@@ -13,6 +14,8 @@ use serde::{Deserialize, Serialize};
 use super::bilateral::Asymmetry;
 use super::params::SelfCheckParams;
 use crate::align::{Uncovered, UnevenFit};
+use crate::landmarks::CAESAR_LANDMARKS;
+use crate::template::Segment;
 
 /// The estimate's verdict on itself.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
@@ -40,22 +43,21 @@ pub struct SelfCheck {
     pub reasons: Vec<String>,
     /// What the confidences were multiplied by (1 for a good estimate).
     pub confidence_factor: f64,
-    /// What the confidences of the landmarks of a lopsided segment were multiplied by instead.
+    /// What the confidences of the landmarks in `lowered` were multiplied by instead.
     pub lopsided_factor: f64,
+    /// The landmarks the check takes for misplaced: the ends of a segment much longer on one side
+    /// than on the other (`evidence.asymmetric`) and, with the face turned beyond
+    /// `SelfCheckParams::head_pitch_deg`, the head's. Their confidences get `lopsided_factor`.
+    pub lowered: Vec<String>,
     /// What the verdict was drawn from.
     pub evidence: Evidence,
 }
 
 impl SelfCheck {
-    /// What the confidence of landmark `name` is multiplied by: the lopsided factor for an end of
-    /// an asymmetric segment, the verdict's factor for the others.
+    /// What the confidence of landmark `name` is multiplied by: the lopsided factor for one in
+    /// `lowered`, the verdict's factor for the others.
     pub fn factor_for(&self, name: &str) -> f64 {
-        let lopsided = self
-            .evidence
-            .asymmetric
-            .iter()
-            .any(|a| a.landmarks.iter().any(|l| l == name));
-        if lopsided {
+        if self.lowered.iter().any(|l| l == name) {
             self.lopsided_factor.min(self.confidence_factor)
         } else {
             self.confidence_factor
@@ -182,10 +184,20 @@ pub fn self_check(evidence: &Evidence, params: &SelfCheckParams) -> SelfCheck {
                 .map_or(String::new(), |n| format!(", most of it near the {n}"))
         ));
     }
+    let mut lowered: Vec<String> = Vec::new();
+    for a in &evidence.asymmetric {
+        lowered.extend(a.landmarks.iter().cloned());
+    }
     if let Some(pitch) = evidence
         .head_pitch_deg
         .filter(|p| p.abs() > params.head_pitch_deg)
     {
+        lowered.extend(
+            CAESAR_LANDMARKS
+                .iter()
+                .filter(|l| l.segment == Segment::Head)
+                .map(|l| l.name.to_string()),
+        );
         doubtful.push(format!(
             "the face is turned {:.0}° {} from the template's (the line from the ears to the \
              eyes), where a person standing to be scanned holds it near level: the head or the \
@@ -215,6 +227,7 @@ pub fn self_check(evidence: &Evidence, params: &SelfCheckParams) -> SelfCheck {
         reasons: failed,
         confidence_factor,
         lopsided_factor: params.failed_factor,
+        lowered,
         evidence: evidence.clone(),
     }
 }
@@ -337,7 +350,12 @@ mod tests {
         ];
         let uncovered = self_check(&cases[7], &p);
         assert!(self_check(&cases[6], &p).reasons[0].contains("came within 0.6 %"));
-        assert!(self_check(&cases[8], &p).reasons[0].starts_with("the face is turned 41° down"));
+        let turned = self_check(&cases[8], &p);
+        assert!(turned.reasons[0].starts_with("the face is turned 41° down"));
+        // The face's landmarks are taken for misplaced; the rest only doubtful.
+        assert_eq!(turned.factor_for("Sellion"), p.failed_factor);
+        assert_eq!(turned.factor_for("Rt. Tragion"), p.failed_factor);
+        assert_eq!(turned.factor_for("Rt. Acromion"), p.doubtful_factor);
         assert!(
             uncovered.reasons[0].starts_with("1.0 % of the scan lies more than 20 mm from the fit, most of it near the left lower leg"),
             "{:?}",
@@ -358,7 +376,16 @@ mod tests {
                 },
                 "case {k}"
             );
-            assert_eq!(c.factor_for("Sellion"), p.doubtful_factor);
+            let face_turned = e.head_pitch_deg.is_some_and(|d| d.abs() > p.head_pitch_deg);
+            assert_eq!(
+                c.factor_for("Sellion"),
+                if face_turned {
+                    p.failed_factor
+                } else {
+                    p.doubtful_factor
+                },
+                "case {k}"
+            );
         }
         // A failed estimate lists its doubts after the failure.
         let both = Evidence {
