@@ -6,7 +6,7 @@ import { readFileSync } from 'node:fs';
 import { expect, test, type Page } from '@playwright/test';
 import { dropFiles, waitForLoads } from './fixtures';
 import { partialCsv, sampleFile } from './samples';
-import { openWithSample } from './steps';
+import { cancelEstimateWhenItRuns, openWithSample } from './steps';
 import { synthSubjects } from './synth';
 
 const body = (page: Page) => page.locator('body');
@@ -274,14 +274,7 @@ test('a failed estimate says why and keeps the scan; a cancelled one can be run 
   await expect(page.getByTestId('scan-vertices')).toHaveText('3');
 
   // A body scan, its estimate cancelled at once: the scan stays, and Estimate runs again.
-  await page.evaluate(() => {
-    new MutationObserver((_, observer) => {
-      const button = document.querySelector<HTMLButtonElement>('[data-testid="estimate-cancel"]');
-      if (!button) return;
-      observer.disconnect();
-      button.click();
-    }).observe(document.body, { subtree: true, childList: true });
-  });
+  await cancelEstimateWhenItRuns(page);
   await dropFiles(page, [sampleFile('scan_001.ply.gz')]);
   await waitForLoads(page, 2);
   await expect(body(page)).toHaveAttribute('data-estimate-state', 'cancelled', { timeout: 60_000 });

@@ -38,3 +38,15 @@ export async function slide(page: Page, mode: number, sigma: number): Promise<vo
   await expect(page.locator('body')).not.toHaveAttribute('data-shape-bodies', String(bodies));
   await shapeReady(page);
 }
+
+/** Arms a click on the estimate's Cancel as soon as it shows (in the page, so a fast run cannot finish first). */
+export async function cancelEstimateWhenItRuns(page: Page): Promise<void> {
+  await page.evaluate(() => {
+    new MutationObserver((_, observer) => {
+      const cancel = document.querySelector<HTMLButtonElement>('[data-testid="estimate-cancel"]');
+      if (!cancel) return;
+      observer.disconnect();
+      cancel.click();
+    }).observe(document.body, { childList: true, subtree: true });
+  });
+}

@@ -10,7 +10,7 @@
 import { expect, test, type Page } from '@playwright/test';
 import { dropFiles } from './fixtures';
 import { partialCsv, sampleFile } from './samples';
-import { openWithSample } from './steps';
+import { cancelEstimateWhenItRuns, openWithSample } from './steps';
 
 const body = (page: Page) => page.locator('body');
 const row = (page: Page, name: string) => page.getByTestId('landmark-list').locator(`li[data-name="${name}"]`);
@@ -126,15 +126,8 @@ test('an estimate cancelled after a failed one leaves the failed verdict on the 
   await page.getByTestId('estimate-up').selectOption('-z');
   await estimate(page, 'Estimate again, keeping my edits', 2);
   await expect(page.getByTestId('estimate-check')).toHaveAttribute('data-verdict', 'failed');
-  // Estimate again, cancelled at its first progress (in the page, so a fast run cannot finish first).
-  await page.evaluate(() => {
-    new MutationObserver((_, observer) => {
-      const cancel = document.querySelector<HTMLButtonElement>('[data-testid="estimate-cancel"]');
-      if (!cancel) return;
-      observer.disconnect();
-      cancel.click();
-    }).observe(document.body, { childList: true, subtree: true });
-  });
+  // Estimate again, cancelled as soon as it runs.
+  await cancelEstimateWhenItRuns(page);
   await page.getByTestId('landmarks-estimate').click();
   await expect(page.getByTestId('estimate-cancelled')).toBeVisible({ timeout: 60_000 });
   await expect(body(page)).toHaveAttribute('data-estimates', '2');
