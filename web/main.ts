@@ -47,6 +47,13 @@ const landmarkStep = new LandmarkStep(client, landmarkClient, viewer, session, (
 }, showError);
 // Picking a landmark to place on a hidden scan (after Align) shows the scan, so the click lands.
 landmarkStep.onPick = () => warpStep.show('scan', true);
+// "Back to" the scan put aside: it comes back with its landmarks as they were shown.
+landmarkStep.onBringBack = () => {
+  session.bringBack();
+  refresh(true);
+  landmarkStep.afterLoad();
+  topBar.setStatus(`Back to ${session.scan?.fileName ?? 'the scan put aside'}; ${session.putAside?.scan.fileName ?? 'the other scan'} is put aside.`);
+};
 // One change of the session, one reset of what was made from it: the picked landmark (new files),
 // then the fit (before the warp: both run in the align worker, which a running fit's cancel stops),
 // then the warp, which runs again (not under a batch fit, which takes only the fit's place).
@@ -120,8 +127,11 @@ async function open(all: File[]): Promise<void> {
     body.dataset.lastScanCopyMs = scan.scan.timings.copyMs.toFixed(2);
   }
   if (scan || landmarks) {
+    const open = session.landmarks;
+    // A scan opened alone takes the landmark file shown when the core pairs their names (`a.ply`, `a.csv`).
+    const namesPair = Boolean(scan && !landmarks && open) && (await namesPairUp(scan!.scan.fileName, open!.fileName));
     // Before the refresh, so the camera frames the new data, not the template beside it.
-    session.open(scan?.scan ?? null, landmarks ?? null);
+    session.open(scan?.scan ?? null, landmarks ?? null, namesPair);
     // The scan and the shape body would stand in the same place: the scan takes the view.
     shapeSpace.hide();
     refresh(Boolean(scan) || !session.scan);
@@ -136,6 +146,12 @@ async function open(all: File[]): Promise<void> {
   );
   body.dataset.busy = 'false';
   body.dataset.loads = String(++loads);
+}
+
+/** Whether the core's rule for a batch's files (`pairSubjectFiles`) makes `landmarks` the landmark file of `scan`. */
+async function namesPairUp(scan: string, landmarks: string): Promise<boolean> {
+  const pairing = await client.call({ type: 'pairSubjectFiles', fileNames: [scan, landmarks] }).catch(() => null);
+  return pairing?.subjects.some((s) => s.scan === 0 && s.landmarks === 1) ?? false;
 }
 
 function changeUnits(units: Units): void {

@@ -342,3 +342,63 @@ test('before any file nothing is absent; after Align a picked landmark shows the
   await expect(page.getByTestId('landmark-list').locator('li[data-selected="true"]')).toHaveCount(0);
   expect(await page.getByTestId('landmark-list').evaluate((list) => list.scrollTop)).toBe(0);
 });
+
+test("a second scan opened alone gets its own estimate; the first one's landmarks are put aside and come back", async ({ page }) => {
+  test.setTimeout(300_000);
+  const FIVE = ['Sellion', 'Rt. Acromion', 'Lt. Acromion', 'Rt. Lateral Malleolus', 'Lt. Lateral Malleolus'];
+  await openWithSample(page, [sampleFile('scan_001.ply.gz'), partialCsv((name) => FIVE.includes(name))]);
+  await expect(body(page)).toHaveAttribute('data-estimate-state', 'done', { timeout: 120_000 });
+  // One landmark moved by hand: work the next scan must not take, nor lose.
+  const marker = await pickMarker(page, 'Substernale');
+  await page.mouse.click(marker.x + 9, marker.y + 7);
+  await expect(row(page, 'Substernale')).toHaveAttribute('data-state', 'edited');
+  const moved = await positionMm(page, 'Substernale');
+  const list = page.getByTestId('landmark-list');
+
+  // Another person's scan, dropped alone: its landmarks are estimated on it, none carried over.
+  const [lnd, scan] = synthSubjects(1, 22, 10);
+  const other = { name: 'other.ply', bytes: scan!.bytes };
+  await dropFiles(page, [other]);
+  await waitForLoads(page, 2);
+  await expect(body(page)).toHaveAttribute('data-estimates', '2', { timeout: 120_000 });
+  await expect(body(page)).toHaveAttribute('data-estimate-state', 'done');
+  await expect(list.locator('li[data-state="estimated"]')).toHaveCount(73);
+  const truth = parseLnd(lnd!.bytes.toString('latin1')).at;
+  const errors: number[] = [];
+  for (const [name, p] of truth) {
+    if (!p) continue;
+    const q = await positionMm(page, name);
+    errors.push(Math.hypot(...q.map((v, i) => v - p[i]!)));
+  }
+  expect(errors.length).toBeGreaterThan(60);
+  expect(errors.reduce((a, b) => a + b, 0) / errors.length).toBeLessThan(25);
+  const aside = page.getByTestId('landmarks-put-aside');
+  await expect(aside).toHaveText(
+    'scan_001.ply.gz is put aside with its 73 landmarks (5 from partial.csv, 67 estimated, 1 placed by hand): they stay with it, not with other.ply.',
+  );
+
+  // Back to the first: its set as it was, the estimate's verdict with it, no new estimate.
+  await page.getByTestId('landmarks-back').click();
+  await waitForLoads(page, 2);
+  await expect(page.getByTestId('scan-file')).toHaveText('scan_001.ply.gz');
+  await expect(list.locator('li[data-state="given"]')).toHaveCount(5);
+  await expect(list.locator('li[data-state="edited"]')).toHaveCount(1);
+  await expect(list.locator('li[data-state="estimated"]')).toHaveCount(67);
+  expect(await positionMm(page, 'Substernale')).toEqual(moved);
+  await expect(page.getByTestId('estimate-assumed')).toBeVisible();
+  await expect(aside).toContainText('other.ply is put aside with its 73 landmarks (73 estimated)');
+  await expect(body(page)).toHaveAttribute('data-estimates', '2');
+  await expect(body(page)).toHaveAttribute('data-rbf-state', 'done', { timeout: 60_000 });
+
+  // A landmark file named for a scan goes with that scan when it is opened alone after it (the
+  // core's pairing of a batch's files), even though it was dropped onto the first one.
+  await dropFiles(page, [{ name: 'other.lnd', bytes: lnd!.bytes }]);
+  await waitForLoads(page, 3);
+  await expect(list.locator('li[data-state="given"]')).toHaveCount(73);
+  await dropFiles(page, [other]);
+  await waitForLoads(page, 4);
+  await expect(page.getByTestId('scan-file')).toHaveText('other.ply');
+  await expect(list.locator('li[data-state="given"]')).toHaveCount(73);
+  await expect(body(page)).toHaveAttribute('data-estimates', '2');
+  await expect(aside).toContainText('scan_001.ply.gz is put aside with its 73 landmarks (73 from other.lnd)');
+});

@@ -17,13 +17,21 @@ import { METRES_PER_UNIT } from '../shared/results';
 import type { TemplateData } from '../shared/template-data';
 import { download } from '../ui/download';
 import { basisWords, notFitted } from '../ui/format';
-import { sentence, type EstimateView, type LandmarkFormat } from '../ui/landmark-tools';
+import { sentence, shownCheck, type EstimateView, type LandmarkFormat } from '../ui/landmark-tools';
 import { LandmarksPanel, type LandmarkFacts } from '../ui/landmarks-panel';
 import { landmarkStyle } from '../view/landmark-style';
 import type { LandmarkPoints, Viewer } from '../view/viewer';
 import { LandmarkEdits } from './landmark-edits';
 import { estimateInput, scanInput, scanTransfer } from './scan-input';
 import type { Session } from './session';
+
+/** What the editor showed of one set. */
+interface Shown {
+  estimate: EstimateView;
+  suspicious: SuspiciousLandmark[] | null;
+  sharpness: ReadonlyMap<string, Sharpness>;
+  prediction: (LandmarkPrediction & { scale: number }) | null;
+}
 
 /** Quiet time (ms) after an edit before the set is checked for suspicious landmarks. */
 const CHECK_DELAY_MS = 400;
@@ -38,6 +46,15 @@ export class LandmarkStep {
   private sharpness: ReadonlyMap<string, Sharpness> = new Map();
   /** The last estimate's prediction for this scan, with the scan scale it was made at. */
   private prediction: (LandmarkPrediction & { scale: number }) | null = null;
+  /**
+   * What was shown of each set (its estimate's verdict, the suspicious ones, the prediction), kept
+   * when another scan replaces it, so "Back to" shows it as it was.
+   */
+  private readonly shown = new WeakMap<LandmarkEdits, Shown>();
+  /** The set the shown estimate, suspicious list and prediction are of. */
+  private shownFor: LandmarkEdits | null = null;
+  /** Called when the person asks for the scan put aside back. */
+  onBringBack: (() => void) | null = null;
   /** What the list shows before anything is loaded: every landmark absent. */
   private empty: LandmarkEdits | null = null;
   /** A check for suspicious landmarks is running / another is wanted after it. */
@@ -69,6 +86,7 @@ export class LandmarkStep {
     private readonly onError: (message: string) => void,
   ) {
     this.panel = new LandmarksPanel({
+      onBringBack: () => this.onBringBack?.(),
       onSelect: (name) => this.select(name),
       onHover: (name) => this.panel.guide.show(name ?? this.selected),
       onEstimate: () => void this.estimateLandmarks(),
@@ -103,6 +121,13 @@ export class LandmarkStep {
     this.generation++;
     if (this.checkTimer !== null) clearTimeout(this.checkTimer);
     this.checkTimer = null;
+    if (this.shownFor) {
+      // An estimate cut short by the change leaves the last finished one's landmarks and verdict.
+      const e = this.estimate;
+      const estimate: EstimateView = e.state === 'running' ? { state: 'cancelled', kept: this.session.estimateReport?.self_check ?? null } : e;
+      this.shown.set(this.shownFor, { estimate, suspicious: this.suspicious, sharpness: this.sharpness, prediction: this.prediction });
+      this.shownFor = null;
+    }
     if (this.estimator.busy) this.estimator.cancel();
     this.selected = null;
     this.suspicious = null;
@@ -122,6 +147,17 @@ export class LandmarkStep {
    */
   afterLoad(): void {
     if (!this.session.scan) return;
+    const edits = this.session.edits;
+    const before = edits && this.shown.get(edits);
+    if (before) {
+      // A scan brought back: its set as it was shown.
+      ({ estimate: this.estimate, suspicious: this.suspicious, sharpness: this.sharpness, prediction: this.prediction } = before);
+      const check = shownCheck(this.estimate);
+      if (check) document.body.dataset.estimateVerdict = check.verdict;
+      this.showMarkers();
+      this.render();
+      return;
+    }
     if ((this.session.edits?.placed().names.length ?? 0) >= this.nearlyFull) this.check();
     else void this.estimateLandmarks();
   }
@@ -282,7 +318,10 @@ export class LandmarkStep {
   }
 
   private render(): void {
+    this.shownFor = this.session.edits;
     const edits = this.session.edits ?? (this.empty ??= new LandmarkEdits(this.caesarNames()));
+    const aside = this.session.putAside;
+    const count = (state: LandmarkEntry['state']) => aside?.edits.all.filter((e) => e.state === state && e.position).length ?? 0;
     const entries = edits.all;
     const selected = this.selected ? (edits.entry(this.selected) ?? null) : null;
     const o = this.session.orientation;
@@ -294,6 +333,14 @@ export class LandmarkStep {
       sharpness: this.sharpness,
       loaded: Boolean(this.session.edits),
       tools: {
+        putAside: aside && {
+          scan: aside.scan.fileName,
+          file: aside.landmarks?.fileName ?? null,
+          given: count('given'),
+          estimated: count('estimated'),
+          edited: count('edited'),
+        },
+        scan: this.session.scan?.fileName ?? null,
         estimate: this.estimate,
         absent: entries.filter((e) => !e.position).length,
         estimated: entries.filter((e) => e.state === 'estimated').length,

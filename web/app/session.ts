@@ -17,6 +17,17 @@ import { LandmarkEdits } from './landmark-edits';
  */
 export type SessionChange = 'files' | 'units' | 'edited' | 'estimated' | 'template' | 'batchFit';
 
+/** A scan with its landmarks as they were when another scan replaced it (what "Back to" brings back). */
+export interface ScanWork {
+  scan: ParsedScan;
+  scanUnits: Units;
+  landmarks: ParsedLandmarks | null;
+  landmarksFor: string | null;
+  edits: LandmarkEdits;
+  estimateReport: EstimateReport | null;
+  orientation: Orientation | null;
+}
+
 export class Session {
   scan: ParsedScan | null = null;
   /** The scan's units as the user chose them (the detected units until overridden). */
@@ -33,6 +44,13 @@ export class Session {
    * start at the detected ones.
    */
   orientation: Orientation | null = null;
+  /**
+   * The scan the landmark file belongs to: the one it was opened with or onto (its file name), or
+   * null while it waits for the next scan (it was opened with no scan shown).
+   */
+  landmarksFor: string | null = null;
+  /** The scan a newly opened one replaced, with its landmarks, until "Back to" swaps them. */
+  putAside: ScanWork | null = null;
 
   private readonly listeners: ((change: SessionChange) => void)[] = [];
 
@@ -44,12 +62,45 @@ export class Session {
     this.listeners.push(listener);
   }
 
-  /** Opens what was read (a scan, a landmark file, or both) as one change. */
-  open(scan: ParsedScan | null, landmarks: ParsedLandmarks | null): void {
+  /**
+   * Opens what was read (a scan, a landmark file, or both) as one change. `namesPair`: the core
+   * pairs the scan's file name with the open landmark file's (`a.ply` and `a.csv`), so the file
+   * goes with this scan opened alone.
+   */
+  open(scan: ParsedScan | null, landmarks: ParsedLandmarks | null, namesPair = false): void {
     if (!scan && !landmarks) return;
-    if (scan) this.setScan(scan);
+    if (scan) this.setScan(scan, namesPair);
     if (landmarks) this.setLandmarks(landmarks);
     this.changed('files');
+  }
+
+  /**
+   * Whether the open landmark file goes with a scan opened alone now: when it waits for a scan,
+   * or when `namesPair` (the core pairs their file names). Otherwise it belongs to the scan shown.
+   */
+  fileGoesWith(namesPair: boolean): boolean {
+    return this.landmarks !== null && (this.landmarksFor === null || namesPair);
+  }
+
+  /** Swaps the scan shown, with its landmarks, for the one put aside (one change). */
+  bringBack(): void {
+    const back = this.putAside;
+    if (!back) return;
+    this.putAside = this.work();
+    this.scan = back.scan;
+    this.scanUnits = back.scanUnits;
+    this.landmarks = back.landmarks;
+    this.landmarksFor = back.landmarksFor;
+    this.edits = back.edits;
+    this.estimateReport = back.estimateReport;
+    this.orientation = back.orientation;
+    this.changed('files');
+  }
+
+  /** The scan shown with its landmarks, or null without a scan. */
+  private work(): ScanWork | null {
+    const { scan, scanUnits, landmarks, landmarksFor, edits, estimateReport, orientation } = this;
+    return scan && edits ? { scan, scanUnits, landmarks, landmarksFor, edits, estimateReport, orientation } : null;
   }
 
   /** Tells the listeners of a change: one the set being edited (`edits`) had, or one made beside the session (`template`, `batchFit`). */
@@ -58,20 +109,31 @@ export class Session {
   }
 
   /**
-   * A new scan (no change is told: `open` tells it once for what was read together). The landmarks of a file opened before stay (with their edits), as a file does
-   * for the scan dropped after it; landmarks estimated or placed on the old scan go.
+   * A new scan (no change is told: `open` tells it once for what was read together). The scan
+   * shown before, with its landmarks, is put aside. A landmark file that goes with the new scan
+   * ([`fileGoesWith`]) stays: with its edits when it waited for a scan, as the file alone when it
+   * was on the old scan (what was estimated or placed there goes with it). Any other set stays with
+   * the old scan, and the new one starts with none.
    */
-  setScan(scan: ParsedScan): void {
+  setScan(scan: ParsedScan, namesPair = false): void {
+    const stays = this.fileGoesWith(namesPair);
+    const old = this.work();
+    if (old) this.putAside = old;
     this.scan = scan;
     this.scanUnits = scan.summary.units_detected;
     this.orientation = null;
     this.estimateReport = null;
-    if (!this.landmarks || !this.edits) this.edits = new LandmarkEdits(this.caesarNames());
+    if (!stays) {
+      this.landmarks = null;
+      this.edits = new LandmarkEdits(this.caesarNames());
+    } else if (old || !this.edits) this.setLandmarks(this.landmarks!);
+    this.landmarksFor = this.landmarks ? scan.fileName : null;
   }
 
-  /** A landmark file replaces the set being edited: its landmarks given, the rest absent. */
+  /** A landmark file replaces the set being edited: its landmarks given, the rest absent; it belongs to the scan shown, or waits for the next. */
   setLandmarks(landmarks: ParsedLandmarks): void {
     this.landmarks = landmarks;
+    this.landmarksFor = this.scan?.fileName ?? null;
     this.estimateReport = null;
     this.edits = LandmarkEdits.fromFile(this.caesarNames(), landmarks.names, this.landmarkPositionsMetres());
   }

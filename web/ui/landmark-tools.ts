@@ -16,7 +16,21 @@ export type EstimateView =
   | { state: 'cancelled'; kept: SelfCheck | null }
   | { state: 'error'; message: string; kept: SelfCheck | null };
 
+/** The scan a newly opened one replaced, and what its landmarks were. */
+export interface PutAside {
+  scan: string;
+  /** Its landmark file's name, or null. */
+  file: string | null;
+  given: number;
+  estimated: number;
+  edited: number;
+}
+
 export interface ToolsView {
+  /** The scan put aside when this one was opened, with its landmarks; null when there is none. */
+  putAside: PutAside | null;
+  /** The scan shown (its file name), or null. */
+  scan: string | null;
   estimate: EstimateView;
   /** Landmarks without a position (what an estimate would fill in). */
   absent: number;
@@ -34,6 +48,7 @@ export interface ToolsView {
 }
 
 export interface ToolsActions {
+  onBringBack: () => void;
   onEstimate: () => void;
   onCancelEstimate: () => void;
   onOrientation: (orientation: Orientation | null) => void;
@@ -79,6 +94,7 @@ export class LandmarkTools {
       return b;
     });
     this.element.replaceChildren(
+      ...putAsideParts(view, running, a.onBringBack),
       ...this.estimateParts(e),
       orientationControl(view.orientation, running || !view.hasScan, a.onOrientation),
       h('div', { class: 'actions' }, estimate),
@@ -112,8 +128,31 @@ export class LandmarkTools {
   }
 }
 
+/**
+ * The scan put aside when the shown one was opened, with what its landmarks were, and the button
+ * that swaps them back: opening a scan never loses the landmarks placed on the one before.
+ */
+function putAsideParts(view: ToolsView, running: boolean, onBringBack: () => void): HTMLElement[] {
+  const aside = view.putAside;
+  if (!aside) return [];
+  const parts = [
+    aside.given ? `${aside.given} from ${aside.file ?? 'a file'}` : '',
+    aside.estimated ? `${aside.estimated} estimated` : '',
+    aside.edited ? `${aside.edited} placed by hand` : '',
+  ].filter(Boolean);
+  const total = aside.given + aside.estimated + aside.edited;
+  const what = total ? `with its ${total} landmarks (${parts.join(', ')})` : 'with no landmarks placed';
+  const back = button('landmarks-back', `Back to ${aside.scan}`, 'button', onBringBack);
+  back.disabled = running;
+  back.title = `Shows ${aside.scan} again with its landmarks as they were, and puts ${view.scan ?? 'this scan'} aside with its own; the warp runs again, a fit is not kept.`;
+  return [
+    h('p', { class: 'note', 'data-testid': 'landmarks-put-aside' }, `${aside.scan} is put aside ${what}: they stay with it, not with ${view.scan ?? 'this scan'}.`),
+    h('div', { class: 'actions' }, back),
+  ];
+}
+
 /** The self-check that speaks for the landmarks shown: the estimate's just done, or after a cancelled or failed one the last done one's. */
-function shownCheck(e: EstimateView): SelfCheck | null {
+export function shownCheck(e: EstimateView): SelfCheck | null {
   if (e.state === 'done') return e.check;
   if (e.state === 'cancelled' || e.state === 'error') return e.kept;
   return null;
