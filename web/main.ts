@@ -49,10 +49,12 @@ const landmarkStep = new LandmarkStep(client, landmarkClient, viewer, session, (
 landmarkStep.onPick = () => warpStep.show('scan', true);
 // "Back to" the scan put aside: it comes back with its landmarks as they were shown.
 landmarkStep.onBringBack = () => {
+  const before = session.scan;
   session.bringBack();
-  refresh(true);
+  refresh(session.scan !== before);
   landmarkStep.afterLoad();
-  topBar.setStatus(`Back to ${session.scan?.fileName ?? 'the scan put aside'}; ${session.putAside?.scan.fileName ?? 'the other scan'} is put aside.`);
+  const name = session.scan?.fileName ?? '';
+  topBar.setStatus(session.scan === before ? `Back to the other set of landmarks of ${name}.` : `Back to ${name}; ${before?.fileName ?? ''} is put aside.`);
 };
 // One change of the session, one reset of what was made from it: the picked landmark (new files),
 // then the fit (before the warp: both run in the align worker, which a running fit's cancel stops),

@@ -1,7 +1,8 @@
 // The landmark editor as a person uses it: pick a landmark, click on the scan beside its marker to
 // move it there, drag a marker, mark one absent, undo / redo, align with the edited set, export
 // the set as .lnd and read it back; before any file nothing is marked absent; after Align a picked
-// landmark brings the hidden scan back; a new scan forgets the pick and the list's scroll.
+// landmark brings the hidden scan back; a new scan forgets the pick and the list's scroll; a second
+// scan opened alone gets its own estimate, and what it replaced comes back with "Back to".
 import { readFileSync } from 'node:fs';
 import { expect, test, type Page } from '@playwright/test';
 import { dropFiles, waitForLoads } from './fixtures';
@@ -343,7 +344,7 @@ test('before any file nothing is absent; after Align a picked landmark shows the
   expect(await page.getByTestId('landmark-list').evaluate((list) => list.scrollTop)).toBe(0);
 });
 
-test("a second scan opened alone gets its own estimate; the first one's landmarks are put aside and come back", async ({ page }) => {
+test("a second scan opened alone gets its own estimate; the first one's landmarks, or a set a file replaced, are put aside and come back", async ({ page }) => {
   test.setTimeout(300_000);
   const FIVE = ['Sellion', 'Rt. Acromion', 'Lt. Acromion', 'Rt. Lateral Malleolus', 'Lt. Lateral Malleolus'];
   await openWithSample(page, [sampleFile('scan_001.ply.gz'), partialCsv((name) => FIVE.includes(name))]);
@@ -394,6 +395,14 @@ test("a second scan opened alone gets its own estimate; the first one's landmark
   // core's pairing of a batch's files), even though it was dropped onto the first one.
   await dropFiles(page, [{ name: 'other.lnd', bytes: lnd!.bytes }]);
   await waitForLoads(page, 3);
+  await expect(list.locator('li[data-state="given"]')).toHaveCount(73);
+  // The set it replaced is put aside too, and comes back.
+  await expect(aside).toHaveText('Another set of landmarks for this scan is put aside (73: 5 from partial.csv, 67 estimated, 1 placed by hand).');
+  await page.getByTestId('landmarks-back').click();
+  await expect(list.locator('li[data-state="edited"]')).toHaveCount(1);
+  expect(await positionMm(page, 'Substernale')).toEqual(moved);
+  await expect(aside).toHaveText('Another set of landmarks for this scan is put aside (73: 73 from other.lnd).');
+  await page.getByTestId('landmarks-back').click();
   await expect(list.locator('li[data-state="given"]')).toHaveCount(73);
   await dropFiles(page, [other]);
   await waitForLoads(page, 4);

@@ -335,6 +335,7 @@ export class LandmarkStep {
       tools: {
         putAside: aside && {
           scan: aside.scan.fileName,
+          sameScan: aside.scan === this.session.scan,
           file: aside.landmarks?.fileName ?? null,
           given: count('given'),
           estimated: count('estimated'),

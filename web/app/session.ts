@@ -49,7 +49,10 @@ export class Session {
    * null while it waits for the next scan (it was opened with no scan shown).
    */
   landmarksFor: string | null = null;
-  /** The scan a newly opened one replaced, with its landmarks, until "Back to" swaps them. */
+  /**
+   * The scan a newly opened one replaced, with its landmarks, or the scan shown with the set a
+   * landmark file opened onto it replaced, until "Back to" swaps them.
+   */
   putAside: ScanWork | null = null;
 
   private readonly listeners: ((change: SessionChange) => void)[] = [];
@@ -63,13 +66,15 @@ export class Session {
   }
 
   /**
-   * Opens what was read (a scan, a landmark file, or both) as one change. `namesPair`: the core
+   * Opens what was read (a scan, a landmark file, or both) as one change; what it replaces is put
+   * aside. `namesPair`: the core
    * pairs the scan's file name with the open landmark file's (`a.ply` and `a.csv`), so the file
    * goes with this scan opened alone.
    */
   open(scan: ParsedScan | null, landmarks: ParsedLandmarks | null, namesPair = false): void {
     if (!scan && !landmarks) return;
     if (scan) this.setScan(scan, namesPair);
+    else if (landmarks && this.edits?.placed().names.length) this.putAside = this.work() ?? this.putAside;
     if (landmarks) this.setLandmarks(landmarks);
     this.changed('files');
   }

@@ -19,6 +19,8 @@ export type EstimateView =
 /** The scan a newly opened one replaced, and what its landmarks were. */
 export interface PutAside {
   scan: string;
+  /** It is the scan shown: a landmark file replaced its set. */
+  sameScan: boolean;
   /** Its landmark file's name, or null. */
   file: string | null;
   given: number;
@@ -142,13 +144,16 @@ function putAsideParts(view: ToolsView, running: boolean, onBringBack: () => voi
   ].filter(Boolean);
   const total = aside.given + aside.estimated + aside.edited;
   const what = total ? `with its ${total} landmarks (${parts.join(', ')})` : 'with no landmarks placed';
-  const back = button('landmarks-back', `Back to ${aside.scan}`, 'button', onBringBack);
+  const label = aside.sameScan ? 'Back to the other set' : `Back to ${aside.scan}`;
+  const back = button('landmarks-back', label, 'button', onBringBack);
   back.disabled = running;
-  back.title = `Shows ${aside.scan} again with its landmarks as they were, and puts ${view.scan ?? 'this scan'} aside with its own; the warp runs again, a fit is not kept.`;
-  return [
-    h('p', { class: 'note', 'data-testid': 'landmarks-put-aside' }, `${aside.scan} is put aside ${what}: they stay with it, not with ${view.scan ?? 'this scan'}.`),
-    h('div', { class: 'actions' }, back),
-  ];
+  back.title = aside.sameScan
+    ? 'Shows the other set of landmarks of this scan as it was, and puts this one aside; the warp runs again, a fit is not kept.'
+    : `Shows ${aside.scan} again with its landmarks as they were, and puts ${view.scan ?? 'this scan'} aside with its own; the warp runs again, a fit is not kept.`;
+  const text = aside.sameScan
+    ? `Another set of landmarks for this scan is put aside (${total ? `${total}: ${parts.join(', ')}` : 'none placed'}).`
+    : `${aside.scan} is put aside ${what}: they stay with it, not with ${view.scan ?? 'this scan'}.`;
+  return [h('p', { class: 'note', 'data-testid': 'landmarks-put-aside' }, text), h('div', { class: 'actions' }, back)];
 }
 
 /** The self-check that speaks for the landmarks shown: the estimate's just done, or after a cancelled or failed one the last done one's. */
