@@ -453,7 +453,8 @@ fn the_command_line_writes_every_format_and_aligns_without_landmarks() {
 }
 
 /// The estimate checks itself: forced into a wrong frame (upside down, or lying on its side) it
-/// says it failed, in words, and no landmark keeps a confidence above 10 %; told the right way
+/// says it failed, in words, puts the frame in doubt, and no landmark keeps a confidence above
+/// 10 %; told the right way
 /// up it finds the frame it finds alone, and calls itself good.
 #[test]
 fn an_estimate_forced_into_a_wrong_frame_says_it_failed() {
@@ -476,6 +477,8 @@ fn an_estimate_forced_into_a_wrong_frame_says_it_failed() {
             up.name()
         );
         assert!(!check.reasons.is_empty());
+        // The way out it points to is the frame: Up and Facing.
+        assert!(check.frame_in_doubt, "up {}: {check:?}", up.name());
         let most = e.confidence.iter().copied().fold(0.0, f64::max);
         assert!(most <= 0.1, "up {}: confidence {most}", up.name());
     }

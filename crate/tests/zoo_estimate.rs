@@ -447,4 +447,10 @@ fn a_face_turned_far_down_is_doubtful() {
         confidence <= 0.1 && confidence_unjudged > 0.1,
         "Sellion's confidence {confidence:.2}, unjudged {confidence_unjudged:.2}"
     );
+    // The person is sent to the face's landmarks first, not to the frame.
+    assert_eq!(
+        check.check_first.first().map(String::as_str),
+        Some("Sellion")
+    );
+    assert!(!check.frame_in_doubt, "{check:?}");
 }

@@ -70,7 +70,7 @@ const quality: Keys<QualityReport> = {
   flags: true,
   thresholds: true,
 };
-const selfCheck: Keys<SelfCheck> = { verdict: true, reasons: true, confidence_factor: true, lopsided_factor: true, lowered: true, evidence: true };
+const selfCheck: Keys<SelfCheck> = { verdict: true, reasons: true, confidence_factor: true, lopsided_factor: true, lowered: true, check_first: true, frame_in_doubt: true, evidence: true };
 const evidence: Keys<SelfCheckEvidence> = { fit_rms_mm: true, fit_moved_mm: true, stature_m: true, contradicting: true, asymmetric: true, uneven: true, facing_margin: true, uncovered: true, head_pitch_deg: true };
 const uncovered: Keys<Uncovered> = { vertices: true, share: true, near: true };
 const estimateRead: Keys<EstimateReport> = { landmarks: true, frame: true, frame_from: true, given: true, estimated: true, flagged: true, self_check: true, fit_rms_mm: true, total_ms: true, strays: false, floor: false };

@@ -47,6 +47,10 @@ export interface SelfCheck {
   lopsided_factor: number;
   /** The landmarks the check takes for misplaced: a lopsided segment's ends, the head's when the face is turned. */
   lowered: string[];
+  /** The landmarks a person should look at first when the estimate is not good, most suspect first (empty when good). */
+  check_first: string[];
+  /** The reasons put the frame in doubt: choosing Up and Facing is the way out. */
+  frame_in_doubt: boolean;
   evidence: SelfCheckEvidence;
 }
 

@@ -51,6 +51,8 @@ export interface ToolsView {
 
 export interface ToolsActions {
   onBringBack: () => void;
+  /** Picks landmark `name` (in the list, to place it on the scan). */
+  onSelect: (name: string) => void;
   onEstimate: () => void;
   onCancelEstimate: () => void;
   onOrientation: (orientation: Orientation | null) => void;
@@ -115,10 +117,11 @@ export class LandmarkTools {
       const cancel = button('estimate-cancel', 'Cancel', 'button', this.actions.onCancelEstimate);
       return [bar, h('div', { class: 'actions estimate-running' }, label, cancel)];
     }
+    const checked = (check: SelfCheck) => checkParts(check, this.actions.onSelect);
     if (e.state === 'done')
-      return [h('p', { class: 'note', 'data-testid': 'estimate-assumed' }, `Estimated in ${e.seconds.toFixed(1)} s. Assumed: ${e.assumed}`), ...checkParts(e.check)];
+      return [h('p', { class: 'note', 'data-testid': 'estimate-assumed' }, `Estimated in ${e.seconds.toFixed(1)} s. Assumed: ${e.assumed}`), ...checked(e.check)];
     // The landmarks kept are the last estimate's: its verdict on them still holds.
-    const kept = (check: SelfCheck | null) => (check ? checkParts(check) : []);
+    const kept = (check: SelfCheck | null) => (check ? checked(check) : []);
     if (e.state === 'cancelled')
       return [h('p', { class: 'warn-note', 'data-testid': 'estimate-cancelled' }, 'Estimate cancelled: the scan and the landmarks placed so far are kept.'), ...kept(e.kept)];
     if (e.state === 'error')
@@ -172,9 +175,12 @@ function estimateLabel(view: ToolsView): string {
 
 /**
  * The estimate's verdict on itself in words: nothing for a good one; a warning with its reasons
- * for a doubtful one, an error for a failed one (its landmarks must not be trusted).
+ * for a doubtful one, an error for a failed one (its landmarks must not be trusted); then the
+ * landmarks to check first, each a button that picks it (`onSelect`) to place it on the scan,
+ * and the way out the reasons point to: Up and Facing when the frame is in doubt, else placing
+ * those landmarks by hand and estimating again.
  */
-function checkParts(check: SelfCheck): HTMLElement[] {
+function checkParts(check: SelfCheck, onSelect: (name: string) => void): HTMLElement[] {
   if (check.verdict === 'good') return [];
   const failed = check.verdict === 'failed';
   const headline = failed
@@ -190,9 +196,38 @@ function checkParts(check: SelfCheck): HTMLElement[] {
       { class: failed ? 'error-note' : 'warn-note', 'data-testid': 'estimate-check', 'data-verdict': check.verdict },
       h('p', {}, `${headline} ${confidence}`),
       h('ul', { class: 'check-reasons' }, ...check.reasons.map((r) => h('li', {}, sentence(capitalised(r))))),
-      h('p', {}, 'Choose which way is up (and the facing) below, or place a few landmarks by hand, then estimate again.'),
+      ...checkFirstParts(check.check_first, onSelect),
+      h('p', { 'data-testid': 'estimate-way-out' }, wayOut(check)),
     ),
   ];
+}
+
+/** The landmarks to check first as buttons that pick each one; nothing when there are none. */
+function checkFirstParts(names: readonly string[], onSelect: (name: string) => void): HTMLElement[] {
+  if (names.length === 0) return [];
+  return [
+    h('p', {}, `Check these first (${names.length}):`),
+    h(
+      'div',
+      { class: 'check-first', 'data-testid': 'estimate-check-first' },
+      ...names.map((name) => {
+        const pick = button(`check-first-${name}`, name, 'button', () => onSelect(name));
+        pick.dataset.name = name;
+        pick.title = `Pick ${name}, then click on the scan where it belongs`;
+        return pick;
+      }),
+    ),
+  ];
+}
+
+/** What to do about the estimate's doubts, by what they put in doubt. */
+function wayOut(check: SelfCheck): string {
+  const estimateAgain = 'then "Estimate again, keeping my edits": the landmarks placed by hand anchor the rest.';
+  if (check.frame_in_doubt)
+    return `The frame may be wrong: choose which way is up and the facing below, or place a few landmarks by hand (Sellion, the Acromions, the Malleoli), ${estimateAgain}`;
+  if (check.check_first.length)
+    return `Pick each landmark named above and click on the scan where it belongs (its marker may be far from it), ${estimateAgain}`;
+  return `Look at the markers on the scan and place those that are off by hand, ${estimateAgain}`;
 }
 
 function capitalised(text: string): string {

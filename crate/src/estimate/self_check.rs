@@ -49,6 +49,17 @@ pub struct SelfCheck {
     /// than on the other (`evidence.asymmetric`) and, with the face turned beyond
     /// `SelfCheckParams::head_pitch_deg`, the head's. Their confidences get `lopsided_factor`.
     pub lowered: Vec<String>,
+    /// The estimated landmarks a person should look at first when the estimate is not good, most
+    /// suspect first: `lowered`, then those of a limb part fitted far from the scan (the worse
+    /// side of `evidence.uneven`), then those of the part nearest the scan left uncovered, then
+    /// the contradicting ones. Empty for a good estimate.
+    #[serde(default)]
+    pub check_first: Vec<String>,
+    /// Whether the reasons put the frame itself in doubt (a stature no person has, a template
+    /// bent beyond the failed limit, a facing the fits chose by a hair): choosing Up and Facing is
+    /// the way out, where otherwise placing the landmarks of `check_first` is.
+    #[serde(default)]
+    pub frame_in_doubt: bool,
     /// What the verdict was drawn from.
     pub evidence: Evidence,
 }
@@ -104,12 +115,17 @@ pub struct Evidence {
     /// up). `None` when not measured.
     #[serde(default)]
     pub head_pitch_deg: Option<f64>,
+    /// The template part each CAESAR landmark (file order) belongs to (`template::parts` names,
+    /// `left forearm`, …): which landmarks an uneven or uncovered part names. Not written.
+    #[serde(skip)]
+    pub landmark_parts: Vec<&'static str>,
 }
 
 /// The estimate's verdict on `evidence` (see the module documentation and [`SelfCheckParams`]).
 pub fn self_check(evidence: &Evidence, params: &SelfCheckParams) -> SelfCheck {
     let mut failed = Vec::new();
     let mut doubtful = Vec::new();
+    let mut frame_in_doubt = false;
     let (moved, rms, stature) = (
         evidence.fit_moved_mm,
         evidence.fit_rms_mm,
@@ -117,12 +133,14 @@ pub fn self_check(evidence: &Evidence, params: &SelfCheckParams) -> SelfCheck {
     );
     let (low, high) = params.stature_m;
     if !(low..=high).contains(&stature) {
+        frame_in_doubt = true;
         failed.push(format!(
             "the fitted body is {stature:.2} m tall, not a person's stature: the frame is wrong; \
              choose which way is up"
         ));
     }
     if !moved.is_finite() || moved > params.failed_moved_mm {
+        frame_in_doubt = true;
         failed.push(format!(
             "the template had to be bent {moved:.0} mm out of shape (RMS) to meet the scan: the \
              body's frame or pose was not found; choose which way is up, or place a few \
@@ -161,6 +179,7 @@ pub fn self_check(evidence: &Evidence, params: &SelfCheckParams) -> SelfCheck {
         doubtful.push(u.sentence());
     }
     if let Some(m) = evidence.facing_margin.filter(|m| *m < params.facing_close) {
+        frame_in_doubt = true;
         doubtful.push(format!(
             "only the fits chose which way the body faces, and those facing either way came \
              within {:.1} % of each other: it may face the other way; look at the face, or \
@@ -168,11 +187,11 @@ pub fn self_check(evidence: &Evidence, params: &SelfCheckParams) -> SelfCheck {
             100.0 * m
         ));
     }
-    if let Some(u) = evidence
+    let uncovered = evidence
         .uncovered
         .as_ref()
-        .filter(|u| u.share > params.uncovered.1)
-    {
+        .filter(|u| u.share > params.uncovered.1);
+    if let Some(u) = uncovered {
         doubtful.push(format!(
             "{:.1} % of the scan lies more than {:.0} mm from the fit{}: the template did not \
              reach that part of the body (a limb fitted too short or beside the scan); check its \
@@ -207,7 +226,8 @@ pub fn self_check(evidence: &Evidence, params: &SelfCheckParams) -> SelfCheck {
             if pitch < 0.0 { "down" } else { "up" }
         ));
     }
-    if evidence.contradicting.len() > params.max_contradicting {
+    let contradicting = evidence.contradicting.len() > params.max_contradicting;
+    if contradicting {
         doubtful.push(format!(
             "{} estimated landmarks lie far from where the others of their part put them ({})",
             evidence.contradicting.len(),
@@ -222,14 +242,70 @@ pub fn self_check(evidence: &Evidence, params: &SelfCheckParams) -> SelfCheck {
         (Verdict::Good, 1.0)
     };
     failed.extend(doubtful);
+    let check_first = if verdict == Verdict::Good {
+        Vec::new()
+    } else {
+        check_first(
+            evidence,
+            &lowered,
+            uncovered.and_then(|u| u.near.as_deref()),
+            contradicting,
+        )
+    };
     SelfCheck {
         verdict,
         reasons: failed,
         confidence_factor,
         lopsided_factor: params.failed_factor,
         lowered,
+        check_first,
+        frame_in_doubt,
         evidence: evidence.clone(),
     }
+}
+
+/// [`SelfCheck::check_first`]: `lowered`, the landmarks of the worse side of each uneven part,
+/// those of the part `uncovered_near` (when the uncovered scan is a reason), the contradicting
+/// ones (when they are); each once.
+fn check_first(
+    evidence: &Evidence,
+    lowered: &[String],
+    uncovered_near: Option<&str>,
+    contradicting: bool,
+) -> Vec<String> {
+    let of_part = |part: String| {
+        CAESAR_LANDMARKS
+            .iter()
+            .zip(&evidence.landmark_parts)
+            .filter(move |(_, p)| **p == part)
+            .map(|(l, _)| l.name.to_string())
+    };
+    let uneven = evidence.uneven.iter().flat_map(|u| {
+        let side = if u.left_rms_mm > u.right_rms_mm {
+            "left"
+        } else {
+            "right"
+        };
+        of_part(format!("{side} {}", u.part))
+    });
+    let uncovered = uncovered_near
+        .map(str::to_string)
+        .into_iter()
+        .flat_map(of_part);
+    let contradicting = evidence.contradicting.iter().filter(|_| contradicting);
+    let mut names: Vec<String> = Vec::new();
+    for name in lowered
+        .iter()
+        .cloned()
+        .chain(uneven)
+        .chain(uncovered)
+        .chain(contradicting.cloned())
+    {
+        if !names.contains(&name) {
+            names.push(name);
+        }
+    }
+    names
 }
 
 #[cfg(test)]
@@ -253,6 +329,7 @@ mod tests {
                 near: Some("right lower leg".into()),
             }),
             head_pitch_deg: Some(-8.0),
+            landmark_parts: Vec::new(),
         }
     }
 
@@ -397,5 +474,68 @@ mod tests {
         assert_eq!(c.verdict, Verdict::Failed);
         assert_eq!(c.reasons.len(), 2);
         assert!(c.reasons[1].contains("RMS 30.0 mm"), "{:?}", c.reasons);
+    }
+
+    #[test]
+    fn a_doubtful_estimate_names_the_landmarks_to_check_first_and_whether_the_frame_is_in_doubt() {
+        use crate::landmarks::caesar_index;
+        let p = SelfCheckParams::default();
+        let mut parts = vec!["torso"; CAESAR_LANDMARKS.len()];
+        for (name, part) in [
+            ("Rt. Radial Styloid", "right forearm"),
+            ("Rt. Ulnar Styloid", "right forearm"),
+            ("Lt. Radial Styloid", "left forearm"),
+            ("Lt. Lateral Malleolus", "left lower leg"),
+        ] {
+            parts[caesar_index(name).unwrap()] = part;
+        }
+        let with = |e: Evidence| Evidence {
+            landmark_parts: parts.clone(),
+            ..e
+        };
+        // A good estimate names none, though one landmark contradicts and a floor ring is uncovered.
+        let good_one = self_check(&with(good()), &p);
+        assert!(good_one.check_first.is_empty() && !good_one.frame_in_doubt);
+        // The right forearm fitted far: its landmarks, the worse side's only; the lone
+        // contradicting one is no reason, so it is not named.
+        let forearm = with(Evidence {
+            uneven: vec![UnevenFit {
+                part: "forearm".into(),
+                left_rms_mm: 4.0,
+                right_rms_mm: 20.0,
+            }],
+            ..good()
+        });
+        let c = self_check(&forearm, &p);
+        assert_eq!(c.check_first, ["Rt. Radial Styloid", "Rt. Ulnar Styloid"]);
+        assert!(!c.frame_in_doubt);
+        // With the face turned too, the head's landmarks come first; the uncovered part's after.
+        let both = with(Evidence {
+            head_pitch_deg: Some(40.0),
+            uncovered: Some(Uncovered {
+                vertices: 524,
+                share: 0.0098,
+                near: Some("left lower leg".into()),
+            }),
+            ..forearm.clone()
+        });
+        let c = self_check(&both, &p);
+        assert_eq!(c.check_first[0], "Sellion");
+        let at = |name: &str| c.check_first.iter().position(|n| n == name).unwrap();
+        assert!(at("Rt. Radial Styloid") > at("Rt. Tragion"));
+        assert_eq!(c.check_first.last().unwrap(), "Lt. Lateral Malleolus");
+        // A stature no person has, or a facing the fits chose by a hair: the frame is in doubt.
+        for e in [
+            Evidence {
+                stature_m: 0.45,
+                ..good()
+            },
+            Evidence {
+                facing_margin: Some(0.006),
+                ..good()
+            },
+        ] {
+            assert!(self_check(&with(e), &p).frame_in_doubt);
+        }
     }
 }

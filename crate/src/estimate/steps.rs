@@ -618,6 +618,10 @@ fn check_itself(
         head_pitch_deg: head_pitch_deg(&|k| Some(estimated[k].1), &(best.rotation * Vector3::y()))
             .zip(head_pitch_deg(&|k| Some(landmark_rest[k]), &Vector3::y()))
             .map(|(fit, template)| fit - template),
+        landmark_parts: landmark_vertices
+            .iter()
+            .map(|&v| part_names[dominant_part(parts, v)])
+            .collect(),
     };
     self_check(&evidence, &params.self_check)
 }
