@@ -401,7 +401,8 @@ fn legs_fitted_too_short_leave_the_scan_uncovered_and_say_so() {
 /// 23.7 mm off on average and called good. The line from the ears to the eyes was turned 48°
 /// down from the template's, where good estimates of the tuning and held-out zoos stay within
 /// 15°. With the head's pitch judged it is doubtful and says so, and the head's landmarks'
-/// confidences drop to the failed factor; with it out of reach, good.
+/// confidences drop to the failed factor; with it out of reach, good. Sellion and the Tragions
+/// placed by hand then re-pose the head (`SegmentParams::given_min`).
 #[test]
 fn a_face_turned_far_down_is_doubtful() {
     let (template, data) = load();
@@ -453,4 +454,35 @@ fn a_face_turned_far_down_is_doubtful() {
         Some("Sellion")
     );
     assert!(!check.frame_in_doubt, "{check:?}");
+
+    // The way out it names: Sellion and the Tragions placed by hand (their true positions) pull
+    // the head's rigid fit, and the face comes right; without that pull (`given_min` out of
+    // reach) the three were only anchors of the fine fit, and the face stayed on the throat.
+    let face = LandmarkSet {
+        landmarks: c
+            .landmarks
+            .landmarks
+            .iter()
+            .filter(|l| ["Sellion", "Rt. Tragion", "Lt. Tragion"].contains(&l.name.as_str()))
+            .cloned()
+            .collect(),
+        ..LandmarkSet::default()
+    };
+    assert_eq!(face.landmarks.len(), 3);
+    let placed_by_hand = |params: &EstimateParams| {
+        let e = estimate_given(&template, &c, &face, None, params);
+        let errors = landmark_errors(&c, &e.positions, e.scale_to_metres * 1000.0);
+        let infraorbitale = bodyspace::landmarks::caesar_index("Rt. Infraorbitale").unwrap();
+        (errors[infraorbitale], e.report.self_check.verdict)
+    };
+    let (eyes, verdict) = placed_by_hand(&EstimateParams::default());
+    let mut unpulled = EstimateParams::default();
+    unpulled.segments.given_min = usize::MAX;
+    let (eyes_unpulled, _) = placed_by_hand(&unpulled);
+    eprintln!("Rt. Infraorbitale with three placed: {eyes:.1} mm ({verdict:?}), unpulled {eyes_unpulled:.1} mm");
+    assert!(
+        eyes < 25.0 && verdict == Verdict::Good,
+        "{eyes:.1} mm, {verdict:?}"
+    );
+    assert!(eyes_unpulled > 40.0, "{eyes_unpulled:.1} mm");
 }

@@ -6,11 +6,14 @@
 // (≤ 2 mm RMS) and nothing is flagged about the estimate.
 // An estimate cancelled after a failed one keeps the failed one's landmarks, and its verdict on
 // them stays on screen. An estimate back to front (the facing chosen wrong) is re-anchored by
-// five given landmarks, and the page says the landmarks, not the choice, set the facing.
+// five given landmarks, and the page says the landmarks, not the choice, set the facing. A face
+// placed on the throat is named with the landmarks to check first, and three placed on the face
+// re-pose the head.
 import { expect, test, type Page } from '@playwright/test';
 import { dropFiles } from './fixtures';
 import { partialCsv, sampleFile } from './samples';
 import { cancelEstimateWhenItRuns, openWithSample } from './steps';
+import { synthFolder } from './synth';
 
 const body = (page: Page) => page.locator('body');
 const row = (page: Page, name: string) => page.getByTestId('landmark-list').locator(`li[data-name="${name}"]`);
@@ -167,4 +170,44 @@ test('five given landmarks overrule a facing chosen wrong, and the page says wha
   const right = await align(page);
   expect(right.rms).toBeLessThanOrEqual(2);
   expect(right.flags.split(' ')).not.toContain('landmark_estimate');
+});
+
+test("a face placed on the throat names the face's landmarks to check first; Sellion and the Tragions placed re-pose the head", async ({ page }) => {
+  test.setTimeout(600_000);
+  // Raw scanner output of the held-out population (parts, crown cut, floor, slices; ≈ 100K
+  // vertices): the estimate puts its second subject's face on the throat.
+  const files = synthFolder(2, 4242, 4, ['--profile', 'held-out', '--scanner-class', 'raw']);
+  const file = (name: string) => files.find((f) => f.name === name)!;
+  const truth = new Map(
+    file('landmarks_002.csv').bytes.toString('utf8').trim().split('\n').slice(1).map((line) => {
+      const [name, ...xyz] = line.split(',');
+      return [name!, xyz.map(Number)] as const;
+    }),
+  );
+  const off = async (name: string) => {
+    const at = (await row(page, name).getAttribute('data-position-mm'))!.split(',').map(Number);
+    return Math.hypot(...at.map((v, i) => v - truth.get(name)![i]!));
+  };
+  await openWithSample(page, [file('scan_002.ply')]);
+  await expect(body(page)).toHaveAttribute('data-estimates', '1', { timeout: 120_000 });
+  await expect(body(page)).toHaveAttribute('data-estimate-verdict', 'doubtful');
+  expect(await off('Rt. Infraorbitale')).toBeGreaterThan(50);
+  await expect(page.getByTestId('estimate-check')).toContainText('The face is turned');
+  // The face's landmarks are named first, each a button that picks it to be placed on the scan.
+  const first = page.getByTestId('estimate-check-first').locator('button');
+  await expect(first.first()).toHaveText('Sellion');
+  await expect(page.getByTestId('estimate-check-first')).toContainText('Rt. Tragion');
+  await expect(page.getByTestId('estimate-way-out')).toContainText('Pick each landmark named above');
+  await first.first().click();
+  await expect(body(page)).toHaveAttribute('data-selected-landmark', 'Sellion');
+
+  // Sellion and the Tragions where they belong (a partial file, the channel a person's clicks
+  // take): they re-pose the head, and the estimate is good.
+  const FACE = ['Sellion', 'Rt. Tragion', 'Lt. Tragion'];
+  await dropFiles(page, [partialCsv((name) => FACE.includes(name), file('landmarks_002.csv'))]);
+  await expect(body(page)).toHaveAttribute('data-estimates', '2', { timeout: 120_000 });
+  await expect(page.getByTestId('landmark-list').locator('li[data-state="given"]')).toHaveCount(3);
+  await expect(body(page)).toHaveAttribute('data-estimate-verdict', 'good');
+  expect(await off('Rt. Infraorbitale')).toBeLessThan(25);
+  expect(await off('Supramenton')).toBeLessThan(25);
 });

@@ -7,7 +7,10 @@
 //!
 //! The head is held by its nose tip rather than by its joint: the template's nose tip
 //! (`template::face`) is pulled to the scan's (`mesh::tip`, near where the head's pose puts it),
-//! since nearest points slide a head's surface over the scan's head almost freely.
+//! since nearest points slide a head's surface over the scan's head almost freely. A part other
+//! than the torso with three or more given landmarks (placed by a person) is pulled by them
+//! instead (`SegmentParams::given_min`, `given_share`): they fix its pose where the nose tip or
+//! the nearest points went wrong.
 //!
 //! The thigh and the lower leg also stretch along their own axis (about the hip or the knee):
 //! the body's common scale leaves them as long as the template's, whatever the subject's leg
@@ -78,7 +81,10 @@ fn fit_stretch(
 /// (`scan`, metres, is the mesh `matching` indexes): a coarse mesh's vertices alone lie in rings
 /// too far apart. Knees far apart along their legs are each tried at the other's distance too,
 /// and the placement whose legs then lie nearest the scan is kept (`knees.rs`). Returns the
-/// blended positions, or `None` when the caller cancelled.
+/// blended positions, or `None` when the caller cancelled. `given` (template vertex, where it
+/// goes on the scan, metres): landmarks a person placed, each pulling its part's rigid fit (as
+/// `params.given_share` of the part's matches, split among them): three on the face re-pose a
+/// head the nearest points and the nose tip turned.
 #[allow(clippy::too_many_arguments)]
 pub fn fit_segments(
     template: &Template,
@@ -87,6 +93,7 @@ pub fn fit_segments(
     start: Similarity,
     vertices: &[u32],
     matching: &Matching<'_>,
+    given: &[(u32, Point3<f64>)],
     iterations: usize,
     params: &SegmentParams,
     profile: &ProfileParams,
@@ -125,14 +132,20 @@ pub fn fit_segments(
                 ),
             }
         });
+    let dominant = dominant_parts(parts, rest.len());
+    let given = given
+        .iter()
+        .filter_map(|&(v, at)| Some((dominant[v as usize]?, rest[v as usize], at)))
+        .collect();
     let fit = Fit {
         template,
         parts,
         vertices,
         matching,
-        dominant: dominant_parts(parts, rest.len()),
+        dominant,
         params,
         face,
+        given,
     };
     let before_swing = params.swing.after.min(iterations - after_profile);
     fit.iterate(&mut poses, &held, before_swing, ticker)?;
@@ -214,6 +227,8 @@ struct Fit<'a> {
     dominant: Vec<Option<usize>>,
     params: &'a SegmentParams,
     face: Option<Face>,
+    /// Given landmarks: (their part, the template's point at rest, where it goes on the scan).
+    given: Vec<(usize, Point3<f64>, Point3<f64>)>,
 }
 
 /// The head's part, the template's nose tip and the scan's surface it is found on.
@@ -281,13 +296,31 @@ impl Fit<'_> {
                 if wanted.len() < 10 || (k == 0 && held[k]) {
                     continue;
                 }
+                let given: Vec<(Point3<f64>, Point3<f64>)> = self
+                    .given
+                    .iter()
+                    .filter(|(part, _, _)| *part == k)
+                    .map(|&(_, p, q)| (p, q))
+                    .collect();
+                // Not the torso: its pose is the frame, which four given landmarks already set,
+                // and its thousands of matches place it better than three landmarks on a trunk
+                // that is no rigid body.
+                let anchored =
+                    k != 0 && given.len() >= self.params.given_min && self.params.given_share > 0.0;
+                if anchored {
+                    let copies = ((wanted.len() as f64 * self.params.given_share)
+                        / given.len() as f64) as usize;
+                    for pair in given {
+                        wanted.extend(std::iter::repeat_n(pair, copies.max(1)));
+                    }
+                }
                 // The head's nose tip is pulled to the scan's, and then its joint is not held:
                 // nearest points alone slid the head's surface down over the scan's head, its
                 // joint holding it at the template's neck (docs/landmarks-estimate.md).
                 let nose = self
                     .face
                     .as_ref()
-                    .filter(|f| f.head == k)
+                    .filter(|f| f.head == k && !anchored)
                     .and_then(|f| self.nose_tip(f, part, &poses[k], &poses[0]));
                 if let Some(pair) = nose {
                     let copies = ((wanted.len() as f64 * self.params.face.share) as usize).max(3);

@@ -343,6 +343,10 @@ pub fn estimate_landmarks(
         order.remove(k);
         order.insert(0, k);
     }
+    let given_vertices: Vec<(u32, Point3<f64>)> = given_m
+        .iter()
+        .map(|(i, p)| (landmark_vertices[*i], *p))
+        .collect();
     let mut posed: Option<(f64, Vec<Point3<f64>>, _)> = None;
     for (_, candidate) in order.iter().take(segment_starts).map(|&k| &fitted[k]) {
         let mut fit = fit_segments(
@@ -352,6 +356,7 @@ pub fn estimate_landmarks(
             candidate.transform,
             &all,
             &matching,
+            &given_vertices,
             params.segment_iterations,
             &params.segments,
             &params.profile,

@@ -37,6 +37,15 @@ pub struct SegmentParams {
     /// The arm's line runs on beyond the wrist by this fraction of the forearm, over the hand,
     /// so that a hand beside the thigh is not taken for the thigh. Default 0.7.
     pub hand_reach: f64,
+    /// The given landmarks of a part count, together, as this share of the part's matched
+    /// vertices in its rigid fit (0 leaves them out): a few landmarks a person placed re-pose
+    /// the part they lie on. Default 0.5.
+    pub given_share: f64,
+    /// A part is pulled by its given landmarks only when it has at least this many. Default 3,
+    /// as many as fix a rigid pose: Sellion alone on the head, in place of its nose tip, or an
+    /// Acromion alone pulling the upper arm left a partial file worse than none (held-out 5151
+    /// subject 0: 13.7 → 21.1 mm of correspondence error with Sellion, the Acromions and Crotch).
+    pub given_min: usize,
     /// The arms' swing about the shoulder.
     pub swing: ArmSwingParams,
     /// The elbow of an arm bent at it.
@@ -60,6 +69,8 @@ impl Default for SegmentParams {
             leg_radius: 0.14,
             arm_radius: 0.08,
             hand_reach: 0.7,
+            given_share: 0.5,
+            given_min: 3,
             swing: ArmSwingParams::default(),
             bent_arm: BentArmParams::default(),
             buttocks: ButtocksParams::default(),
