@@ -515,18 +515,19 @@ pub fn estimate_landmarks(
             matched: f.matched,
         })
         .collect();
+    let frame = FrameReport::of(&best);
     let report = EstimateReport {
         units,
         units_detected: input.units.is_none(),
         strays,
         frame_from: FrameBasis::of(
-            &FrameReport::of(&best),
+            &frame,
             input.orientation.as_ref(),
             given_ruled,
             up_cue,
             facing_cue,
         ),
-        frame: FrameReport::of(&best),
+        frame,
         candidates,
         given: given.len(),
         estimated: positions.iter().flatten().count() - given.len(),
