@@ -52,7 +52,7 @@ landmarkStep.onBringBack = () => {
   const before = session.scan;
   session.bringBack();
   refresh(session.scan !== before);
-  landmarkStep.afterLoad();
+  landmarkStep.afterBringBack();
   const name = session.scan?.fileName ?? '';
   topBar.setStatus(session.scan === before ? `Back to the other set of landmarks of ${name}.` : `Back to ${name}; ${before?.fileName ?? ''} is put aside.`);
 };

@@ -347,8 +347,13 @@ test('before any file nothing is absent; after Align a picked landmark shows the
 test("a second scan opened alone gets its own estimate; the first one's landmarks, or a set a file replaced, are put aside and come back", async ({ page }) => {
   test.setTimeout(300_000);
   const FIVE = ['Sellion', 'Rt. Acromion', 'Lt. Acromion', 'Rt. Lateral Malleolus', 'Lt. Lateral Malleolus'];
-  await openWithSample(page, [sampleFile('scan_001.ply.gz'), partialCsv((name) => FIVE.includes(name))]);
+  // A landmark file opened with no scan shown waits for the next scan, and goes with it.
+  await openWithSample(page, [partialCsv((name) => FIVE.includes(name))]);
+  await dropFiles(page, [sampleFile('scan_001.ply.gz')]);
+  await waitForLoads(page, 2);
   await expect(body(page)).toHaveAttribute('data-estimate-state', 'done', { timeout: 120_000 });
+  await expect(page.getByTestId('landmark-list').locator('li[data-state="given"]')).toHaveCount(5);
+  await expect(page.getByTestId('landmarks-put-aside')).toHaveCount(0);
   // One landmark moved by hand: work the next scan must not take, nor lose.
   const marker = await pickMarker(page, 'Substernale');
   await page.mouse.click(marker.x + 9, marker.y + 7);
@@ -360,7 +365,7 @@ test("a second scan opened alone gets its own estimate; the first one's landmark
   const [lnd, scan] = synthSubjects(1, 22, 10);
   const other = { name: 'other.ply', bytes: scan!.bytes };
   await dropFiles(page, [other]);
-  await waitForLoads(page, 2);
+  await waitForLoads(page, 3);
   await expect(body(page)).toHaveAttribute('data-estimates', '2', { timeout: 120_000 });
   await expect(body(page)).toHaveAttribute('data-estimate-state', 'done');
   await expect(list.locator('li[data-state="estimated"]')).toHaveCount(73);
@@ -380,7 +385,6 @@ test("a second scan opened alone gets its own estimate; the first one's landmark
 
   // Back to the first: its set as it was, the estimate's verdict with it, no new estimate.
   await page.getByTestId('landmarks-back').click();
-  await waitForLoads(page, 2);
   await expect(page.getByTestId('scan-file')).toHaveText('scan_001.ply.gz');
   await expect(list.locator('li[data-state="given"]')).toHaveCount(5);
   await expect(list.locator('li[data-state="edited"]')).toHaveCount(1);
@@ -394,7 +398,7 @@ test("a second scan opened alone gets its own estimate; the first one's landmark
   // A landmark file named for a scan goes with that scan when it is opened alone after it (the
   // core's pairing of a batch's files), even though it was dropped onto the first one.
   await dropFiles(page, [{ name: 'other.lnd', bytes: lnd!.bytes }]);
-  await waitForLoads(page, 3);
+  await waitForLoads(page, 4);
   await expect(list.locator('li[data-state="given"]')).toHaveCount(73);
   // The set it replaced is put aside too, and comes back.
   await expect(aside).toHaveText('Another set of landmarks for this scan is put aside (73: 5 from partial.csv, 67 estimated, 1 placed by hand).');
@@ -405,7 +409,7 @@ test("a second scan opened alone gets its own estimate; the first one's landmark
   await page.getByTestId('landmarks-back').click();
   await expect(list.locator('li[data-state="given"]')).toHaveCount(73);
   await dropFiles(page, [other]);
-  await waitForLoads(page, 4);
+  await waitForLoads(page, 5);
   await expect(page.getByTestId('scan-file')).toHaveText('other.ply');
   await expect(list.locator('li[data-state="given"]')).toHaveCount(73);
   await expect(body(page)).toHaveAttribute('data-estimates', '2');

@@ -147,19 +147,23 @@ export class LandmarkStep {
    */
   afterLoad(): void {
     if (!this.session.scan) return;
-    const edits = this.session.edits;
-    const before = edits && this.shown.get(edits);
-    if (before) {
-      // A scan brought back: its set as it was shown.
-      ({ estimate: this.estimate, suspicious: this.suspicious, sharpness: this.sharpness, prediction: this.prediction } = before);
-      const check = shownCheck(this.estimate);
-      if (check) document.body.dataset.estimateVerdict = check.verdict;
-      this.showMarkers();
-      this.render();
-      return;
-    }
     if ((this.session.edits?.placed().names.length ?? 0) >= this.nearlyFull) this.check();
     else void this.estimateLandmarks();
+  }
+
+  /** After "Back to": the set brought back as it was shown (its estimate's verdict, the suspicious ones), else as after a load. */
+  afterBringBack(): void {
+    const edits = this.session.edits;
+    const before = edits && this.shown.get(edits);
+    if (!before) {
+      this.afterLoad();
+      return;
+    }
+    ({ estimate: this.estimate, suspicious: this.suspicious, sharpness: this.sharpness, prediction: this.prediction } = before);
+    const check = shownCheck(this.estimate);
+    if (check) document.body.dataset.estimateVerdict = check.verdict;
+    this.showMarkers();
+    this.render();
   }
 
   /**
