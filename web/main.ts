@@ -47,6 +47,8 @@ const landmarkStep = new LandmarkStep(client, landmarkClient, viewer, session, (
 }, showError);
 // Picking a landmark to place on a hidden scan (after Align) shows the scan, so the click lands.
 landmarkStep.onPick = () => warpStep.show('scan', true);
+// A landmark shown up close is placed on the scan: the warped template would cover it.
+landmarkStep.onCloseUp = () => warpStep.show('warped', false);
 // "Back to" the scan put aside: it comes back with its landmarks as they were shown.
 landmarkStep.onBringBack = () => {
   const before = session.scan;
@@ -84,7 +86,9 @@ if (new URLSearchParams(location.search).has('debug')) {
     else void (which === 'core' ? client.call({ type: 'trap' }) : alignClient.call({ type: 'trap' })).catch(() => undefined);
   };
   const setBatchWorkers = (n: number | null) => (batch.workerLimit = n);
-  (window as unknown as { bodyspaceDebug: unknown }).bodyspaceDebug = { trap, setBatchWorkers };
+  // Where a point of the scan's frame (metres) is drawn, so a test can click where a landmark truly is.
+  const canvasPoint = (point: [number, number, number]) => viewer.canvasPoint('scan', point);
+  (window as unknown as { bodyspaceDebug: unknown }).bodyspaceDebug = { trap, setBatchWorkers, canvasPoint };
 }
 void shapeSpace.start(location.hash);
 

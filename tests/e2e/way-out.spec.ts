@@ -7,8 +7,8 @@
 // An estimate cancelled after a failed one keeps the failed one's landmarks, and its verdict on
 // them stays on screen. An estimate back to front (the facing chosen wrong) is re-anchored by
 // five given landmarks, and the page says the landmarks, not the choice, set the facing. A face
-// placed on the throat is named with the landmarks to check first, and three placed on the face
-// re-pose the head.
+// placed on the throat is named with the landmarks to check first, and three clicked on the face,
+// each from its close-up, re-pose the head.
 import { expect, test, type Page } from '@playwright/test';
 import { dropFiles } from './fixtures';
 import { partialCsv, sampleFile } from './samples';
@@ -172,7 +172,7 @@ test('five given landmarks overrule a facing chosen wrong, and the page says wha
   expect(right.flags.split(' ')).not.toContain('landmark_estimate');
 });
 
-test("a face placed on the throat names the face's landmarks to check first; Sellion and the Tragions placed re-pose the head", async ({ page }) => {
+test("a face placed on the throat names the face's landmarks to check first; Sellion and the Tragions clicked re-pose the head", async ({ page }) => {
   test.setTimeout(600_000);
   // Raw scanner output of the held-out population (parts, crown cut, floor, slices; ≈ 100K
   // vertices): the estimate puts its second subject's face on the throat.
@@ -188,26 +188,42 @@ test("a face placed on the throat names the face's landmarks to check first; Sel
     const at = (await row(page, name).getAttribute('data-position-mm'))!.split(',').map(Number);
     return Math.hypot(...at.map((v, i) => v - truth.get(name)![i]!));
   };
-  await openWithSample(page, [file('scan_002.ply')]);
+  await page.goto('./?debug');
+  await expect(body(page)).toHaveAttribute('data-template-ready', 'true', { timeout: 60_000 });
+  await dropFiles(page, [file('scan_002.ply')]);
   await expect(body(page)).toHaveAttribute('data-estimates', '1', { timeout: 120_000 });
   await expect(body(page)).toHaveAttribute('data-estimate-verdict', 'doubtful');
   expect(await off('Rt. Infraorbitale')).toBeGreaterThan(50);
   await expect(page.getByTestId('estimate-check')).toContainText('The face is turned');
-  // The face's landmarks are named first, each a button that picks it to be placed on the scan.
-  const first = page.getByTestId('estimate-check-first').locator('button');
-  await expect(first.first()).toHaveText('Sellion');
-  await expect(page.getByTestId('estimate-check-first')).toContainText('Rt. Tragion');
   await expect(page.getByTestId('estimate-way-out')).toContainText('Pick each landmark named above');
-  await first.first().click();
-  await expect(body(page)).toHaveAttribute('data-selected-landmark', 'Sellion');
+  // The face's landmarks are named first, each a button that picks it and shows it up close.
+  const first = page.getByTestId('estimate-check-first');
+  await expect(first.locator('button').first()).toHaveText('Sellion');
+  await expect(body(page)).toHaveAttribute('data-rbf-state', 'done', { timeout: 60_000 });
 
-  // Sellion and the Tragions where they belong (a partial file, the channel a person's clicks
-  // take): they re-pose the head, and the estimate is good.
-  const FACE = ['Sellion', 'Rt. Tragion', 'Lt. Tragion'];
-  await dropFiles(page, [partialCsv((name) => FACE.includes(name), file('landmarks_002.csv'))]);
+  // Sellion and the Tragions clicked where they truly are on the scan, each from its close-up.
+  const canvas = (await page.getByTestId('viewport-canvas').boundingBox())!;
+  for (const name of ['Sellion', 'Rt. Tragion', 'Lt. Tragion']) {
+    await first.locator(`button[data-name="${name}"]`).click();
+    await expect(body(page)).toHaveAttribute('data-selected-landmark', name);
+    await expect(page.getByTestId('view-whole')).toBeVisible();
+    const metres = truth.get(name)!.map((v) => v / 1000);
+    const px = await page.evaluate(
+      (p) => (window as unknown as { bodyspaceDebug: { canvasPoint: (p: number[]) => [number, number] | null } }).bodyspaceDebug.canvasPoint(p),
+      metres,
+    );
+    await page.mouse.click(canvas.x + px![0], canvas.y + px![1]);
+    await expect(row(page, name)).toHaveAttribute('data-state', 'edited');
+    expect(await off(name)).toBeLessThan(8);
+  }
+  await page.getByTestId('view-whole').click();
+  await expect(page.getByTestId('view-whole')).toBeHidden();
+
+  // Estimated again keeping them: they re-pose the head, and the estimate is good.
+  await page.getByTestId('landmarks-estimate').click();
   await expect(body(page)).toHaveAttribute('data-estimates', '2', { timeout: 120_000 });
-  await expect(page.getByTestId('landmark-list').locator('li[data-state="given"]')).toHaveCount(3);
   await expect(body(page)).toHaveAttribute('data-estimate-verdict', 'good');
+  await expect(page.getByTestId('landmark-list').locator('li[data-state="edited"]')).toHaveCount(3);
   expect(await off('Rt. Infraorbitale')).toBeLessThan(25);
   expect(await off('Supramenton')).toBeLessThan(25);
 });

@@ -53,6 +53,8 @@ export class LandmarkStep {
   private readonly shown = new WeakMap<LandmarkEdits, Shown>();
   /** The set the shown estimate, suspicious list and prediction are of. */
   private shownFor: LandmarkEdits | null = null;
+  /** Called before a landmark is shown up close on the scan (the page hides what would cover the scan). */
+  onCloseUp: (() => void) | null = null;
   /** Called when the person asks for the scan put aside back. */
   onBringBack: (() => void) | null = null;
   /** What the list shows before anything is loaded: every landmark absent. */
@@ -88,6 +90,7 @@ export class LandmarkStep {
     this.panel = new LandmarksPanel({
       onBringBack: () => this.onBringBack?.(),
       onSelect: (name) => this.select(name),
+      onInspect: (name) => this.inspect(name),
       onHover: (name) => this.panel.guide.show(name ?? this.selected),
       onEstimate: () => void this.estimateLandmarks(),
       onCancelEstimate: () => this.estimator.cancel(),
@@ -365,6 +368,15 @@ export class LandmarkStep {
     this.panel.guide.show(name);
     if (this.session.scan) this.onPick?.(name);
     this.render();
+  }
+
+  /** Picks `name` and turns the view to it up close (where the set has it: on the scan, or on the template's guess). */
+  private inspect(name: string): void {
+    this.select(name);
+    const at = this.session.edits?.entry(name)?.position;
+    this.onCloseUp?.();
+    if (at) this.viewer.closeUp('scan', at);
+    this.publishSelected(this.session.edits?.entry(name) ?? null);
   }
 
   private place(name: string, point: Point, transient: boolean): void {

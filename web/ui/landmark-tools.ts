@@ -51,8 +51,8 @@ export interface ToolsView {
 
 export interface ToolsActions {
   onBringBack: () => void;
-  /** Picks landmark `name` (in the list, to place it on the scan). */
-  onSelect: (name: string) => void;
+  /** Picks landmark `name` to place it on the scan, and shows it up close. */
+  onInspect: (name: string) => void;
   onEstimate: () => void;
   onCancelEstimate: () => void;
   onOrientation: (orientation: Orientation | null) => void;
@@ -117,7 +117,7 @@ export class LandmarkTools {
       const cancel = button('estimate-cancel', 'Cancel', 'button', this.actions.onCancelEstimate);
       return [bar, h('div', { class: 'actions estimate-running' }, label, cancel)];
     }
-    const checked = (check: SelfCheck) => checkParts(check, this.actions.onSelect);
+    const checked = (check: SelfCheck) => checkParts(check, this.actions.onInspect);
     if (e.state === 'done')
       return [h('p', { class: 'note', 'data-testid': 'estimate-assumed' }, `Estimated in ${e.seconds.toFixed(1)} s. Assumed: ${e.assumed}`), ...checked(e.check)];
     // The landmarks kept are the last estimate's: its verdict on them still holds.
@@ -176,11 +176,11 @@ function estimateLabel(view: ToolsView): string {
 /**
  * The estimate's verdict on itself in words: nothing for a good one; a warning with its reasons
  * for a doubtful one, an error for a failed one (its landmarks must not be trusted); then the
- * landmarks to check first, each a button that picks it (`onSelect`) to place it on the scan,
+ * landmarks to check first, each a button that picks it and shows it up close (`onInspect`),
  * and the way out the reasons point to: Up and Facing when the frame is in doubt, else placing
  * those landmarks by hand and estimating again.
  */
-function checkParts(check: SelfCheck, onSelect: (name: string) => void): HTMLElement[] {
+function checkParts(check: SelfCheck, onInspect: (name: string) => void): HTMLElement[] {
   if (check.verdict === 'good') return [];
   const failed = check.verdict === 'failed';
   const headline = failed
@@ -196,14 +196,14 @@ function checkParts(check: SelfCheck, onSelect: (name: string) => void): HTMLEle
       { class: failed ? 'error-note' : 'warn-note', 'data-testid': 'estimate-check', 'data-verdict': check.verdict },
       h('p', {}, `${headline} ${confidence}`),
       h('ul', { class: 'check-reasons' }, ...check.reasons.map((r) => h('li', {}, sentence(capitalised(r))))),
-      ...checkFirstParts(check.check_first, onSelect),
+      ...checkFirstParts(check.check_first, onInspect),
       h('p', { 'data-testid': 'estimate-way-out' }, wayOut(check)),
     ),
   ];
 }
 
-/** The landmarks to check first as buttons that pick each one; nothing when there are none. */
-function checkFirstParts(names: readonly string[], onSelect: (name: string) => void): HTMLElement[] {
+/** The landmarks to check first as buttons that pick each one and show it up close; nothing when there are none. */
+function checkFirstParts(names: readonly string[], onInspect: (name: string) => void): HTMLElement[] {
   if (names.length === 0) return [];
   return [
     h('p', {}, `Check these first (${names.length}):`),
@@ -211,9 +211,9 @@ function checkFirstParts(names: readonly string[], onSelect: (name: string) => v
       'div',
       { class: 'check-first', 'data-testid': 'estimate-check-first' },
       ...names.map((name) => {
-        const pick = button(`check-first-${name}`, name, 'button', () => onSelect(name));
+        const pick = button(`check-first-${name}`, name, 'button', () => onInspect(name));
         pick.dataset.name = name;
-        pick.title = `Pick ${name}, then click on the scan where it belongs`;
+        pick.title = `Pick ${name} and show it up close, then click on the scan where it belongs ("Whole body" in the view goes back)`;
         return pick;
       }),
     ),

@@ -24,6 +24,8 @@ export class Viewer {
   private frameRequested = false;
   /** What the camera was last aimed at, for `data-framed-ndc`. */
   private framed: THREE.Box3 | null = null;
+  /** Back to the whole body after a close-up (`closeUp`); hidden otherwise. */
+  private readonly whole = document.createElement('button');
 
   constructor(private readonly container: HTMLElement) {
     this.renderer = new THREE.WebGLRenderer({ antialias: true });
@@ -43,6 +45,14 @@ export class Viewer {
       () => [...this.layers.values()].flatMap((l) => (l.visible && l.surface ? [l.surface] : [])),
     );
     container.appendChild(tooltip.element);
+
+    this.whole.type = 'button';
+    this.whole.className = 'view-whole';
+    this.whole.dataset.testid = 'view-whole';
+    this.whole.textContent = 'Whole body';
+    this.whole.hidden = true;
+    this.whole.addEventListener('click', () => this.frame());
+    container.appendChild(this.whole);
 
     new ResizeObserver(() => this.resize()).observe(container);
     this.resize();
@@ -111,6 +121,34 @@ export class Viewer {
     if (!box.isEmpty()) this.aimAt(box);
   }
 
+  /**
+   * Turns the camera to `point` (in the frame of the body under `key`, metres) up close, `radius`
+   * metres around it in view, looking from the side of the body it lies on: away from the body's
+   * long axis (a face from the front, an ear from its side). "Whole body" then frames it all again.
+   */
+  closeUp(key: string, point: [number, number, number], radius = 0.15): void {
+    const layer = this.layers.get(key);
+    if (!layer?.visible) return;
+    layer.group.updateMatrixWorld(true);
+    const at = layer.group.localToWorld(new THREE.Vector3(...point));
+    const box = new THREE.Box3().setFromObject(layer.group);
+    const size = box.getSize(new THREE.Vector3());
+    const long = size.x >= size.y && size.x >= size.z ? 0 : size.y >= size.z ? 1 : 2;
+    const out = at.clone().sub(box.getCenter(new THREE.Vector3())).setComponent(long, 0);
+    // A point on the long axis (the crotch, the crown) is seen from where the camera is.
+    if (out.length() < 0.02) out.copy(this.camera.position).sub(this.controls.target).setComponent(long, 0);
+    out.normalize();
+    const distance = radius / Math.sin(THREE.MathUtils.degToRad(this.camera.fov) / 2);
+    this.controls.target.copy(at);
+    this.camera.position.copy(at).addScaledVector(out, distance);
+    this.camera.near = distance / 100;
+    this.camera.far = distance * 100;
+    this.camera.updateProjectionMatrix();
+    this.controls.update();
+    this.whole.hidden = false;
+    this.requestRender();
+  }
+
   /** Camera position and orbit target (metres), for links. */
   cameraPose(): { position: [number, number, number]; target: [number, number, number] } {
     const p = this.camera.position;
@@ -131,6 +169,7 @@ export class Viewer {
   }
 
   private aimAt(box: THREE.Box3): void {
+    this.whole.hidden = true;
     this.framed = box.clone();
     const sphere = box.getBoundingSphere(new THREE.Sphere());
     const radius = Math.max(sphere.radius, 0.05);
