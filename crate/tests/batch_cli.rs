@@ -409,7 +409,7 @@ fn a_batch_where_nothing_fits_exits_with_2() {
 /// A scan whose landmark estimate failed is flagged in the batch, not passed as fitted: a z-up
 /// scan without landmarks, batched with up stated as −z (a body standing on its head). The
 /// manifest says `flagged` with `landmark_estimate` among its flags, and the subject's report
-/// carries the estimate's verdict `failed` and why, in words (issue 31).
+/// carries the estimate's verdict `failed` and why, in words, with the frame in doubt (issue 31).
 #[test]
 fn a_scan_whose_estimate_failed_is_flagged_in_the_batch_with_its_reasons() {
     let root = std::env::temp_dir().join(format!("bodyspace-batch-upside-{}", std::process::id()));
@@ -437,6 +437,8 @@ fn a_scan_whose_estimate_failed_is_flagged_in_the_batch_with_its_reasons() {
             .unwrap();
     let check = &report["landmarks"]["estimate_check"];
     assert_eq!(check["verdict"], "failed", "{check}");
+    // The way out it says: the frame.
+    assert_eq!(check["frame_in_doubt"], true, "{check}");
     assert!(
         check["reasons"][0]
             .as_str()

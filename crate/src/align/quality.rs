@@ -150,8 +150,8 @@ pub struct QualityReport {
     pub uneven_limbs: Vec<UnevenFit>,
     /// Given landmarks that looked wrong and were left out of the warp (names).
     pub suspicious_landmarks: Vec<String>,
-    /// Why the landmark estimate the warp used doubts itself, in words (empty: it did not, or
-    /// none ran).
+    /// Why the landmark estimate the warp used doubts itself, in words, and the landmarks to
+    /// check first ("check first: …", `SelfCheck::check_first`) (empty: it did not, or none ran).
     pub landmark_estimate: Vec<String>,
     /// The flags raised, in [`QualityFlag`] order (empty: the fit looks good).
     pub flags: Vec<QualityFlag>,

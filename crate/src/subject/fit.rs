@@ -132,6 +132,9 @@ pub fn fit_subject(
             if check.verdict != Verdict::Good {
                 let mut words = vec![format!("the landmark estimate {}", check.verdict.name())];
                 words.extend(check.reasons.iter().cloned());
+                if !check.check_first.is_empty() {
+                    words.push(format!("check first: {}", check.check_first.join(", ")));
+                }
                 quality.add_landmark_estimate(words);
             }
         }
