@@ -3,11 +3,12 @@ import './style.css';
 import { AlignStep } from './app/align-step';
 import { Batch } from './app/batch';
 import { startBatch } from './app/batch-view';
-import { LandmarkStep } from './app/landmark-step';
+import { LandmarkStep, type Shown } from './app/landmark-step';
 import { Session } from './app/session';
 import { TemplateView } from './app/template-view';
 import { WarpStep } from './app/warp-step';
 import { readFiles } from './app/read-files';
+import { SessionStore } from './app/session-store';
 import { ShapeSpace } from './app/shape-space';
 import { CoreClient } from './client/core-client';
 import { classifyFile } from './shared/file-kind';
@@ -70,6 +71,9 @@ templateView.onLoaded((data) => landmarkStep.setTemplate(data));
 templateView.onLoaded(() => {
   if (warpStep.ready) session.changed('template');
 });
+// The single scan's work kept in the browser, so a reload loses nothing.
+const work = new SessionStore<Shown>(session, () => landmarkStep.shownNow());
+session.onChange(() => work.saveSoon());
 let lastReadMs = 0;
 let loads = 0;
 
@@ -105,6 +109,8 @@ Promise.all([client.call({ type: 'version' }), client.call({ type: 'caesarNames'
     // A shared link brings its own camera: the template must not re-frame over it.
     return templateView.load('base', !location.hash);
   })
+  // A shared link shows its model; the work saved stays for the next plain visit.
+  .then(() => (location.hash ? undefined : restoreWork()))
   .catch((error: Error) => {
     topBar.setStatus('The core did not start.');
     banner.show([`The BodySpace core could not start: ${error.message}`]);
@@ -124,8 +130,10 @@ async function open(all: File[]): Promise<void> {
   }
   body.dataset.busy = 'true';
   const outcome = await readFiles(client, files, (text) => topBar.setStatus(text));
+  for (const s of outcome.scans) work.remember(s.scan, s.file);
+  for (const l of outcome.landmarks) work.remember(l.landmarks, l.file);
   const scan = outcome.scans.at(-1);
-  const landmarks = outcome.landmarks.at(-1);
+  const landmarks = outcome.landmarks.at(-1)?.landmarks;
   if (scan) {
     lastReadMs = scan.roundTripMs;
     body.dataset.lastScanRoundTripMs = scan.roundTripMs.toFixed(2);
@@ -146,12 +154,37 @@ async function open(all: File[]): Promise<void> {
 
   if (outcome.errors.length > 0) banner.show(outcome.errors);
   else if (scan || landmarks) banner.dismiss();
-  const read = [...outcome.scans.map((s) => s.scan.fileName), ...outcome.landmarks.map((l) => l.fileName)];
+  const read = [...outcome.scans.map((s) => s.scan.fileName), ...outcome.landmarks.map((l) => l.landmarks.fileName)];
   topBar.setStatus(
     read.length ? `Opened ${read.join(', ')}` : outcome.errors.length ? 'Not opened: see the message above. What was open stays as it was.' : '',
   );
   body.dataset.busy = 'false';
   body.dataset.loads = String(++loads);
+}
+
+/**
+ * Opens the work saved before the page was reloaded, if any and nothing was opened since: the
+ * scan and its landmark file read again, the set and what the editor showed of it as they were.
+ */
+async function restoreWork(): Promise<void> {
+  const saved = await work.load();
+  if (!saved || session.scan) return;
+  const outcome = await readFiles(client, saved.landmarks ? [saved.scan, saved.landmarks] : [saved.scan], (text) => topBar.setStatus(text));
+  const scan = outcome.scans[0];
+  if (!scan || session.scan) {
+    if (outcome.errors.length) banner.show([`The scan saved before the reload could not be read again: ${outcome.errors.join(' ')}`]);
+    return;
+  }
+  const landmarks = outcome.landmarks[0];
+  work.remember(scan.scan, scan.file);
+  if (landmarks) work.remember(landmarks.landmarks, landmarks.file);
+  session.restore(scan.scan, landmarks?.landmarks ?? null, saved);
+  shapeSpace.hide();
+  refresh(true);
+  // An estimate the reload cut short, with nothing placed: estimated again, as after a load.
+  landmarkStep.showAgain(session.edits?.placed().names.length ? saved.view : null);
+  topBar.setStatus(`Restored ${scan.scan.fileName}${landmarks ? ` and ${landmarks.file.name}` : ''} with the landmarks as they were before the page was reloaded.`);
+  body.dataset.restored = 'true';
 }
 
 /** Whether the core's rule for a batch's files (`pairSubjectFiles`) makes `landmarks` the landmark file of `scan`. */

@@ -415,3 +415,33 @@ test("a second scan opened alone gets its own estimate; the first one's landmark
   await expect(body(page)).toHaveAttribute('data-estimates', '2');
   await expect(aside).toContainText('scan_001.ply.gz is put aside with its 73 landmarks (73 from other.lnd)');
 });
+
+test('a reload brings back the scan, its landmark file and the set as it was edited, without estimating again', async ({ page }) => {
+  test.setTimeout(300_000);
+  const FIVE = ['Sellion', 'Rt. Acromion', 'Lt. Acromion', 'Rt. Lateral Malleolus', 'Lt. Lateral Malleolus'];
+  await openWithSample(page, [sampleFile('scan_001.ply.gz'), partialCsv((name) => FIVE.includes(name))]);
+  await expect(body(page)).toHaveAttribute('data-estimate-state', 'done', { timeout: 120_000 });
+  const marker = await pickMarker(page, 'Substernale');
+  // The work is saved once the changes pause: the first save after the move has it.
+  const saves = Number((await body(page).getAttribute('data-work-saves')) ?? '0');
+  await page.mouse.click(marker.x + 9, marker.y + 7);
+  await expect(row(page, 'Substernale')).toHaveAttribute('data-state', 'edited');
+  const moved = await positionMm(page, 'Substernale');
+  const gonion = await positionMm(page, 'Rt. Gonion');
+  const assumed = await page.getByTestId('estimate-assumed').textContent();
+  await page.waitForFunction((n) => Number(document.body.dataset.workSaves ?? '0') > n, saves);
+  await page.reload();
+  await expect(body(page)).toHaveAttribute('data-restored', 'true', { timeout: 60_000 });
+  await expect(page.getByTestId('scan-file')).toHaveText('scan_001.ply.gz');
+  await expect(page.getByTestId('landmarks-file')).toHaveText('partial.csv');
+  const list = page.getByTestId('landmark-list');
+  await expect(list.locator('li[data-state="given"]')).toHaveCount(5);
+  await expect(list.locator('li[data-state="edited"]')).toHaveCount(1);
+  await expect(list.locator('li[data-state="estimated"]')).toHaveCount(67);
+  expect(await positionMm(page, 'Substernale')).toEqual(moved);
+  expect(await positionMm(page, 'Rt. Gonion')).toEqual(gonion);
+  // The estimate's words as they were, and no estimate ran again.
+  await expect(page.getByTestId('estimate-assumed')).toHaveText(assumed!);
+  await expect(body(page)).not.toHaveAttribute('data-estimates', /./);
+  await expect(body(page)).toHaveAttribute('data-rbf-state', 'done', { timeout: 60_000 });
+});

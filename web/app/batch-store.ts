@@ -4,6 +4,7 @@
 import type { QualityReport, SubjectReport } from '../shared/align-types';
 import type { Orientation } from '../shared/orientation';
 import type { TemplateResolution } from '../shared/template-data';
+import { IdbStore } from './idb-store';
 
 /** Where a subject stands. `interrupted`: it was queued or aligning when the page went away. */
 export type BatchStatus = 'queued' | 'aligning' | 'ok' | 'flagged' | 'failed' | 'cancelled' | 'interrupted';
@@ -43,56 +44,25 @@ export interface BatchRecord {
   fit: BatchFit | null;
 }
 
-const DB_NAME = 'bodyspace-batch';
-const STORE = 'subjects';
-
-function request<T>(r: IDBRequest<T>): Promise<T> {
-  return new Promise((resolve, reject) => {
-    r.onsuccess = () => resolve(r.result);
-    r.onerror = () => reject(r.error ?? new Error('IndexedDB request failed'));
-  });
-}
-
 /** The batch's records in IndexedDB; every method resolves once the transaction is done. */
 export class BatchStore {
-  private db: Promise<IDBDatabase> | null = null;
-
-  private open(): Promise<IDBDatabase> {
-    this.db ??= new Promise((resolve, reject) => {
-      const r = indexedDB.open(DB_NAME, 1);
-      r.onupgradeneeded = () => r.result.createObjectStore(STORE, { keyPath: 'subject' });
-      r.onsuccess = () => resolve(r.result);
-      r.onerror = () => reject(r.error ?? new Error('the browser refused its database (private mode?)'));
-    });
-    return this.db;
-  }
-
-  private async run<T>(mode: IDBTransactionMode, f: (store: IDBObjectStore) => IDBRequest<T>): Promise<T> {
-    const db = await this.open();
-    const tx = db.transaction(STORE, mode);
-    const result = request(f(tx.objectStore(STORE)));
-    await new Promise<void>((resolve, reject) => {
-      tx.oncomplete = () => resolve();
-      tx.onerror = tx.onabort = () => reject(tx.error ?? new Error('IndexedDB transaction failed'));
-    });
-    return result;
-  }
+  private readonly db = new IdbStore('bodyspace-batch', 'subjects', 'subject');
 
   /** Every stored subject, in batch order. */
   async all(): Promise<BatchRecord[]> {
-    const records = await this.run('readonly', (s) => s.getAll() as IDBRequest<BatchRecord[]>);
+    const records = await this.db.run('readonly', (s) => s.getAll() as IDBRequest<BatchRecord[]>);
     return records.sort((a, b) => a.order - b.order);
   }
 
   put(record: BatchRecord): Promise<IDBValidKey> {
-    return this.run('readwrite', (s) => s.put(record));
+    return this.db.run('readwrite', (s) => s.put(record));
   }
 
   delete(subject: string): Promise<undefined> {
-    return this.run('readwrite', (s) => s.delete(subject));
+    return this.db.run('readwrite', (s) => s.delete(subject));
   }
 
   clear(): Promise<undefined> {
-    return this.run('readwrite', (s) => s.clear());
+    return this.db.run('readwrite', (s) => s.clear());
   }
 }

@@ -23,6 +23,14 @@ export class LandmarkEdits {
     this.entries = names.map((name) => ({ name, position: null, state: 'absent', confidence: null }));
   }
 
+  /** A set as it was (`entries`, each by name; names not among them absent), with no history: restored after a reload. */
+  static fromEntries(names: readonly string[], entries: readonly LandmarkEntry[]): LandmarkEdits {
+    const edits = new LandmarkEdits(names);
+    const at = new Map(entries.map((e) => [e.name, e]));
+    edits.entries = edits.entries.map((e) => at.get(e.name) ?? e);
+    return edits;
+  }
+
   /** The set of a landmark file: `positions` (`#L·3` metres) of `fileNames` given, the rest absent. */
   static fromFile(names: readonly string[], fileNames: readonly string[], positions: ArrayLike<number>): LandmarkEdits {
     const edits = new LandmarkEdits(names);

@@ -25,8 +25,8 @@ import { LandmarkEdits } from './landmark-edits';
 import { estimateInput, scanInput, scanTransfer } from './scan-input';
 import type { Session } from './session';
 
-/** What the editor showed of one set. */
-interface Shown {
+/** What the editor showed of one set (kept when another replaces it, and across a reload). */
+export interface Shown {
   estimate: EstimateView;
   suspicious: SuspiciousLandmark[] | null;
   sharpness: ReadonlyMap<string, Sharpness>;
@@ -125,10 +125,7 @@ export class LandmarkStep {
     if (this.checkTimer !== null) clearTimeout(this.checkTimer);
     this.checkTimer = null;
     if (this.shownFor) {
-      // An estimate cut short by the change leaves the last finished one's landmarks and verdict.
-      const e = this.estimate;
-      const estimate: EstimateView = e.state === 'running' ? { state: 'cancelled', kept: this.session.estimateReport?.self_check ?? null } : e;
-      this.shown.set(this.shownFor, { estimate, suspicious: this.suspicious, sharpness: this.sharpness, prediction: this.prediction });
+      this.shown.set(this.shownFor, this.shownNow());
       this.shownFor = null;
     }
     if (this.estimator.busy) this.estimator.cancel();
@@ -157,7 +154,18 @@ export class LandmarkStep {
   /** After "Back to": the set brought back as it was shown (its estimate's verdict, the suspicious ones), else as after a load. */
   afterBringBack(): void {
     const edits = this.session.edits;
-    const before = edits && this.shown.get(edits);
+    this.showAgain(edits ? (this.shown.get(edits) ?? null) : null);
+  }
+
+  /** What the editor shows of the current set now (an estimate cut short leaves the last finished one's landmarks and verdict). */
+  shownNow(): Shown {
+    const e = this.estimate;
+    const estimate: EstimateView = e.state === 'running' ? { state: 'cancelled', kept: this.session.estimateReport?.self_check ?? null } : e;
+    return { estimate, suspicious: this.suspicious, sharpness: this.sharpness, prediction: this.prediction };
+  }
+
+  /** Shows the current set as `before` showed it (a set brought back or restored after a reload); without it, as after a load. */
+  showAgain(before: Shown | null): void {
     if (!before) {
       this.afterLoad();
       return;

@@ -4,15 +4,22 @@ import { CoreClient } from '../client/core-client';
 import { classifyFile, unsupportedMessage } from '../shared/file-kind';
 import type { ParsedLandmarks, ParsedScan } from '../shared/results';
 
-/** A scan as read, with the round trip timed on this thread around the worker call. */
+/** A scan as read, with the round trip timed on this thread around the worker call, and its file. */
 export interface ReadScan {
   scan: ParsedScan;
   roundTripMs: number;
+  file: File;
+}
+
+/** A landmark file as read, and the file. */
+export interface ReadLandmarks {
+  landmarks: ParsedLandmarks;
+  file: File;
 }
 
 export interface ReadOutcome {
   scans: ReadScan[];
-  landmarks: ParsedLandmarks[];
+  landmarks: ReadLandmarks[];
   /** One message per failed file, each naming the file. */
   errors: string[];
 }
@@ -36,7 +43,7 @@ export async function readFiles(
         { type: 'parseScan', bytes, fileName: file.name },
         { transfer: [bytes], onProgress: (_fraction, label) => onStatus(`${label}…`) },
       );
-      outcome.scans.push({ scan, roundTripMs: performance.now() - t0 });
+      outcome.scans.push({ scan, roundTripMs: performance.now() - t0, file });
     } catch (error) {
       outcome.errors.push(messageFor(file.name, error, SCAN_ADVICE));
     }
@@ -45,9 +52,8 @@ export async function readFiles(
     onStatus(`Reading ${file.name}…`);
     try {
       const bytes = await file.arrayBuffer();
-      outcome.landmarks.push(
-        await client.call({ type: 'parseLandmarks', bytes, fileName: file.name }, { transfer: [bytes] }),
-      );
+      const parsed = await client.call({ type: 'parseLandmarks', bytes, fileName: file.name }, { transfer: [bytes] });
+      outcome.landmarks.push({ landmarks: parsed, file });
     } catch (error) {
       outcome.errors.push(messageFor(file.name, error, LANDMARK_ADVICE));
     }

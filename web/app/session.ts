@@ -1,7 +1,7 @@
 // What is loaded: the scan, its chosen units, the landmark file and the landmark set being edited
 // (which the warp and the alignment use). Derives what the view and the panels show; a failed load
 // never touches it.
-import type { EstimateReport } from '../shared/landmark-entry';
+import type { EstimateReport, LandmarkEntry } from '../shared/landmark-entry';
 import type { Orientation } from '../shared/orientation';
 import { METRES_PER_UNIT, type MeshSummary, type ParsedLandmarks, type ParsedScan, type Units } from '../shared/results';
 import { LandmarkEdits } from './landmark-edits';
@@ -85,6 +85,25 @@ export class Session {
    */
   fileGoesWith(namesPair: boolean): boolean {
     return this.landmarks !== null && (this.landmarksFor === null || namesPair);
+  }
+
+  /**
+   * The work saved before a reload, as it was: the scan and its landmark file as read again, the
+   * units and frame chosen, and the landmark set `entries` (one change, as files opened).
+   */
+  restore(
+    scan: ParsedScan,
+    landmarks: ParsedLandmarks | null,
+    saved: { scanUnits: Units; orientation: Orientation | null; landmarksFor: string | null; entries: readonly LandmarkEntry[]; estimateReport: EstimateReport | null },
+  ): void {
+    this.scan = scan;
+    this.scanUnits = saved.scanUnits;
+    this.landmarks = landmarks;
+    this.landmarksFor = landmarks ? saved.landmarksFor : null;
+    this.edits = LandmarkEdits.fromEntries(this.caesarNames(), saved.entries);
+    this.estimateReport = saved.estimateReport;
+    this.orientation = saved.orientation;
+    this.changed('files');
   }
 
   /** Swaps the scan shown, with its landmarks, for the one put aside (one change). */
