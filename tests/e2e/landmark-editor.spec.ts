@@ -2,7 +2,8 @@
 // move it there, drag a marker, mark one absent, undo / redo, align with the edited set, export
 // the set as .lnd and read it back; before any file nothing is marked absent; after Align a picked
 // landmark brings the hidden scan back; a new scan forgets the pick and the list's scroll; a second
-// scan opened alone gets its own estimate, and what it replaced comes back with "Back to".
+// scan opened alone gets its own estimate, and what it replaced comes back with "Back to"; a reload
+// brings the scan and its set back as they were.
 import { readFileSync } from 'node:fs';
 import { expect, test, type Page } from '@playwright/test';
 import { dropFiles, waitForLoads } from './fixtures';
