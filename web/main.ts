@@ -74,6 +74,7 @@ templateView.onLoaded(() => {
 // The single scan's work kept in the browser, so a reload loses nothing.
 const work = new SessionStore<Shown>(session, () => landmarkStep.shownNow());
 session.onChange(() => work.saveSoon());
+landmarkStep.onOriented = () => work.saveSoon();
 let lastReadMs = 0;
 let loads = 0;
 

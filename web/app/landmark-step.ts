@@ -55,6 +55,8 @@ export class LandmarkStep {
   private shownFor: LandmarkEdits | null = null;
   /** Called before a landmark is shown up close on the scan (the page hides what would cover the scan). */
   onCloseUp: (() => void) | null = null;
+  /** Called when Up or Facing is chosen (nothing runs, but the choice is kept). */
+  onOriented: (() => void) | null = null;
   /** Called when the person asks for the scan put aside back. */
   onBringBack: (() => void) | null = null;
   /** What the list shows before anything is loaded: every landmark absent. */
@@ -233,6 +235,7 @@ export class LandmarkStep {
   /** Up and Facing chosen: remembered for the next estimate and the fit (nothing runs by itself). */
   private orient(orientation: Orientation | null): void {
     this.session.orientation = orientation;
+    this.onOriented?.();
     this.render();
   }
 
