@@ -110,8 +110,10 @@ Promise.all([client.call({ type: 'version' }), client.call({ type: 'caesarNames'
     // A shared link brings its own camera: the template must not re-frame over it.
     return templateView.load('base', !location.hash);
   })
-  // A shared link shows its model; the work saved stays for the next plain visit.
-  .then(() => (location.hash ? undefined : restoreWork()))
+  .then(() => {
+    // A shared link shows its model; the work saved stays for the next plain visit.
+    if (!location.hash) void restoreWork().catch((error: Error) => banner.show([`The work saved before the reload could not be opened again: ${error.message}`]));
+  })
   .catch((error: Error) => {
     topBar.setStatus('The core did not start.');
     banner.show([`The BodySpace core could not start: ${error.message}`]);
@@ -142,9 +144,9 @@ async function open(all: File[]): Promise<void> {
     body.dataset.lastScanCopyMs = scan.scan.timings.copyMs.toFixed(2);
   }
   if (scan || landmarks) {
-    const open = session.landmarks;
+    const shownFile = session.landmarks;
     // A scan opened alone takes the landmark file shown when the core pairs their names (`a.ply`, `a.csv`).
-    const namesPair = Boolean(scan && !landmarks && open) && (await namesPairUp(scan!.scan.fileName, open!.fileName));
+    const namesPair = Boolean(scan && !landmarks && shownFile) && (await namesPairUp(scan!.scan.fileName, shownFile!.fileName));
     // Before the refresh, so the camera frames the new data, not the template beside it.
     session.open(scan?.scan ?? null, landmarks ?? null, namesPair);
     // The scan and the shape body would stand in the same place: the scan takes the view.

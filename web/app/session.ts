@@ -67,9 +67,8 @@ export class Session {
 
   /**
    * Opens what was read (a scan, a landmark file, or both) as one change; what it replaces is put
-   * aside. `namesPair`: the core
-   * pairs the scan's file name with the open landmark file's (`a.ply` and `a.csv`), so the file
-   * goes with this scan opened alone.
+   * aside. `namesPair`: the core pairs the scan's file name with the open landmark file's (`a.ply`
+   * and `a.csv`), so the file goes with this scan opened alone.
    */
   open(scan: ParsedScan | null, landmarks: ParsedLandmarks | null, namesPair = false): void {
     if (!scan && !landmarks) return;
