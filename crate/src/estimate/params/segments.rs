@@ -39,12 +39,14 @@ pub struct SegmentParams {
     pub hand_reach: f64,
     /// The given landmarks of a part count, together, as this share of the part's matched
     /// vertices in its rigid fit (0 leaves them out): a few landmarks a person placed re-pose
-    /// the part they lie on. Default 0.5.
+    /// the part they lie on. Default 0.5 (the nose tip counts as 0.2); not tuned
+    /// (docs/landmarks-estimate.md, "Given landmarks re-pose their part").
     pub given_share: f64,
     /// A part is pulled by its given landmarks only when it has at least this many. Default 3,
     /// as many as fix a rigid pose: Sellion alone on the head, in place of its nose tip, or an
     /// Acromion alone pulling the upper arm left a partial file worse than none (held-out 5151
     /// subject 0: 13.7 → 21.1 mm of correspondence error with Sellion, the Acromions and Crotch).
+    /// The torso is never pulled: its pose is the frame, which four given landmarks already set.
     pub given_min: usize,
     /// The arms' swing about the shoulder.
     pub swing: ArmSwingParams,
