@@ -486,3 +486,68 @@ fn a_face_turned_far_down_is_doubtful() {
     );
     assert!(eyes_unpulled > 40.0, "{eyes_unpulled:.1} mm");
 }
+
+/// Landmarks placed on one limb say nothing of the body's frame: on the tuning zoo's `crown-cut`
+/// scan of seed 4242 (subject 1, hands on hips) the estimate is doubtful and names the left
+/// forearm's landmarks; four of them given (the styloids, Dactylion, Olecranon) once set a frame
+/// of their own, back to front, and the estimate failed 515 mm off. Now a frame needs given
+/// landmarks on `given_frame_parts` parts, and the four re-pose the forearm instead (16.4 mm).
+#[test]
+fn landmarks_on_one_forearm_do_not_set_the_frame() {
+    let (template, data) = load();
+    let frame = &zoo_frames()[0];
+    let zoo = Zoo {
+        data: &data,
+        template: &template,
+        scanner: PopulationProfile::HeldOut.scanner(),
+        params: ZooParams::default(),
+    };
+    let id = SubjectId {
+        profile: PopulationProfile::HeldOut,
+        seed: 4242,
+        index: 1,
+    };
+    let c = placed(&template, zoo.scanned(id, ScannerClass::CrownCut), frame);
+    let forearm = LandmarkSet {
+        landmarks: c
+            .landmarks
+            .landmarks
+            .iter()
+            .filter(|l| {
+                [
+                    "Lt. Ulnar Styloid",
+                    "Lt. Radial Styloid",
+                    "Lt. Dactylion",
+                    "Lt. Olecranon",
+                ]
+                .contains(&l.name.as_str())
+            })
+            .cloned()
+            .collect(),
+        ..LandmarkSet::default()
+    };
+    assert_eq!(forearm.landmarks.len(), 4);
+    let estimated = |params: &EstimateParams| {
+        let e = estimate_given(&template, &c, &forearm, None, params);
+        let errors = landmark_errors(&c, &e.positions, e.scale_to_metres * 1000.0);
+        let mean = errors.iter().sum::<f64>() / errors.len() as f64;
+        (
+            mean,
+            e.report.frame.facing_axis,
+            e.report.self_check.verdict,
+        )
+    };
+    let (mean, facing, verdict) = estimated(&EstimateParams::default());
+    let one_part = EstimateParams {
+        given_frame_parts: 1,
+        ..EstimateParams::default()
+    };
+    let (mean_one, facing_one, verdict_one) = estimated(&one_part);
+    eprintln!("{mean:.1} mm, facing {facing}, {verdict:?}; from one part {mean_one:.1} mm, {facing_one}, {verdict_one:?}");
+    assert_eq!(facing, "-y");
+    assert!(
+        mean < 25.0 && verdict != Verdict::Failed,
+        "{mean:.1} mm, {verdict:?}"
+    );
+    assert!(mean_one > 100.0, "from one part: {mean_one:.1} mm");
+}

@@ -175,8 +175,18 @@ pub fn estimate_landmarks(
                 (source, c.start)
             })
             .collect();
+    // The given landmarks' own frame, when there are four or more spread over at least
+    // `given_frame_parts` of the template's parts: four on one bent forearm (the landmarks the
+    // self-check names for an arm posed wrongly) set a frame back to front, and the estimate failed
+    // (held-out 4242 `crown-cut` subject 1, hands on hips: 522 mm).
+    let parts = parts(&template);
+    let spread = given_m
+        .iter()
+        .map(|(i, _)| dominant_part(&parts, landmark_vertices[*i]))
+        .collect::<std::collections::BTreeSet<_>>()
+        .len();
     let mut given_frame = None;
-    if given_m.len() >= 4 {
+    if given_m.len() >= 4 && spread >= params.given_frame_parts {
         let from: Vec<_> = given_m
             .iter()
             .map(|(i, _)| rest[landmark_vertices[*i] as usize])
@@ -336,7 +346,6 @@ pub fn estimate_landmarks(
     // winning the similarity fit by a little, fitted the rest of the body worse, and a partial
     // file of correct landmarks made the fit worse than none (held-out seed 5151 subject 0:
     // 4–10 given, +0.8 to +3.3 mm of correspondence error).
-    let parts = parts(&template);
     let hands = hands(&template);
     let mut order: Vec<usize> = (0..fitted.len()).collect();
     if let Some(k) = fitted.iter().position(|(source, _)| *source != FROM_GIVEN) {

@@ -72,6 +72,11 @@ pub struct EstimateParams {
     /// nearer was a worse fit of the rest (a partial file of correct landmarks then made the fit
     /// worse than none). Default 10 mm.
     pub segment_start_margin: f64,
+    /// Four or more given landmarks set a frame of their own only when they lie on at least this
+    /// many of the template's parts (head, torso, the limbs' parts). Default 3: landmarks on one
+    /// limb posed otherwise than the template's, or on one small part, say nothing of the body's
+    /// frame (four on a bent forearm set it back to front).
+    pub given_frame_parts: usize,
     /// Iterations of the segment-wise (articulated) fit after the best candidate. Default 20.
     pub segment_iterations: usize,
     /// The segment-wise fit's own parameters (stretch, bends, the arms' swing, the bent elbow,
@@ -137,6 +142,7 @@ impl Default for EstimateParams {
             legs_forward_decisive: 0.006,
             segment_starts: 2,
             segment_start_margin: 0.01,
+            given_frame_parts: 3,
             segment_iterations: 20,
             segments: SegmentParams::default(),
             profile: ProfileParams::default(),
