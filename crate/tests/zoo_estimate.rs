@@ -20,8 +20,8 @@ use bodyspace::synth::{
 };
 use bodyspace::template::Template;
 use estimate_support::{
-    estimate_bare, estimate_given, frame_cosines, landmark_errors, load, placed, zoo_frames, Case,
-    Frame, Zoo,
+    estimate_bare, estimate_given, frame_cosines, landmark_errors, load, only, placed, zoo_frames,
+    Case, Frame, Zoo,
 };
 use nalgebra::Vector3;
 
@@ -291,16 +291,7 @@ fn a_scan_without_its_feet_faces_the_way_its_legs_say() {
         ..EstimateParams::default()
     };
     let (facing_unsaid, mean_unsaid, check_unsaid) = estimated(&unsaid, &none, None);
-    let clicked = LandmarkSet {
-        landmarks: c
-            .landmarks
-            .landmarks
-            .iter()
-            .filter(|l| CLICKED.contains(&l.name.as_str()))
-            .cloned()
-            .collect(),
-        ..LandmarkSet::default()
-    };
+    let clicked = only(&c.landmarks, &CLICKED);
     assert_eq!(clicked.landmarks.len(), CLICKED.len());
     let (facing_clicked, mean_clicked, _) = estimated(&unsaid, &clicked, None);
     // The person chose only the up axis (the app's way out): the legs still say the facing.
@@ -406,19 +397,7 @@ fn legs_fitted_too_short_leave_the_scan_uncovered_and_say_so() {
 #[test]
 fn a_face_turned_far_down_is_doubtful() {
     let (template, data) = load();
-    let frame = &zoo_frames()[0];
-    let zoo = Zoo {
-        data: &data,
-        template: &template,
-        scanner: PopulationProfile::HeldOut.scanner(),
-        params: ZooParams::default(),
-    };
-    let id = SubjectId {
-        profile: PopulationProfile::HeldOut,
-        seed: 4242,
-        index: 1,
-    };
-    let c = placed(&template, zoo.scanned(id, ScannerClass::Raw), frame);
+    let c = tuning_4242_subject_1(&template, &data, ScannerClass::Raw);
     let estimated = |params: &EstimateParams| {
         let e = estimate_bare(&template, &c, params);
         let errors = landmark_errors(&c, &e.positions, e.scale_to_metres * 1000.0);
@@ -458,16 +437,7 @@ fn a_face_turned_far_down_is_doubtful() {
     // The way out it names: Sellion and the Tragions placed by hand (their true positions) pull
     // the head's rigid fit, and the face comes right; without that pull (`given_min` out of
     // reach) the three were only anchors of the fine fit, and the face stayed on the throat.
-    let face = LandmarkSet {
-        landmarks: c
-            .landmarks
-            .landmarks
-            .iter()
-            .filter(|l| ["Sellion", "Rt. Tragion", "Lt. Tragion"].contains(&l.name.as_str()))
-            .cloned()
-            .collect(),
-        ..LandmarkSet::default()
-    };
+    let face = only(&c.landmarks, &["Sellion", "Rt. Tragion", "Lt. Tragion"]);
     assert_eq!(face.landmarks.len(), 3);
     let placed_by_hand = |params: &EstimateParams| {
         let e = estimate_given(&template, &c, &face, None, params);
@@ -495,37 +465,16 @@ fn a_face_turned_far_down_is_doubtful() {
 #[test]
 fn landmarks_on_one_forearm_do_not_set_the_frame() {
     let (template, data) = load();
-    let frame = &zoo_frames()[0];
-    let zoo = Zoo {
-        data: &data,
-        template: &template,
-        scanner: PopulationProfile::HeldOut.scanner(),
-        params: ZooParams::default(),
-    };
-    let id = SubjectId {
-        profile: PopulationProfile::HeldOut,
-        seed: 4242,
-        index: 1,
-    };
-    let c = placed(&template, zoo.scanned(id, ScannerClass::CrownCut), frame);
-    let forearm = LandmarkSet {
-        landmarks: c
-            .landmarks
-            .landmarks
-            .iter()
-            .filter(|l| {
-                [
-                    "Lt. Ulnar Styloid",
-                    "Lt. Radial Styloid",
-                    "Lt. Dactylion",
-                    "Lt. Olecranon",
-                ]
-                .contains(&l.name.as_str())
-            })
-            .cloned()
-            .collect(),
-        ..LandmarkSet::default()
-    };
+    let c = tuning_4242_subject_1(&template, &data, ScannerClass::CrownCut);
+    let forearm = only(
+        &c.landmarks,
+        &[
+            "Lt. Ulnar Styloid",
+            "Lt. Radial Styloid",
+            "Lt. Dactylion",
+            "Lt. Olecranon",
+        ],
+    );
     assert_eq!(forearm.landmarks.len(), 4);
     let estimated = |params: &EstimateParams| {
         let e = estimate_given(&template, &c, &forearm, None, params);
@@ -550,4 +499,21 @@ fn landmarks_on_one_forearm_do_not_set_the_frame() {
         "{mean:.1} mm, {verdict:?}"
     );
     assert!(mean_one > 100.0, "from one part: {mean_one:.1} mm");
+}
+
+/// Subject 1 of the tuning zoo's seed 4242 (the `held-out` profile) scanned by `class`, in the
+/// zoo's first frame (z up, millimetres).
+fn tuning_4242_subject_1(template: &Template, data: &MakeHumanData, class: ScannerClass) -> Case {
+    let zoo = Zoo {
+        data,
+        template,
+        scanner: PopulationProfile::HeldOut.scanner(),
+        params: ZooParams::default(),
+    };
+    let id = SubjectId {
+        profile: PopulationProfile::HeldOut,
+        seed: 4242,
+        index: 1,
+    };
+    placed(template, zoo.scanned(id, class), &zoo_frames()[0])
 }

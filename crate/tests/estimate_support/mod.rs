@@ -26,7 +26,7 @@ pub use synth_support::base_template_and_data as load;
 
 /// Ten landmarks a person would click first (`synth_support/partial.rs`).
 #[allow(unused_imports)]
-pub use synth_support::partial::PARTIAL;
+pub use synth_support::partial::{only, PARTIAL};
 
 /// A pose people are scanned in, as shoulder abduction relative to the template's A-pose
 /// (degrees) and trunk / head angles.
