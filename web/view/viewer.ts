@@ -139,14 +139,8 @@ export class Viewer {
     if (out.length() < 0.02) out.copy(this.camera.position).sub(this.controls.target).setComponent(long, 0);
     out.normalize();
     const distance = radius / Math.sin(THREE.MathUtils.degToRad(this.camera.fov) / 2);
-    this.controls.target.copy(at);
-    this.camera.position.copy(at).addScaledVector(out, distance);
-    this.camera.near = distance / 100;
-    this.camera.far = distance * 100;
-    this.camera.updateProjectionMatrix();
-    this.controls.update();
+    this.place(at, at.clone().addScaledVector(out, distance));
     this.whole.hidden = false;
-    this.requestRender();
   }
 
   /** Camera position and orbit target (metres), for links. */
@@ -158,9 +152,14 @@ export class Viewer {
 
   /** Puts the camera where `cameraPose` said it was. */
   setCameraPose(pose: { position: [number, number, number]; target: [number, number, number] }): void {
-    this.controls.target.set(...pose.target);
-    this.camera.position.set(...pose.position);
-    const distance = this.camera.position.distanceTo(this.controls.target) || 1;
+    this.place(new THREE.Vector3(...pose.target), new THREE.Vector3(...pose.position));
+  }
+
+  /** Puts the camera at `position` looking at `target`, its clipping planes set by their distance. */
+  private place(target: THREE.Vector3, position: THREE.Vector3): void {
+    this.controls.target.copy(target);
+    this.camera.position.copy(position);
+    const distance = position.distanceTo(target) || 1;
     this.camera.near = distance / 100;
     this.camera.far = distance * 100;
     this.camera.updateProjectionMatrix();
@@ -179,13 +178,7 @@ export class Viewer {
     // The bounding sphere is loose around a standing body; 0.92 fills the view without cropping.
     const distance = Math.max(fitHeight, fitWidth) * 0.92;
     const direction = new THREE.Vector3(0.45, 0.2, 1).normalize();
-    this.controls.target.copy(sphere.center);
-    this.camera.position.copy(sphere.center).addScaledVector(direction, distance);
-    this.camera.near = distance / 100;
-    this.camera.far = distance * 100;
-    this.camera.updateProjectionMatrix();
-    this.controls.update();
-    this.requestRender();
+    this.place(sphere.center, sphere.center.clone().addScaledVector(direction, distance));
   }
 
   requestRender(): void {
