@@ -11,16 +11,18 @@
 //! overlap bands. The neck base girth is a tape over its landmarks and the side neck points
 //! found on the neck's section through the Cervicale ([`super::neck_base`]).
 //!
-//! Four levels and the acromia are found on the surface around their landmarks' guesses rather
-//! than taken from the landmarks' vertices ([`super::surface`], [`super::parting`],
+//! Four levels, the acromia and the cervicale are found on the surface around their landmarks'
+//! guesses rather than taken from the landmarks' vertices ([`super::surface`], [`super::parting`],
 //! [`super::acromion`], parameters in [`MeasureParams`]): the hip level (greatest buttock
 //! prominence), the neck girth's level (the neck's least girth), the chest girth's (under the
 //! armpits' apex, around the torso's loop alone of the torso's and arms' section), the crotch
-//! (where the legs part: crotch height, and the thigh girth below it) and shoulder breadth's
-//! acromia (the shoulders' turn); a landmark a few centimetres off then names the same level or
-//! point.
+//! (where the legs part: crotch height, and the thigh girth below it), shoulder breadth's
+//! acromia (the shoulders' turn) and the cervicale (where the back turns into the neck:
+//! cervicale height, [`super::cervicale`]); a landmark a few centimetres off then names the
+//! same level or point.
 
 use super::acromion::{Acromion, AcromionSearch};
+use super::cervicale::{BackProfile, NeckTurn};
 use super::definitions::{Measure, SHOULDERS};
 use super::error::MeasureError;
 use super::levels::Body;
@@ -108,6 +110,8 @@ impl BodyMeasurer {
             ("acromion_cap", params.acromion_cap),
             ("acromion_turn_reach", params.acromion_turn_reach),
             ("acromion_turn_band", params.acromion_turn_band),
+            ("cervicale_step", params.cervicale_step),
+            ("cervicale_fraction", params.cervicale_fraction),
         ];
         let non_negative = [
             ("neck_band", params.neck_band),
@@ -126,6 +130,8 @@ impl BodyMeasurer {
             ("crotch_band_below", params.crotch_band_below),
             ("acromion_edge", params.acromion_edge),
             ("acromion_turn_rise", params.acromion_turn_rise),
+            ("cervicale_band_below", params.cervicale_band_below),
+            ("cervicale_band_above", params.cervicale_band_above),
             (
                 "acromion_max_abduction_deg",
                 params.acromion_max_abduction_deg,
@@ -303,6 +309,16 @@ impl BodyMeasurer {
         Ok(self.acromia.acromia(positions, &self.params))
     }
 
+    /// The back profile around the Cervicale vertex and its turn into the neck
+    /// ([`super::cervicale`]) of the body at flat `positions`; `None` when there is none.
+    pub fn back_of_neck(
+        &self,
+        positions: &[f32],
+    ) -> Result<Option<(BackProfile, NeckTurn)>, MeasureError> {
+        let positions = self.check(positions)?;
+        Ok(Body::new(self, positions).back_of_neck().cloned())
+    }
+
     /// The tapes of every girth as closed 3-D polylines (convex hull corners in their plane).
     pub fn tape_paths(&self, positions: &[f32]) -> Result<Vec<TapePath>, MeasureError> {
         let positions = self.check(positions)?;
@@ -330,6 +346,8 @@ impl BodyMeasurer {
     /// ISO 8559-1's neck base girth ([`neck_base_tape`]), cut from the head's and torso's
     /// triangles: those along the neck's axis that reach the Cervicale's plane when the neck
     /// girth's search spans it ([`Body::neck`]; the plane is square to the same axis), else all.
+    /// Over the Cervicale vertex, not the cervicale found on the back profile (docs/measurements.md,
+    /// "The cervicale on the back of the neck": tried and not kept for this tape).
     fn neck_base(&self, b: &Body) -> Option<NeckBaseTape> {
         let m = Measure::NeckBaseGirth;
         let region = &self.regions[Region::HeadAndTorso as usize];
@@ -491,7 +509,8 @@ impl BodyMeasurer {
         let a = |k: usize| b.anchor(m, k);
         match m {
             Measure::Stature => b.top - b.floor,
-            Measure::CervicaleHeight | Measure::KneeHeight => b.mean_height(m) - b.floor,
+            Measure::CervicaleHeight => b.cervicale_level() - b.floor,
+            Measure::KneeHeight => b.mean_height(m) - b.floor,
             Measure::AcromionHeight => {
                 let [right, left] = b.acromia().map(|a| a.point);
                 let up = self.params.up_axis;

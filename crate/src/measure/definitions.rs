@@ -166,7 +166,8 @@ impl Measure {
                 "Cervicale height",
                 Length,
                 "ISO 8559-1 cervicale height",
-                &["Cervicale"], Level(1)),
+                // Found on the back profile around the Cervicale (`cervicale.rs`).
+                &["Cervicale"], Surface),
             Measure::AcromionHeight => d(
                 "acromion_height",
                 "Acromion height",

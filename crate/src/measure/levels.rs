@@ -7,6 +7,7 @@
 
 use super::acromion::Acromion;
 use super::body::{BodyMeasurer, Region};
+use super::cervicale::{back_profile, BackProfile, NeckTurn};
 use super::definitions::Measure;
 use super::parting::{legs_apart, parting_level, PartingSearch};
 use super::spans::TriangleSpans;
@@ -32,6 +33,8 @@ pub(super) struct Body<'a> {
     spans: std::cell::OnceCell<TriangleSpans>,
     /// The head's and torso's triangles along the neck's axis, found once.
     neck: std::cell::OnceCell<Option<GirthsAlong<'a>>>,
+    /// The back profile around the Cervicale and its turn into the neck, found once.
+    back_of_neck: std::cell::OnceCell<Option<(BackProfile, NeckTurn)>>,
 }
 
 impl<'a> Body<'a> {
@@ -53,6 +56,7 @@ impl<'a> Body<'a> {
             volume_and_area: std::cell::OnceCell::new(),
             spans: std::cell::OnceCell::new(),
             neck: std::cell::OnceCell::new(),
+            back_of_neck: std::cell::OnceCell::new(),
         }
     }
 
@@ -222,6 +226,54 @@ impl<'a> Body<'a> {
                 neck_girths(self.positions, &m.triangles, region, base, axis, &m.params)
             })
             .as_ref()
+    }
+
+    /// The back profile around the Cervicale vertex ([`back_profile`] of the head's and torso's
+    /// triangles through the neck's base, backward Suprasternale → Cervicale) and its turn from
+    /// the upper back into the neck ([`BackProfile::turn`]); `None` when either is missing.
+    pub(super) fn back_of_neck(&self) -> Option<&(BackProfile, NeckTurn)> {
+        self.back_of_neck
+            .get_or_init(|| {
+                let p = &self.measurer.params;
+                let up = p.up_axis;
+                // NECK: Cervicale, Suprasternale, Rt. Tragion, Lt. Tragion.
+                let m = Measure::NeckGirth;
+                let (cervicale, front) = (self.anchor(m, 0), self.anchor(m, 1));
+                let guess = cervicale[up];
+                let (low, high) = (
+                    guess - p.cervicale_band_below,
+                    guess + p.cervicale_band_above,
+                );
+                let region = self.in_band(
+                    Region::HeadAndTorso,
+                    guess,
+                    p.cervicale_band_above,
+                    p.cervicale_band_below,
+                );
+                let profile = back_profile(
+                    self.positions,
+                    &self.measurer.triangles,
+                    &region,
+                    midpoint(cervicale, front),
+                    sub(cervicale, front),
+                    up,
+                    (low, high),
+                    p.cervicale_step,
+                )?;
+                let turn = profile.turn(guess)?;
+                Some((profile, turn))
+            })
+            .as_ref()
+    }
+
+    /// ISO 8559-1's cervicale's height: the level of the back profile where its turn into the
+    /// neck has come the fraction `cervicale_fraction` of the way ([`BackProfile::level`]: the
+    /// template's Cervicale vertex at rest); the Cervicale vertex's where there is no such level.
+    pub(super) fn cervicale_level(&self) -> f64 {
+        let f = self.measurer.params.cervicale_fraction;
+        self.back_of_neck()
+            .and_then(|(profile, turn)| profile.level(turn, f))
+            .unwrap_or_else(|| self.mean_height(Measure::CervicaleHeight))
     }
 
     pub(super) fn volume_and_area(&self) -> (f64, f64) {

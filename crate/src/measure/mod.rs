@@ -6,6 +6,8 @@
 //!   (shoulder breadth, acromion height, arm length), by the shoulder's rule the estimate shares
 //! * [`parting`] — levels where a section's loops part, found on the surface: the armpits' apex
 //!   (the chest girth's level) and the crotch (crotch height, the thigh girth's level)
+//! * [`cervicale`] — the cervicale found on the body's back profile, where the back turns into
+//!   the neck (cervicale height)
 //! * [`section`] — plane sections of a triangle mesh ([`Plane`], [`plane_section`])
 //! * `spans` — each triangle's span along the up axis, so that a horizontal section is cut from
 //!   the triangles that reach its plane alone
@@ -34,6 +36,7 @@
 
 pub mod acromion;
 pub mod body;
+pub mod cervicale;
 pub mod definitions;
 pub mod error;
 pub mod fit_error;

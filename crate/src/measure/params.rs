@@ -107,6 +107,20 @@ pub struct MeasureParams {
     pub acromion_turn_reach: f64,
     pub acromion_turn_band: f64,
     pub acromion_turn_rise: f64,
+    /// The cervicale (ISO 8559-1 cervicale height) is found on the body's back profile
+    /// (`cervicale.rs`): its mid-sagittal section's rearmost point every `cervicale_step` from
+    /// `cervicale_band_below` under to `cervicale_band_above` over the Cervicale vertex's height;
+    /// the upper back's peak is sought under that height, the back of the neck's trough over the
+    /// peak. Defaults 0.25 m, 0.08 m and 0.002 m: the peak lies 11 cm under the template's
+    /// Cervicale and 13–22 cm under the tuning bodies' (at 15 cm the band cut it off on half of
+    /// them), the trough 1–7 cm over it, so a guess 2 cm off still holds both. The cervicale is the first level over the peak where the profile has come
+    /// `cervicale_fraction` of the way from the peak to the trough: default 0.874, where the
+    /// template's own Cervicale vertex stands at rest (`crate/tests/measure_cervicale.rs` holds
+    /// it).
+    pub cervicale_fraction: f64,
+    pub cervicale_band_below: f64,
+    pub cervicale_band_above: f64,
+    pub cervicale_step: f64,
 }
 
 impl Default for MeasureParams {
@@ -146,6 +160,10 @@ impl Default for MeasureParams {
             acromion_turn_reach: 0.04,
             acromion_turn_band: 0.003,
             acromion_turn_rise: 0.003,
+            cervicale_fraction: 0.874,
+            cervicale_band_below: 0.25,
+            cervicale_band_above: 0.08,
+            cervicale_step: 0.002,
         }
     }
 }

@@ -84,6 +84,7 @@ pub fn place(m: Measure) -> Option<Place> {
     }
     Some(match m {
         Measure::Stature => Place::Crown,
+        Measure::CervicaleHeight => Place::Landmark("Cervicale"),
         Measure::CrotchHeight => Place::Landmark("Crotch"),
         Measure::ThighGirth => Place::TapeAnd("Crotch"),
         _ => Place::Tape,
@@ -92,7 +93,10 @@ pub fn place(m: Measure) -> Option<Place> {
 
 /// Whether `m` is a height above the floor, so that the soles are its other end.
 fn above_the_soles(m: Measure) -> bool {
-    matches!(m, Measure::Stature | Measure::CrotchHeight)
+    matches!(
+        m,
+        Measure::Stature | Measure::CervicaleHeight | Measure::CrotchHeight
+    )
 }
 
 /// Which part of a measurement's place a [`Support`] judged.
