@@ -8,8 +8,8 @@
 //! back's most rearward point (its **peak**, under the guess) the profile comes forward to the
 //! back of the neck's deepest point (its **trough**, over the peak). The cervicale is the first
 //! level above the peak where the profile has come the fraction `f` of that way, `f` the
-//! template's own: on the template at rest its Cervicale vertex's (`CervicaleSearch::new`). A
-//! guess a few centimetres off names the same level, and the level moves continuously with the
+//! template's own: where its Cervicale vertex stands at rest (`MeasureParams::cervicale_fraction`,
+//! held to the template by `crate/tests/measure_cervicale.rs`). A guess a few centimetres off names the same level, and the level moves continuously with the
 //! surface (the profile is interpolated between the section's points and between heights). The
 //! neck base girth's tape does not use it (docs/measurements.md, "The cervicale on the back of
 //! the neck").
