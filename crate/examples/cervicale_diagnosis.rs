@@ -30,7 +30,8 @@ fn main() -> Result<(), String> {
         .landmark_vertex("Cervicale")
         .ok_or("no Cervicale")? as usize;
     // (vertex height, peak, trough, fraction at the vertex, levels) in mm over the floor.
-    let read = |flat: &[f32]| -> Option<(f64, f64, f64, f64, Vec<f64>)> {
+    type Reading = (f64, f64, f64, f64, Vec<f64>);
+    let read = |flat: &[f32]| -> Option<Reading> {
         let floor = flat
             .chunks_exact(3)
             .map(|p| p[1] as f64)
@@ -58,7 +59,7 @@ fn main() -> Result<(), String> {
         upright(&mesh.positions[..rest.len()], rest).ok_or("not upright".into())
     };
     println!("body: vertex height, peak − vertex, trough − vertex (mm), fraction at the vertex, level(f) − vertex for f in {FRACTIONS:?}");
-    let show = |name: &str, r: &(f64, f64, f64, f64, Vec<f64>)| {
+    let show = |name: &str, r: &Reading| {
         let levels: Vec<String> = r.4.iter().map(|x| format!("{x:+6.1}")).collect();
         println!(
             "{name:>10}: {:7.1} {:+6.1} {:+6.1}  f {:.3}  {}",
@@ -73,35 +74,38 @@ fn main() -> Result<(), String> {
     if let Some(r) = read(&flat_rest) {
         show("template", &r);
     }
+    // The body at `path` read, stood on the template and shown as `name`; `None` when it has no
+    // back profile.
+    let body = |path: &PathBuf, name: String| -> Result<Option<Reading>, String> {
+        let r = read(&stood(path)?);
+        match &r {
+            Some(r) => show(&name, r),
+            None => println!("{name}: no profile"),
+        }
+        Ok(r)
+    };
     for id in 1.. {
         let truth_path = dir.join(format!("truth_{id:03}.ply"));
         if !truth_path.exists() {
             break;
         }
-        let truth = stood(&truth_path)?;
-        let Some(t) = read(&truth) else {
-            println!("truth {id:03}: no profile");
+        let Some(t) = body(&truth_path, format!("truth {id:03}"))? else {
             continue;
         };
-        show(&format!("truth {id:03}"), &t);
         let Some(cache) = &cache else { continue };
         let fit_path = cache.join(format!("{kind}_{id:03}.ply"));
         if !fit_path.exists() {
             continue;
         }
-        let fit = stood(&fit_path)?;
-        let Some(f) = read(&fit) else {
-            println!("  fit {id:03}: no profile");
+        let Some(f) = body(&fit_path, format!("fit {id:03}"))? else {
             continue;
         };
-        show(&format!("fit {id:03}"), &f);
         // The fit's level at each fraction minus the truth's, over the floor (what cervicale
         // height's difference would be), and the vertex's own difference.
-        let floor_shift = |r: &(f64, f64, f64, f64, Vec<f64>)| r.0;
         let diffs: Vec<String> =
             f.4.iter()
                 .zip(&t.4)
-                .map(|(a, b)| format!("{:+6.1}", (floor_shift(&f) + a) - (floor_shift(&t) + b)))
+                .map(|(a, b)| format!("{:+6.1}", (f.0 + a) - (t.0 + b)))
                 .collect();
         println!(
             "      diff: vertex {:+6.1}  levels {}",
