@@ -4,15 +4,15 @@ import { AlignStep } from './app/align-step';
 import { Batch } from './app/batch';
 import { startBatch } from './app/batch-view';
 import { LandmarkStep, type Shown } from './app/landmark-step';
-import { Session } from './app/session';
+import { Session, type SavedScanWork } from './app/session';
 import { TemplateView } from './app/template-view';
 import { WarpStep } from './app/warp-step';
 import { readFiles } from './app/read-files';
-import { SessionStore } from './app/session-store';
+import { SessionStore, type SavedScan } from './app/session-store';
 import { ShapeSpace } from './app/shape-space';
 import { CoreClient } from './client/core-client';
 import { classifyFile } from './shared/file-kind';
-import { METRES_PER_UNIT, type Units } from './shared/results';
+import { METRES_PER_UNIT, type ParsedLandmarks, type ParsedScan, type Units } from './shared/results';
 import { acceptDrops } from './ui/drop-overlay';
 import { byId } from './ui/dom';
 import { ErrorBanner } from './ui/error-banner';
@@ -50,10 +50,10 @@ const landmarkStep = new LandmarkStep(client, landmarkClient, viewer, session, (
 landmarkStep.onPick = () => warpStep.show('scan', true);
 // A landmark shown up close is placed on the scan: the warped template would cover it.
 landmarkStep.onCloseUp = () => warpStep.show('warped', false);
-// "Back to" the scan put aside: it comes back with its landmarks as they were shown.
-landmarkStep.onBringBack = () => {
+// "Back to" work put aside: it comes back with its landmarks as they were shown.
+landmarkStep.onBringBack = (index) => {
   const before = session.scan;
-  session.bringBack();
+  session.bringBack(index);
   refresh(session.scan !== before);
   landmarkStep.afterBringBack();
   const name = session.scan?.fileName ?? '';
@@ -63,6 +63,7 @@ landmarkStep.onBringBack = () => {
 // then the fit (before the warp: both run in the align worker, which a running fit's cancel stops),
 // then the warp, which runs again (not under a batch fit, which takes only the fit's place).
 session.onChange((change) => {
+  if (change === 'aside') return;
   if (change === 'files') landmarkStep.reset();
   alignStep.reset();
   if (change !== 'batchFit') warpStep.reset(change === 'edited');
@@ -72,7 +73,7 @@ templateView.onLoaded(() => {
   if (warpStep.ready) session.changed('template');
 });
 // The single scan's work kept in the browser, so a reload loses nothing.
-const work = new SessionStore<Shown>(session, () => landmarkStep.shownNow());
+const work = new SessionStore<Shown>(session, (edits) => landmarkStep.shownOf(edits));
 session.onChange(() => work.saveSoon());
 landmarkStep.onOriented = () => work.saveSoon();
 let lastReadMs = 0;
@@ -167,27 +168,52 @@ async function open(all: File[]): Promise<void> {
 
 /**
  * Opens the work saved before the page was reloaded, if any and nothing was opened since: the
- * scan and its landmark file read again, the set and what the editor showed of it as they were.
+ * scan and its landmark file read again, the set and what the editor showed of it as they were,
+ * and the work put aside with its own. Work put aside whose scan cannot be read again is named,
+ * and the rest opens without it.
  */
 async function restoreWork(): Promise<void> {
   const saved = await work.load();
   if (!saved || session.scan) return;
-  const outcome = await readFiles(client, saved.landmarks ? [saved.scan, saved.landmarks] : [saved.scan], (text) => topBar.setStatus(text));
-  const scan = outcome.scans[0];
-  if (!scan || session.scan) {
-    if (outcome.errors.length) banner.show([`The scan saved before the reload could not be read again: ${outcome.errors.join(' ')}`]);
+  const errors: string[] = [];
+  const scans = new Map<number, ParsedScan | null>();
+  const read = async (w: SavedScan<Shown>): Promise<SavedScanWork | null> => {
+    if (!scans.has(w.scan)) scans.set(w.scan, (await readSaved(saved.scans[w.scan]!, errors)) as ParsedScan | null);
+    const scan = scans.get(w.scan);
+    const landmarks = w.landmarks && ((await readSaved(w.landmarks, errors)) as ParsedLandmarks | null);
+    return scan ? { scan, landmarks, saved: w.saved } : null;
+  };
+  const [first, ...rest] = saved.works;
+  const shown = await read(first!);
+  if (!shown || session.scan) {
+    if (errors.length) banner.show([`The scan saved before the reload could not be read again: ${errors.join(' ')}`]);
     return;
   }
-  const landmarks = outcome.landmarks[0];
-  work.remember(scan.scan, scan.file);
-  if (landmarks) work.remember(landmarks.landmarks, landmarks.file);
-  session.restore(scan.scan, landmarks?.landmarks ?? null, saved);
+  const asides: { work: SavedScanWork; view: Shown | null }[] = [];
+  for (const w of rest) {
+    const a = await read(w);
+    if (a) asides.push({ work: a, view: w.view });
+  }
+  if (session.scan) return;
+  if (errors.length) banner.show([`Not all the work saved before the reload could be read again; what could not is left out. ${errors.join(' ')}`]);
+  session.restore(shown, asides.map((a) => a.work));
+  session.putAside.forEach((w, i) => landmarkStep.keepShown(w.edits, asides[i]!.view));
   shapeSpace.hide();
   refresh(true);
   // An estimate the reload cut short, with nothing placed: estimated again, as after a load.
-  landmarkStep.showAgain(session.edits?.placed().names.length ? saved.view : null);
-  topBar.setStatus(`Restored ${scan.scan.fileName}${landmarks ? ` and ${landmarks.file.name}` : ''} with the landmarks as they were before the page was reloaded.`);
+  landmarkStep.showAgain(session.edits?.placed().names.length ? first!.view : null);
+  const aside = session.putAside.length ? `; ${session.putAside.length} put aside` : '';
+  topBar.setStatus(`Restored ${shown.scan.fileName}${shown.landmarks ? ` and ${shown.landmarks.fileName}` : ''} with the landmarks as they were before the page was reloaded${aside}.`);
   body.dataset.restored = 'true';
+}
+
+/** Reads a file saved before a reload again (a scan or a landmark file), remembered for the next save; null, with the reason in `errors`, when it cannot be. */
+async function readSaved(file: File, errors: string[]): Promise<ParsedScan | ParsedLandmarks | null> {
+  const outcome = await readFiles(client, [file], (text) => topBar.setStatus(text));
+  errors.push(...outcome.errors);
+  const parsed = outcome.scans[0]?.scan ?? outcome.landmarks[0]?.landmarks ?? null;
+  if (parsed) work.remember(parsed, file);
+  return parsed;
 }
 
 /** Whether the core's rule for a batch's files (`pairSubjectFiles`) makes `landmarks` the landmark file of `scan`. */

@@ -2,8 +2,9 @@
 // move it there, drag a marker, mark one absent, undo / redo, align with the edited set, export
 // the set as .lnd and read it back; before any file nothing is marked absent; after Align a picked
 // landmark brings the hidden scan back; a new scan forgets the pick and the list's scroll; a second
-// scan opened alone gets its own estimate, and what it replaced comes back with "Back to"; a reload
-// brings the scan and its set back as they were.
+// scan opened alone gets its own estimate, and what it replaced comes back with "Back to"; all work
+// put aside is kept; a reload brings the scan, its set and the work put aside back as they were;
+// Forget asks first.
 import { readFileSync } from 'node:fs';
 import { expect, test, type Page } from '@playwright/test';
 import { dropFiles, waitForLoads } from './fixtures';
@@ -402,19 +403,24 @@ test("a second scan opened alone gets its own estimate; the first one's landmark
   await waitForLoads(page, 4);
   await expect(list.locator('li[data-state="given"]')).toHaveCount(73);
   // The set it replaced is put aside too, and comes back.
-  await expect(aside).toHaveText('Another set of landmarks for this scan is put aside (73: 5 from partial.csv, 67 estimated, 1 placed by hand).');
-  await page.getByTestId('landmarks-back').click();
+  await expect(aside.first()).toHaveText('Another set of landmarks for this scan is put aside (73: 5 from partial.csv, 67 estimated, 1 placed by hand).');
+  // The scan put aside before stays put aside, under it.
+  await expect(aside.nth(1)).toContainText('other.ply is put aside with its 73 landmarks (73 estimated)');
+  await page.getByTestId('landmarks-back').first().click();
   await expect(list.locator('li[data-state="edited"]')).toHaveCount(1);
   expect(await positionMm(page, 'Substernale')).toEqual(moved);
-  await expect(aside).toHaveText('Another set of landmarks for this scan is put aside (73: 73 from other.lnd).');
-  await page.getByTestId('landmarks-back').click();
+  await expect(aside.first()).toHaveText('Another set of landmarks for this scan is put aside (73: 73 from other.lnd).');
+  await page.getByTestId('landmarks-back').first().click();
   await expect(list.locator('li[data-state="given"]')).toHaveCount(73);
   await dropFiles(page, [other]);
   await waitForLoads(page, 5);
   await expect(page.getByTestId('scan-file')).toHaveText('other.ply');
   await expect(list.locator('li[data-state="given"]')).toHaveCount(73);
   await expect(body(page)).toHaveAttribute('data-estimates', '2');
-  await expect(aside).toContainText('scan_001.ply.gz is put aside with its 73 landmarks (73 from other.lnd)');
+  await expect(aside.first()).toContainText('scan_001.ply.gz is put aside with its 73 landmarks (73 from other.lnd)');
+  // Everything put aside is kept, the older ones folded away.
+  await expect(aside).toHaveCount(3);
+  await expect(page.getByTestId('landmarks-put-aside-more')).toContainText('1 more put aside');
 });
 
 test('a reload brings back the scan, its landmark file and the set as it was edited, without estimating again', async ({ page }) => {
@@ -445,4 +451,101 @@ test('a reload brings back the scan, its landmark file and the set as it was edi
   await expect(page.getByTestId('estimate-assumed')).toHaveText(assumed!);
   await expect(body(page)).not.toHaveAttribute('data-estimates', /./);
   await expect(body(page)).toHaveAttribute('data-rbf-state', 'done', { timeout: 60_000 });
+});
+
+test('a reload brings back the work put aside, "Back to" still swaps it, and Forget asks first', async ({ page }) => {
+  test.setTimeout(180_000);
+  const list = page.getByTestId('landmark-list');
+  const aside = page.getByTestId('landmarks-put-aside');
+  /** Reloads once the work is saved after what was just done, and waits for it to be restored. */
+  const reloadSaved = async () => {
+    const saves = Number((await body(page).getAttribute('data-work-saves')) ?? '0');
+    await page.waitForFunction((n) => Number(document.body.dataset.workSaves ?? '0') > n, saves);
+    await page.reload();
+    await expect(body(page)).toHaveAttribute('data-restored', 'true', { timeout: 60_000 });
+  };
+  // Full files, so nothing is estimated: the first scan's set with one landmark moved by hand.
+  await openWithSample(page, [sampleFile('scan_001.ply.gz'), partialCsv(() => true)]);
+  await expect(list.locator('li[data-state="given"]')).toHaveCount(73);
+  const marker = await pickMarker(page, 'Substernale');
+  await page.mouse.click(marker.x + 9, marker.y + 7);
+  await expect(row(page, 'Substernale')).toHaveAttribute('data-state', 'edited');
+  const moved = await positionMm(page, 'Substernale');
+  const [lnd, scan] = synthSubjects(1, 22);
+  await dropFiles(page, [{ name: 'other.ply', bytes: scan!.bytes }, { name: 'other.lnd', bytes: lnd!.bytes }]);
+  await waitForLoads(page, 2);
+  const firstAside = 'scan_001.ply.gz is put aside with its 73 landmarks (72 from partial.csv, 1 placed by hand): they stay with it, not with other.ply.';
+  await expect(aside).toHaveText([firstAside]);
+
+  // The reload shows the second scan and keeps the first aside, its hand-placed landmark with it.
+  await reloadSaved();
+  await expect(page.getByTestId('scan-file')).toHaveText('other.ply');
+  await expect(list.locator('li[data-state="given"]')).toHaveCount(73);
+  await expect(aside).toHaveText([firstAside]);
+  await expect(body(page)).not.toHaveAttribute('data-estimates', /./);
+  await page.getByTestId('landmarks-back').click();
+  await expect(page.getByTestId('scan-file')).toHaveText('scan_001.ply.gz');
+  await expect(list.locator('li[data-state="edited"]')).toHaveCount(1);
+  expect(await positionMm(page, 'Substernale')).toEqual(moved);
+  const otherAside = 'other.ply is put aside with its 73 landmarks (73 from other.lnd): they stay with it, not with scan_001.ply.gz.';
+  await expect(aside).toHaveText([otherAside]);
+
+  // A landmark file dropped onto the scan puts its set aside: after a reload it comes back too.
+  await dropFiles(page, [{ name: 'other.lnd', bytes: lnd!.bytes }]);
+  const otherSet = 'Another set of landmarks for this scan is put aside (73: 72 from partial.csv, 1 placed by hand).';
+  await expect(aside).toHaveText([otherSet, otherAside]);
+  await reloadSaved();
+  await expect(page.getByTestId('scan-file')).toHaveText('scan_001.ply.gz');
+  await expect(page.getByTestId('landmarks-file')).toHaveText('other.lnd');
+  await expect(aside).toHaveText([otherSet, otherAside]);
+  await page.getByTestId('landmarks-back').first().click();
+  await expect(page.getByTestId('landmarks-file')).toHaveText('partial.csv');
+  await expect(list.locator('li[data-state="edited"]')).toHaveCount(1);
+  expect(await positionMm(page, 'Substernale')).toEqual(moved);
+  await expect(body(page)).not.toHaveAttribute('data-estimates', /./);
+  await expect(aside).toHaveText(['Another set of landmarks for this scan is put aside (73: 73 from other.lnd).', otherAside]);
+
+  // Forget asks first, naming what goes; declined, nothing goes; accepted, it is gone after a reload too.
+  const questions: string[] = [];
+  page.once('dialog', (dialog) => void (questions.push(dialog.message()), dialog.dismiss()));
+  await page.getByTestId('landmarks-forget').nth(1).click();
+  await expect.poll(() => questions.length).toBe(1);
+  expect(questions[0]).toBe("Forget other.ply and its landmarks? Its 73 landmarks (73 from other.lnd) are forgotten here and in this browser's storage; this cannot be undone.");
+  await expect(aside).toHaveCount(2);
+  page.once('dialog', (dialog) => void dialog.accept());
+  await page.getByTestId('landmarks-forget').nth(1).click();
+  await expect(aside).toHaveText(['Another set of landmarks for this scan is put aside (73: 73 from other.lnd).']);
+  await reloadSaved();
+  await expect(page.getByTestId('scan-file')).toHaveText('scan_001.ply.gz');
+  await expect(list.locator('li[data-state="edited"]')).toHaveCount(1);
+  await expect(aside).toHaveText(['Another set of landmarks for this scan is put aside (73: 73 from other.lnd).']);
+});
+
+test('work saved before the work put aside was kept (one scan) still opens after the update', async ({ page }) => {
+  test.setTimeout(120_000);
+  const [lnd, scan] = synthSubjects(1, 22);
+  await page.goto('./');
+  await expect(body(page)).toHaveAttribute('data-template-ready', 'true', { timeout: 60_000 });
+  // The records as the page wrote them until 2026-12-06: the shown scan's files and its state.
+  await page.evaluate(
+    async ([scanBytes, lndBytes]) => {
+      const db = await new Promise<IDBDatabase>((resolve, reject) => {
+        const r = indexedDB.open('bodyspace-session', 1);
+        r.onupgradeneeded = () => r.result.createObjectStore('work', { keyPath: 'key' });
+        r.onsuccess = () => resolve(r.result);
+        r.onerror = () => reject(r.error);
+      });
+      const tx = db.transaction('work', 'readwrite');
+      const store = tx.objectStore('work');
+      store.put({ key: 'files', scan: new File([new Uint8Array(scanBytes!)], 'old.ply'), landmarks: new File([new Uint8Array(lndBytes!)], 'old.lnd') });
+      store.put({ key: 'current', landmarksFor: 'old.ply', scanUnits: 'metres', orientation: null, entries: [], estimateReport: null, view: null });
+      await new Promise((resolve) => (tx.oncomplete = resolve));
+    },
+    [[...scan!.bytes], [...lnd!.bytes]],
+  );
+  await page.reload();
+  await expect(body(page)).toHaveAttribute('data-restored', 'true', { timeout: 60_000 });
+  await expect(page.getByTestId('scan-file')).toHaveText('old.ply');
+  await expect(page.getByTestId('landmarks-file')).toHaveText('old.lnd');
+  await expect(page.getByTestId('landmarks-put-aside')).toHaveCount(0);
 });

@@ -17,13 +17,13 @@ import { METRES_PER_UNIT } from '../shared/results';
 import type { TemplateData } from '../shared/template-data';
 import { download } from '../ui/download';
 import { basisWords, notFitted } from '../ui/format';
-import { sentence, shownCheck, type EstimateView, type LandmarkFormat } from '../ui/landmark-tools';
+import { forgetQuestion, sentence, shownCheck, type EstimateView, type LandmarkFormat, type PutAside } from '../ui/landmark-tools';
 import { LandmarksPanel, type LandmarkFacts } from '../ui/landmarks-panel';
 import { landmarkStyle } from '../view/landmark-style';
 import type { LandmarkPoints, Viewer } from '../view/viewer';
 import { LandmarkEdits } from './landmark-edits';
 import { estimateInput, scanInput, scanTransfer } from './scan-input';
-import type { Session } from './session';
+import type { ScanWork, Session } from './session';
 
 /** What the editor showed of one set (kept when another replaces it, and across a reload). */
 export interface Shown {
@@ -57,8 +57,8 @@ export class LandmarkStep {
   onCloseUp: (() => void) | null = null;
   /** Called when Up or Facing is chosen (nothing runs, but the choice is kept). */
   onOriented: (() => void) | null = null;
-  /** Called when the person asks for the scan put aside back. */
-  onBringBack: (() => void) | null = null;
+  /** Called when the person asks for the work put aside at `index` back. */
+  onBringBack: ((index: number) => void) | null = null;
   /** What the list shows before anything is loaded: every landmark absent. */
   private empty: LandmarkEdits | null = null;
   /** A check for suspicious landmarks is running / another is wanted after it. */
@@ -90,7 +90,8 @@ export class LandmarkStep {
     private readonly onError: (message: string) => void,
   ) {
     this.panel = new LandmarksPanel({
-      onBringBack: () => this.onBringBack?.(),
+      onBringBack: (index) => this.onBringBack?.(index),
+      onForget: (index) => this.forget(index),
       onSelect: (name) => this.select(name),
       onInspect: (name) => this.inspect(name),
       onHover: (name) => this.panel.guide.show(name ?? this.selected),
@@ -164,6 +165,16 @@ export class LandmarkStep {
     const e = this.estimate;
     const estimate: EstimateView = e.state === 'running' ? { state: 'cancelled', kept: this.session.estimateReport?.self_check ?? null } : e;
     return { estimate, suspicious: this.suspicious, sharpness: this.sharpness, prediction: this.prediction };
+  }
+
+  /** What the editor shows of `edits`: the current set's now, one put aside's as it was when put aside (null: nothing kept). */
+  shownOf(edits: LandmarkEdits): Shown | null {
+    return edits === this.session.edits ? this.shownNow() : (this.shown.get(edits) ?? null);
+  }
+
+  /** Keeps what the editor showed of `edits`, a set put aside (restored after a reload), for "Back to". */
+  keepShown(edits: LandmarkEdits, shown: Shown | null): void {
+    if (shown) this.shown.set(edits, shown);
   }
 
   /** Shows the current set as `before` showed it (a set brought back or restored after a reload); without it, as after a load. */
@@ -338,8 +349,6 @@ export class LandmarkStep {
   private render(): void {
     this.shownFor = this.session.edits;
     const edits = this.session.edits ?? (this.empty ??= new LandmarkEdits(this.caesarNames()));
-    const aside = this.session.putAside;
-    const count = (state: LandmarkEntry['state']) => aside?.edits.all.filter((e) => e.state === state && e.position).length ?? 0;
     const entries = edits.all;
     const selected = this.selected ? (edits.entry(this.selected) ?? null) : null;
     const o = this.session.orientation;
@@ -351,14 +360,7 @@ export class LandmarkStep {
       sharpness: this.sharpness,
       loaded: Boolean(this.session.edits),
       tools: {
-        putAside: aside && {
-          scan: aside.scan.fileName,
-          sameScan: aside.scan === this.session.scan,
-          file: aside.landmarks?.fileName ?? null,
-          given: count('given'),
-          estimated: count('estimated'),
-          edited: count('edited'),
-        },
+        putAside: this.session.putAside.map((aside) => this.asideView(aside)),
         scan: this.session.scan?.fileName ?? null,
         estimate: this.estimate,
         absent: entries.filter((e) => !e.position).length,
@@ -372,6 +374,29 @@ export class LandmarkStep {
       },
     });
     this.publishSelected(selected);
+  }
+
+  /** What the panel says of work put aside. */
+  private asideView(aside: ScanWork): PutAside {
+    const count = (state: LandmarkEntry['state']) => aside.edits.all.filter((e) => e.state === state && e.position).length;
+    return {
+      scan: aside.scan.fileName,
+      sameScan: aside.scan === this.session.scan,
+      file: aside.landmarks?.fileName ?? null,
+      given: count('given'),
+      estimated: count('estimated'),
+      edited: count('edited'),
+    };
+  }
+
+  /** Forgets the work put aside at `index`, once the person says so when it has landmarks. */
+  private forget(index: number): void {
+    const aside = this.session.putAside[index];
+    if (!aside) return;
+    const question = forgetQuestion(this.asideView(aside));
+    if (question && !window.confirm(question)) return;
+    this.session.forget(index);
+    this.render();
   }
 
   private select(name: string): void {

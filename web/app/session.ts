@@ -13,9 +13,9 @@ import { LandmarkEdits } from './landmark-edits';
  * the set filled in by the estimate (the warp and the fit go, the view re-aims); `template`,
  * another template resolution loaded under a warp (the warp and the fit made with the old one go);
  * `batchFit`, a batch subject's fit shown in the fit's place (the single scan's fit goes, its warp
- * stays).
+ * stays); `aside`, work put aside forgotten (nothing shown changes).
  */
-export type SessionChange = 'files' | 'units' | 'edited' | 'estimated' | 'template' | 'batchFit';
+export type SessionChange = 'files' | 'units' | 'edited' | 'estimated' | 'template' | 'batchFit' | 'aside';
 
 /** A scan with its landmarks as they were when another scan replaced it (what "Back to" brings back). */
 export interface ScanWork {
@@ -26,6 +26,28 @@ export interface ScanWork {
   edits: LandmarkEdits;
   estimateReport: EstimateReport | null;
   orientation: Orientation | null;
+}
+
+/** A scan's work as kept across a reload: everything of `ScanWork` but its files, the set as its entries. */
+export interface SavedState {
+  scanUnits: Units;
+  orientation: Orientation | null;
+  landmarksFor: string | null;
+  entries: LandmarkEntry[];
+  estimateReport: EstimateReport | null;
+}
+
+/** A scan's work saved before a reload, its files read again. */
+export interface SavedScanWork {
+  scan: ParsedScan;
+  landmarks: ParsedLandmarks | null;
+  saved: SavedState;
+}
+
+/** What of `work` is kept across a reload beside its files. */
+export function savedState(work: ScanWork): SavedState {
+  const { scanUnits, orientation, landmarksFor, edits, estimateReport } = work;
+  return { scanUnits, orientation, landmarksFor, entries: [...edits.all], estimateReport };
 }
 
 export class Session {
@@ -50,10 +72,11 @@ export class Session {
    */
   landmarksFor: string | null = null;
   /**
-   * The scan a newly opened one replaced, with its landmarks, or the scan shown with the set a
-   * landmark file opened onto it replaced, until "Back to" swaps them.
+   * What was replaced, most recent first, each kept until it is brought back or forgotten: a scan
+   * a newly opened one replaced, with its landmarks, or the scan shown with the set a landmark file
+   * opened onto it replaced.
    */
-  putAside: ScanWork | null = null;
+  putAside: ScanWork[] = [];
 
   private readonly listeners: ((change: SessionChange) => void)[] = [];
 
@@ -73,7 +96,7 @@ export class Session {
   open(scan: ParsedScan | null, landmarks: ParsedLandmarks | null, namesPair = false): void {
     if (!scan && !landmarks) return;
     if (scan) this.setScan(scan, namesPair);
-    else if (landmarks && this.edits?.placed().names.length) this.putAside = this.work() ?? this.putAside;
+    else if (landmarks && this.edits?.placed().names.length) this.setAside(this.work());
     if (landmarks) this.setLandmarks(landmarks);
     this.changed('files');
   }
@@ -87,29 +110,42 @@ export class Session {
   }
 
   /**
-   * The work saved before a reload, as it was: the scan and its landmark file as read again, the
-   * units and frame chosen, and the landmark set `entries` (one change, as files opened).
+   * The work saved before a reload, as it was (one change, as files opened): `shown`, the scan and
+   * its landmark file as read again, the units and frame chosen, and the landmark set; `asides`,
+   * the work put aside, most recent first, read again too.
    */
-  restore(
-    scan: ParsedScan,
-    landmarks: ParsedLandmarks | null,
-    saved: { scanUnits: Units; orientation: Orientation | null; landmarksFor: string | null; entries: readonly LandmarkEntry[]; estimateReport: EstimateReport | null },
-  ): void {
-    this.scan = scan;
-    this.scanUnits = saved.scanUnits;
-    this.landmarks = landmarks;
-    this.landmarksFor = landmarks ? saved.landmarksFor : null;
-    this.edits = LandmarkEdits.fromEntries(this.caesarNames(), saved.entries);
-    this.estimateReport = saved.estimateReport;
-    this.orientation = saved.orientation;
+  restore(shown: SavedScanWork, asides: readonly SavedScanWork[]): void {
+    const work = this.workFrom(shown);
+    this.scan = work.scan;
+    this.scanUnits = work.scanUnits;
+    this.landmarks = work.landmarks;
+    this.landmarksFor = work.landmarksFor;
+    this.edits = work.edits;
+    this.estimateReport = work.estimateReport;
+    this.orientation = work.orientation;
+    this.putAside = asides.map((a) => this.workFrom(a));
     this.changed('files');
   }
 
-  /** Swaps the scan shown, with its landmarks, for the one put aside (one change). */
-  bringBack(): void {
-    const back = this.putAside;
+  /** A scan's work as saved, with its files read again. */
+  private workFrom({ scan, landmarks, saved }: SavedScanWork): ScanWork {
+    return {
+      scan,
+      scanUnits: saved.scanUnits,
+      landmarks,
+      landmarksFor: landmarks ? saved.landmarksFor : null,
+      edits: LandmarkEdits.fromEntries(this.caesarNames(), saved.entries),
+      estimateReport: saved.estimateReport,
+      orientation: saved.orientation,
+    };
+  }
+
+  /** Swaps the scan shown, with its landmarks, for the work put aside at `index` (one change); the shown one goes first among those put aside. */
+  bringBack(index = 0): void {
+    const back = this.putAside[index];
     if (!back) return;
-    this.putAside = this.work();
+    this.putAside.splice(index, 1);
+    this.setAside(this.work());
     this.scan = back.scan;
     this.scanUnits = back.scanUnits;
     this.landmarks = back.landmarks;
@@ -120,8 +156,19 @@ export class Session {
     this.changed('files');
   }
 
+  /** Forgets the work put aside at `index` (nothing else changes; the caller asks first). */
+  forget(index: number): void {
+    this.putAside.splice(index, 1);
+    this.changed('aside');
+  }
+
+  /** Puts `work` first among the work put aside. */
+  private setAside(work: ScanWork | null): void {
+    if (work) this.putAside.unshift(work);
+  }
+
   /** The scan shown with its landmarks, or null without a scan. */
-  private work(): ScanWork | null {
+  work(): ScanWork | null {
     const { scan, scanUnits, landmarks, landmarksFor, edits, estimateReport, orientation } = this;
     return scan && edits ? { scan, scanUnits, landmarks, landmarksFor, edits, estimateReport, orientation } : null;
   }
@@ -141,7 +188,7 @@ export class Session {
   setScan(scan: ParsedScan, namesPair = false): void {
     const stays = this.fileGoesWith(namesPair);
     const old = this.work();
-    if (old) this.putAside = old;
+    this.setAside(old);
     this.scan = scan;
     this.scanUnits = scan.summary.units_detected;
     this.orientation = null;

@@ -16,7 +16,7 @@ export type EstimateView =
   | { state: 'cancelled'; kept: SelfCheck | null }
   | { state: 'error'; message: string; kept: SelfCheck | null };
 
-/** The scan a newly opened one replaced, and what its landmarks were. */
+/** Work put aside: the scan a newly opened one replaced (or the scan shown, for a set a file replaced), and what its landmarks were. */
 export interface PutAside {
   scan: string;
   /** It is the scan shown: a landmark file replaced its set. */
@@ -29,8 +29,8 @@ export interface PutAside {
 }
 
 export interface ToolsView {
-  /** The scan put aside when this one was opened, with its landmarks; null when there is none. */
-  putAside: PutAside | null;
+  /** The work put aside, most recent first. */
+  putAside: PutAside[];
   /** The scan shown (its file name), or null. */
   scan: string | null;
   estimate: EstimateView;
@@ -50,7 +50,10 @@ export interface ToolsView {
 }
 
 export interface ToolsActions {
-  onBringBack: () => void;
+  /** Brings back the work put aside at `index`. */
+  onBringBack: (index: number) => void;
+  /** Forgets the work put aside at `index`. */
+  onForget: (index: number) => void;
   /** Picks landmark `name` to place it on the scan, and shows it up close. */
   onInspect: (name: string) => void;
   onEstimate: () => void;
@@ -98,7 +101,7 @@ export class LandmarkTools {
       return b;
     });
     this.element.replaceChildren(
-      ...putAsideParts(view, running, a.onBringBack),
+      ...putAsideParts(view, running, a),
       ...this.estimateParts(e),
       orientationControl(view.orientation, running || !view.hasScan, a.onOrientation),
       h('div', { class: 'actions' }, estimate),
@@ -133,30 +136,57 @@ export class LandmarkTools {
   }
 }
 
+/** Work put aside shown in full; the older ones fold under "N more put aside". */
+const ASIDE_SHOWN = 2;
+
 /**
- * The scan put aside when the shown one was opened, with what its landmarks were, and the button
- * that swaps them back: opening a scan never loses the landmarks placed on the one before.
+ * The work put aside, most recent first: each scan with what its landmarks were, the button that
+ * swaps it back, and one that forgets it. Opening a scan or a landmark file never loses the
+ * landmarks placed before: they are kept here until forgotten.
  */
-function putAsideParts(view: ToolsView, running: boolean, onBringBack: () => void): HTMLElement[] {
-  const aside = view.putAside;
-  if (!aside) return [];
+function putAsideParts(view: ToolsView, running: boolean, a: Pick<ToolsActions, 'onBringBack' | 'onForget'>): HTMLElement[] {
+  if (view.putAside.length === 0) return [];
+  const items = view.putAside.map((aside, index) => putAsideItem(aside, index, view.scan, running, a));
+  const older = items.splice(ASIDE_SHOWN);
+  if (older.length === 0) return items;
+  const more = h('details', { class: 'put-aside-more', 'data-testid': 'landmarks-put-aside-more' }, h('summary', {}, `${older.length} more put aside`), ...older);
+  return [...items, more];
+}
+
+/** The landmarks of work put aside in words: how many, and the parts (from a file, estimated, placed by hand). */
+function asideLandmarks(aside: PutAside): { total: number; parts: string[] } {
   const parts = [
     aside.given ? `${aside.given} from ${aside.file ?? 'a file'}` : '',
     aside.estimated ? `${aside.estimated} estimated` : '',
     aside.edited ? `${aside.edited} placed by hand` : '',
   ].filter(Boolean);
-  const total = aside.given + aside.estimated + aside.edited;
+  return { total: aside.given + aside.estimated + aside.edited, parts };
+}
+
+/** What to ask before work put aside is forgotten; null when it has no landmark to lose. */
+export function forgetQuestion(aside: PutAside): string | null {
+  const { total, parts } = asideLandmarks(aside);
+  if (total === 0) return null;
+  const what = aside.sameScan ? 'the other set of landmarks of this scan' : `${aside.scan} and its landmarks`;
+  return `Forget ${what}? Its ${total} landmarks (${parts.join(', ')}) are forgotten here and in this browser's storage; this cannot be undone.`;
+}
+
+function putAsideItem(aside: PutAside, index: number, shown: string | null, running: boolean, a: Pick<ToolsActions, 'onBringBack' | 'onForget'>): HTMLElement {
+  const { total, parts } = asideLandmarks(aside);
   const what = total ? `with its ${total} landmarks (${parts.join(', ')})` : 'with no landmarks placed';
   const label = aside.sameScan ? 'Back to the other set' : `Back to ${aside.scan}`;
-  const back = button('landmarks-back', label, 'button', onBringBack);
+  const back = button('landmarks-back', label, 'button', () => a.onBringBack(index));
   back.disabled = running;
   back.title = aside.sameScan
     ? 'Shows the other set of landmarks of this scan as it was, and puts this one aside; the warp runs again, a fit is not kept.'
-    : `Shows ${aside.scan} again with its landmarks as they were, and puts ${view.scan ?? 'this scan'} aside with its own; the warp runs again, a fit is not kept.`;
+    : `Shows ${aside.scan} again with its landmarks as they were, and puts ${shown ?? 'this scan'} aside with its own; the warp runs again, a fit is not kept.`;
+  const forget = button('landmarks-forget', 'Forget', 'button', () => a.onForget(index));
+  forget.disabled = running;
+  forget.title = aside.sameScan ? 'Forgets the other set of landmarks of this scan (it asks first).' : `Forgets ${aside.scan} and its landmarks here and in this browser's storage (it asks first).`;
   const text = aside.sameScan
     ? `Another set of landmarks for this scan is put aside (${total ? `${total}: ${parts.join(', ')}` : 'none placed'}).`
-    : `${aside.scan} is put aside ${what}: they stay with it, not with ${view.scan ?? 'this scan'}.`;
-  return [h('p', { class: 'note', 'data-testid': 'landmarks-put-aside' }, text), h('div', { class: 'actions' }, back)];
+    : `${aside.scan} is put aside ${what}: they stay with it, not with ${shown ?? 'this scan'}.`;
+  return h('div', { class: 'put-aside', 'data-index': String(index) }, h('p', { class: 'note', 'data-testid': 'landmarks-put-aside' }, text), h('div', { class: 'actions' }, back, forget));
 }
 
 /** The self-check that speaks for the landmarks shown: the estimate's just done, or after a cancelled or failed one the last done one's. */
