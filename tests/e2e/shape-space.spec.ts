@@ -110,7 +110,7 @@ test('a link with bad parameters opens the default state and says what was ignor
   await expect(page.locator('body')).toHaveAttribute('data-shape-checksum', mean!);
 });
 
-test('fitted meshes dropped in template order build a model in the app; its bodies have no link', async ({ page }) => {
+test('fitted meshes dropped in template order build a model in the app; its bodies have no link; a reload offers it back', async ({ page }) => {
   await page.goto('/');
   await shapeReady(page);
   await page.getByTestId('fits-input').setInputFiles(['public/samples/truth_001.ply.gz', 'public/samples/truth_002.ply.gz']);
@@ -125,6 +125,18 @@ test('fitted meshes dropped in template order build a model in the app; its bodi
   await expect(page.locator('body')).toHaveAttribute('data-shape-modes', '1');
   await expect(page.getByTestId('shape-link')).toHaveValue('');
   await expect(page.getByTestId('shape-link-note')).toContainText('has no address');
+
+  // A reload opens the demo model as before, and offers the model built here back.
+  await expect(page.locator('body')).toHaveAttribute('data-model-kept', '1');
+  await page.reload();
+  await shapeReady(page);
+  await expect(page.getByTestId('shape-model-name')).toHaveText('models/demo.bsm');
+  const kept = page.getByTestId('shape-kept');
+  await expect(kept).toContainText('The model built here from 2 subjects');
+  await page.getByTestId('shape-open-kept').click();
+  await expect(page.getByTestId('shape-model-name')).toHaveText('model of 2 subjects');
+  await expect(page.locator('body')).toHaveAttribute('data-shape-modes', '1');
+  await expect(kept).toBeHidden();
 });
 
 test('exports: body PLY/OBJ/glTF, bodies along a mode, the model with morph targets, CSVs', async ({ page }) => {

@@ -1,8 +1,8 @@
 // The shape-space panel put together: the model in view (shape-model.ts), its slider values
 // (shape-sliders.ts), the body shown (shown-body.ts), Find body (find-body.ts), the population
 // (population.ts), the link (shape-share.ts) and the downloads (shape-exports.ts). Here: what
-// happens when a model arrives (the demo model or a link's at start, a dropped file, a build) or
-// when the worker holding it is replaced.
+// happens when a model arrives (the demo model or a link's at start, a dropped file, a build, the
+// model built before a reload, model-store.ts) or when the worker holding it is replaced.
 import type { CoreClient } from '../client/core-client';
 import { decodeShapeLink } from '../shared/shape-link';
 import type { LoadedModel } from '../shared/shape-results';
@@ -11,6 +11,7 @@ import type { ErrorBanner } from '../ui/error-banner';
 import { ShapePanel } from '../ui/shape-panel';
 import type { Viewer } from '../view/viewer';
 import { findBody } from './find-body';
+import { ModelStore, type KeptModel } from './model-store';
 import { Population } from './population';
 import { ShapeExports } from './shape-exports';
 import { cannotBuild, ShapeModel } from './shape-model';
@@ -29,6 +30,8 @@ export class ShapeSpace {
   private readonly panel: ShapePanel;
   private readonly population: Population;
   private readonly page = document.body;
+  /** The last model built here, kept across a reload. */
+  private readonly kept = new ModelStore();
 
   constructor(
     client: CoreClient<'core'>,
@@ -92,6 +95,24 @@ export class ShapeSpace {
     this.page.dataset.shapeStarted = 'true';
     if (link && loaded) this.sliders.restore(link, this.viewer);
     else this.shown.redraw(true, true);
+    await this.offerKept();
+  }
+
+  /** Offers the model built here before the page was reloaded, if one is kept. */
+  private async offerKept(): Promise<void> {
+    const kept = await this.kept.load();
+    if (!kept) return;
+    const when = new Date(kept.builtAt).toLocaleString();
+    this.panel.showKept(
+      `The model built here from ${kept.subjects} subjects (${when}) is kept in this browser.`,
+      `Open ${kept.fileName}`,
+      () => void this.openKept(kept),
+    );
+  }
+
+  private async openKept(kept: KeptModel): Promise<void> {
+    this.shown.reveal();
+    if (await this.load(kept.bytes.slice(0), kept.fileName, null)) this.panel.showKept(null);
   }
 
   /** Takes the shape body out of the view (a scan was opened); any shape action brings it back. */
@@ -203,8 +224,14 @@ export class ShapeSpace {
       const wanted = this.shown.resolution;
       const built = await this.model.build(all, variance, (f, label) => onStatus(`${label} (${Math.round(f * 100)} %)`));
       this.adopt(built, built.fileName);
-      this.population.setModel(await this.model.keepBuiltFile(built.fileName));
+      const file = await this.model.keepBuiltFile(built.fileName);
+      this.population.setModel(file);
+      this.panel.showKept(null);
       onStatus(`Built from ${all.length} subjects.`);
+      // Kept for after a reload; the page's `data-model-kept` says when it is stored.
+      void this.kept.keep({ bytes: file.bytes.slice(0), fileName: file.fileName, subjects: all.length, builtAt: new Date().toISOString() }).then((done) => {
+        if (done) this.page.dataset.modelKept = String(Number(this.page.dataset.modelKept ?? '0') + 1);
+      });
       await this.shown.keepResolution(wanted);
       this.shown.redraw(true, true);
       return true;

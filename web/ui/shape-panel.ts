@@ -66,6 +66,8 @@ export class ShapePanel {
   private readonly linkNote = h('p', { class: 'note', 'data-testid': 'shape-link-note' });
   private readonly subjectsNote = h('p', { class: 'note', 'data-testid': 'shape-subjects' }, 'No aligned subjects yet.');
   private readonly buildStatus = h('p', { class: 'note', 'data-testid': 'shape-build-status' });
+  /** The model built here before a reload, offered back. */
+  private readonly kept = h('div', { 'data-testid': 'shape-kept', hidden: '' });
   private readonly picker = h('select', { 'data-testid': 'shape-segment', 'aria-label': 'Part of the body' });
   private readonly resolutionPicker = h('select', { 'data-testid': 'shape-resolution', 'aria-label': 'Resolution of the body shown' });
   private readonly resolutionStatus = h('p', { class: 'note', 'data-testid': 'shape-resolution-status' });
@@ -124,6 +126,7 @@ export class ShapePanel {
     this.root.replaceChildren(
       h('h2', {}, 'Shape space'),
       this.head,
+      this.kept,
       h('div', { class: 'row' }, h('label', {}, 'Resolution ', this.resolutionPicker)),
       this.resolutionStatus,
       this.resolutionNote,
@@ -251,6 +254,18 @@ export class ShapePanel {
   /** The share of variance a model built here keeps (the panel's field, a fraction). */
   get buildVariance(): number {
     return Number(this.varianceInput.value) / 100;
+  }
+
+  /** Offers a kept model (`text`, a button `label` that opens it); null takes the offer away. */
+  showKept(text: string | null, label = '', onOpen: () => void = () => undefined): void {
+    this.kept.hidden = text === null;
+    if (text === null) {
+      this.kept.replaceChildren();
+      return;
+    }
+    const open = h('button', { class: 'button', type: 'button', 'data-testid': 'shape-open-kept' }, label);
+    open.addEventListener('click', onOpen);
+    this.kept.replaceChildren(h('p', { class: 'note' }, text), h('div', { class: 'row' }, open));
   }
 
   showBuildStatus(text: string): void {
