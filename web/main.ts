@@ -178,9 +178,9 @@ async function restoreWork(): Promise<void> {
   const errors: string[] = [];
   const scans = new Map<number, ParsedScan | null>();
   const read = async (w: SavedScan<Shown>): Promise<SavedScanWork | null> => {
-    if (!scans.has(w.scan)) scans.set(w.scan, (await readSaved(saved.scans[w.scan]!, errors)) as ParsedScan | null);
+    if (!scans.has(w.scan)) scans.set(w.scan, (await readSaved(saved.scans[w.scan]!, saved.keys.get(saved.scans[w.scan]!), errors)) as ParsedScan | null);
     const scan = scans.get(w.scan);
-    const landmarks = w.landmarks && ((await readSaved(w.landmarks, errors)) as ParsedLandmarks | null);
+    const landmarks = w.landmarks && ((await readSaved(w.landmarks, saved.keys.get(w.landmarks), errors)) as ParsedLandmarks | null);
     return scan ? { scan, landmarks, saved: w.saved } : null;
   };
   const [first, ...rest] = saved.works;
@@ -207,12 +207,12 @@ async function restoreWork(): Promise<void> {
   body.dataset.restored = 'true';
 }
 
-/** Reads a file saved before a reload again (a scan or a landmark file), remembered for the next save; null, with the reason in `errors`, when it cannot be. */
-async function readSaved(file: File, errors: string[]): Promise<ParsedScan | ParsedLandmarks | null> {
+/** Reads a file saved before a reload again (a scan or a landmark file), remembered with its record `key` for the next save; null, with the reason in `errors`, when it cannot be. */
+async function readSaved(file: File, key: string | undefined, errors: string[]): Promise<ParsedScan | ParsedLandmarks | null> {
   const outcome = await readFiles(client, [file], (text) => topBar.setStatus(text));
   errors.push(...outcome.errors);
   const parsed = outcome.scans[0]?.scan ?? outcome.landmarks[0]?.landmarks ?? null;
-  if (parsed) work.remember(parsed, file);
+  if (parsed) work.remember(parsed, file, key);
   return parsed;
 }
 

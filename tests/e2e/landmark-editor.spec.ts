@@ -519,7 +519,26 @@ test('a reload brings back the work put aside, "Back to" still swaps it, and For
   await expect(page.getByTestId('scan-file')).toHaveText('scan_001.ply.gz');
   await expect(list.locator('li[data-state="edited"]')).toHaveCount(1);
   await expect(aside).toHaveText(['Another set of landmarks for this scan is put aside (73: 73 from other.lnd).']);
+  // Its scan no longer takes room in the browser's storage: one record per file still used
+  // (scan_001.ply.gz, partial.csv, other.lnd).
+  expect((await storedKeys(page)).filter((k) => k.startsWith('file:'))).toHaveLength(3);
 });
+
+/** The keys of the records of the single scan's work in the browser's storage. */
+async function storedKeys(page: Page): Promise<string[]> {
+  return page.evaluate(
+    () =>
+      new Promise<string[]>((resolve, reject) => {
+        const r = indexedDB.open('bodyspace-session', 1);
+        r.onsuccess = () => {
+          const keys = r.result.transaction('work').objectStore('work').getAllKeys();
+          keys.onsuccess = () => resolve(keys.result.map(String));
+          keys.onerror = () => reject(keys.error);
+        };
+        r.onerror = () => reject(r.error);
+      }),
+  );
+}
 
 test('work saved before the work put aside was kept (one scan) still opens after the update', async ({ page }) => {
   test.setTimeout(120_000);
@@ -548,4 +567,9 @@ test('work saved before the work put aside was kept (one scan) still opens after
   await expect(page.getByTestId('scan-file')).toHaveText('old.ply');
   await expect(page.getByTestId('landmarks-file')).toHaveText('old.lnd');
   await expect(page.getByTestId('landmarks-put-aside')).toHaveCount(0);
+  // The save after the restore writes the new layout and drops the old one's record of the files.
+  await page.waitForFunction(() => Number(document.body.dataset.workSaves ?? '0') > 0);
+  const keys = await storedKeys(page);
+  expect(keys).not.toContain('files');
+  expect(keys.filter((k) => k.startsWith('file:'))).toHaveLength(2);
 });

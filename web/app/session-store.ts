@@ -2,12 +2,13 @@
 // landmark files as they were opened, the units and the frame chosen, the landmark set (each
 // landmark given, estimated, edited or absent, where it is) and what the editor showed of it (the
 // estimate's verdict, the suspicious ones); and the same of each piece of work put aside, which
-// "Back to" brings back. Saved a moment after each change (the files only when they change: a scan
-// may weigh tens of MB); read back once, when the page opens.
-import type { LandmarkEdits } from './landmark-edits';
+// "Back to" brings back. Saved a moment after each change. Each file is a record of its own,
+// written once (a scan may weigh tens of MB) and deleted once no work uses it (forgotten); the
+// record `current` holds the rest. Read back once, when the page opens.
 import type { ParsedLandmarks, ParsedScan } from '../shared/results';
 import { IdbStore } from './idb-store';
-import { savedState, type SavedState, type ScanWork, type Session } from './session';
+import type { LandmarkEdits } from './landmark-edits';
+import { savedState, type SavedState, type Session } from './session';
 
 /** One scan's work as stored: its scan (an index into `SavedWork.scans`), its landmark file and the rest. */
 export interface SavedScan<View> {
@@ -24,15 +25,9 @@ export interface SavedWork<View> {
   works: SavedScan<View>[];
 }
 
-/** Record `files`: the scans, each once, and each work's landmark file (the shown one first). */
-interface StoredFiles {
-  scans: File[];
-  landmarks: (File | null)[];
-}
-
-/** Record `current`: the rest of each work, in the order of the files' `landmarks`. */
+/** Record `current`: each work's files (their records' keys) and the rest, the shown one first. */
 interface StoredState<View> {
-  works: (SavedState & { scan: number; view: View | null })[];
+  works: (SavedState & { scanFile: string; landmarksFile: string | null; view: View | null })[];
 }
 
 /** Quiet time (ms) after a change before the work is saved (a burst of edits is saved once). */
@@ -40,15 +35,17 @@ const SAVE_DELAY_MS = 300;
 
 export class SessionStore<View> {
   private readonly db = new IdbStore('bodyspace-session', 'work', 'key');
-  /** The file each scan and landmark file shown was read from. */
-  private readonly files = new WeakMap<ParsedScan | ParsedLandmarks, File>();
+  /** The file each scan and landmark file shown was read from, with the key of its record. */
+  private readonly files = new WeakMap<ParsedScan | ParsedLandmarks, { file: File; key: string }>();
+  /** Keys of the file records stored (or found stored when the page opened). */
+  private stored = new Set<string>();
   private timer: ReturnType<typeof setTimeout> | null = null;
   /** The saves one after another, so the files and the rest always come from the same moment. */
   private saving: Promise<void> = Promise.resolve();
   /** Saves done (the page's `data-work-saves`). */
   private saves = 0;
-  /** The files as last stored. */
-  private stored: StoredFiles | null = null;
+  /** The records were read in the one-scan layout: its `files` record goes at the next save. */
+  private legacy = false;
 
   /** `view`: what the editor shows of a set (the current one, or one put aside), stored with it. */
   constructor(
@@ -56,9 +53,9 @@ export class SessionStore<View> {
     private readonly view: (edits: LandmarkEdits) => View | null,
   ) {}
 
-  /** Remembers the file `parsed` was read from. */
-  remember(parsed: ParsedScan | ParsedLandmarks, file: File): void {
-    this.files.set(parsed, file);
+  /** Remembers the file `parsed` was read from; `key`, its record's when it was read back from one. */
+  remember(parsed: ParsedScan | ParsedLandmarks, file: File, key: string = newFileKey()): void {
+    this.files.set(parsed, { file, key });
   }
 
   /** Saves the work a moment from now (again after each call). */
@@ -75,38 +72,79 @@ export class SessionStore<View> {
     if (!shown || !this.files.has(shown.scan)) return;
     // Work whose scan this page did not read (none today) cannot be stored, and is left out.
     const works = [shown, ...this.session.putAside].filter((w) => this.files.has(w.scan));
-    const scans: ParsedScan[] = [...new Set(works.map((w) => w.scan))];
-    const files: StoredFiles = {
-      scans: scans.map((s) => this.files.get(s)!),
-      landmarks: works.map((w) => (w.landmarks && this.files.get(w.landmarks)) ?? null),
+    const used = new Map<string, File>();
+    const keyOf = (parsed: ParsedScan | ParsedLandmarks | null) => {
+      const f = parsed && this.files.get(parsed);
+      if (f) used.set(f.key, f.file);
+      return f?.key ?? null;
     };
     const state: StoredState<View> = {
-      works: works.map((w: ScanWork) => ({ ...savedState(w), scan: scans.indexOf(w.scan), view: this.view(w.edits) })),
+      works: works.map((w) => ({ ...savedState(w), scanFile: keyOf(w.scan)!, landmarksFile: keyOf(w.landmarks), view: this.view(w.edits) })),
     };
     // The work is kept on the page whatever happens here (a private window refuses the database).
-    const filesChanged = !this.stored || !sameFiles(this.stored, files);
-    const saved = await (filesChanged ? this.db.run('readwrite', (store) => store.put({ key: 'files', ...files })) : Promise.resolve())
-      .then(() => this.db.run('readwrite', (store) => store.put({ key: 'current', ...state })))
-      .then(() => true, () => false);
-    if (!saved) return;
-    this.stored = files;
+    try {
+      for (const [key, file] of used) {
+        if (!this.stored.has(key)) await this.db.run('readwrite', (store) => store.put({ key, file }));
+        this.stored.add(key);
+      }
+      await this.db.run('readwrite', (store) => store.put({ key: 'current', ...state }));
+      if (this.legacy) {
+        await this.db.run('readwrite', (store) => store.delete('files'));
+        this.legacy = false;
+      }
+      for (const key of [...this.stored].filter((k) => !used.has(k))) {
+        await this.db.run('readwrite', (store) => store.delete(key));
+        this.stored.delete(key);
+      }
+    } catch {
+      return;
+    }
     document.body.dataset.workSaves = String(++this.saves);
   }
 
-  /** The work saved before the page was reloaded, or null. */
-  async load(): Promise<SavedWork<View> | null> {
+  /** The work saved before the page was reloaded, or null; `keys`, the record of each scan and landmark file in it, for [`remember`]. */
+  async load(): Promise<(SavedWork<View> & { keys: Map<File, string> }) | null> {
     const get = <T>(key: string) => this.db.run('readonly', (store) => store.get(key) as IDBRequest<T | undefined>).catch(() => undefined);
-    const files = await get<StoredFiles | OneScanFiles>('files');
     const rest = await get<StoredState<View> | OneScanState<View>>('current');
-    if (!files || !rest) return null;
-    if (!('scans' in files) || !('works' in rest)) return fromOneScan(files as OneScanFiles, rest as OneScanState<View>);
-    return { scans: files.scans, works: rest.works.map(({ scan, view, ...saved }, i) => ({ scan, landmarks: files.landmarks[i] ?? null, saved, view })) };
+    if (!rest) return null;
+    if (!('works' in rest)) {
+      const files = await get<OneScanFiles>('files');
+      this.legacy = Boolean(files);
+      return files ? fromOneScan(files, rest) : null;
+    }
+    // A file record no work names (a save cut short between its writes) is dropped.
+    const named = new Set(rest.works.flatMap((w) => [w.scanFile, w.landmarksFile]));
+    const all = await this.db.run('readonly', (store) => store.getAllKeys()).catch(() => []);
+    for (const key of all) {
+      if (typeof key === 'string' && key.startsWith('file:') && !named.has(key)) await this.db.run('readwrite', (store) => store.delete(key)).catch(() => undefined);
+    }
+    const keys = new Map<File, string>();
+    const byKey = new Map<string, File | null>();
+    const file = async (key: string | null) => {
+      if (key === null) return null;
+      if (!byKey.has(key)) byKey.set(key, (await get<{ file: File }>(key))?.file ?? null);
+      const f = byKey.get(key) ?? null;
+      if (f) {
+        keys.set(f, key);
+        this.stored.add(key);
+      }
+      return f;
+    };
+    const scans: File[] = [];
+    const works: SavedScan<View>[] = [];
+    for (const { scanFile, landmarksFile, view, ...saved } of rest.works) {
+      const scan = await file(scanFile);
+      if (!scan) continue;
+      if (!scans.includes(scan)) scans.push(scan);
+      works.push({ scan: scans.indexOf(scan), landmarks: await file(landmarksFile), saved, view });
+    }
+    return works.length ? { scans, works, keys } : null;
   }
 }
 
-function sameFiles(a: StoredFiles, b: StoredFiles): boolean {
-  const same = <T>(x: readonly T[], y: readonly T[]) => x.length === y.length && x.every((v, i) => v === y[i]);
-  return same(a.scans, b.scans) && same(a.landmarks, b.landmarks);
+/** A key for a new file's record (`crypto.randomUUID` needs a secure context; a page served over plain http on a lab's network has none). */
+function newFileKey(): string {
+  return `file:${Date.now().toString(36)}-${Math.random().toString(36).slice(2)}`;
 }
 
 /** The records as saved before work put aside was kept (until 2026-12-06): the shown scan's alone. */
@@ -116,7 +154,11 @@ interface OneScanFiles {
 }
 type OneScanState<View> = SavedState & { view: View | null };
 
-function fromOneScan<View>(files: OneScanFiles, rest: OneScanState<View>): SavedWork<View> {
+function fromOneScan<View>(files: OneScanFiles, rest: OneScanState<View>): SavedWork<View> & { keys: Map<File, string> } {
   const { scanUnits, orientation, landmarksFor, entries, estimateReport, view } = rest;
-  return { scans: [files.scan], works: [{ scan: 0, landmarks: files.landmarks, saved: { scanUnits, orientation, landmarksFor, entries, estimateReport }, view }] };
+  return {
+    scans: [files.scan],
+    works: [{ scan: 0, landmarks: files.landmarks, saved: { scanUnits, orientation, landmarksFor, entries, estimateReport }, view }],
+    keys: new Map(),
+  };
 }
