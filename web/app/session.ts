@@ -115,14 +115,7 @@ export class Session {
    * the work put aside, most recent first, read again too.
    */
   restore(shown: SavedScanWork, asides: readonly SavedScanWork[]): void {
-    const work = this.workFrom(shown);
-    this.scan = work.scan;
-    this.scanUnits = work.scanUnits;
-    this.landmarks = work.landmarks;
-    this.landmarksFor = work.landmarksFor;
-    this.edits = work.edits;
-    this.estimateReport = work.estimateReport;
-    this.orientation = work.orientation;
+    this.show(this.workFrom(shown));
     this.putAside = asides.map((a) => this.workFrom(a));
     this.changed('files');
   }
@@ -146,14 +139,21 @@ export class Session {
     if (!back) return;
     this.putAside.splice(index, 1);
     this.setAside(this.work());
-    this.scan = back.scan;
-    this.scanUnits = back.scanUnits;
-    this.landmarks = back.landmarks;
-    this.landmarksFor = back.landmarksFor;
-    this.edits = back.edits;
-    this.estimateReport = back.estimateReport;
-    this.orientation = back.orientation;
+    this.show(back);
     this.changed('files');
+  }
+
+  /** Makes `work` the scan shown with its landmarks (no change is told). */
+  private show(work: ScanWork): void {
+    ({
+      scan: this.scan,
+      scanUnits: this.scanUnits,
+      landmarks: this.landmarks,
+      landmarksFor: this.landmarksFor,
+      edits: this.edits,
+      estimateReport: this.estimateReport,
+      orientation: this.orientation,
+    } = work);
   }
 
   /** Forgets the work put aside at `index` (nothing else changes; the caller asks first). */
