@@ -175,11 +175,12 @@ test('five given landmarks overrule a facing chosen wrong, and the page says wha
 test("a face placed on the throat names the face's landmarks to check first; Sellion and the Tragions clicked re-pose the head", async ({ page }) => {
   test.setTimeout(600_000);
   // Raw scanner output of the held-out population (parts, crown cut, floor, slices; ≈ 100K
-  // vertices): the estimate puts its second subject's face on the throat.
-  const files = synthFolder(2, 4242, 4, ['--profile', 'held-out', '--scanner-class', 'raw']);
+  // vertices): the estimate puts its twelfth subject's face on the throat (the blind zoo 8461's
+  // `raw` scan, as `crate/tests/zoo_estimate.rs` has it).
+  const files = synthFolder(12, 8461, 4, ['--profile', 'held-out', '--scanner-class', 'raw']);
   const file = (name: string) => files.find((f) => f.name === name)!;
   const truth = new Map(
-    file('landmarks_002.csv').bytes.toString('utf8').trim().split('\n').slice(1).map((line) => {
+    file('landmarks_012.csv').bytes.toString('utf8').trim().split('\n').slice(1).map((line) => {
       const [name, ...xyz] = line.split(',');
       return [name!, xyz.map(Number)] as const;
     }),
@@ -190,7 +191,7 @@ test("a face placed on the throat names the face's landmarks to check first; Sel
   };
   await page.goto('./?debug');
   await expect(body(page)).toHaveAttribute('data-template-ready', 'true', { timeout: 60_000 });
-  await dropFiles(page, [file('scan_002.ply')]);
+  await dropFiles(page, [file('scan_012.ply')]);
   await expect(body(page)).toHaveAttribute('data-estimates', '1', { timeout: 120_000 });
   await expect(body(page)).toHaveAttribute('data-estimate-verdict', 'doubtful');
   expect(await off('Rt. Infraorbitale')).toBeGreaterThan(50);
@@ -212,8 +213,16 @@ test("a face placed on the throat names the face's landmarks to check first; Sel
       (p) => (window as unknown as { bodyspaceDebug: { canvasPoint: (p: number[]) => [number, number] | null } }).bodyspaceDebug.canvasPoint(p),
       metres,
     );
-    await page.mouse.click(canvas.x + px![0], canvas.y + px![1]);
-    await expect(row(page, name)).toHaveAttribute('data-state', 'edited');
+    // The scan has holes (a raw scanner's slices, shadowed ears): a click that falls through one
+    // lands on the inside of the far side of the head, and a person clicks again beside it.
+    const beside = [[0, 0], ...[2, 4, 6, 8].flatMap((r) => [0, 1, 2, 3, 4, 5, 6, 7].map((k) => [r * Math.cos((k * Math.PI) / 4), r * Math.sin((k * Math.PI) / 4)]))];
+    for (const [dx, dy] of beside as [number, number][]) {
+      await page.mouse.click(canvas.x + px![0] + dx, canvas.y + px![1] + dy);
+      const placed = await expect(row(page, name))
+        .toHaveAttribute('data-state', 'edited', { timeout: 2_000 })
+        .then(() => true, () => false);
+      if (placed && (await off(name)) < 8) break;
+    }
     expect(await off(name)).toBeLessThan(8);
   }
   await page.getByTestId('view-whole').click();
