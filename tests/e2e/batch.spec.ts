@@ -182,8 +182,9 @@ test('a reload in the middle of a batch resumes it by itself; Cancel all is not 
   await expect(body(page)).toHaveAttribute('data-batch-running', '1');
 
   // Cancel all, pressed while the panel redraws with the worker's progress and released after it
-  // has: the button is the one pressed (not a new one each frame), so the click lands. Nothing
-  // finished, all four stopped, and one click starts them again.
+  // has: the button is the one pressed (not a new one each frame), so the click lands. What had
+  // not finished is stopped, not counted as finished, and one click starts them again. (The first
+  // subject may finish between the press and the release on a loaded machine.)
   const cancelAll = page.getByTestId('batch-cancel-all');
   await cancelAll.scrollIntoViewIfNeeded();
   const pressed = await cancelAll.elementHandle();
@@ -196,17 +197,19 @@ test('a reload in the middle of a batch resumes it by itself; Cancel all is not 
   await page.mouse.up();
   expect(await pressed!.evaluate((e) => e.isConnected)).toBe(true);
   expect(await upList!.evaluate((e) => e.isConnected)).toBe(true);
-  await expect(body(page)).toHaveAttribute('data-batch-stopped', '4');
-  await expect(body(page)).toHaveAttribute('data-batch-finished', '0');
-  await expect(page.getByTestId('batch-summary')).toHaveText(/^0 of 4 finished, 4 stopped/);
-  expect(Number(await page.getByTestId('batch-progress').getAttribute('value'))).toBeLessThan(0.25);
+  await expect(body(page)).toHaveAttribute('data-batch-running', '0');
+  const finished = Number(await body(page).getAttribute('data-batch-finished'));
+  expect(finished).toBeLessThanOrEqual(1);
+  await expect(body(page)).toHaveAttribute('data-batch-stopped', String(4 - finished));
+  await expect(page.getByTestId('batch-summary')).toHaveText(new RegExp(`^${finished} of 4 finished, ${4 - finished} stopped`));
+  expect(Number(await page.getByTestId('batch-progress').getAttribute('value'))).toBeLessThan(0.25 * (finished + 1));
   await page.getByTestId('batch-retry-all').click();
   await expect(body(page)).toHaveAttribute('data-batch-stopped', '0');
 
-  // Reload while the first aligns and three wait: all four finish without a click.
-  await expect(row(page, 'scan_001')).toHaveAttribute('data-status', 'aligning');
+  // Reload while one aligns and the last waits: all four finish without a click.
+  await expect(page.locator('[data-testid="batch-row"][data-status="aligning"]')).toHaveCount(1);
   await expect(row(page, 'scan_004')).toHaveAttribute('data-status', 'queued');
-  await expect(page.getByTestId('batch-summary')).toHaveText(/^0 of 4 finished/);
+  await expect(page.getByTestId('batch-summary')).toHaveText(new RegExp(`^${finished} of 4 finished`));
   await expect(body(page)).toHaveAttribute('data-batch-saving', '0');
   await page.reload();
   await expect(body(page)).toHaveAttribute('data-template-ready', 'true', { timeout: 60_000 });
