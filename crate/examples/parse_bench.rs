@@ -1,12 +1,13 @@
 //! Scan parsing benchmark: a deterministic 300,000-triangle binary PLY (a wavy grid) is built in
 //! memory, parsed N times with `read_scan`, and the median time is printed; likewise the same mesh
-//! as OBJ, and the mesh analysis (`summarise`, `vertex_normals`) on it.
+//! as OBJ, and the mesh analysis (`summarise`, of which `winding`, and `vertex_normals`) on it.
 //!
 //! `cargo run --release --example parse_bench [N]`
 
 use std::time::Instant;
 
 use bodyspace::io::{read_scan, write_obj, write_ply};
+use bodyspace::mesh::winding::{winding, WindingParams};
 use bodyspace::mesh::{summarise, Mesh};
 use nalgebra::Point3;
 
@@ -74,8 +75,11 @@ fn main() {
         let s = summarise(&mesh);
         assert_eq!((s.components, s.boundary_loops), (1, 1));
     });
+    let winding_ms = median_of(runs, || {
+        winding(&mesh, &WindingParams::default());
+    });
     let normals_ms = median_of(runs, || {
         assert_eq!(mesh.vertex_normals().len(), mesh.positions.len());
     });
-    println!("summarise: {summary_ms:.2} ms; vertex_normals: {normals_ms:.2} ms");
+    println!("summarise: {summary_ms:.2} ms (of which winding {winding_ms:.2} ms); vertex_normals: {normals_ms:.2} ms");
 }

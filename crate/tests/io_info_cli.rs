@@ -68,6 +68,7 @@ fn info_prints_one_json_object_with_landmarks() {
     assert_eq!(json["units_detected"], "millimetres");
     assert_eq!(json["boundary_loops"], 0);
     assert_eq!(json["components"], 1);
+    assert_eq!(json["winding"], "outward");
     let max: Vec<f64> = serde_json::from_value(json["bbox_max"].clone()).unwrap();
     assert!(
         (max[0] - 0.4).abs() < 1e-6 && (max[1] - 1.8).abs() < 1e-6 && (max[2] - 0.3).abs() < 1e-6

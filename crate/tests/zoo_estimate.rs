@@ -14,6 +14,8 @@ mod estimate_support;
 use bodyspace::estimate::{Axis, EstimateParams, Orientation, Verdict};
 use bodyspace::landmarks::LandmarkSet;
 use bodyspace::mesh::topology::{component_labels, components};
+use bodyspace::mesh::winding::{winding, Winding, WindingParams};
+use bodyspace::mesh::Mesh;
 use bodyspace::synth::zoo::parts::scan_labels;
 use bodyspace::synth::{
     MakeHumanData, PopulationProfile, ScannerClass, ScannerParams, SubjectId, ZooParams,
@@ -97,6 +99,27 @@ fn every_scanner_class_comes_out_the_right_way_up_in_two_frames() {
             let c = placed(&template, subject.clone(), frame);
             if class == ScannerClass::Parts || class == ScannerClass::Raw {
                 assert!(components(&c.scan) >= 5, "{}", class.name());
+            }
+            // Every class's triangles face out of the body, and turned over they face into it:
+            // the app tells a click through a hole by it.
+            let flipped = Mesh::new(
+                c.scan.positions.clone(),
+                c.scan
+                    .triangles
+                    .iter()
+                    .map(|&[a, b, d]| [a, d, b])
+                    .collect(),
+            );
+            let wound = (
+                winding(&c.scan, &WindingParams::default()),
+                winding(&flipped, &WindingParams::default()),
+            );
+            if wound != (Winding::Outward, Winding::Inward) {
+                failures.push(format!(
+                    "{} / {}: wound {wound:?}",
+                    class.name(),
+                    frame.name
+                ));
             }
             let e = estimate_bare(&template, &c, &EstimateParams::default());
             let r = &e.report;

@@ -25,7 +25,8 @@ fn read_file(path: &Path) -> Result<(Vec<u8>, String), String> {
 }
 
 /// Runs `bodyspace info`: prints one JSON object (`vertices`, `triangles`, `bbox_min`/`bbox_max`
-/// in metres, `units_detected`, `scale_to_metres`, `boundary_loops`, `components`, and with
+/// in metres, `units_detected`, `scale_to_metres`, `boundary_loops`, `components`, `winding`
+/// (`outward`, `inward` or `mixed`: which way the triangles face), and with
 /// `--landmarks` also `landmarks_found`, `landmarks_missing`, `landmarks_unknown`). The error is
 /// the one-line message for stderr.
 pub fn run(args: &InfoArgs) -> Result<(), String> {

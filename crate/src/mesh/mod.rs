@@ -9,6 +9,7 @@
 //! * [`similarity`]: the least-squares similarity or rigid transform between point sets (Umeyama).
 //! * [`units`]: metres or millimetres from a body's extent.
 //! * [`volume`]: enclosed volume and surface area.
+//! * [`winding`]: which way a scan's triangles face (out of the body, into it, or mixed).
 //! * [`summary`]: the one-look summary of a loaded scan.
 //! * [`surface_points`]: points spread over a mesh's triangles, everywhere or near a point.
 //! * [`tip`]: where a surface near a point stands out most from its surroundings in one direction
@@ -32,6 +33,7 @@ pub mod topology;
 pub mod trimesh;
 pub mod units;
 pub mod volume;
+pub mod winding;
 
 pub use bounds::{bounding_box, bounding_extent};
 pub use summary::{summarise, MeshSummary};

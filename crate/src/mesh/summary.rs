@@ -1,11 +1,13 @@
-//! A one-look summary of a scan: sizes, bounding box in metres, units, holes and components.
+//! A one-look summary of a scan: sizes, bounding box in metres, units, holes, components and
+//! which way its triangles face.
 
 use nalgebra::Point3;
 use serde::Serialize;
 
 use super::bounds::bounding_box;
-use super::topology::{boundary_loops, components};
+use super::topology::{boundary_loops, component_labels};
 use super::units::{detect_units, Units};
+use super::winding::{winding_of_parts, Winding, WindingParams};
 use super::Mesh;
 
 /// What `bodyspace info` and the app show about a loaded scan.
@@ -27,6 +29,8 @@ pub struct MeshSummary {
     pub boundary_loops: usize,
     /// Number of connected components.
     pub components: usize,
+    /// Which way the triangles face ([`super::winding`]).
+    pub winding: Winding,
 }
 
 /// Summarises a mesh whose positions are in file units.
@@ -36,6 +40,7 @@ pub fn summarise(mesh: &Mesh) -> MeshSummary {
     let units = detect_units(extent);
     let s = units.scale_to_metres();
     let (lo, hi) = bbox.unwrap_or((Point3::origin(), Point3::origin()));
+    let (labels, components) = component_labels(mesh);
     MeshSummary {
         vertices: mesh.vertex_count(),
         triangles: mesh.triangle_count(),
@@ -44,7 +49,8 @@ pub fn summarise(mesh: &Mesh) -> MeshSummary {
         units_detected: units,
         scale_to_metres: s,
         boundary_loops: boundary_loops(mesh).len(),
-        components: components(mesh),
+        components,
+        winding: winding_of_parts(mesh, &labels, components, &WindingParams::default()),
     }
 }
 
@@ -77,5 +83,6 @@ mod tests {
         assert_eq!(s.bbox_min, [0.0; 3]);
         assert_eq!(s.units_detected, Units::Metres);
         assert_eq!(s.components, 0);
+        assert_eq!(s.winding, Winding::Mixed);
     }
 }

@@ -1,0 +1,382 @@
+//! Which way a scan's triangles face: out of the body, into it, or each part its own way.
+//!
+//! Seen from outside, a body's surface faces the one looking at it. The scan is looked at along
+//! the six directions of its bounding box's axes: each view is a grid of `grid` cells across the
+//! largest extent, and in each cell the triangle nearest the viewer among those covering the
+//! cell's centre is the one seen there (a depth buffer), unless it is seen nearly edge-on. A
+//! coarse mesh and a dense one are seen alike, and what another part hides is not seen. A part
+//! (connected component, [`component_labels`]) is wound outwards when at least `agreement` of the
+//! cells where it is seen show a triangle facing the viewer (its counter-clockwise normal towards
+//! the viewer), inwards when at most `1 − agreement` do. Cells
+//! over a hole show the inside of the far side and count against, so an open scan agrees less
+//! than fully: the synthetic scanner zoo's body parts 0.69–1.00. A lone sheet (a floor or
+//! turntable remnant) is seen from both sides, so it agrees about half overall, but in each view
+//! all one way or the other: it is one-sided and says nothing either way. A part whose triangles
+//! face at random agrees about half in every view. The scan is wound one way when every part
+//! seen in at least `least_part` of the seen cells is wound that way or one-sided, and at least
+//! one is wound that way; [`Winding::Mixed`] otherwise (smaller pieces — dust, a toe's slice — do
+//! not count). Nothing here depends on the body's shape: sheets, closed parts and a body in
+//! pieces are looked at alike.
+//!
+//! The app needs it to tell a click on the body from one that fell through a hole onto the inside
+//! of the body's far side: there the triangle faces away from the camera on a scan wound
+//! outwards.
+
+use serde::{Deserialize, Serialize};
+
+use super::bounds::bounding_box;
+use super::topology::component_labels;
+use super::Mesh;
+
+/// Which way a scan's triangles face (module documentation).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Winding {
+    /// Every part of note is wound outwards: a triangle's normal (counter-clockwise) points out of
+    /// the body.
+    Outward,
+    /// Every part of note is wound inwards.
+    Inward,
+    /// The parts disagree, or one faces both ways: a triangle's side says nothing.
+    Mixed,
+}
+
+/// How the winding is judged (module documentation), with its defaults.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(default)]
+pub struct WindingParams {
+    /// Cells of a view across the scan's largest extent; default 128 (14 mm on a standing body).
+    pub grid: usize,
+    /// A part is wound one way when at least this share of the cells it is seen in agree;
+    /// default 0.6 (the zoo's parts agree 0.69–1.00, the least a hand or foot of a coarse scan
+    /// seen into where it was cut off the body; a part whose triangles face at random about 0.5).
+    pub agreement: f64,
+    /// Parts seen in less than this share of the seen cells do not count; default 0.01.
+    pub least_part: f64,
+}
+
+impl Default for WindingParams {
+    fn default() -> Self {
+        Self {
+            grid: 128,
+            agreement: 0.6,
+            least_part: 0.01,
+        }
+    }
+}
+
+/// A seen triangle counts when its normal is at least this far (cosine) from edge-on to the view.
+const EDGE_ON: f64 = 0.3;
+
+/// A part's cells in one view: (seen, facing the viewer).
+pub type ViewCount = (usize, usize);
+
+/// A view counts in the one-sided test when it holds at least this share of the part's seen cells
+/// (a floor remnant's rim, seen from the side in a few cells, does not).
+const LEAST_VIEW_SHARE: f64 = 0.1;
+
+/// Per part (`labels` and `count` as [`component_labels`] gives them), per view (+x, −x, +y, −y,
+/// +z, −z): the cells it is seen in and how many of them show a triangle facing the viewer (module
+/// documentation).
+pub fn part_views(
+    mesh: &Mesh,
+    labels: &[u32],
+    count: usize,
+    params: &WindingParams,
+) -> Vec<[ViewCount; 6]> {
+    let mut seen = vec![[(0usize, 0usize); 6]; count];
+    let Some((lo, hi)) = bounding_box(&mesh.positions) else {
+        return seen;
+    };
+    let extent = (hi - lo).max();
+    if extent <= 0.0 || params.grid == 0 {
+        return seen;
+    }
+    let cell = extent / params.grid as f64;
+    let side = params.grid + 1;
+    // Per view (+x, −x, +y, −y, +z, −z), per cell: the nearest triangle's depth and index; all six
+    // filled in one pass over the triangles.
+    let mut nearest = vec![vec![(f64::NEG_INFINITY, u32::MAX); side * side]; 6];
+    // Every vertex in cell units, once.
+    let at: Vec<[f64; 3]> = mesh
+        .positions
+        .iter()
+        .map(|p| {
+            [
+                (p.x - lo.x) / cell,
+                (p.y - lo.y) / cell,
+                (p.z - lo.z) / cell,
+            ]
+        })
+        .collect();
+    for (t, triangle) in mesh.triangles.iter().enumerate() {
+        let corners = triangle.map(|i| at[i as usize]);
+        for axis in 0..3 {
+            let (u, v) = ((axis + 1) % 3, (axis + 2) % 3);
+            // The corners across the view, and their depth along it.
+            let q = corners.map(|p| (p[u], p[v], p[axis]));
+            let (plus, minus) = nearest[2 * axis..2 * axis + 2].split_at_mut(1);
+            let (plus, minus) = (&mut plus[0], &mut minus[0]);
+            rasterise(q, params.grid, |at, depth| {
+                let at = at.0 * side + at.1;
+                if depth > plus[at].0 {
+                    plus[at] = (depth, t as u32);
+                }
+                if -depth > minus[at].0 {
+                    minus[at] = (-depth, t as u32);
+                }
+            });
+        }
+    }
+    for (view, cells) in nearest.iter().enumerate() {
+        let (axis, toward) = (view / 2, if view % 2 == 0 { 1.0 } else { -1.0 });
+        for &(_, t) in cells.iter().filter(|n| n.1 != u32::MAX) {
+            let [i, j, k] = mesh.triangles[t as usize];
+            let (a, b, c) = (
+                mesh.positions[i as usize],
+                mesh.positions[j as usize],
+                mesh.positions[k as usize],
+            );
+            let normal = (b - a).cross(&(c - a));
+            let facing = toward * normal[axis];
+            // A triangle seen edge-on says nothing about its side.
+            if facing.abs() < EDGE_ON * normal.norm() {
+                continue;
+            }
+            let part = &mut seen[labels[i as usize] as usize][view];
+            part.0 += 1;
+            part.1 += usize::from(facing > 0.0);
+        }
+    }
+    seen
+}
+
+/// Calls `cover(cell, depth)` for every cell `(a, b)` (`0..=grid` each) whose centre lies in the
+/// triangle `q` (corners in cell units across the view, and depth along it), with the depth
+/// there.
+fn rasterise(q: [(f64, f64, f64); 3], grid: usize, mut cover: impl FnMut((usize, usize), f64)) {
+    let [(x0, y0, d0), (x1, y1, d1), (x2, y2, d2)] = q;
+    // Most of a dense scan's triangles lie between cell centres: nothing to cover.
+    if (x0.min(x1).min(x2) - 0.5).floor() == (x0.max(x1).max(x2) - 0.5).floor()
+        || (y0.min(y1).min(y2) - 0.5).floor() == (y0.max(y1).max(y2) - 0.5).floor()
+    {
+        return;
+    }
+    let area = (x1 - x0) * (y2 - y0) - (x2 - x0) * (y1 - y0);
+    if area.abs() < 1e-12 {
+        return;
+    }
+    let range = |a: f64, b: f64, c: f64| {
+        let first = (a.min(b).min(c) - 0.5).ceil().max(0.0) as usize;
+        let last = ((a.max(b).max(c) - 0.5).floor()).min(grid as f64);
+        (first, last)
+    };
+    let ((a0, a1), (b0, b1)) = (range(x0, x1, x2), range(y0, y1, y2));
+    if a1 < 0.0 || b1 < 0.0 {
+        return;
+    }
+    for a in a0..=a1 as usize {
+        for b in b0..=b1 as usize {
+            let (x, y) = (a as f64 + 0.5, b as f64 + 0.5);
+            let w1 = ((x - x0) * (y2 - y0) - (x2 - x0) * (y - y0)) / area;
+            let w2 = ((x1 - x0) * (y - y0) - (x - x0) * (y1 - y0)) / area;
+            let w0 = 1.0 - w1 - w2;
+            if w0 >= 0.0 && w1 >= 0.0 && w2 >= 0.0 {
+                cover((a, b), w0 * d0 + w1 * d1 + w2 * d2);
+            }
+        }
+    }
+}
+
+/// What one part says (module documentation).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum PartSays {
+    Outward,
+    Inward,
+    OneSided,
+    Nothing,
+}
+
+fn part_says(views: &[ViewCount; 6], params: &WindingParams) -> PartSays {
+    let (seen, facing) = views.iter().fold((0, 0), |s, v| (s.0 + v.0, s.1 + v.1));
+    let share = facing as f64 / seen.max(1) as f64;
+    if share >= params.agreement {
+        return PartSays::Outward;
+    }
+    if share <= 1.0 - params.agreement {
+        return PartSays::Inward;
+    }
+    let extreme = |v: &ViewCount| {
+        let s = v.1 as f64 / v.0 as f64;
+        s >= params.agreement || s <= 1.0 - params.agreement
+    };
+    let counted: Vec<&ViewCount> = views
+        .iter()
+        .filter(|v| v.0 > 0 && v.0 as f64 >= LEAST_VIEW_SHARE * seen as f64)
+        .collect();
+    if !counted.is_empty() && counted.iter().all(|v| extreme(v)) {
+        PartSays::OneSided
+    } else {
+        PartSays::Nothing
+    }
+}
+
+/// Which way `mesh`'s triangles face (module documentation). An empty mesh is `Mixed`.
+pub fn winding(mesh: &Mesh, params: &WindingParams) -> Winding {
+    let (labels, count) = component_labels(mesh);
+    winding_of_parts(mesh, &labels, count, params)
+}
+
+/// [`winding`] with the mesh's [`component_labels`] already at hand.
+pub fn winding_of_parts(
+    mesh: &Mesh,
+    labels: &[u32],
+    count: usize,
+    params: &WindingParams,
+) -> Winding {
+    let parts = part_views(mesh, labels, count, params);
+    let seen = |views: &[ViewCount; 6]| views.iter().map(|v| v.0).sum::<usize>();
+    let total: usize = parts.iter().map(seen).sum();
+    let says: Vec<PartSays> = parts
+        .iter()
+        .filter(|views| seen(views) > 0 && seen(views) as f64 >= params.least_part * total as f64)
+        .map(|views| part_says(views, params))
+        .collect();
+    let only = |way: PartSays| {
+        says.contains(&way) && says.iter().all(|&s| s == way || s == PartSays::OneSided)
+    };
+    if only(PartSays::Outward) {
+        Winding::Outward
+    } else if only(PartSays::Inward) {
+        Winding::Inward
+    } else {
+        Winding::Mixed
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::mesh::topology::tests::cube;
+    use nalgebra::Point3;
+
+    fn views(mesh: &Mesh, params: &WindingParams) -> Vec<[ViewCount; 6]> {
+        let (labels, count) = component_labels(mesh);
+        part_views(mesh, &labels, count, params)
+    }
+
+    fn flipped(mesh: &Mesh, flip: impl Fn(usize) -> bool) -> Mesh {
+        let triangles = mesh
+            .triangles
+            .iter()
+            .enumerate()
+            .map(|(t, &[a, b, c])| if flip(t) { [a, c, b] } else { [a, b, c] })
+            .collect();
+        Mesh::new(mesh.positions.clone(), triangles)
+    }
+
+    /// Two cubes side by side, the second's vertices after the first's.
+    fn two_cubes(second_flipped: bool) -> Mesh {
+        let one = cube();
+        let n = one.positions.len() as u32;
+        let mut positions = one.positions.clone();
+        positions.extend(
+            one.positions
+                .iter()
+                .map(|p| p + nalgebra::Vector3::new(3.0, 0.0, 0.0)),
+        );
+        let mut triangles = one.triangles.clone();
+        triangles.extend(one.triangles.iter().map(|&[a, b, c]| {
+            if second_flipped {
+                [a + n, c + n, b + n]
+            } else {
+                [a + n, b + n, c + n]
+            }
+        }));
+        Mesh::new(positions, triangles)
+    }
+
+    #[test]
+    fn a_closed_part_wound_outwards_agrees_fully() {
+        let parts = {
+            let m = cube();
+            let (l, n) = component_labels(&m);
+            part_views(&m, &l, n, &WindingParams::default())
+        };
+        assert_eq!(parts.len(), 1);
+        // Each view sees the face towards it (128² cells), facing it; the sides are edge-on.
+        assert_eq!(parts[0], [(128 * 128, 128 * 128); 6], "{parts:?}");
+        assert_eq!(
+            winding(&cube(), &WindingParams::default()),
+            Winding::Outward
+        );
+        assert_eq!(
+            winding(&flipped(&cube(), |_| true), &WindingParams::default()),
+            Winding::Inward
+        );
+    }
+
+    #[test]
+    fn parts_that_disagree_or_a_part_flipped_in_places_are_mixed() {
+        let p = WindingParams::default();
+        assert_eq!(winding(&two_cubes(false), &p), Winding::Outward);
+        assert_eq!(winding(&two_cubes(true), &p), Winding::Mixed);
+        // Every other triangle flipped: the part faces both ways.
+        assert_eq!(
+            winding(&flipped(&cube(), |t| t % 2 == 0), &p),
+            Winding::Mixed
+        );
+        assert_eq!(winding(&Mesh::default(), &p), Winding::Mixed);
+    }
+
+    #[test]
+    fn an_open_part_with_a_hole_still_agrees() {
+        // The cube without one face: open, as a scan is at a hole.
+        let mut open = cube();
+        open.triangles.truncate(10);
+        // Seen from the open side, the inside of the far face: 5 of the 6 views agree.
+        let parts = {
+            let (l, n) = component_labels(&open);
+            part_views(&open, &l, n, &WindingParams::default())
+        };
+        let (seen, facing) = parts[0].iter().fold((0, 0), |s, v| (s.0 + v.0, s.1 + v.1));
+        assert_eq!((seen, facing), (6 * 128 * 128, 5 * 128 * 128), "{parts:?}");
+        assert_eq!(winding(&open, &WindingParams::default()), Winding::Outward);
+    }
+
+    #[test]
+    fn a_lone_sheet_beside_the_body_is_one_sided_and_says_nothing() {
+        // A floor: a 6 × 6 grid of quads under the cube, seen from above facing, from below not.
+        let body = cube();
+        let mut positions = body.positions.clone();
+        let first = positions.len() as u32;
+        for i in 0..7 {
+            for j in 0..7 {
+                positions.push(Point3::new(
+                    -1.0 + 0.5 * i as f64,
+                    -1.0 + 0.5 * j as f64,
+                    -0.5,
+                ));
+            }
+        }
+        let mut triangles = body.triangles.clone();
+        for i in 0..6u32 {
+            for j in 0..6u32 {
+                let v = |a: u32, b: u32| first + a * 7 + b;
+                triangles.push([v(i, j), v(i + 1, j), v(i + 1, j + 1)]);
+                triangles.push([v(i, j), v(i + 1, j + 1), v(i, j + 1)]);
+            }
+        }
+        let mesh = Mesh::new(positions, triangles);
+        let p = WindingParams {
+            grid: 12,
+            ..WindingParams::default()
+        };
+        let floor = views(&mesh, &p)[1];
+        assert_eq!(part_says(&floor, &p), PartSays::OneSided, "{floor:?}");
+        assert_eq!(winding(&mesh, &p), Winding::Outward);
+        // The same floor alone says nothing: no part is wound either way.
+        let alone = Mesh::new(mesh.positions.clone(), mesh.triangles[12..].to_vec());
+        assert_eq!(winding(&alone, &p), Winding::Mixed);
+    }
+}
