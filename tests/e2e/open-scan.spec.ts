@@ -36,6 +36,7 @@ test('a dropped PLY and .lnd show their counts, box, units, holes, parts and lan
   await expect(byTestId(page, 'scan-size-y')).toHaveText('1.700 m');
   await expect(byTestId(page, 'scan-holes')).toHaveText('1');
   await expect(byTestId(page, 'scan-components')).toHaveText('2');
+  await expect(byTestId(page, 'scan-winding')).toHaveText('outwards');
 
   await expect(byTestId(page, 'landmarks-file')).toHaveText('subject.lnd');
   await expect(byTestId(page, 'landmarks-found')).toHaveText(String(LND_FOUND.length));

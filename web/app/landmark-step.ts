@@ -39,6 +39,8 @@ const CHECK_DELAY_MS = 400;
 export class LandmarkStep {
   readonly panel: LandmarksPanel;
   private selected: string | null = null;
+  /** The landmark the last click meant to place fell through a hole in the scan (nothing placed), until the next change or pick. */
+  private throughHole: string | null = null;
   private facts: LandmarkFacts | null = null;
   private estimate: EstimateView = { state: 'none' };
   private suspicious: SuspiciousLandmark[] | null = null;
@@ -112,6 +114,10 @@ export class LandmarkStep {
         return true;
       },
       onPlace: (name, point, transient) => this.place(name, point, transient),
+      onThroughHole: (name) => {
+        this.throughHole = name;
+        this.render();
+      },
     });
     document.addEventListener('keydown', (event) => this.key(event));
   }
@@ -133,6 +139,7 @@ export class LandmarkStep {
     }
     if (this.estimator.busy) this.estimator.cancel();
     this.selected = null;
+    this.throughHole = null;
     this.suspicious = null;
     this.prediction = null;
     this.estimate = { state: 'none' };
@@ -371,6 +378,7 @@ export class LandmarkStep {
         canUndo: edits.canUndo,
         canRedo: edits.canRedo,
         suspicious: this.suspicious,
+        throughHole: this.throughHole,
       },
     });
     this.publishSelected(selected);
@@ -401,6 +409,7 @@ export class LandmarkStep {
 
   private select(name: string): void {
     this.selected = name;
+    this.throughHole = null;
     this.panel.guide.show(name);
     if (this.session.scan) this.onPick?.(name);
     this.render();
@@ -439,6 +448,7 @@ export class LandmarkStep {
 
   /** A committed change of the set: markers, panel, and the fit made with the old set is gone. */
   private edited(): void {
+    this.throughHole = null;
     document.body.dataset.landmarkEdits = String(Number(document.body.dataset.landmarkEdits ?? '0') + 1);
     this.showMarkers();
     this.render();

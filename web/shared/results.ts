@@ -14,7 +14,12 @@ export interface MeshSummary {
   scale_to_metres: number;
   boundary_loops: number;
   components: number;
+  /** Which way the triangles face (`mesh::winding`): out of the body, into it, or mixed. */
+  winding: Winding;
 }
+
+/** Which way a scan's triangles face (core `mesh::winding::Winding`). */
+export type Winding = 'outward' | 'inward' | 'mixed';
 
 /** Milliseconds spent in the worker, measured there. */
 export interface WorkerTimings {

@@ -47,6 +47,8 @@ export interface ToolsView {
   canRedo: boolean;
   /** The current set's suspicious landmarks; null when not checked. */
   suspicious: SuspiciousLandmark[] | null;
+  /** The landmark the last click meant to place: it fell through a hole in the scan (nothing placed). */
+  throughHole: string | null;
 }
 
 export interface ToolsActions {
@@ -106,6 +108,7 @@ export class LandmarkTools {
       orientationControl(view.orientation, running || !view.hasScan, a.onOrientation),
       h('div', { class: 'actions' }, estimate),
       h('p', { class: 'note', 'data-testid': 'landmarks-selected' }, selectedText(view)),
+      ...throughHoleParts(view.throughHole),
       h('div', { class: 'actions' }, undo, redo, absent),
       h('div', { class: 'actions export' }, h('span', { class: 'label' }, 'Export'), ...exports),
       ...suspiciousParts(view.suspicious, (shownCheck(e)?.verdict ?? 'good') === 'good'),
@@ -270,6 +273,18 @@ function selectedText(view: ToolsView): string {
   if (!s) return 'Pick a landmark in the list, then click on the scan to place it there; drag a marker to move it.';
   const where = s.position ? `at (${s.position.map((v) => (v * 1000).toFixed(1)).join(', ')}) mm, ${s.state}` : 'absent';
   return `${s.name}: ${where}. Click on the scan to place it.`;
+}
+
+/** What a click that fell through a hole in the scan did: nothing, and why. */
+function throughHoleParts(name: string | null): HTMLElement[] {
+  if (!name) return [];
+  return [
+    h(
+      'p',
+      { class: 'warn-note', 'data-testid': 'landmark-through-hole' },
+      `${name} was not placed: that click went through a hole in the scan onto the inside of its far side. Click on the surface beside the hole, or turn the view.`,
+    ),
+  ];
 }
 
 /**

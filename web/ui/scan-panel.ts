@@ -1,8 +1,11 @@
-// The scan's facts: file name, counts, bounding box, units (with an override), holes, parts.
-import type { MeshSummary, Units } from '../shared/results';
+// The scan's facts: file name, counts, bounding box, units (with an override), holes, parts, and
+// which way its triangles face.
+import type { MeshSummary, Units, Winding } from '../shared/results';
 import { UNITS } from '../shared/units';
 import { byId, h } from './dom';
 import { formatCount, formatMetres, formatPoint } from './format';
+
+const WINDING_WORDS: Record<Winding, string> = { outward: 'outwards', inward: 'inwards', mixed: 'mixed' };
 
 export interface ScanFacts {
   fileName: string;
@@ -55,6 +58,7 @@ export class ScanPanel {
         ...fact('Depth (z)', 'scan-size-z', formatMetres(size[2]!)),
         ...fact('Holes', 'scan-holes', formatCount(s.boundary_loops)),
         ...fact('Parts', 'scan-components', formatCount(s.components)),
+        ...fact('Triangles face', 'scan-winding', WINDING_WORDS[s.winding]),
       ),
       h('h2', {}, 'Bounding box (m)'),
       h(
@@ -66,7 +70,7 @@ export class ScanPanel {
       h(
         'p',
         { class: 'note' },
-        `Holes are boundary loops of the surface; parts are connected components. Read in ${facts.readMs.toFixed(0)} ms.`,
+        `Holes are boundary loops of the surface; parts are connected components; the triangles face out of the body or into it as the scan sees them from outside (mixed: the parts disagree, and a click through a hole cannot be told from one on the surface). Read in ${facts.readMs.toFixed(0)} ms.`,
       ),
     );
   }

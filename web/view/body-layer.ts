@@ -3,6 +3,7 @@
 // its landmark markers. Scans, the template, fits and shape-space bodies are all shown this way.
 import * as THREE from 'three';
 import type { Bounds } from '../shared/bounds';
+import type { Winding } from '../shared/results';
 import { LandmarkMarkers, type LandmarkPoints } from './landmark-markers';
 
 /** Flat arrays as the core returns them: positions in metres, unit vertex normals. */
@@ -30,6 +31,8 @@ export interface BodyContent {
   visible?: boolean;
   /** Column-major 4×4 display transform of the whole body (e.g. a z-up scan shown upright). */
   transform?: number[] | null;
+  /** Which way the mesh's triangles face (a scan's, from the core); `null`: not known. */
+  winding?: Winding | null;
 }
 
 /** Marker radius as a fraction of the body's height: 8 mm on a 1.75 m body. */
@@ -41,6 +44,7 @@ export class BodyLayer {
   private source: BodyMesh | null = null;
   private markers: LandmarkMarkers | null = null;
   private landmarks: LandmarkPoints | null = null;
+  private wound: Winding | null = null;
 
   constructor(name: string) {
     this.group.name = name;
@@ -52,6 +56,7 @@ export class BodyLayer {
    * rebuilds the geometry.
    */
   update(content: BodyContent): void {
+    if (content.winding !== undefined) this.wound = content.winding;
     let rebuilt = false;
     if (content.mesh !== undefined && content.mesh !== this.source) {
       if (content.mesh && this.sameTopology(content.mesh)) this.morphMesh(content.mesh);
@@ -85,6 +90,11 @@ export class BodyLayer {
 
   get markerCount(): number {
     return this.markers?.count ?? 0;
+  }
+
+  /** Which way the surface's triangles face, when known. */
+  get winding(): Winding | null {
+    return this.wound;
   }
 
   /** The body's surface, which hides markers behind it from the tooltip. */

@@ -2,7 +2,9 @@
 // moving) on the surface places the selected landmark at the point under the cursor; a press on a
 // marker drags it along the surface (the orbit controls rest meanwhile). Only the body's own mesh
 // is raycast; points come out in the body's frame (metres, before its display transform), where
-// its markers live.
+// its markers live. On a body whose triangles are known to face out of it (a scan's winding, from
+// the core), a ray whose first hit is a triangle's back has gone through a hole in the surface
+// onto the inside of the far side: nothing is placed there, and the handlers hear of it.
 import * as THREE from 'three';
 import type { OrbitControls } from 'three/addons/controls/OrbitControls.js';
 import type { BodyLayer } from './body-layer';
@@ -18,10 +20,18 @@ export interface MarkerEditHandlers {
   onPlace(name: string, point: SurfacePoint, transient: boolean): void;
   /** A press on marker `name`: whether it may be dragged (it then becomes the selected one). */
   onGrab(name: string): boolean;
+  /** A click meant to place `name` went through a hole onto the inside of the far side: nothing was placed. */
+  onThroughHole(name: string): void;
 }
+
+/** The surface under the pointer: a point, nothing, or the inside of the far side through a hole. */
+type Under = SurfacePoint | null | 'hole';
 
 /** A press that moves less than this (CSS px) before release is a click, not an orbit. */
 const CLICK_SLOP_PX = 5;
+
+/** How far (m) behind a triangle's back a front may lie for the two to be a fold of the surface, not a hole. */
+const FOLD_DEPTH = 0.01;
 
 export class MarkerEditing {
   private readonly raycaster = new THREE.Raycaster();
@@ -69,7 +79,7 @@ export class MarkerEditing {
         if (this.drag !== drag || !drag.pending) return;
         const point = this.surfaceAt(drag.pending);
         drag.pending = null;
-        if (!point) return;
+        if (!point || point === 'hole') return;
         drag.last = point;
         this.handlers.onPlace(drag.name, point, true);
       });
@@ -80,8 +90,10 @@ export class MarkerEditing {
     if (drag) {
       this.drag = null;
       this.controls.enabled = true;
-      const point = this.surfaceAt({ x: event.clientX, y: event.clientY }) ?? drag.last;
+      const under = this.surfaceAt({ x: event.clientX, y: event.clientY });
+      const point = under && under !== 'hole' ? under : drag.last;
       if (point) this.handlers.onPlace(drag.name, point, false);
+      else if (under === 'hole') this.handlers.onThroughHole(drag.name);
       return;
     }
     const press = this.press;
@@ -89,7 +101,8 @@ export class MarkerEditing {
     const name = this.handlers.selected();
     if (!press || !name || Math.hypot(event.clientX - press.x, event.clientY - press.y) > CLICK_SLOP_PX) return;
     const point = this.surfaceAt({ x: event.clientX, y: event.clientY });
-    if (point) this.handlers.onPlace(name, point, false);
+    if (point === 'hole') this.handlers.onThroughHole(name);
+    else if (point) this.handlers.onPlace(name, point, false);
   }
 
   /** The layer when it is shown with a surface, else undefined. */
@@ -104,28 +117,65 @@ export class MarkerEditing {
     this.raycaster.setFromCamera(ndc, this.camera);
   }
 
-  /** The marker under the pointer, unless the surface lies clearly in front of it. */
+  /**
+   * The marker under the pointer, unless the surface lies clearly in front of it. Through a hole,
+   * a marker on the far side of the body lies at the far side's inside, and is not taken; one in
+   * front of the hole is.
+   */
   private markerAt(layer: BodyLayer, at: { clientX: number; clientY: number }): string | null {
     const markers = layer.landmarkMarkers;
     if (!markers) return null;
     this.aim({ x: at.clientX, y: at.clientY });
     const hit = markers.pick(this.raycaster);
     if (!hit) return null;
-    const surface = this.raycaster.intersectObject(layer.surface!, false)[0];
+    const surface = this.surfaceHit(layer);
+    if (!surface) return hit.name;
     // A marker sits on the surface: its sphere pokes out in front by up to its radius.
     const slack = layer.bounds().getSize(new THREE.Vector3()).length() * 0.01;
-    return surface && surface.distance + slack < hit.distance ? null : hit.name;
+    if (surface.throughHole) return hit.distance + slack < surface.hit.distance ? hit.name : null;
+    return surface.hit.distance + slack < hit.distance ? null : hit.name;
   }
 
   /** The point of the layer's surface under `at` (client px), in the layer's frame. */
-  private surfaceAt(at: { x: number; y: number }): SurfacePoint | null {
+  private surfaceAt(at: { x: number; y: number }): Under {
     const layer = this.editable();
     if (!layer) return null;
     this.aim(at);
-    const hit = this.raycaster.intersectObject(layer.surface!, false)[0];
-    if (!hit) return null;
+    const surface = this.surfaceHit(layer);
+    if (!surface) return null;
+    if (surface.throughHole) return 'hole';
     layer.group.updateMatrixWorld(true);
-    const p = layer.group.worldToLocal(hit.point.clone());
+    const p = layer.group.worldToLocal(surface.hit.point.clone());
     return [p.x, p.y, p.z];
+  }
+
+  /**
+   * The surface's first hit along the aimed ray, and whether it is seen through a hole: the back
+   * of a triangle (on a surface wound one way) with no triangle's front within `FOLD_DEPTH`
+   * behind it, the inside of the far side. A noisy scan's surface folds over in places, and there
+   * a triangle's back lies just in front of the surface: that is a hit like any other.
+   */
+  private surfaceHit(layer: BodyLayer): { hit: THREE.Intersection; throughHole: boolean } | null {
+    const hits = this.raycaster.intersectObject(layer.surface!, false);
+    const hit = hits[0];
+    if (!hit) return null;
+    const throughHole = this.backOf(layer, hit) && !hits.some((h) => h.distance - hit.distance <= FOLD_DEPTH && !this.backOf(layer, h));
+    return { hit, throughHole };
+  }
+
+  /**
+   * Whether `hit` is the back of a triangle on a surface wound one way (out of the body or into
+   * it). The triangle's side is taken from its corners in world space, so a display transform
+   * that mirrors the body changes nothing.
+   */
+  private backOf(layer: BodyLayer, hit: THREE.Intersection): boolean {
+    const winding = layer.winding;
+    if ((winding !== 'outward' && winding !== 'inward') || !hit.face) return false;
+    const mesh = layer.surface!;
+    const position = mesh.geometry.getAttribute('position');
+    const [a, b, c] = [hit.face.a, hit.face.b, hit.face.c].map((i) => new THREE.Vector3().fromBufferAttribute(position, i).applyMatrix4(mesh.matrixWorld));
+    const normal = b!.sub(a!).cross(c!.sub(a!));
+    const away = normal.dot(this.raycaster.ray.direction) > 0;
+    return winding === 'outward' ? away : !away;
   }
 }
