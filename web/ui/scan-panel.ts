@@ -58,7 +58,7 @@ export class ScanPanel {
         ...fact('Depth (z)', 'scan-size-z', formatMetres(size[2]!)),
         ...fact('Holes', 'scan-holes', formatCount(s.boundary_loops)),
         ...fact('Parts', 'scan-components', formatCount(s.components)),
-        ...fact('Triangles face', 'scan-winding', WINDING_WORDS[s.winding]),
+        ...fact('Normals', 'scan-winding', WINDING_WORDS[s.winding]),
       ),
       h('h2', {}, 'Bounding box (m)'),
       h(
@@ -70,7 +70,7 @@ export class ScanPanel {
       h(
         'p',
         { class: 'note' },
-        `Holes are boundary loops of the surface; parts are connected components; the triangles face out of the body or into it as the scan sees them from outside (mixed: the parts disagree, and a click through a hole cannot be told from one on the surface). Read in ${facts.readMs.toFixed(0)} ms.`,
+        `Holes are boundary loops of the surface; parts are connected components; normals are the triangles’ sides, facing out of the body or into it as the scan is seen from outside (mixed: the parts disagree, and a click through a hole cannot be told from one on the surface). Read in ${facts.readMs.toFixed(0)} ms.`,
       ),
     );
   }

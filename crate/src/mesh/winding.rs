@@ -3,20 +3,20 @@
 //! Seen from outside, a body's surface faces the one looking at it. The scan is looked at along
 //! the six directions of its bounding box's axes: each view is a grid of `grid` cells across the
 //! largest extent, and in each cell the triangle nearest the viewer among those covering the
-//! cell's centre is the one seen there (a depth buffer), unless it is seen nearly edge-on. A
-//! coarse mesh and a dense one are seen alike, and what another part hides is not seen. A part
-//! (connected component, [`component_labels`]) is wound outwards when at least `agreement` of the
-//! cells where it is seen show a triangle facing the viewer (its counter-clockwise normal towards
-//! the viewer), inwards when at most `1 − agreement` do. Cells
+//! cell's centre is the one seen there (a depth buffer), unless it is seen nearly edge-on
+//! (`edge_on`). A coarse mesh and a dense one are seen alike, and what another part hides is not
+//! seen. A part (connected component, [`component_labels`]) is wound outwards when at least
+//! `agreement` of the cells where it is seen show a triangle facing the viewer (its
+//! counter-clockwise normal towards the viewer), inwards when at most `1 − agreement` do. Cells
 //! over a hole show the inside of the far side and count against, so an open scan agrees less
 //! than fully: the synthetic scanner zoo's body parts 0.69–1.00. A lone sheet (a floor or
 //! turntable remnant) is seen from both sides, so it agrees about half overall, but in each view
-//! all one way or the other: it is one-sided and says nothing either way. A part whose triangles
-//! face at random agrees about half in every view. The scan is wound one way when every part
-//! seen in at least `least_part` of the seen cells is wound that way or one-sided, and at least
-//! one is wound that way; [`Winding::Mixed`] otherwise (smaller pieces — dust, a toe's slice — do
-//! not count). Nothing here depends on the body's shape: sheets, closed parts and a body in
-//! pieces are looked at alike.
+//! that holds at least `least_view` of its cells all one way or the other: it is one-sided and
+//! says nothing either way. A part whose triangles face at random agrees about half in every
+//! view. The scan is wound one way when every part seen in at least `least_part` of the seen
+//! cells is wound that way or one-sided, and at least one is wound that way; [`Winding::Mixed`]
+//! otherwise (smaller pieces — dust, a toe's slice — do not count). Nothing here depends on the
+//! body's shape: sheets, closed parts and a body in pieces are looked at alike.
 //!
 //! The app needs it to tell a click on the body from one that fell through a hole onto the inside
 //! of the body's far side: there the triangle faces away from the camera on a scan wound
@@ -53,6 +53,12 @@ pub struct WindingParams {
     pub agreement: f64,
     /// Parts seen in less than this share of the seen cells do not count; default 0.01.
     pub least_part: f64,
+    /// A seen triangle counts when its normal's cosine to the view is at least this (nearer
+    /// edge-on, its side says nothing); default 0.3.
+    pub edge_on: f64,
+    /// A view counts in the one-sided test when it holds at least this share of the part's seen
+    /// cells; default 0.1 (a floor remnant's rim, seen from the side in a few cells, does not).
+    pub least_view: f64,
 }
 
 impl Default for WindingParams {
@@ -61,19 +67,14 @@ impl Default for WindingParams {
             grid: 128,
             agreement: 0.6,
             least_part: 0.01,
+            edge_on: 0.3,
+            least_view: 0.1,
         }
     }
 }
 
-/// A seen triangle counts when its normal is at least this far (cosine) from edge-on to the view.
-const EDGE_ON: f64 = 0.3;
-
 /// A part's cells in one view: (seen, facing the viewer).
 pub type ViewCount = (usize, usize);
-
-/// A view counts in the one-sided test when it holds at least this share of the part's seen cells
-/// (a floor remnant's rim, seen from the side in a few cells, does not).
-const LEAST_VIEW_SHARE: f64 = 0.1;
 
 /// Per part (`labels` and `count` as [`component_labels`] gives them), per view (+x, −x, +y, −y,
 /// +z, −z): the cells it is seen in and how many of them show a triangle facing the viewer (module
@@ -140,7 +141,7 @@ pub fn part_views(
             let normal = (b - a).cross(&(c - a));
             let facing = toward * normal[axis];
             // A triangle seen edge-on says nothing about its side.
-            if facing.abs() < EDGE_ON * normal.norm() {
+            if facing.abs() < params.edge_on * normal.norm() {
                 continue;
             }
             let part = &mut seen[labels[i as usize] as usize][view];
@@ -212,7 +213,7 @@ fn part_says(views: &[ViewCount; 6], params: &WindingParams) -> PartSays {
     };
     let counted: Vec<&ViewCount> = views
         .iter()
-        .filter(|v| v.0 > 0 && v.0 as f64 >= LEAST_VIEW_SHARE * seen as f64)
+        .filter(|v| v.0 > 0 && v.0 as f64 >= params.least_view * seen as f64)
         .collect();
     if !counted.is_empty() && counted.iter().all(|v| extreme(v)) {
         PartSays::OneSided
