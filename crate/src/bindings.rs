@@ -30,7 +30,7 @@ pub use landmarks::{check_landmarks_js, estimate_landmarks_js, LandmarkEstimate}
 pub use subject::{fit_subject_files_js, fit_subject_js, SubjectScan};
 pub use template::{load_template, TemplateHandle};
 
-use js_sys::{Float32Array, Uint32Array};
+use js_sys::{Float32Array, Int8Array, Uint32Array};
 use serde::Serialize;
 use wasm_bindgen::prelude::*;
 
@@ -113,6 +113,13 @@ impl ParsedScan {
     /// `#V·3` unit vertex normals, xyz interleaved (copied out).
     pub fn normals(&self) -> Float32Array {
         Float32Array::from(self.normals.as_slice())
+    }
+
+    /// `#V` per vertex, which way its part faces: 1 outwards, −1 inwards, 0 neither known
+    /// ([`MeshSummary::vertex_winding`], copied out).
+    #[wasm_bindgen(js_name = vertexWinding)]
+    pub fn vertex_winding(&self) -> Int8Array {
+        Int8Array::from(self.summary.vertex_winding.as_slice())
     }
 
     /// The [`MeshSummary`] as JSON (snake_case fields, bounding box in metres).

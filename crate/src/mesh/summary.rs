@@ -7,7 +7,7 @@ use serde::Serialize;
 use super::bounds::bounding_box;
 use super::topology::{boundary_loops, component_labels};
 use super::units::{detect_units, Units};
-use super::winding::{winding_of_parts, Winding, WindingParams};
+use super::winding::{windings, Winding, WindingParams};
 use super::Mesh;
 
 /// What `bodyspace info` and the app show about a loaded scan.
@@ -31,6 +31,10 @@ pub struct MeshSummary {
     pub components: usize,
     /// Which way the triangles face ([`super::winding`]).
     pub winding: Winding,
+    /// Per vertex, which way its part faces ([`windings`]): 1 outwards, −1 inwards, 0 neither
+    /// known. Not in the summary's JSON (one entry per vertex); the app takes it as an array.
+    #[serde(skip)]
+    pub vertex_winding: Vec<i8>,
 }
 
 /// Summarises a mesh whose positions are in file units.
@@ -41,6 +45,7 @@ pub fn summarise(mesh: &Mesh) -> MeshSummary {
     let s = units.scale_to_metres();
     let (lo, hi) = bbox.unwrap_or((Point3::origin(), Point3::origin()));
     let (labels, components) = component_labels(mesh);
+    let (winding, parts) = windings(mesh, &labels, components, &WindingParams::default());
     MeshSummary {
         vertices: mesh.vertex_count(),
         triangles: mesh.triangle_count(),
@@ -50,7 +55,12 @@ pub fn summarise(mesh: &Mesh) -> MeshSummary {
         scale_to_metres: s,
         boundary_loops: boundary_loops(mesh).len(),
         components,
-        winding: winding_of_parts(mesh, &labels, components, &WindingParams::default()),
+        winding,
+        // A vertex no triangle uses belongs to no part.
+        vertex_winding: labels
+            .iter()
+            .map(|&l| parts.get(l as usize).copied().unwrap_or(0))
+            .collect(),
     }
 }
 
@@ -84,5 +94,27 @@ mod tests {
         assert_eq!(s.units_detected, Units::Metres);
         assert_eq!(s.components, 0);
         assert_eq!(s.winding, Winding::Mixed);
+        assert!(s.vertex_winding.is_empty());
+    }
+
+    #[test]
+    fn each_vertex_carries_its_parts_winding() {
+        // Two unit cubes apart, the second turned inside out: the scan is mixed, each part not.
+        let one = crate::mesh::topology::tests::cube();
+        let n = one.positions.len() as u32;
+        let mut positions = one.positions.clone();
+        positions.extend(
+            one.positions
+                .iter()
+                .map(|p| p + nalgebra::Vector3::new(3.0, 0.0, 0.0)),
+        );
+        let mut triangles = one.triangles.clone();
+        triangles.extend(one.triangles.iter().map(|&[a, b, c]| [a + n, c + n, b + n]));
+        // And a lone point, which no triangle uses.
+        positions.push(Point3::new(0.0, 5.0, 0.0));
+        let s = summarise(&Mesh::new(positions, triangles));
+        assert_eq!(s.winding, Winding::Mixed);
+        let expected: Vec<i8> = [vec![1; n as usize], vec![-1; n as usize], vec![0]].concat();
+        assert_eq!(s.vertex_winding, expected);
     }
 }

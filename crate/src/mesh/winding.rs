@@ -20,7 +20,8 @@
 //!
 //! The app needs it to tell a click on the body from one that fell through a hole onto the inside
 //! of the body's far side: there the triangle faces away from the camera on a scan wound
-//! outwards.
+//! outwards. On a scan whose parts disagree, each part of note still says its own way
+//! ([`windings`]), so the app can tell it on every part wound one way.
 
 use serde::{Deserialize, Serialize};
 
@@ -225,34 +226,56 @@ fn part_says(views: &[ViewCount; 6], params: &WindingParams) -> PartSays {
 /// Which way `mesh`'s triangles face (module documentation). An empty mesh is `Mixed`.
 pub fn winding(mesh: &Mesh, params: &WindingParams) -> Winding {
     let (labels, count) = component_labels(mesh);
-    winding_of_parts(mesh, &labels, count, params)
+    windings(mesh, &labels, count, params).0
 }
 
-/// [`winding`] with the mesh's [`component_labels`] already at hand.
-pub fn winding_of_parts(
+/// The scan's [`Winding`] and each part's own way, `labels` and `count` as
+/// [`component_labels`] gives them. A part seen in at least `least_part` of the seen cells is 1
+/// when it is wound outwards, −1 inwards, 0 otherwise (one-sided, facing both ways); a smaller
+/// part takes the whole scan's way (0 on a mixed scan). On a scan whose parts disagree, a part
+/// wound one way still says which side of its triangles is its outside.
+pub fn windings(
     mesh: &Mesh,
     labels: &[u32],
     count: usize,
     params: &WindingParams,
-) -> Winding {
+) -> (Winding, Vec<i8>) {
     let parts = part_views(mesh, labels, count, params);
     let seen = |views: &[ViewCount; 6]| views.iter().map(|v| v.0).sum::<usize>();
     let total: usize = parts.iter().map(seen).sum();
-    let says: Vec<PartSays> = parts
+    let says: Vec<Option<PartSays>> = parts
         .iter()
-        .filter(|views| seen(views) > 0 && seen(views) as f64 >= params.least_part * total as f64)
-        .map(|views| part_says(views, params))
+        .map(|views| {
+            (seen(views) > 0 && seen(views) as f64 >= params.least_part * total as f64)
+                .then(|| part_says(views, params))
+        })
         .collect();
     let only = |way: PartSays| {
-        says.contains(&way) && says.iter().all(|&s| s == way || s == PartSays::OneSided)
+        let noted = || says.iter().flatten();
+        noted().any(|&s| s == way) && noted().all(|&s| s == way || s == PartSays::OneSided)
     };
-    if only(PartSays::Outward) {
+    let whole = if only(PartSays::Outward) {
         Winding::Outward
     } else if only(PartSays::Inward) {
         Winding::Inward
     } else {
         Winding::Mixed
-    }
+    };
+    let side = |w: Winding| match w {
+        Winding::Outward => 1,
+        Winding::Inward => -1,
+        Winding::Mixed => 0,
+    };
+    let own = says
+        .iter()
+        .map(|s| match s {
+            Some(PartSays::Outward) => 1,
+            Some(PartSays::Inward) => -1,
+            Some(_) => 0,
+            None => side(whole),
+        })
+        .collect();
+    (whole, own)
 }
 
 #[cfg(test)]
@@ -331,6 +354,24 @@ mod tests {
     }
 
     #[test]
+    fn each_part_of_a_mixed_scan_keeps_its_own_way() {
+        let p = WindingParams::default();
+        let mesh = two_cubes(true);
+        let (l, n) = component_labels(&mesh);
+        let (whole, parts) = windings(&mesh, &l, n, &p);
+        assert_eq!(whole, Winding::Mixed);
+        assert_eq!(parts, vec![1, -1]);
+        // Both one way: each part says so, as the whole does.
+        let mesh = two_cubes(false);
+        let (l, n) = component_labels(&mesh);
+        assert_eq!(windings(&mesh, &l, n, &p), (Winding::Outward, vec![1, 1]));
+        // A part facing both ways says nothing of itself.
+        let mesh = flipped(&two_cubes(false), |t| t >= 12 && t % 2 == 0);
+        let (l, n) = component_labels(&mesh);
+        assert_eq!(windings(&mesh, &l, n, &p), (Winding::Mixed, vec![1, 0]));
+    }
+
+    #[test]
     fn an_open_part_with_a_hole_still_agrees() {
         // The cube without one face: open, as a scan is at a hole.
         let mut open = cube();
@@ -376,6 +417,9 @@ mod tests {
         let floor = views(&mesh, &p)[1];
         assert_eq!(part_says(&floor, &p), PartSays::OneSided, "{floor:?}");
         assert_eq!(winding(&mesh, &p), Winding::Outward);
+        // The floor claims no side of its own; the body keeps its.
+        let (l, n) = component_labels(&mesh);
+        assert_eq!(windings(&mesh, &l, n, &p).1, vec![1, 0]);
         // The same floor alone says nothing: no part is wound either way.
         let alone = Mesh::new(mesh.positions.clone(), mesh.triangles[12..].to_vec());
         assert_eq!(winding(&alone, &p), Winding::Mixed);
