@@ -3,7 +3,6 @@
 // its landmark markers. Scans, the template, fits and shape-space bodies are all shown this way.
 import * as THREE from 'three';
 import type { Bounds } from '../shared/bounds';
-import type { Winding } from '../shared/results';
 import { LandmarkMarkers, type LandmarkPoints } from './landmark-markers';
 
 /** Flat arrays as the core returns them: positions in metres, unit vertex normals. */
@@ -31,8 +30,8 @@ export interface BodyContent {
   visible?: boolean;
   /** Column-major 4×4 display transform of the whole body (e.g. a z-up scan shown upright). */
   transform?: number[] | null;
-  /** Which way the mesh's triangles face (a scan's, from the core); `null`: not known. */
-  winding?: Winding | null;
+  /** `#V` per vertex, which way its part's triangles face (a scan's, from the core): 1 out of the body, −1 into it, 0 not known; `null`: not known anywhere. */
+  vertexWinding?: Int8Array | null;
 }
 
 /** Marker radius as a fraction of the body's height: 8 mm on a 1.75 m body. */
@@ -44,7 +43,7 @@ export class BodyLayer {
   private source: BodyMesh | null = null;
   private markers: LandmarkMarkers | null = null;
   private landmarks: LandmarkPoints | null = null;
-  private wound: Winding | null = null;
+  private wound: Int8Array | null = null;
 
   constructor(name: string) {
     this.group.name = name;
@@ -56,7 +55,7 @@ export class BodyLayer {
    * rebuilds the geometry.
    */
   update(content: BodyContent): void {
-    if (content.winding !== undefined) this.wound = content.winding;
+    if (content.vertexWinding !== undefined) this.wound = content.vertexWinding;
     let rebuilt = false;
     if (content.mesh !== undefined && content.mesh !== this.source) {
       if (content.mesh && this.sameTopology(content.mesh)) this.morphMesh(content.mesh);
@@ -92,8 +91,8 @@ export class BodyLayer {
     return this.markers?.count ?? 0;
   }
 
-  /** Which way the surface's triangles face, when known. */
-  get winding(): Winding | null {
+  /** Per vertex, which way the surface's triangles face there (1 out, −1 in, 0 not known), when known. */
+  get vertexWinding(): Int8Array | null {
     return this.wound;
   }
 

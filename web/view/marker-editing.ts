@@ -2,8 +2,8 @@
 // moving) on the surface places the selected landmark at the point under the cursor; a press on a
 // marker drags it along the surface (the orbit controls rest meanwhile). Only the body's own mesh
 // is raycast; points come out in the body's frame (metres, before its display transform), where
-// its markers live. On a body whose triangles are known to face out of it (a scan's winding, from
-// the core), a ray whose first hit is a triangle's back has gone through a hole in the surface
+// its markers live. Where a body's triangles are known to face out of it (a scan's parts' winding,
+// from the core), a ray whose first hit is a triangle's back has gone through a hole in the surface
 // onto the inside of the far side: nothing is placed there, and the handlers hear of it.
 import * as THREE from 'three';
 import type { OrbitControls } from 'three/addons/controls/OrbitControls.js';
@@ -151,7 +151,7 @@ export class MarkerEditing {
 
   /**
    * The surface's first hit along the aimed ray, and whether it is seen through a hole: the back
-   * of a triangle (on a surface wound one way) with no triangle's front within `FOLD_DEPTH`
+   * of a triangle (on a part wound one way) with no triangle's front within `FOLD_DEPTH`
    * behind it, the inside of the far side. A noisy scan's surface folds over in places, and there
    * a triangle's back lies just in front of the surface: that is a hit like any other.
    */
@@ -159,23 +159,26 @@ export class MarkerEditing {
     const hits = this.raycaster.intersectObject(layer.surface!, false);
     const hit = hits[0];
     if (!hit) return null;
-    const throughHole = this.backOf(layer, hit) && !hits.some((h) => h.distance - hit.distance <= FOLD_DEPTH && !this.backOf(layer, h));
+    const throughHole = this.sideOf(layer, hit) === 'back' && !hits.some((h) => h.distance - hit.distance <= FOLD_DEPTH && this.sideOf(layer, h) === 'front');
     return { hit, throughHole };
   }
 
   /**
-   * Whether `hit` is the back of a triangle on a surface wound one way (out of the body or into
-   * it). The triangle's side is taken from its corners in world space, so a display transform
-   * that mirrors the body changes nothing.
+   * Which side of its triangle `hit` is on, where its part is wound one way (out of the body or
+   * into it): the core says so per part, so a part wound one way tells it even on a scan whose
+   * parts disagree; `null` on a part that says neither (a piece too small to judge, a sheet).
+   * The triangle's side is taken from its corners in world space, so a display transform that
+   * mirrors the body changes nothing.
    */
-  private backOf(layer: BodyLayer, hit: THREE.Intersection): boolean {
-    const winding = layer.winding;
-    if ((winding !== 'outward' && winding !== 'inward') || !hit.face) return false;
+  private sideOf(layer: BodyLayer, hit: THREE.Intersection): 'front' | 'back' | null {
+    const face = hit.face;
+    const wound = face ? (layer.vertexWinding?.[face.a] ?? 0) : 0;
+    if (!face || wound === 0) return null;
     const mesh = layer.surface!;
     const position = mesh.geometry.getAttribute('position');
-    const [a, b, c] = [hit.face.a, hit.face.b, hit.face.c].map((i) => new THREE.Vector3().fromBufferAttribute(position, i).applyMatrix4(mesh.matrixWorld));
+    const [a, b, c] = [face.a, face.b, face.c].map((i) => new THREE.Vector3().fromBufferAttribute(position, i).applyMatrix4(mesh.matrixWorld));
     const normal = b!.sub(a!).cross(c!.sub(a!));
     const away = normal.dot(this.raycaster.ray.direction) > 0;
-    return winding === 'outward' ? away : !away;
+    return away === (wound > 0) ? 'back' : 'front';
   }
 }

@@ -124,7 +124,10 @@ export class Viewer {
   /**
    * Turns the camera to `point` (in the frame of the body under `key`, metres) up close, `radius`
    * metres around it in view, looking from the side of the body it lies on: away from the body's
-   * long axis (a face from the front, an ear from its side). "Whole body" then frames it all again.
+   * long axis (a face from the front, an ear from its side). The axis runs through the median of
+   * the surface's vertices, not the middle of its box: a piece beside the body (a stand, a
+   * turntable's rim) widens the box, and an ear would be seen from the far side of the head.
+   * "Whole body" then frames it all again.
    */
   closeUp(key: string, point: [number, number, number], radius = 0.15): void {
     const layer = this.layers.get(key);
@@ -134,7 +137,7 @@ export class Viewer {
     const box = new THREE.Box3().setFromObject(layer.group);
     const size = box.getSize(new THREE.Vector3());
     const long = size.x >= size.y && size.x >= size.z ? 0 : size.y >= size.z ? 1 : 2;
-    const out = at.clone().sub(box.getCenter(new THREE.Vector3())).setComponent(long, 0);
+    const out = at.clone().sub(medianOf(layer.surface) ?? box.getCenter(new THREE.Vector3())).setComponent(long, 0);
     // A point on the long axis (the crotch, the crown) is seen from where the camera is.
     if (out.length() < 0.02) out.copy(this.camera.position).sub(this.controls.target).setComponent(long, 0);
     out.normalize();
@@ -238,4 +241,21 @@ function projectedExtent(box: THREE.Box3, camera: THREE.Camera): string {
     ys.push(p.y);
   }
   return [Math.min(...xs), Math.max(...xs), Math.min(...ys), Math.max(...ys)].map((v) => v.toFixed(3)).join(',');
+}
+
+/** The per-axis median of `mesh`'s vertices in world space (of at most 20,000 spread over them), or null without any. */
+function medianOf(mesh: THREE.Mesh | null): THREE.Vector3 | null {
+  const position = mesh?.geometry.getAttribute('position');
+  if (!mesh || !position || position.count === 0) return null;
+  const step = Math.max(1, Math.floor(position.count / 20_000));
+  const axes: number[][] = [[], [], []];
+  const v = new THREE.Vector3();
+  for (let i = 0; i < position.count; i += step) {
+    v.fromBufferAttribute(position, i).applyMatrix4(mesh.matrixWorld);
+    axes[0]!.push(v.x);
+    axes[1]!.push(v.y);
+    axes[2]!.push(v.z);
+  }
+  const [x, y, z] = axes.map((values) => values.sort((a, b) => a - b)[values.length >> 1]!);
+  return new THREE.Vector3(x, y, z);
 }
