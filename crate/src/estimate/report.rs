@@ -9,6 +9,7 @@ use super::suspicious::SuspiciousLandmark;
 use crate::mesh::floor::FloorRemoval;
 use crate::mesh::strays::StrayRemoval;
 use crate::mesh::units::Units;
+use crate::mesh::winding::Reorientation;
 
 /// One frame candidate after its similarity fit.
 #[derive(Debug, Clone, PartialEq, Serialize)]
@@ -88,6 +89,10 @@ pub struct EstimateReport {
     /// The stray pieces taken off the scan before anything else (`mesh/strays.rs`), if any.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub strays: Option<StrayRemoval>,
+    /// The parts wound inwards turned to face out before anything else but the strays
+    /// (`mesh/winding.rs`), if any.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub turned: Option<Reorientation>,
     /// The frame assumed (the best candidate after the whole fit).
     pub frame: FrameReport,
     /// What said the frame's up and facing.

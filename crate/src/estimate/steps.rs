@@ -2,7 +2,8 @@
 //! set. Steps (docs/landmarks-estimate.md gives the reasons and the measurements):
 //!
 //! 1. units from the body's extent (`mesh/units.rs`), the scan in metres, its stray pieces
-//!    floating off the body taken off (`mesh/strays.rs`), a closest-point index;
+//!    floating off the body taken off (`mesh/strays.rs`), its parts wound inwards turned to face
+//!    out (`mesh/winding.rs`), a closest-point index;
 //! 2. frame candidates from the principal axes (`frame.rs`), plus one from the given landmarks
 //!    when there are at least four; without those, the head's end from the scan's shape
 //!    (`up.rs`) and then the way the feet reach (`facing.rs`) may leave out the candidates
@@ -62,6 +63,7 @@ use crate::mesh::floor::remove_floor;
 use crate::mesh::similarity::similarity;
 use crate::mesh::strays::remove_strays;
 use crate::mesh::units::{detect_units, Units};
+use crate::mesh::winding::{face_out, WindingParams};
 use crate::mesh::Mesh;
 use crate::template::hand::hands;
 use crate::template::parts::{dominant_part, parts};
@@ -148,6 +150,11 @@ pub fn estimate_landmarks(
     // candidates are scaled by, and a body was fitted at the wrong size (issue 31).
     let (scan, strays) = match remove_strays(&scan, 1.0, &params.strays) {
         Some((kept, removal)) => (kept, Some(removal)),
+        None => (scan, None),
+    };
+    // A part wound inwards has its normals against the template's, and no match is made on it.
+    let (scan, turned) = match face_out(&scan, &WindingParams::default()) {
+        Some((out, turned)) => (out, Some(turned)),
         None => (scan, None),
     };
     let index = SurfaceIndex::new(&scan).map_err(EstimateError::Scan)?;
@@ -535,6 +542,7 @@ pub fn estimate_landmarks(
         units,
         units_detected: input.units.is_none(),
         strays,
+        turned,
         frame_from: FrameBasis::of(
             &frame,
             input.orientation.as_ref(),

@@ -1,5 +1,6 @@
 //! [`fit_subject`]: one subject from what was read to a checked fit — the landmark policy, the
-//! scan's stray pieces taken off (`mesh/strays.rs`), then the floor or turntable under the feet
+//! scan's stray pieces taken off (`mesh/strays.rs`), its parts wound inwards turned to face out
+//! (`mesh/winding.rs`), then the floor or turntable under the feet
 //! (`floor.rs`), the RBF warp and fine alignment ([`align_scan`]), the quality check, the frame
 //! and each measurement's trust from where its landmarks came (`measure/trust.rs`) — and its
 //! report.
@@ -25,6 +26,7 @@ use crate::measure::{
 };
 use crate::mesh::strays::remove_strays;
 use crate::mesh::units::Units;
+use crate::mesh::winding::{face_out, WindingParams};
 use crate::template::{Resolution, Template};
 
 /// A fitted subject.
@@ -85,6 +87,11 @@ pub fn fit_subject(
     {
         Some((kept, removal)) => (Cow::Owned(kept), Some(removal)),
         None => (Cow::Borrowed(&input.scan), None),
+    };
+    // A part wound inwards is turned to face out: its normals would rule out every match on it.
+    let (scan, turned) = match face_out(&scan, &WindingParams::default()) {
+        Some((out, turned)) => (Cow::Owned(out), Some(turned)),
+        None => (scan, None),
     };
     // With up from the landmarks, the floor or turntable under the feet is not fitted either.
     let (scan, floor) = scan_without_floor(
@@ -155,6 +162,7 @@ pub fn fit_subject(
         landmarks: landmarks.report,
         floor,
         strays,
+        turned,
         quality,
         to_template,
         alignment: alignment.report.clone(),

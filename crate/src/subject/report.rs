@@ -11,6 +11,7 @@ use crate::estimate::{SelfCheck, SuspiciousLandmark};
 use crate::measure::MeasurementTrust;
 use crate::mesh::floor::FloorRemoval;
 use crate::mesh::strays::StrayRemoval;
+use crate::mesh::winding::Reorientation;
 
 /// Where a subject's landmarks came from.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
@@ -64,6 +65,9 @@ pub struct SubjectReport {
     /// The stray pieces taken off the scan before the fit (`mesh/strays.rs`), if any.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub strays: Option<StrayRemoval>,
+    /// The parts wound inwards turned to face out before the fit (`mesh/winding.rs`), if any.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub turned: Option<Reorientation>,
     /// The quality check of the fit (`align/quality.rs`); absent after the warp alone.
     pub quality: Option<QualityReport>,
     /// From the scan's frame and units into the template's.
