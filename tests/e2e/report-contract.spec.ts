@@ -21,6 +21,7 @@ const subject: Keys<SubjectReport> = {
   landmarks: true,
   floor: false,
   strays: false,
+  turned: false,
   quality: true,
   to_template: true,
   measurement_trust: true,
@@ -73,7 +74,7 @@ const quality: Keys<QualityReport> = {
 const selfCheck: Keys<SelfCheck> = { verdict: true, reasons: true, confidence_factor: true, lopsided_factor: true, lowered: true, check_first: true, frame_in_doubt: true, evidence: true };
 const evidence: Keys<SelfCheckEvidence> = { fit_rms_mm: true, fit_moved_mm: true, stature_m: true, contradicting: true, asymmetric: true, uneven: true, facing_margin: true, uncovered: true, head_pitch_deg: true };
 const uncovered: Keys<Uncovered> = { vertices: true, share: true, near: true };
-const estimateRead: Keys<EstimateReport> = { landmarks: true, frame: true, frame_from: true, given: true, estimated: true, flagged: true, self_check: true, fit_rms_mm: true, total_ms: true, strays: false, floor: false };
+const estimateRead: Keys<EstimateReport> = { landmarks: true, frame: true, frame_from: true, given: true, estimated: true, flagged: true, self_check: true, fit_rms_mm: true, total_ms: true, strays: false, turned: false, floor: false };
 const trust: Keys<MeasurementTrust> = { name: true, trust: true, landmarks: true, fit_error_mm: true, expected_error_mm: true, limit_mm: true, chance_over_limit: true, support: true, doubtful: true, words: true };
 const support: Keys<MeasurementSupport> = { at: true, vertices: true, unsupported: true, unsupported_share: true, max_distance_mm: true, doubtful: true };
 const unplaced: Keys<UnplacedLandmark> = { name: true, origin: true, typical_error_mm: true };

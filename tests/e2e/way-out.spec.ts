@@ -10,11 +10,12 @@
 // placed on the throat is named with the landmarks to check first, and three clicked on the face,
 // each from its close-up, re-pose the head; a click through a hole places nothing, on a scan
 // whose parts face different ways too.
+import { gunzipSync } from 'node:zlib';
 import { expect, test, type Page } from '@playwright/test';
 import { dropFiles } from './fixtures';
 import { partialCsv, sampleFile } from './samples';
 import { cancelEstimateWhenItRuns, openWithSample } from './steps';
-import { synthFolder } from './synth';
+import { synthFolder, turnedInsideOut, withInsideOutBox } from './synth';
 
 const body = (page: Page) => page.locator('body');
 const row = (page: Page, name: string) => page.getByTestId('landmark-list').locator(`li[data-name="${name}"]`);
@@ -34,37 +35,6 @@ async function align(page: Page): Promise<{ rms: number; flags: string }> {
   await expect(body(page)).toHaveAttribute('data-align-state', 'done', { timeout: 240_000 });
   const rms = Number(await page.getByTestId('align-rms').getAttribute('data-rms-mm'));
   return { rms, flags: (await page.getByTestId('align-check').getAttribute('data-flags')) ?? '' };
-}
-
-/**
- * `ply` (binary, as `bodyspace synth` writes it: float x, y, z; triangles) with a box turned
- * inside out put beside the body's feet, 30 cm on a side and 20 cm clear of its box: a part
- * wound the other way, as a merged export may bring, so that the scan's parts disagree.
- */
-function withInsideOutBox(ply: Buffer): Buffer {
-  const end = ply.indexOf('end_header\n') + 'end_header\n'.length;
-  const header = ply.subarray(0, end).toString('latin1');
-  const count = (element: string) => Number(new RegExp(`element ${element} (\\d+)`).exec(header)![1]);
-  const [vertices, faces] = [count('vertex'), count('face')];
-  let [maxX, minZ] = [-Infinity, Infinity];
-  for (let i = 0; i < vertices; i++) {
-    maxX = Math.max(maxX, ply.readFloatLE(end + 12 * i));
-    minZ = Math.min(minZ, ply.readFloatLE(end + 12 * i + 8));
-  }
-  const [x0, side] = [maxX + 200, 300];
-  const corners = [0, 1, 2, 3, 4, 5, 6, 7].map((k) => [x0 + (k & 1) * side, ((k >> 1) & 1) * side - side / 2, minZ + ((k >> 2) & 1) * side]);
-  // Each face's two triangles, counter-clockwise seen from inside the box.
-  const quads = [[0, 1, 3, 2], [4, 6, 7, 5], [0, 4, 5, 1], [2, 3, 7, 6], [0, 2, 6, 4], [1, 5, 7, 3]];
-  const points = Buffer.alloc(8 * 12);
-  corners.forEach((c, k) => c.forEach((v, j) => points.writeFloatLE(v, 12 * k + 4 * j)));
-  const triangles = Buffer.alloc(12 * 13);
-  quads.flatMap(([a, b, c, d]) => [[a, b, c], [a, c, d]]).forEach((t, k) => {
-    triangles.writeUInt8(3, 13 * k);
-    t.forEach((v, j) => triangles.writeInt32LE(vertices + v!, 13 * k + 1 + 4 * j));
-  });
-  const newHeader = header.replace(`element vertex ${vertices}`, `element vertex ${vertices + 8}`).replace(`element face ${faces}`, `element face ${faces + 12}`);
-  const body = end + 12 * vertices;
-  return Buffer.concat([Buffer.from(newHeader, 'latin1'), ply.subarray(end, body), points, ply.subarray(body), triangles]);
 }
 
 /** The confidences (%) the list shows for the estimated landmarks. */
@@ -202,6 +172,24 @@ test('five given landmarks overrule a facing chosen wrong, and the page says wha
   const right = await align(page);
   expect(right.rms).toBeLessThanOrEqual(2);
   expect(right.flags.split(' ')).not.toContain('landmark_estimate');
+});
+
+test('a scan wound inwards is turned to face out, estimated and aligned as the sample is, and the page says so', async ({ page }) => {
+  test.setTimeout(300_000);
+  // The sample scan with every triangle's corners in the other order, as some exporters write:
+  // left so, its normals pointed into the body and nothing matched the template's.
+  const inwards = { name: 'inwards.ply', bytes: turnedInsideOut(gunzipSync(sampleFile('scan_001.ply.gz').bytes)) };
+  await page.goto('./');
+  await expect(body(page)).toHaveAttribute('data-template-ready', 'true', { timeout: 60_000 });
+  await dropFiles(page, [inwards]);
+  await expect(page.getByTestId('scan-winding')).toHaveText('inwards');
+  await expect(body(page)).toHaveAttribute('data-estimates', '1', { timeout: 120_000 });
+  await expect(body(page)).toHaveAttribute('data-estimate-verdict', 'good');
+  await expect(page.getByTestId('estimate-assumed')).toContainText("Turned: the scan's triangles faced into the body");
+  const fit = await align(page);
+  expect(fit.rms).toBeLessThanOrEqual(2);
+  expect(fit.flags).toBe('');
+  await expect(page.getByTestId('align-check')).toContainText("Turned: the scan's triangles faced into the body");
 });
 
 test("a face placed on the throat names the face's landmarks to check first; Sellion and the Tragions clicked re-pose the head", async ({ page }) => {

@@ -16,7 +16,7 @@ import type { Orientation } from '../shared/orientation';
 import { METRES_PER_UNIT } from '../shared/results';
 import type { TemplateData } from '../shared/template-data';
 import { download } from '../ui/download';
-import { basisWords, notFitted } from '../ui/format';
+import { basisWords, notFitted, turnedWords } from '../ui/format';
 import { forgetQuestion, sentence, shownCheck, type EstimateView, type LandmarkFormat, type PutAside } from '../ui/landmark-tools';
 import { LandmarksPanel, type LandmarkFacts } from '../ui/landmarks-panel';
 import { landmarkStyle } from '../view/landmark-style';
@@ -267,6 +267,7 @@ export class LandmarkStep {
       `the body's up is the scan's ${report.frame.up_axis} axis${up} and it faces ${report.frame.facing_axis}${facing}; units ${units}. ` +
       `${report.given} landmarks kept as given, ${report.estimated} estimated (markers from red, low confidence, to green, high); ` +
       `the landmark-free fit is ${report.fit_rms_mm.toFixed(1)} mm RMS from the scan.` +
+      turnedWords(report.turned) +
       notFitted([report.strays, report.floor])
     );
   }

@@ -1,6 +1,6 @@
 // Inputs and results of the RBF warp (paper §3.1) and fine alignment (§3.2). No DOM here.
 import type { DistanceHeat } from './heat-scale';
-import type { ScanRemoval, SelfCheck, UnevenFit } from './landmark-entry';
+import type { Reorientation, ScanRemoval, SelfCheck, UnevenFit } from './landmark-entry';
 import type { Orientation } from './orientation';
 import type { TemplateResolution } from './template-data';
 import type { Units } from './results';
@@ -284,6 +284,8 @@ export interface SubjectReport extends AlignReport {
   floor?: FloorRemoval;
   /** The stray pieces taken off the scan before the fit (`mesh/strays.rs`), when there were any. */
   strays?: ScanRemoval;
+  /** The parts wound inwards turned to face out before the fit (`mesh/winding.rs`), when there were any. */
+  turned?: Reorientation;
   quality: QualityReport | null;
   to_template: ToTemplate;
   /** Every measurement's trust, in the core's order of measurements. */

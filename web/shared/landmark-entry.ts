@@ -109,6 +109,13 @@ export interface ScanRemoval {
   words: string;
 }
 
+/** The parts of the scan wound inwards that the core turned to face out before fitting (`mesh::winding::Reorientation`). */
+export interface Reorientation {
+  parts: number;
+  triangles: number;
+  words: string;
+}
+
 /** The core's report of a landmark estimate (`EstimateReport`; the fields the page uses). */
 export interface EstimateReport {
   /** The 73 CAESAR landmarks in file order. */
@@ -130,6 +137,8 @@ export interface EstimateReport {
   total_ms: number;
   /** The stray pieces taken off the scan before anything else, when there were any. */
   strays?: ScanRemoval;
+  /** The parts wound inwards turned to face out, when there were any. */
+  turned?: Reorientation;
   /** The floor or turntable under the feet taken off once the frame was chosen, when one was found. */
   floor?: ScanRemoval;
 }

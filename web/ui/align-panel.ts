@@ -5,7 +5,7 @@ import type { AlignReport, AlignStage, SubjectReport } from '../shared/align-typ
 import type { TemplateResolution } from '../shared/template-data';
 import { button, byId, h } from './dom';
 import { EnergyChart } from './energy-chart';
-import { formatCount, notFitted, qualityText } from './format';
+import { formatCount, notFitted, qualityText, turnedWords } from './format';
 import { heatLegend } from './heat-legend';
 import { keepControl } from './keep-button';
 
@@ -144,7 +144,7 @@ function checkNote(r: SubjectReport): HTMLElement {
   const left = r.landmarks.left_out.map((l) => `${l.name}, ${l.distance_mm.toFixed(0)} mm from where the others put it (${l.suggestion})`);
   const text = flags.length && r.quality ? `Flagged: ${qualityText(r.quality)}.` : 'No quality flag raised.';
   const leftText = left.length ? ` Left out of the fit: ${left.join('; ')}.` : '';
-  return h('p', { class: flags.length ? 'warn-note' : 'note', 'data-testid': 'align-check', 'data-flags': flags.join(' ') }, text + leftText + notFitted([r.strays, r.floor]));
+  return h('p', { class: flags.length ? 'warn-note' : 'note', 'data-testid': 'align-check', 'data-flags': flags.join(' ') }, text + leftText + turnedWords(r.turned) + notFitted([r.strays, r.floor]));
 }
 
 /**

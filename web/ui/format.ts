@@ -1,7 +1,7 @@
 // How numbers are written in the panels.
 
 import type { MeasurementTrust, QualityFlag, QualityReport } from '../shared/align-types';
-import type { ScanRemoval } from '../shared/landmark-entry';
+import type { Reorientation, ScanRemoval } from '../shared/landmark-entry';
 import type { Reading } from '../shared/shape-results';
 
 const integer = new Intl.NumberFormat('en-GB', { maximumFractionDigits: 0 });
@@ -84,6 +84,11 @@ export function flagName(flag: QualityFlag): string {
     landmark_estimate: 'doubtful landmark estimate',
   };
   return names[flag];
+}
+
+/** The parts of the scan the core turned to face out before fitting it, in its words: empty when none. */
+export function turnedWords(turned: Reorientation | undefined): string {
+  return turned ? ` Turned: ${turned.words}.` : '';
 }
 
 /** What the core took off the scan before fitting it (stray pieces, a floor), in its words: empty when nothing. */
