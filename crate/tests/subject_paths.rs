@@ -15,7 +15,7 @@ use bodyspace::landmarks::{Landmark, LandmarkSet};
 use bodyspace::mesh::units::Units;
 use bodyspace::mesh::{bounding_box, Mesh};
 use bodyspace::subject::{
-    fit_subject, fit_subject_files, GivenLandmarks, SubjectInput, SubjectOptions,
+    fit_subject, fit_subject_files, GivenLandmarks, SubjectFit, SubjectInput, SubjectOptions,
 };
 use bodyspace::synth::{PopulationProfile, ScannerParams, SubjectId};
 use bodyspace::template::Template;
@@ -45,6 +45,21 @@ fn subject_with_truth() -> (Template, Mesh, LandmarkSet, Vec<Point3<f64>>) {
     };
     let (scan, landmarks, truth) = subject_in_metres(&data, &template, id, &scanner);
     (template, scan, landmarks, truth)
+}
+
+/// `scan` (metres) fitted by the one path, from `landmarks` when given.
+fn fit_scan(template: &Template, scan: &Mesh, landmarks: Option<&LandmarkSet>) -> SubjectFit {
+    let input = SubjectInput {
+        name: "subject".to_string(),
+        scan: scan.clone(),
+        units: None,
+        given: landmarks.map(|set| GivenLandmarks {
+            set: set.clone(),
+            units: None,
+            file: String::new(),
+        }),
+    };
+    fit_subject(template, None, &input, None, &options(), &mut ()).unwrap()
 }
 
 fn options() -> SubjectOptions {
@@ -366,19 +381,7 @@ fn stray_pieces_are_left_out_of_the_fit_and_said() {
         ]);
         stray.triangles.push([base, base + 1, base + 2]);
     }
-    let fit = |mesh: &Mesh, given: bool| {
-        let input = SubjectInput {
-            name: "stray".to_string(),
-            scan: mesh.clone(),
-            units: None,
-            given: given.then(|| GivenLandmarks {
-                set: landmarks.clone(),
-                units: None,
-                file: String::new(),
-            }),
-        };
-        fit_subject(&template, None, &input, None, &options(), &mut ()).unwrap()
-    };
+    let fit = |mesh: &Mesh, given: bool| fit_scan(&template, mesh, given.then_some(&landmarks));
     for given in [true, false] {
         let (clean, dirty) = (fit(&scan, given), fit(&stray, given));
         assert!(clean.report.strays.is_none());
@@ -407,19 +410,7 @@ fn a_scan_wound_inwards_is_turned_and_fitted_as_the_same_scan_wound_outwards() {
         scan.positions.clone(),
         scan.triangles.iter().map(|&[a, b, c]| [a, c, b]).collect(),
     );
-    let fit = |mesh: &Mesh, given: bool| {
-        let input = SubjectInput {
-            name: "wound".to_string(),
-            scan: mesh.clone(),
-            units: None,
-            given: given.then(|| GivenLandmarks {
-                set: landmarks.clone(),
-                units: None,
-                file: String::new(),
-            }),
-        };
-        fit_subject(&template, None, &input, None, &options(), &mut ()).unwrap()
-    };
+    let fit = |mesh: &Mesh, given: bool| fit_scan(&template, mesh, given.then_some(&landmarks));
     for given in [true, false] {
         let (outwards, turned) = (fit(&scan, given), fit(&inwards, given));
         assert!(outwards.report.turned.is_none());

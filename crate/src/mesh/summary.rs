@@ -100,21 +100,12 @@ mod tests {
     #[test]
     fn each_vertex_carries_its_parts_winding() {
         // Two unit cubes apart, the second turned inside out: the scan is mixed, each part not.
-        let one = crate::mesh::topology::tests::cube();
-        let n = one.positions.len() as u32;
-        let mut positions = one.positions.clone();
-        positions.extend(
-            one.positions
-                .iter()
-                .map(|p| p + nalgebra::Vector3::new(3.0, 0.0, 0.0)),
-        );
-        let mut triangles = one.triangles.clone();
-        triangles.extend(one.triangles.iter().map(|&[a, b, c]| [a + n, c + n, b + n]));
+        let mut mesh = crate::mesh::winding::tests::two_cubes(true);
         // And a lone point, which no triangle uses.
-        positions.push(Point3::new(0.0, 5.0, 0.0));
-        let s = summarise(&Mesh::new(positions, triangles));
+        mesh.positions.push(Point3::new(0.0, 5.0, 0.0));
+        let s = summarise(&mesh);
         assert_eq!(s.winding, Winding::Mixed);
-        let expected: Vec<i8> = [vec![1; n as usize], vec![-1; n as usize], vec![0]].concat();
+        let expected: Vec<i8> = [vec![1; 8], vec![-1; 8], vec![0]].concat();
         assert_eq!(s.vertex_winding, expected);
     }
 }

@@ -331,7 +331,7 @@ pub fn face_out(mesh: &Mesh, params: &WindingParams) -> Option<(Mesh, Reorientat
 }
 
 #[cfg(test)]
-mod tests {
+pub(crate) mod tests {
     use super::*;
     use crate::mesh::topology::tests::cube;
     use nalgebra::Point3;
@@ -352,7 +352,7 @@ mod tests {
     }
 
     /// Two cubes side by side, the second's vertices after the first's.
-    fn two_cubes(second_flipped: bool) -> Mesh {
+    pub(crate) fn two_cubes(second_flipped: bool) -> Mesh {
         let one = cube();
         let n = one.positions.len() as u32;
         let mut positions = one.positions.clone();
