@@ -2,6 +2,7 @@
 //!
 //! * [`trimesh`]: the [`Mesh`] type.
 //! * [`bounds`]: bounding box and largest extent.
+//! * [`bvh`]: a bounding-volume hierarchy for casting rays at a mesh.
 //! * [`floor`]: a floor, platform or turntable remnant under the feet, found and removed.
 //! * [`normals`]: area-weighted vertex normals (f64 and flat f32) and face normals.
 //! * [`ray`]: ray–triangle intersection.
@@ -18,6 +19,7 @@
 //! * `test_points` (tests only): small point sets the unit tests of several modules share.
 
 pub mod bounds;
+pub mod bvh;
 pub mod floor;
 pub mod normals;
 pub mod principal_axes;

@@ -29,42 +29,59 @@ pub fn vertex_neighbours(vertex_count: usize, triangles: &[[u32; 3]]) -> Vec<Vec
     nb
 }
 
-/// Boundary edges `[a, b]`, directed as in their triangle (so loops run consistently), sorted.
-/// `triangles`: `#F` indexing `vertex_count` vertices.
-pub fn boundary_edges(vertex_count: usize, triangles: &[[u32; 3]]) -> Vec<[u32; 2]> {
-    // Bucket each undirected edge under its smaller vertex (counting sort, O(E)), then find the
-    // edges used once within each small bucket: far faster than sorting all 3·#F edges.
+/// Calls `each(uses)` once per undirected edge with every use of it: `(triangle, [a, b])`, the
+/// edge directed as in that triangle (one use: a boundary edge; two: a manifold edge; more:
+/// non-manifold). `triangles`: `#F` indexing `vertex_count` vertices. Degenerate edges are left
+/// out.
+pub fn for_each_edge(
+    vertex_count: usize,
+    triangles: &[[u32; 3]],
+    mut each: impl FnMut(&[(u32, u32, [u32; 2])]),
+) {
+    // Bucket each undirected edge under its smaller vertex (counting sort, O(E)), then group the
+    // uses of each edge within its small bucket: far faster than sorting all 3·#F edges. A use is
+    // (the larger vertex, the triangle, the directed edge).
     let n = vertex_count;
     let mut start = vec![0u32; n + 1];
     let directed = || {
-        triangles
-            .iter()
-            .flat_map(|t| [[t[0], t[1]], [t[1], t[2]], [t[2], t[0]]])
-            .filter(|[a, b]| a != b)
+        triangles.iter().enumerate().flat_map(|(t, v)| {
+            [[v[0], v[1]], [v[1], v[2]], [v[2], v[0]]]
+                .into_iter()
+                .filter(|[a, b]| a != b)
+                .map(move |e| (t as u32, e))
+        })
     };
-    for [a, b] in directed() {
+    for (_, [a, b]) in directed() {
         start[a.min(b) as usize + 1] += 1;
     }
     for v in 0..n {
         start[v + 1] += start[v];
     }
     let mut fill = start.clone();
-    let mut bucket = vec![(0u32, [0u32; 2]); start[n] as usize];
-    for [a, b] in directed() {
+    let mut bucket = vec![(0u32, 0u32, [0u32; 2]); start[n] as usize];
+    for (t, [a, b]) in directed() {
         let slot = &mut fill[a.min(b) as usize];
-        bucket[*slot as usize] = (a.max(b), [a, b]);
+        bucket[*slot as usize] = (a.max(b), t, [a, b]);
         *slot += 1;
     }
-    let mut out = Vec::new();
     for v in 0..n {
         let edges = &mut bucket[start[v] as usize..start[v + 1] as usize];
         edges.sort_unstable_by_key(|e| e.0);
-        for run in edges.chunk_by(|x, y| x.0 == y.0) {
-            if let [(_, edge)] = run {
-                out.push(*edge);
-            }
+        for uses in edges.chunk_by(|x, y| x.0 == y.0) {
+            each(uses);
         }
     }
+}
+
+/// Boundary edges `[a, b]`, directed as in their triangle (so loops run consistently), sorted.
+/// `triangles`: `#F` indexing `vertex_count` vertices.
+pub fn boundary_edges(vertex_count: usize, triangles: &[[u32; 3]]) -> Vec<[u32; 2]> {
+    let mut out = Vec::new();
+    for_each_edge(vertex_count, triangles, |uses| {
+        if let [(_, _, edge)] = uses {
+            out.push(*edge);
+        }
+    });
     out.sort_unstable();
     out
 }
@@ -110,6 +127,14 @@ pub fn boundary_loops(mesh: &Mesh) -> Vec<Vec<u32>> {
         loops.push(chain);
     }
     loops
+}
+
+/// Per triangle, the label its vertices carry (`labels` as [`component_labels`] gives them).
+pub fn triangle_labels(mesh: &Mesh, labels: &[u32]) -> Vec<u32> {
+    mesh.triangles
+        .iter()
+        .map(|t| labels[t[0] as usize])
+        .collect()
 }
 
 /// Connected-component labels of the vertices used by triangles (two vertices are connected when

@@ -12,14 +12,12 @@
 //! * [`population_run`] — subject `i` of seed `S`, deterministic;
 //! * [`random_stream`] — each subject's own random stream;
 //! * [`output`] — the output frame and the files written per subject;
-//! * [`bvh`] — ray casting against a triangle mesh;
 //! * [`scanner`] — the virtual CAESAR-like scanner;
 //! * [`zoo`] — the scanner zoo: what other scanners deliver (parts, cuts, floors, slices, blobs,
 //!   densities, strays) and what people bring to it (arms against the body, an arm raised, hair,
 //!   tight clothing).
 
 pub mod arm_contact;
-pub mod bvh;
 pub mod data;
 pub mod error;
 pub mod hand_on_hip;

@@ -22,7 +22,7 @@ use nalgebra::{Point3, Vector3};
 use rand::Rng;
 use rand_distr::{Distribution, Normal};
 
-use super::bvh::TriangleBvh;
+use crate::mesh::bvh::TriangleBvh;
 use crate::mesh::normals::face_normals;
 use crate::mesh::{bounding_box, Mesh};
 

@@ -1,4 +1,6 @@
-//! A bounding-volume hierarchy over a triangle mesh for ray casting (the virtual scanner's rays).
+//! A bounding-volume hierarchy over a triangle mesh for ray casting: the virtual scanner's rays
+//! (`crate::synth::scanner`), and the rays that tell which side of a piece of a scan is seen from
+//! outside ([`super::winding`]).
 //!
 //! Its own tree rather than `parry3d-f64`'s (which the aligner's closest-point index uses): the
 //! scanner needs only the first hit of a ray with its triangle and barycentrics. Median split on
