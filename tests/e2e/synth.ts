@@ -53,18 +53,29 @@ function plyParts(ply: Buffer): { header: string; vertices: number; faces: numbe
   return { header, vertices: count('vertex'), faces: count('face'), end };
 }
 
-/** `ply` (as `bodyspace synth` writes it) with every triangle's corners in the other order: wound inwards, as some exporters write. */
-export function turnedInsideOut(ply: Buffer): Buffer {
+/** `ply` (as `bodyspace synth` writes it) with the corners of the triangles `turn` picks (by index) in the other order. */
+function turnedWhere(ply: Buffer, turn: (k: number) => boolean): Buffer {
   const { vertices, faces, end } = plyParts(ply);
   const out = Buffer.from(ply);
   const first = end + 12 * vertices;
   for (let k = 0; k < faces; k++) {
+    if (!turn(k)) continue;
     const at = first + 13 * k + 1;
     const [b, c] = [out.readInt32LE(at + 4), out.readInt32LE(at + 8)];
     out.writeInt32LE(c, at + 4);
     out.writeInt32LE(b, at + 8);
   }
   return out;
+}
+
+/** `ply` (as `bodyspace synth` writes it) with every triangle's corners in the other order: wound inwards, as some exporters write. */
+export function turnedInsideOut(ply: Buffer): Buffer {
+  return turnedWhere(ply, () => true);
+}
+
+/** `ply` (as `bodyspace synth` writes it) with about half its triangles, picked by a fixed scramble of the index, in the other order: facing both ways, as a mesh never oriented may. */
+export function facingBothWays(ply: Buffer): Buffer {
+  return turnedWhere(ply, (k) => Math.imul(k, 0x9e3779b1) >>> 31 === 1);
 }
 
 /**

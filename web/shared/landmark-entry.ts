@@ -109,10 +109,14 @@ export interface ScanRemoval {
   words: string;
 }
 
-/** The parts of the scan wound inwards that the core turned to face out before fitting (`mesh::winding::Reorientation`). */
+/** The triangles the core turned before fitting: to agree with their neighbours, and parts wound inwards to face out (`mesh::winding::Reorientation`). */
 export interface Reorientation {
+  /** Parts (pieces) turned whole, wound inwards. */
   parts: number;
+  /** Triangles that face otherwise than in the file, all told. */
   triangles: number;
+  /** Of the turning, the triangles turned to agree with their neighbours. */
+  against_neighbours: number;
   words: string;
 }
 

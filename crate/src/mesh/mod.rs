@@ -4,6 +4,7 @@
 //! * [`bounds`]: bounding box and largest extent.
 //! * [`bvh`]: a bounding-volume hierarchy for casting rays at a mesh.
 //! * [`floor`]: a floor, platform or turntable remnant under the feet, found and removed.
+//! * [`orientation`]: each part's triangles turned to agree with their neighbours.
 //! * [`normals`]: area-weighted vertex normals (f64 and flat f32) and face normals.
 //! * [`ray`]: ray–triangle intersection.
 //! * [`topology`]: unique edges, neighbours, boundary edges/vertices/loops, components.
@@ -22,6 +23,7 @@ pub mod bounds;
 pub mod bvh;
 pub mod floor;
 pub mod normals;
+pub mod orientation;
 pub mod principal_axes;
 pub mod ray;
 pub mod similarity;

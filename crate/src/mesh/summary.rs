@@ -5,7 +5,7 @@ use nalgebra::Point3;
 use serde::Serialize;
 
 use super::bounds::bounding_box;
-use super::topology::{boundary_loops, component_labels};
+use super::topology::{boundary_loops, component_labels, triangle_labels};
 use super::units::{detect_units, Units};
 use super::winding::{windings, Winding, WindingParams};
 use super::Mesh;
@@ -45,7 +45,12 @@ pub fn summarise(mesh: &Mesh) -> MeshSummary {
     let s = units.scale_to_metres();
     let (lo, hi) = bbox.unwrap_or((Point3::origin(), Point3::origin()));
     let (labels, components) = component_labels(mesh);
-    let (winding, parts) = windings(mesh, &labels, components, &WindingParams::default());
+    let (winding, parts) = windings(
+        mesh,
+        &triangle_labels(mesh, &labels),
+        components,
+        &WindingParams::default(),
+    );
     MeshSummary {
         vertices: mesh.vertex_count(),
         triangles: mesh.triangle_count(),

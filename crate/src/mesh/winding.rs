@@ -24,21 +24,31 @@
 //! ([`windings`]), so the app can tell it on every part wound one way. The fit and the landmark
 //! estimate match the scan's normals against the template's, so a part wound inwards is turned
 //! to face out before either runs ([`face_out`]): left as it was, a file wound clockwise matched
-//! a tenth of the template, and its estimate ended 129 mm off.
+//! a tenth of the template, and its estimate ended 129 mm off. A file whose triangles face both
+//! ways within a part has them turned to agree with their neighbours first
+//! ([`super::orientation`]), and each piece of surface is then judged on its own.
 
 use serde::{Deserialize, Serialize};
 
+use std::borrow::Cow;
+
+use nalgebra::{Point3, Vector3};
+
 use super::bounds::bounding_box;
-use super::topology::component_labels;
+use super::bvh::TriangleBvh;
+use super::orientation::cohere;
+use super::topology::{component_labels, triangle_labels};
 use super::Mesh;
 
 /// What [`face_out`] turned.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct Reorientation {
-    /// Parts turned.
+    /// Parts turned whole, wound inwards.
     pub parts: usize,
-    /// Their triangles.
+    /// The triangles that face otherwise than in the file, all told.
     pub triangles: usize,
+    /// Of them, those turned to agree with their neighbours ([`cohere`]).
+    pub against_neighbours: usize,
     /// In words, for the report.
     pub words: String,
 }
@@ -74,6 +84,9 @@ pub struct WindingParams {
     /// A view counts in the one-sided test when it holds at least this share of the part's seen
     /// cells; default 0.1 (a floor remnant's rim, seen from the side in a few cells, does not).
     pub least_view: f64,
+    /// Rays cast from each triangle of a piece the views cannot judge, in a file not wound one
+    /// way ([`face_out`]); default 32.
+    pub rays: usize,
 }
 
 impl Default for WindingParams {
@@ -84,6 +97,7 @@ impl Default for WindingParams {
             least_part: 0.01,
             edge_on: 0.3,
             least_view: 0.1,
+            rays: 32,
         }
     }
 }
@@ -91,12 +105,11 @@ impl Default for WindingParams {
 /// A part's cells in one view: (seen, facing the viewer).
 pub type ViewCount = (usize, usize);
 
-/// Per part (`labels` and `count` as [`component_labels`] gives them), per view (+x, −x, +y, −y,
-/// +z, −z): the cells it is seen in and how many of them show a triangle facing the viewer (module
-/// documentation).
+/// Per part (`parts`: each triangle's, `0..count`), per view (+x, −x, +y, −y, +z, −z): the cells
+/// it is seen in and how many of them show a triangle facing the viewer (module documentation).
 pub fn part_views(
     mesh: &Mesh,
-    labels: &[u32],
+    parts: &[u32],
     count: usize,
     params: &WindingParams,
 ) -> Vec<[ViewCount; 6]> {
@@ -147,19 +160,13 @@ pub fn part_views(
     for (view, cells) in nearest.iter().enumerate() {
         let (axis, toward) = (view / 2, if view % 2 == 0 { 1.0 } else { -1.0 });
         for &(_, t) in cells.iter().filter(|n| n.1 != u32::MAX) {
-            let [i, j, k] = mesh.triangles[t as usize];
-            let (a, b, c) = (
-                mesh.positions[i as usize],
-                mesh.positions[j as usize],
-                mesh.positions[k as usize],
-            );
-            let normal = (b - a).cross(&(c - a));
+            let normal = area_normal(mesh, mesh.triangles[t as usize]);
             let facing = toward * normal[axis];
             // A triangle seen edge-on says nothing about its side.
             if facing.abs() < params.edge_on * normal.norm() {
                 continue;
             }
-            let part = &mut seen[labels[i as usize] as usize][view];
+            let part = &mut seen[parts[t as usize] as usize][view];
             part.0 += 1;
             part.1 += usize::from(facing > 0.0);
         }
@@ -237,27 +244,57 @@ fn part_says(views: &[ViewCount; 6], params: &WindingParams) -> PartSays {
     }
 }
 
+/// A triangle's normal (counter-clockwise), twice its area long.
+fn area_normal(mesh: &Mesh, [i, j, k]: [u32; 3]) -> Vector3<f64> {
+    let (a, b, c) = (
+        mesh.positions[i as usize],
+        mesh.positions[j as usize],
+        mesh.positions[k as usize],
+    );
+    (b - a).cross(&(c - a))
+}
+
 /// Which way `mesh`'s triangles face (module documentation). An empty mesh is `Mixed`.
 pub fn winding(mesh: &Mesh, params: &WindingParams) -> Winding {
     let (labels, count) = component_labels(mesh);
-    windings(mesh, &labels, count, params).0
+    windings(mesh, &triangle_labels(mesh, &labels), count, params).0
 }
 
-/// The scan's [`Winding`] and each part's own way, `labels` and `count` as
-/// [`component_labels`] gives them. A part seen in at least `least_part` of the seen cells is 1
-/// when it is wound outwards, −1 inwards, 0 otherwise (one-sided, facing both ways); a smaller
-/// part takes the whole scan's way (0 on a mixed scan). On a scan whose parts disagree, a part
-/// wound one way still says which side of its triangles is its outside.
+fn side(w: Winding) -> i8 {
+    match w {
+        Winding::Outward => 1,
+        Winding::Inward => -1,
+        Winding::Mixed => 0,
+    }
+}
+
+/// The scan's [`Winding`] and each part's own way (`parts`: each triangle's, `0..count`). A part
+/// seen in at least `least_part` of the seen cells is 1 when it is wound outwards, −1 inwards, 0
+/// otherwise (one-sided, facing both ways); a smaller part takes the whole scan's way (0 on a
+/// mixed scan). On a scan whose parts disagree, a part wound one way still says which side of its
+/// triangles is its outside.
 pub fn windings(
     mesh: &Mesh,
-    labels: &[u32],
+    parts: &[u32],
     count: usize,
     params: &WindingParams,
 ) -> (Winding, Vec<i8>) {
-    let parts = part_views(mesh, labels, count, params);
+    let (whole, judged) = judge(mesh, parts, count, params);
+    let own = judged.iter().map(|j| j.unwrap_or(side(whole))).collect();
+    (whole, own)
+}
+
+/// [`windings`] before the smaller parts take the whole's way: `None` for them.
+fn judge(
+    mesh: &Mesh,
+    parts: &[u32],
+    count: usize,
+    params: &WindingParams,
+) -> (Winding, Vec<Option<i8>>) {
+    let views = part_views(mesh, parts, count, params);
     let seen = |views: &[ViewCount; 6]| views.iter().map(|v| v.0).sum::<usize>();
-    let total: usize = parts.iter().map(seen).sum();
-    let says: Vec<Option<PartSays>> = parts
+    let total: usize = views.iter().map(seen).sum();
+    let says: Vec<Option<PartSays>> = views
         .iter()
         .map(|views| {
             (seen(views) > 0 && seen(views) as f64 >= params.least_part * total as f64)
@@ -275,56 +312,181 @@ pub fn windings(
     } else {
         Winding::Mixed
     };
-    let side = |w: Winding| match w {
-        Winding::Outward => 1,
-        Winding::Inward => -1,
-        Winding::Mixed => 0,
-    };
-    let own = says
+    let judged = says
         .iter()
-        .map(|s| match s {
-            Some(PartSays::Outward) => 1,
-            Some(PartSays::Inward) => -1,
-            Some(_) => 0,
-            None => side(whole),
+        .map(|s| {
+            s.map(|s| match s {
+                PartSays::Outward => 1,
+                PartSays::Inward => -1,
+                _ => 0,
+            })
         })
         .collect();
-    (whole, own)
+    (whole, judged)
 }
 
-/// `mesh` with the triangles of every part wound inwards ([`windings`]: a part of note judged so,
-/// or a smaller piece of a scan wound inwards) turned to face out of the body, and what was
-/// turned; `None` when no part is wound inwards. Positions and their order stay.
+/// Each part's way, `judged` as [`judge`] gives it, a part left `None` judged by the rays that
+/// see it from outside. From each of its triangles rays go out in `rays` directions spread over
+/// the sphere; one that meets nothing of the scan sees the triangle from outside, and it votes,
+/// by the triangle's area, for the side it leaves from (not when it leaves nearly edge-on,
+/// `edge_on`). The sum over the part decides; with no vote it says nothing (0). The views' depth
+/// buffer sees a piece of a few triangles in a few cells or in none; these rays look from the
+/// piece itself. A ray leaving the inside through a hole (an open sole, a gap between slices)
+/// votes wrongly; more leave from outside.
+fn seen_from_outside(
+    mesh: &Mesh,
+    parts: &[u32],
+    judged: &[Option<i8>],
+    params: &WindingParams,
+) -> Vec<i8> {
+    let mut score = vec![0.0; judged.len()];
+    if judged.iter().any(Option::is_none) {
+        let scan = TriangleBvh::new(mesh);
+        let directions = sphere_directions(params.rays);
+        for (&triangle, &part) in mesh.triangles.iter().zip(parts) {
+            if judged[part as usize].is_some() {
+                continue;
+            }
+            let normal = area_normal(mesh, triangle);
+            let Some(across) = normal.try_normalize(0.0) else {
+                continue;
+            };
+            let centre = Point3::from(
+                triangle.iter().fold(Vector3::zeros(), |c, &v| {
+                    c + mesh.positions[v as usize].coords
+                }) / 3.0,
+            );
+            for way in &directions {
+                let facing = across.dot(way);
+                if facing.abs() >= params.edge_on
+                    && scan.cast(&centre, way, f64::INFINITY).is_none()
+                {
+                    score[part as usize] += facing.signum() * normal.norm();
+                }
+            }
+        }
+    }
+    judged
+        .iter()
+        .zip(&score)
+        .map(|(j, &s)| j.unwrap_or(if s < 0.0 { -1 } else { i8::from(s > 0.0) }))
+        .collect()
+}
+
+/// `n` unit directions spread evenly over the sphere (a Fibonacci lattice).
+fn sphere_directions(n: usize) -> Vec<Vector3<f64>> {
+    let turn = std::f64::consts::PI * (3.0 - 5f64.sqrt());
+    (0..n)
+        .map(|i| {
+            let z = 1.0 - (2 * i + 1) as f64 / n as f64;
+            let r = (1.0 - z * z).sqrt();
+            let a = turn * i as f64;
+            Vector3::new(r * a.cos(), r * a.sin(), z)
+        })
+        .collect()
+}
+
+/// `mesh` with its triangles turned to face out of the body, and what was turned; `None` when
+/// nothing was. A file wound one way keeps its parts (connected components): each part wound
+/// inwards ([`windings`]: a part of note judged so, or a smaller piece of a scan wound inwards)
+/// is turned whole. A file whose triangles disagree with their neighbours has them turned to
+/// agree first ([`cohere`]); its pieces of surface are then its parts, each judged by the views
+/// where they can; one they cannot, whose triangles the walk turned, by the rays that see it from
+/// outside (`seen_from_outside`); any other keeps the file's way. Positions and their order
+/// stay.
 pub fn face_out(mesh: &Mesh, params: &WindingParams) -> Option<(Mesh, Reorientation)> {
-    let (labels, count) = component_labels(mesh);
-    let (_, parts) = windings(mesh, &labels, count, params);
-    let turned = parts.iter().filter(|&&side| side < 0).count();
-    if turned == 0 {
+    let (agreed, parts, count, against) = match cohere(mesh) {
+        Some(c) => (
+            Cow::Owned(Mesh::new(mesh.positions.clone(), c.triangles)),
+            c.piece,
+            c.pieces,
+            c.turned,
+        ),
+        None => {
+            let (labels, count) = component_labels(mesh);
+            (
+                Cow::Borrowed(mesh),
+                triangle_labels(mesh, &labels),
+                count,
+                0,
+            )
+        }
+    };
+    let sides = if against > 0 {
+        // A piece [`cohere`] turned triangles of has no way of its own from the file: unless the
+        // views judge it, the rays from it do. Any other keeps the file's way, as a part of a
+        // file wound one way does.
+        let mut touched = vec![false; count];
+        for ((t, file), &part) in agreed.triangles.iter().zip(&mesh.triangles).zip(&parts) {
+            touched[part as usize] |= t != file;
+        }
+        let (whole, judged) = judge(&agreed, &parts, count, params);
+        let judged: Vec<Option<i8>> = judged
+            .iter()
+            .zip(&touched)
+            .map(|(&j, &touched)| match j {
+                Some(s) if s != 0 => Some(s),
+                _ if touched => None,
+                Some(s) => Some(s),
+                None => Some(side(whole)),
+            })
+            .collect();
+        seen_from_outside(&agreed, &parts, &judged, params)
+    } else {
+        windings(&agreed, &parts, count, params).1
+    };
+    let turned = sides.iter().filter(|&&side| side < 0).count();
+    if turned == 0 && against == 0 {
         return None;
     }
-    let inward = |t: &[u32; 3]| parts[labels[t[0] as usize] as usize] < 0;
-    let triangles: Vec<[u32; 3]> = mesh
+    let inward: Vec<bool> = parts.iter().map(|&p| sides[p as usize] < 0).collect();
+    let triangles: Vec<[u32; 3]> = agreed
         .triangles
         .iter()
-        .map(|t| if inward(t) { [t[0], t[2], t[1]] } else { *t })
+        .zip(&inward)
+        .map(|(&[a, b, c], &turn)| if turn { [a, c, b] } else { [a, b, c] })
         .collect();
-    let flipped = mesh.triangles.iter().filter(|t| inward(t)).count();
-    let words = if flipped == mesh.triangles.len() {
+    let changed = triangles
+        .iter()
+        .zip(&mesh.triangles)
+        .filter(|(a, b)| a != b)
+        .count();
+    let whole = inward.iter().all(|&turn| turn);
+    let were = |n: usize| if n == 1 { "it was" } else { "they were" };
+    let words = if against > 0 {
+        let then = match turned {
+            0 => String::new(),
+            _ if whole => {
+                "; the scan then faced into the body and was turned to face out".to_string()
+            }
+            n => format!(
+                "; {n} of its pieces then faced into the body and {} turned to face out",
+                were(n)
+            ),
+        };
+        format!(
+            "{against} of the scan's {} triangles faced the other way from their neighbours \
+             (the file's triangles are not wound one way); {} turned to agree{then}",
+            mesh.triangles.len(),
+            were(against)
+        )
+    } else if whole {
         "the scan's triangles faced into the body (wound clockwise seen from outside); they were \
          turned to face out"
             .to_string()
     } else {
         format!(
-            "{turned} of the scan's parts ({flipped} triangles) faced into the body; {} turned \
+            "{turned} of the scan's parts ({changed} triangles) faced into the body; {} turned \
              to face out",
-            if turned == 1 { "it was" } else { "they were" }
+            were(turned)
         )
     };
     Some((
         Mesh::new(mesh.positions.clone(), triangles),
         Reorientation {
             parts: turned,
-            triangles: flipped,
+            triangles: changed,
+            against_neighbours: against,
             words,
         },
     ))
@@ -336,12 +498,19 @@ pub(crate) mod tests {
     use crate::mesh::topology::tests::cube;
     use nalgebra::Point3;
 
-    fn views(mesh: &Mesh, params: &WindingParams) -> Vec<[ViewCount; 6]> {
+    /// Each triangle's connected component, and their count.
+    fn parts(mesh: &Mesh) -> (Vec<u32>, usize) {
         let (labels, count) = component_labels(mesh);
+        (triangle_labels(mesh, &labels), count)
+    }
+
+    fn views(mesh: &Mesh, params: &WindingParams) -> Vec<[ViewCount; 6]> {
+        let (labels, count) = parts(mesh);
         part_views(mesh, &labels, count, params)
     }
 
-    fn flipped(mesh: &Mesh, flip: impl Fn(usize) -> bool) -> Mesh {
+    /// `mesh` with the triangles `flip` picks turned.
+    pub(crate) fn flipped(mesh: &Mesh, flip: impl Fn(usize) -> bool) -> Mesh {
         let triangles = mesh
             .triangles
             .iter()
@@ -376,7 +545,7 @@ pub(crate) mod tests {
     fn a_closed_part_wound_outwards_agrees_fully() {
         let parts = {
             let m = cube();
-            let (l, n) = component_labels(&m);
+            let (l, n) = parts(&m);
             part_views(&m, &l, n, &WindingParams::default())
         };
         assert_eq!(parts.len(), 1);
@@ -409,17 +578,17 @@ pub(crate) mod tests {
     fn each_part_of_a_mixed_scan_keeps_its_own_way() {
         let p = WindingParams::default();
         let mesh = two_cubes(true);
-        let (l, n) = component_labels(&mesh);
-        let (whole, parts) = windings(&mesh, &l, n, &p);
+        let (l, n) = parts(&mesh);
+        let (whole, own) = windings(&mesh, &l, n, &p);
         assert_eq!(whole, Winding::Mixed);
-        assert_eq!(parts, vec![1, -1]);
+        assert_eq!(own, vec![1, -1]);
         // Both one way: each part says so, as the whole does.
         let mesh = two_cubes(false);
-        let (l, n) = component_labels(&mesh);
+        let (l, n) = parts(&mesh);
         assert_eq!(windings(&mesh, &l, n, &p), (Winding::Outward, vec![1, 1]));
         // A part facing both ways says nothing of itself.
         let mesh = flipped(&two_cubes(false), |t| t >= 12 && t % 2 == 0);
-        let (l, n) = component_labels(&mesh);
+        let (l, n) = parts(&mesh);
         assert_eq!(windings(&mesh, &l, n, &p), (Winding::Mixed, vec![1, 0]));
     }
 
@@ -444,9 +613,89 @@ pub(crate) mod tests {
         assert!(what
             .words
             .starts_with("the scan's triangles faced into the body"));
-        // A part facing both ways is left as it is.
-        let both = flipped(&cube(), |t| t % 2 == 0);
-        assert!(face_out(&both, &p).is_none());
+        // A part facing both ways: its triangles turned to agree, then the part to face out.
+        let (turned, what) = face_out(&flipped(&cube(), |t| t % 2 == 0), &p).unwrap();
+        assert_eq!(turned, cube());
+        assert_eq!(
+            (what.parts, what.triangles, what.against_neighbours),
+            (1, 6, 6)
+        );
+        assert_eq!(
+            what.words,
+            "6 of the scan's 12 triangles faced the other way from their neighbours (the file's \
+             triangles are not wound one way); they were turned to agree; the scan then faced \
+             into the body and was turned to face out"
+        );
+        // The second of two cubes mostly turned: its other three agree with the rest, then it is
+        // turned whole; the first is left.
+        let (turned, what) = face_out(&flipped(&two_cubes(false), |t| t >= 15), &p).unwrap();
+        assert_eq!(turned, two_cubes(false));
+        assert_eq!(
+            (what.parts, what.triangles, what.against_neighbours),
+            (1, 9, 3)
+        );
+        assert!(
+            what.words.ends_with(
+                "they were turned to agree; 1 of its pieces then faced into the body and it was \
+                 turned to face out"
+            ),
+            "{}",
+            what.words
+        );
+    }
+
+    #[test]
+    fn a_piece_too_small_for_the_views_is_judged_by_the_rays_that_see_it() {
+        // A cube with one triangle turned (the file is not wound one way), and a fan of six
+        // triangles lying just over its top face near a corner, wound inwards but for one.
+        // Agreed, the fan faces into the cube; it is too small for the views to see, and the
+        // rays that leave it upwards, seeing it from outside, say so.
+        let body = cube();
+        let mut positions = body.positions.clone();
+        let centre = positions.len() as u32;
+        positions.push(Point3::new(0.925, 0.925, 1.01));
+        for k in 0..6 {
+            let a = std::f64::consts::PI / 3.0 * k as f64;
+            positions.push(Point3::new(
+                0.925 + 0.03 * a.cos(),
+                0.925 + 0.03 * a.sin(),
+                1.01,
+            ));
+        }
+        let rim = |k: u32| centre + 1 + k % 6;
+        let fan = |inward: &dyn Fn(u32) -> bool| -> Vec<[u32; 3]> {
+            (0..6)
+                .map(|k| {
+                    if inward(k) {
+                        [centre, rim(k + 1), rim(k)]
+                    } else {
+                        [centre, rim(k), rim(k + 1)]
+                    }
+                })
+                .collect()
+        };
+        let outward = Mesh::new(
+            positions.clone(),
+            [body.triangles.clone(), fan(&|_| false)].concat(),
+        );
+        let file = Mesh::new(
+            positions.clone(),
+            [flipped(&body, |t| t == 3).triangles, fan(&|k| k != 2)].concat(),
+        );
+        let (turned, what) = face_out(&file, &WindingParams::default()).unwrap();
+        assert_eq!(turned, outward);
+        assert_eq!(
+            (what.parts, what.triangles, what.against_neighbours),
+            (1, 6, 2)
+        );
+        // A fan wound one way in the file keeps it, as in a file wound one way throughout.
+        let file = Mesh::new(
+            positions,
+            [flipped(&body, |t| t == 3).triangles, fan(&|_| true)].concat(),
+        );
+        let (kept, what) = face_out(&file, &WindingParams::default()).unwrap();
+        assert_eq!(kept.triangles[12..], file.triangles[12..]);
+        assert_eq!((what.parts, what.triangles), (0, 1));
     }
 
     #[test]
@@ -456,7 +705,7 @@ pub(crate) mod tests {
         open.triangles.truncate(10);
         // Seen from the open side, the inside of the far face: 5 of the 6 views agree.
         let parts = {
-            let (l, n) = component_labels(&open);
+            let (l, n) = parts(&open);
             part_views(&open, &l, n, &WindingParams::default())
         };
         let (seen, facing) = parts[0].iter().fold((0, 0), |s, v| (s.0 + v.0, s.1 + v.1));
@@ -496,7 +745,7 @@ pub(crate) mod tests {
         assert_eq!(part_says(&floor, &p), PartSays::OneSided, "{floor:?}");
         assert_eq!(winding(&mesh, &p), Winding::Outward);
         // The floor claims no side of its own; the body keeps its.
-        let (l, n) = component_labels(&mesh);
+        let (l, n) = parts(&mesh);
         assert_eq!(windings(&mesh, &l, n, &p).1, vec![1, 0]);
         // The same floor alone says nothing: no part is wound either way.
         let alone = Mesh::new(mesh.positions.clone(), mesh.triangles[12..].to_vec());
