@@ -112,7 +112,7 @@ pub fn cohere(mesh: &Mesh) -> Option<Cohered> {
         }
     }
     // Smallest first, an enclosed set of regions is joined to every set across its seams, turned
-    // against them; the joined set, its seams among them closed, is looked at again.
+    // against them; the joined set is looked at again.
     let mut closed = vec![false; seams.len()];
     let mut queue: BinaryHeap<Reverse<(usize, u32)>> = (0..n as u32)
         .map(|r| Reverse((size[r as usize], r)))
@@ -122,13 +122,30 @@ pub fn cohere(mesh: &Mesh) -> Option<Cohered> {
         if sets.find(r).0 != r || size[ru] != was || against[ru] <= pinched[ru] {
             continue;
         }
+        // Seams that fell inside the set when regions beside it were joined through another
+        // are closed first; then it is looked at again.
+        let mut open = std::mem::take(&mut at[ru]);
+        open.retain(|&e| {
+            let [x, y] = seams[e as usize];
+            let inner = !closed[e as usize] && sets.find(x).0 == sets.find(y).0;
+            if inner {
+                closed[e as usize] = true;
+                against[ru] -= 2;
+            }
+            !closed[e as usize]
+        });
+        if against[ru] <= pinched[ru] {
+            at[ru] = open;
+            continue;
+        }
         let mut root = r;
-        for e in std::mem::take(&mut at[ru]) {
+        for e in open {
             if closed[e as usize] {
                 continue;
             }
             closed[e as usize] = true;
-            let [(a, pa), (b, pb)] = seams[e as usize].map(|x| sets.find(x));
+            let [x, y] = seams[e as usize];
+            let [a, b] = [x, y].map(|r| sets.find(r).0);
             if a == b {
                 against[a as usize] -= 2;
                 continue;
@@ -141,7 +158,8 @@ pub fn cohere(mesh: &Mesh) -> Option<Cohered> {
                 std::mem::swap(&mut kept, &mut moved);
             }
             kept.append(&mut moved);
-            root = sets.union(a, b, !(pa ^ pb));
+            // The seam's two regions disagree: one turned against the other.
+            root = sets.union(x, y, true);
             let u = root as usize;
             (size[u], pinched[u], against[u], at[u]) = (sum_size, sum_pinched, sum_against, kept);
         }
@@ -205,32 +223,25 @@ impl Joined {
         }
     }
 
-    /// `x`'s root, and whether `x` is turned against it.
+    /// `x`'s root, and whether `x` is turned against it; the way there is pointed at the root.
     fn find(&mut self, x: u32) -> (u32, bool) {
-        let mut path = Vec::new();
-        let mut at = x;
+        let (mut root, mut turned) = (x, false);
+        while self.parent[root as usize] != root {
+            turned ^= self.turned[root as usize];
+            root = self.parent[root as usize];
+        }
+        let (mut at, mut along) = (x, turned);
         while self.parent[at as usize] != at {
-            path.push(at);
-            at = self.parent[at as usize];
+            let (next, own) = (self.parent[at as usize], self.turned[at as usize]);
+            self.parent[at as usize] = root;
+            self.turned[at as usize] = along;
+            along ^= own;
+            at = next;
         }
-        // Point the path at the root, each turned as the sum along its way.
-        let mut turned = false;
-        for &v in path.iter().rev() {
-            turned ^= self.turned[v as usize];
-            self.turned[v as usize] = turned;
-            self.parent[v as usize] = at;
-        }
-        (
-            at,
-            if path.is_empty() {
-                false
-            } else {
-                self.turned[x as usize]
-            },
-        )
+        (root, turned)
     }
 
-    /// Joins the sets of roots `a` and `b`, `b` turned against `a` when `turned`; the new root.
+    /// Joins the sets of `a` and `b`, `b` turned against `a` when `turned`; the new root.
     fn union(&mut self, a: u32, b: u32, turned: bool) -> u32 {
         let (ra, pa) = self.find(a);
         let (rb, pb) = self.find(b);
