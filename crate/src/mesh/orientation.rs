@@ -95,10 +95,12 @@ pub fn cohere(mesh: &Mesh) -> Option<Cohered> {
         .collect();
     let n = count as usize;
     let mut sets = Joined::new(n);
-    let mut size = vec![0usize; n];
+    // Each region's triangles; a set's, at its root, as regions are joined.
+    let mut own = vec![0usize; n];
     for &r in &region {
-        size[r as usize] += 1;
+        own[r as usize] += 1;
     }
+    let mut size = own.clone();
     let mut pinched = vec![0usize; n];
     for &t in &pinch_uses {
         pinched[region[t as usize] as usize] += 1;
@@ -170,7 +172,7 @@ pub fn cohere(mesh: &Mesh) -> Option<Cohered> {
     let side: Vec<(u32, bool)> = (0..n as u32).map(|r| sets.find(r)).collect();
     for (r, &(root, turned)) in side.iter().enumerate() {
         if turned {
-            turned_in[root as usize] += size[r];
+            turned_in[root as usize] += own[r];
         }
     }
     let mut piece_of = vec![u32::MAX; n];
@@ -287,6 +289,37 @@ mod tests {
         assert_eq!(c.piece, [vec![0; 12], vec![1; 12]].concat());
         // A part wound one way throughout, whichever way, is left as it is.
         assert!(cohere(&two_cubes(true)).is_none());
+    }
+
+    #[test]
+    fn a_sheet_with_triangles_turned_at_random_comes_back_one_way() {
+        // A 12 × 12 sheet of quads (288 triangles), some turned by a fixed scramble: patches of
+        // every size, joined in many steps. A third turned: they come back. Two thirds: the
+        // third not turned is the fewer, so the sheet comes back wound the other way throughout
+        // (a count of the joined sets' sizes instead of their regions' once got this wrong).
+        let side = 13u32;
+        let positions = (0..side * side)
+            .map(|i| nalgebra::Point3::new(f64::from(i % side), f64::from(i / side), 0.0))
+            .collect();
+        let at = |x: u32, y: u32| y * side + x;
+        let triangles: Vec<[u32; 3]> = (0..side - 1)
+            .flat_map(|y| (0..side - 1).map(move |x| (x, y)))
+            .flat_map(|(x, y)| {
+                [
+                    [at(x, y), at(x + 1, y), at(x + 1, y + 1)],
+                    [at(x, y), at(x + 1, y + 1), at(x, y + 1)],
+                ]
+            })
+            .collect();
+        let sheet = Mesh::new(positions, triangles);
+        let third = |t: usize| (t as u64).wrapping_mul(0x9E37_79B9_7F4A_7C15) % 3;
+        let c = cohere(&flipped(&sheet, |t| third(t) == 0)).unwrap();
+        assert_eq!(c.triangles, sheet.triangles);
+        assert_eq!(c.turned, (0..288).filter(|&t| third(t) == 0).count());
+        assert_eq!(c.pieces, 1);
+        let c = cohere(&flipped(&sheet, |t| third(t) < 2)).unwrap();
+        assert_eq!(c.triangles, flipped(&sheet, |_| true).triangles);
+        assert_eq!(c.turned, (0..288).filter(|&t| third(t) == 2).count());
     }
 
     #[test]
