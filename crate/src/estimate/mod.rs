@@ -18,7 +18,8 @@
 //! * [`acromion`] — the Acromions on the scan's shoulder near the fit's, after the fine fit.
 //! * [`profile`] — the limbs' cross-section profiles (knees, elbows, the wrist).
 //! * [`hand`] — the hand's pose about the wrist, from the scan's surface beyond it (the
-//!   template's hands: `template::hand`).
+//!   template's hands: `template::hand`); [`foot`] — the foot's pose about the ankle, moved
+//!   rigidly onto the scan's foot (the template's feet: `template::foot`).
 //! * [`matching`] — closest compatible scan points, the ICP energy.
 //! * [`suspicious`] — [`flag_suspicious`]: given landmarks far from where they are expected;
 //!   [`expected`] — where: from the other given landmarks of the part, or from the fit;
@@ -47,6 +48,7 @@ pub mod confidence;
 pub mod error;
 pub mod expected;
 pub mod facing;
+pub mod foot;
 pub mod forearm_twist;
 pub mod frame;
 pub mod hand;

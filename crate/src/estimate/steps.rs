@@ -37,6 +37,7 @@ use super::confidence::{confidence, neighbourhoods, residual};
 use super::error::EstimateError;
 use super::expected::expected_positions;
 use super::facing::{body_forward, FacingCue};
+use super::foot::pose_feet;
 use super::frame::{same_frame, same_up, FrameReport};
 use super::hand::pose_hands;
 use super::matching::Matching;
@@ -65,6 +66,7 @@ use crate::mesh::strays::remove_strays;
 use crate::mesh::units::{detect_units, Units};
 use crate::mesh::winding::{face_out, WindingParams};
 use crate::mesh::Mesh;
+use crate::template::foot::feet;
 use crate::template::hand::hands;
 use crate::template::parts::{dominant_part, parts};
 use crate::template::{Resolution, Segment, Template};
@@ -360,6 +362,7 @@ pub fn estimate_landmarks(
     // file of correct landmarks made the fit worse than none (held-out seed 5151 subject 0:
     // 4–10 given, +0.8 to +3.3 mm of correspondence error).
     let hands = hands(&template);
+    let feet = feet(&template);
     let mut order: Vec<usize> = (0..fitted.len()).collect();
     if let Some(k) = fitted.iter().position(|(source, _)| *source != FROM_GIVEN) {
         order.remove(k);
@@ -386,6 +389,7 @@ pub fn estimate_landmarks(
         )
         .ok_or(EstimateError::Cancelled)?;
         pose_hands(&hands, &mut fit, triangles, &scan, &matching, params);
+        pose_feet(&feet, &mut fit, triangles, &matching, &params.foot);
         let apart = given_m
             .iter()
             .map(|(i, p)| (fit[landmark_vertices[*i] as usize] - p).norm())

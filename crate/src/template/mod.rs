@@ -21,6 +21,7 @@ pub mod face;
 #[cfg(test)]
 pub(crate) mod fixture;
 pub mod flags;
+pub mod foot;
 pub mod frame;
 pub mod hand;
 pub mod makehuman;

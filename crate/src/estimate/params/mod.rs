@@ -1,11 +1,12 @@
 //! Parameters of the landmark estimate, each with its documented default (the one place they
 //! live): [`EstimateParams`] and the parameter structs it holds for the segment-wise fit
 //! ([`SegmentParams`], `segments.rs`), the limbs' profiles ([`ProfileParams`]) and the hands
-//! ([`HandParams`]), the Acromions on the surface ([`AcromionParams`]), the estimate's check of itself ([`SelfCheckParams`]) and the check of a given
+//! ([`HandParams`]) and the feet ([`FootParams`]), the Acromions on the surface ([`AcromionParams`]), the estimate's check of itself ([`SelfCheckParams`]) and the check of a given
 //! file ([`CheckParams`]). Lengths are metres (the check's millimetres), angles degrees.
 
 pub mod acromion;
 pub mod check;
+pub mod foot;
 pub mod hand;
 pub mod profile;
 pub mod segments;
@@ -13,6 +14,7 @@ pub mod self_check;
 
 pub use acromion::AcromionParams;
 pub use check::CheckParams;
+pub use foot::FootParams;
 pub use hand::{HandParams, LaidHandParams, WristProfileParams};
 pub use profile::ProfileParams;
 pub use segments::{
@@ -86,6 +88,8 @@ pub struct EstimateParams {
     pub profile: ProfileParams,
     /// The hands' pose about the wrist.
     pub hand: HandParams,
+    /// The feet's pose about the ankle.
+    pub foot: FootParams,
     /// The Acromions placed on the scan's shoulder after the fine fit.
     pub acromion: AcromionParams,
     /// Largest angle (degrees) between template and scan normals of a match in the ICP stages.
@@ -147,6 +151,7 @@ impl Default for EstimateParams {
             segments: SegmentParams::default(),
             profile: ProfileParams::default(),
             hand: HandParams::default(),
+            foot: FootParams::default(),
             acromion: AcromionParams::default(),
             max_normal_angle_deg: 60.0,
             outlier_distance: 0.1,
