@@ -92,12 +92,11 @@ pub fn ankle_and_axis(
 mod tests {
     use super::*;
     use crate::template::body_part::{body_parts, BodyPart};
+    use crate::template::fixture::base_body;
 
     #[test]
     fn each_foot_is_the_leg_below_its_ankle_and_holds_the_foot_landmarks() {
-        let template = Template::embedded()
-            .unwrap()
-            .at_resolution(crate::template::Resolution::Base);
+        let template = base_body().template;
         let feet = feet(&template);
         assert_eq!(feet.len(), 2);
         let parts = body_parts(&template);
