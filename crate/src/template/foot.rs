@@ -6,7 +6,7 @@
 
 use nalgebra::{Point3, Vector3};
 
-use super::hand::mid;
+use super::hand::{mid, smoothstep};
 use crate::template::{Segment, Template};
 
 /// The foot's share of the motion rises from 0 at the first of these distances (m) along the
@@ -55,9 +55,7 @@ pub fn feet(template: &Template) -> Vec<Foot> {
             .enumerate()
             .filter(|(v, _)| template.segment_weights(*v as u32)[segment.index()] >= 0.5)
             .filter_map(|(v, p)| {
-                let t = ((p - ankle).dot(&axis) - BLEND.0) / (BLEND.1 - BLEND.0);
-                let t = t.clamp(0.0, 1.0);
-                let s = t * t * (3.0 - 2.0 * t);
+                let s = smoothstep(((p - ankle).dot(&axis) - BLEND.0) / (BLEND.1 - BLEND.0));
                 (s > 0.0).then_some((v as u32, s))
             })
             .collect();

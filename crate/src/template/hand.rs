@@ -120,7 +120,8 @@ pub fn hands(template: &Template) -> Vec<Hand> {
     out
 }
 
-fn smoothstep(t: f64) -> f64 {
+/// 0 below 0, 1 above 1, and the cubic 3t² − 2t³ rising smoothly between.
+pub(crate) fn smoothstep(t: f64) -> f64 {
     let t = t.clamp(0.0, 1.0);
     t * t * (3.0 - 2.0 * t)
 }
