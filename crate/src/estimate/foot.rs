@@ -12,9 +12,10 @@ use nalgebra::{Matrix3, Point3, Rotation3, Vector3};
 
 use super::matching::Matching;
 use super::params::FootParams;
-use crate::mesh::normals::vertex_normals;
+use crate::mesh::normals::vertex_normals_into;
 use crate::mesh::similarity::similarity;
-use crate::template::foot::{ankle_and_axis, Foot};
+use crate::template::foot::Foot;
+use crate::template::hand::mid;
 
 /// Where a foot was moved: the turn about the ankle (degrees) and the ankle's shift (m).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -23,32 +24,33 @@ pub struct FootPose {
     pub shift: f64,
 }
 
-/// Moves each foot of `feet` in `positions` (the segment-wise fit's, metres; the template's
-/// `triangles`) onto the scan indexed by `matching`. Per foot, how it was moved (`None`: left
+/// Moves each foot of `feet` in `positions` (the segment-wise fit's, metres) onto the scan
+/// indexed by `matching`. Per foot, how it was moved (`None`: left
 /// where it was).
 pub fn pose_feet(
     feet: &[Foot],
     positions: &mut [Point3<f64>],
-    triangles: &[[u32; 3]],
     matching: &Matching<'_>,
     params: &FootParams,
 ) -> Vec<Option<FootPose>> {
     feet.iter()
-        .map(|foot| pose_foot(foot, positions, triangles, matching, params))
+        .map(|foot| pose_foot(foot, positions, matching, params))
         .collect()
 }
 
 fn pose_foot(
     foot: &Foot,
     positions: &mut [Point3<f64>],
-    triangles: &[[u32; 3]],
     matching: &Matching<'_>,
     params: &FootParams,
 ) -> Option<FootPose> {
-    let pairs_at = |positions: &[Point3<f64>]| {
-        matching.pairs(&foot.own, positions, &vertex_normals(positions, triangles))
+    // The own vertices' normals from the foot's triangles alone (all those around them).
+    let mut normals = vec![Vector3::zeros(); positions.len()];
+    let mut pairs_at = |positions: &[Point3<f64>]| {
+        vertex_normals_into(positions, &foot.triangles, &mut normals);
+        matching.pairs(&foot.own, positions, &normals)
     };
-    let (ankle, _) = ankle_and_axis(positions, foot.malleoli, foot.epicondyles);
+    let ankle = mid(positions, foot.malleoli);
     let start: Vec<Point3<f64>> = foot
         .share
         .iter()
@@ -108,7 +110,7 @@ mod tests {
         turn: UnitQuaternion<f64>,
         shift: Vector3<f64>,
     ) -> Vec<Point3<f64>> {
-        let (ankle, _) = ankle_and_axis(rest, foot.malleoli, foot.epicondyles);
+        let ankle = mid(rest, foot.malleoli);
         let mut out = rest.to_vec();
         for (v, s) in &foot.share {
             let p = rest[*v as usize];
@@ -116,6 +118,22 @@ mod tests {
             out[*v as usize] = p + (moved - p) * *s;
         }
         out
+    }
+
+    /// `feet` posed from the template's `rest` positions onto the scan (`scan`, `triangles`) with
+    /// the defaults: where they end and how each was moved.
+    fn posed_on(
+        rest: &[Point3<f64>],
+        feet: &[Foot],
+        scan: Vec<Point3<f64>>,
+        triangles: Vec<[u32; 3]>,
+    ) -> (Vec<Point3<f64>>, Vec<Option<FootPose>>) {
+        let params = EstimateParams::default();
+        let index = SurfaceIndex::new(&Mesh::new(scan, triangles)).unwrap();
+        let matching = Matching::new(&index, &params);
+        let mut positions = rest.to_vec();
+        let poses = pose_feet(feet, &mut positions, &matching, &params.foot);
+        (positions, poses)
     }
 
     #[test]
@@ -126,23 +144,17 @@ mod tests {
             triangles,
             ..
         } = base_body();
-        let feet = feet(&template);
-        let params = EstimateParams::default();
-        for foot in &feet {
+        for foot in &feet(&template) {
             // Pointed 8° and rolled 6° onto its outer edge, the ankle 5 mm lower.
             let turn = UnitQuaternion::from_euler_angles(0.14, 0.0, 0.1);
             let scan = foot_moved(&rest, foot, turn, Vector3::new(0.0, -0.005, 0.0));
-            let index = SurfaceIndex::new(&Mesh::new(scan.clone(), triangles.clone())).unwrap();
-            let matching = Matching::new(&index, &params);
-            let mut positions = rest.clone();
-            let pose = pose_feet(
+            let (positions, poses) = posed_on(
+                &rest,
                 std::slice::from_ref(foot),
-                &mut positions,
-                &triangles,
-                &matching,
-                &params.foot,
-            )[0]
-            .expect("the foot is moved");
+                scan.clone(),
+                triangles.clone(),
+            );
+            let pose = poses[0].expect("the foot is moved");
             assert!(
                 (7.0..13.0).contains(&pose.turn_deg),
                 "{} {pose:?}",
@@ -170,7 +182,6 @@ mod tests {
             ..
         } = base_body();
         let feet = feet(&template);
-        let params = EstimateParams::default();
         // The scan: the template without the feet (their own triangles gone, their vertices far
         // off): only the lower legs' ends are left near the template's feet.
         let own: std::collections::HashSet<u32> =
@@ -191,10 +202,7 @@ mod tests {
                 }
             })
             .collect();
-        let index = SurfaceIndex::new(&Mesh::new(scan, kept)).unwrap();
-        let matching = Matching::new(&index, &params);
-        let mut positions = rest.clone();
-        let poses = pose_feet(&feet, &mut positions, &triangles, &matching, &params.foot);
+        let (positions, poses) = posed_on(&rest, &feet, scan, kept);
         assert_eq!(poses, vec![None, None]);
         assert_eq!(positions, rest);
     }

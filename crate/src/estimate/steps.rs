@@ -389,7 +389,7 @@ pub fn estimate_landmarks(
         )
         .ok_or(EstimateError::Cancelled)?;
         pose_hands(&hands, &mut fit, triangles, &scan, &matching, params);
-        pose_feet(&feet, &mut fit, triangles, &matching, &params.foot);
+        pose_feet(&feet, &mut fit, &matching, &params.foot);
         let apart = given_m
             .iter()
             .map(|(i, p)| (fit[landmark_vertices[*i] as usize] - p).norm())

@@ -4,9 +4,7 @@
 //! (the femoral epicondyles).
 //! The landmark estimate poses each foot on the scan (`estimate::foot`).
 
-use nalgebra::{Point3, Vector3};
-
-use super::hand::{mid, smoothstep};
+use super::hand::{end_and_axis, smoothstep};
 use crate::template::{Segment, Template};
 
 /// The foot's share of the motion rises from 0 at the first of these distances (m) along the
@@ -21,12 +19,13 @@ pub struct Foot {
     pub side: &'static str,
     /// Lateral and medial malleolus: the ankle is their midpoint.
     pub(crate) malleoli: [u32; 2],
-    /// Lateral and medial femoral epicondyle: the knee, the lower leg's other end.
-    pub(crate) epicondyles: [u32; 2],
     /// The vertices the foot's motion moves, each with its share of it.
     pub(crate) share: Vec<(u32, f64)>,
     /// The vertices wholly the foot's (share 1): those matched to the scan.
     pub(crate) own: Vec<u32>,
+    /// The template's triangles with every corner among the moved vertices: every triangle
+    /// around a vertex wholly the foot's, so its normal is the whole mesh's.
+    pub(crate) triangles: Vec<[u32; 3]>,
 }
 
 /// The template's two feet (`template` at the resolution fitted): the leg segment's vertices
@@ -49,7 +48,7 @@ pub fn feet(template: &Template) -> Vec<Foot> {
         ) else {
             continue;
         };
-        let (ankle, axis) = ankle_and_axis(rest, malleoli, epicondyles);
+        let (ankle, axis) = end_and_axis(rest, malleoli, epicondyles);
         let share: Vec<(u32, f64)> = rest
             .iter()
             .enumerate()
@@ -64,26 +63,26 @@ pub fn feet(template: &Template) -> Vec<Foot> {
             .filter(|(_, s)| *s >= 1.0)
             .map(|(v, _)| *v)
             .collect();
+        let mut moved = vec![false; rest.len()];
+        for (v, _) in &share {
+            moved[*v as usize] = true;
+        }
+        let triangles = template
+            .mesh()
+            .triangles
+            .iter()
+            .filter(|t| t.iter().all(|&v| moved[v as usize]))
+            .copied()
+            .collect();
         out.push(Foot {
             side,
             malleoli,
-            epicondyles,
             share,
             own,
+            triangles,
         });
     }
     out
-}
-
-/// The ankle (midpoint of the malleoli) and the lower leg's unit direction (from the midpoint of
-/// the femoral epicondyles to the ankle) at `positions`.
-pub fn ankle_and_axis(
-    positions: &[Point3<f64>],
-    malleoli: [u32; 2],
-    epicondyles: [u32; 2],
-) -> (Point3<f64>, Vector3<f64>) {
-    let ankle = mid(positions, malleoli);
-    (ankle, (ankle - mid(positions, epicondyles)).normalize())
 }
 
 #[cfg(test)]
@@ -113,6 +112,13 @@ mod tests {
             assert!(reported.len() > 100, "{} {}", foot.side, reported.len());
             let outside = reported.iter().filter(|v| !foot.own.contains(v)).count();
             assert!(outside * 100 <= reported.len(), "{} {outside}", foot.side);
+            // Every triangle around a vertex wholly the foot's is the foot's.
+            let around = template
+                .mesh()
+                .triangles
+                .iter()
+                .filter(|t| t.iter().any(|v| foot.own.contains(v)));
+            assert!(around.into_iter().all(|t| foot.triangles.contains(t)));
             let moved = |name: &str| {
                 let v = template
                     .landmark_vertex(&format!("{} {name}", foot.side))

@@ -131,6 +131,18 @@ pub fn mid(positions: &[Point3<f64>], [a, b]: [u32; 2]) -> Point3<f64> {
     Point3::from((positions[a as usize].coords + positions[b as usize].coords) / 2.0)
 }
 
+/// The end of a limb's lower part (the midpoint of the pair `end`) and the part's unit direction
+/// (from the midpoint of the pair `joint` to that end) at `positions`: the wrist and the forearm,
+/// the ankle and the lower leg.
+pub fn end_and_axis(
+    positions: &[Point3<f64>],
+    end: [u32; 2],
+    joint: [u32; 2],
+) -> (Point3<f64>, Vector3<f64>) {
+    let at = mid(positions, end);
+    (at, (at - mid(positions, joint)).normalize())
+}
+
 /// The wrist (midpoint of the styloids) and the forearm's unit direction (from the midpoint of
 /// the epicondyles to the wrist) at `positions`.
 pub fn wrist_and_axis(
@@ -138,8 +150,7 @@ pub fn wrist_and_axis(
     styloids: [u32; 2],
     epicondyles: [u32; 2],
 ) -> (Point3<f64>, Vector3<f64>) {
-    let wrist = mid(positions, styloids);
-    (wrist, (wrist - mid(positions, epicondyles)).normalize())
+    end_and_axis(positions, styloids, epicondyles)
 }
 
 /// Turns the hand by `rotation` about `wrist`, each vertex by its share of it.
