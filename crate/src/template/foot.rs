@@ -4,7 +4,7 @@
 //! (the femoral epicondyles).
 //! The landmark estimate poses each foot on the scan (`estimate::foot`).
 
-use super::hand::{end_and_axis, smoothstep};
+use super::hand::{end_and_axis, own_and_triangles, smoothstep};
 use crate::template::{Segment, Template};
 
 /// The foot's share of the motion rises from 0 at the first of these distances (m) along the
@@ -58,22 +58,7 @@ pub fn feet(template: &Template) -> Vec<Foot> {
                 (s > 0.0).then_some((v as u32, s))
             })
             .collect();
-        let own = share
-            .iter()
-            .filter(|(_, s)| *s >= 1.0)
-            .map(|(v, _)| *v)
-            .collect();
-        let mut moved = vec![false; rest.len()];
-        for (v, _) in &share {
-            moved[*v as usize] = true;
-        }
-        let triangles = template
-            .mesh()
-            .triangles
-            .iter()
-            .filter(|t| t.iter().all(|&v| moved[v as usize]))
-            .copied()
-            .collect();
+        let (own, triangles) = own_and_triangles(template, &share);
         out.push(Foot {
             side,
             malleoli,

@@ -88,22 +88,7 @@ pub fn hands(template: &Template) -> Vec<Hand> {
                 (rest > 0.0).then_some((*v as u32, rest))
             })
             .collect();
-        let own = share
-            .iter()
-            .filter(|(_, s)| *s >= 1.0)
-            .map(|(v, _)| *v)
-            .collect();
-        let mut member = vec![false; rest.len()];
-        for (v, _) in &share {
-            member[*v as usize] = true;
-        }
-        let triangles = template
-            .mesh()
-            .triangles
-            .iter()
-            .filter(|t| t.iter().all(|&v| member[v as usize]))
-            .copied()
-            .collect();
+        let (own, triangles) = own_and_triangles(template, &share);
         out.push(Hand {
             side,
             styloids,
@@ -118,6 +103,31 @@ pub fn hands(template: &Template) -> Vec<Hand> {
         });
     }
     out
+}
+
+/// Of a region moved by `share` (vertices with their share of a motion): its vertices wholly
+/// moved (share 1), and the template's triangles with every corner in the region.
+pub(crate) fn own_and_triangles(
+    template: &Template,
+    share: &[(u32, f64)],
+) -> (Vec<u32>, Vec<[u32; 3]>) {
+    let own = share
+        .iter()
+        .filter(|(_, s)| *s >= 1.0)
+        .map(|(v, _)| *v)
+        .collect();
+    let mut member = vec![false; template.mesh().positions.len()];
+    for (v, _) in share {
+        member[*v as usize] = true;
+    }
+    let triangles = template
+        .mesh()
+        .triangles
+        .iter()
+        .filter(|t| t.iter().all(|&v| member[v as usize]))
+        .copied()
+        .collect();
+    (own, triangles)
 }
 
 /// 0 below 0, 1 above 1, and the cubic 3t² − 2t³ rising smoothly between.
