@@ -231,7 +231,7 @@ function changeUnits(units: Units): void {
 function refresh(frame: boolean): void {
   const scan = session.scan;
   const set = session.landmarks;
-  viewer.showBody('scan', { mesh: scan, vertexWinding: scan?.vertexWinding ?? null, meshScale: session.scanScale, landmarks: landmarkStep.markers() }, frame);
+  viewer.showBody('scan', { mesh: scan, triangleFacing: scan?.triangleFacing ?? null, meshScale: session.scanScale, landmarks: landmarkStep.markers() }, frame);
   emptyHint.hidden = Boolean(scan || set) || body.dataset.shapeShown === 'true';
   const summary = session.scanSummary;
   scanPanel.render(

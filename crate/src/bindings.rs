@@ -115,11 +115,11 @@ impl ParsedScan {
         Float32Array::from(self.normals.as_slice())
     }
 
-    /// `#V` per vertex, which way its part faces: 1 outwards, −1 inwards, 0 neither known
-    /// ([`MeshSummary::vertex_winding`], copied out).
-    #[wasm_bindgen(js_name = vertexWinding)]
-    pub fn vertex_winding(&self) -> Int8Array {
-        Int8Array::from(self.summary.vertex_winding.as_slice())
+    /// `#F` per triangle, which way its front faces: 1 out of the body, −1 into it, 0 not known
+    /// ([`MeshSummary::triangle_facing`], copied out).
+    #[wasm_bindgen(js_name = triangleFacing)]
+    pub fn triangle_facing(&self) -> Int8Array {
+        Int8Array::from(self.summary.triangle_facing.as_slice())
     }
 
     /// The [`MeshSummary`] as JSON (snake_case fields, bounding box in metres).

@@ -38,8 +38,8 @@ export interface ParsedScan {
   triangles: Uint32Array;
   /** `#V·3` unit vertex normals. */
   normals: Float32Array;
-  /** `#V` per vertex, which way its part's triangles face (`mesh::winding::windings`): 1 out of the body, −1 into it, 0 not known. */
-  vertexWinding: Int8Array;
+  /** `#F` per triangle, which way its front faces (`mesh::winding::facings`): 1 out of the body, −1 into it, 0 not known. */
+  triangleFacing: Int8Array;
   summary: MeshSummary;
   timings: WorkerTimings;
 }

@@ -70,7 +70,7 @@ export class ScanPanel {
       h(
         'p',
         { class: 'note' },
-        `Holes are boundary loops of the surface; parts are connected components; normals are the triangles’ sides, facing out of the body or into it as the scan is seen from outside (mixed: the parts disagree or a part faces both ways; a click through a hole is still told on every part wound one way; before the scan is fitted, triangles that face against their neighbours are turned to agree and a part wound inwards is turned to face out). Read in ${facts.readMs.toFixed(0)} ms.`,
+        `Holes are boundary loops of the surface; parts are connected components; normals are the triangles’ sides, facing out of the body or into it as the scan is seen from outside (mixed: the parts disagree or a part faces both ways; a click through a hole is still told wherever the core can say which way a triangle faces, on every part wound one way and on a part facing both ways once its triangles are brought to agree; before the scan is fitted, triangles that face against their neighbours are turned to agree and a part wound inwards is turned to face out). Read in ${facts.readMs.toFixed(0)} ms.`,
       ),
     );
   }

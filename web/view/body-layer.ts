@@ -30,8 +30,8 @@ export interface BodyContent {
   visible?: boolean;
   /** Column-major 4×4 display transform of the whole body (e.g. a z-up scan shown upright). */
   transform?: number[] | null;
-  /** `#V` per vertex, which way its part's triangles face (a scan's, from the core): 1 out of the body, −1 into it, 0 not known; `null`: not known anywhere. */
-  vertexWinding?: Int8Array | null;
+  /** `#F` per triangle, which way its front faces (a scan's, from the core): 1 out of the body, −1 into it, 0 not known; `null`: not known anywhere. */
+  triangleFacing?: Int8Array | null;
 }
 
 /** Marker radius as a fraction of the body's height: 8 mm on a 1.75 m body. */
@@ -43,7 +43,7 @@ export class BodyLayer {
   private source: BodyMesh | null = null;
   private markers: LandmarkMarkers | null = null;
   private landmarks: LandmarkPoints | null = null;
-  private wound: Int8Array | null = null;
+  private facing: Int8Array | null = null;
 
   constructor(name: string) {
     this.group.name = name;
@@ -55,7 +55,7 @@ export class BodyLayer {
    * rebuilds the geometry.
    */
   update(content: BodyContent): void {
-    if (content.vertexWinding !== undefined) this.wound = content.vertexWinding;
+    if (content.triangleFacing !== undefined) this.facing = content.triangleFacing;
     let rebuilt = false;
     if (content.mesh !== undefined && content.mesh !== this.source) {
       if (content.mesh && this.sameTopology(content.mesh)) this.morphMesh(content.mesh);
@@ -91,9 +91,9 @@ export class BodyLayer {
     return this.markers?.count ?? 0;
   }
 
-  /** Per vertex, which way the surface's triangles face there (1 out, −1 in, 0 not known), when known. */
-  get vertexWinding(): Int8Array | null {
-    return this.wound;
+  /** Per triangle, which way its front faces (1 out of the body, −1 into it, 0 not known), when known. */
+  get triangleFacing(): Int8Array | null {
+    return this.facing;
   }
 
   /** The body's surface, which hides markers behind it from the tooltip. */

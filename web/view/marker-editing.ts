@@ -2,7 +2,7 @@
 // moving) on the surface places the selected landmark at the point under the cursor; a press on a
 // marker drags it along the surface (the orbit controls rest meanwhile). Only the body's own mesh
 // is raycast; points come out in the body's frame (metres, before its display transform), where
-// its markers live. Where a body's triangles are known to face out of it (a scan's parts' winding,
+// its markers live. Where a body's triangles are known to face out of it (a scan's, per triangle
 // from the core), a ray whose first hit is a triangle's back has gone through a hole in the surface
 // onto the inside of the far side: nothing is placed there, and the handlers hear of it.
 import * as THREE from 'three';
@@ -151,7 +151,7 @@ export class MarkerEditing {
 
   /**
    * The surface's first hit along the aimed ray, and whether it is seen through a hole: the back
-   * of a triangle (on a part wound one way) with no triangle's front within `FOLD_DEPTH`
+   * of a triangle (one the core knows the way of) with no triangle's front within `FOLD_DEPTH`
    * behind it, the inside of the far side. A noisy scan's surface folds over in places, and there
    * a triangle's back lies just in front of the surface: that is a hit like any other.
    */
@@ -164,15 +164,16 @@ export class MarkerEditing {
   }
 
   /**
-   * Which side of its triangle `hit` is on, where its part is wound one way (out of the body or
-   * into it): the core says so per part, so a part wound one way tells it even on a scan whose
-   * parts disagree; `null` on a part that says neither (a piece too small to judge, a sheet).
+   * Which side of its triangle `hit` is on, where the core knows which way that triangle faces
+   * (out of the body or into it): it says so per triangle, so a part wound one way tells it even
+   * on a scan whose parts disagree, and a part whose triangles face both ways too; `null` where
+   * it knows neither (a piece too small to judge, a sheet).
    * The triangle's side is taken from its corners in world space, so a display transform that
    * mirrors the body changes nothing.
    */
   private sideOf(layer: BodyLayer, hit: THREE.Intersection): 'front' | 'back' | null {
     const face = hit.face;
-    const wound = face ? (layer.vertexWinding?.[face.a] ?? 0) : 0;
+    const wound = face && hit.faceIndex != null ? (layer.triangleFacing?.[hit.faceIndex] ?? 0) : 0;
     if (!face || wound === 0) return null;
     const mesh = layer.surface!;
     const position = mesh.geometry.getAttribute('position');

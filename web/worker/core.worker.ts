@@ -33,7 +33,7 @@ function readScan(bytes: ArrayBuffer, fileName: string): ParsedScan {
       positions,
       triangles: scan.triangles(),
       normals: scan.normals(),
-      vertexWinding: scan.vertexWinding(),
+      triangleFacing: scan.triangleFacing(),
       summary,
       timings: { coreMs: t1 - t0, copyMs: performance.now() - t1 },
     };
@@ -67,7 +67,7 @@ self.onmessage = async (event: MessageEvent<CoreRequest>) => {
           scan.positions.buffer,
           scan.triangles.buffer,
           scan.normals.buffer,
-          scan.vertexWinding.buffer,
+          scan.triangleFacing.buffer,
         ]);
         break;
       }

@@ -5,9 +5,9 @@ use nalgebra::Point3;
 use serde::Serialize;
 
 use super::bounds::bounding_box;
-use super::topology::{boundary_loops, component_labels, triangle_labels};
+use super::topology::{boundary_loops, component_labels};
 use super::units::{detect_units, Units};
-use super::winding::{windings, Winding, WindingParams};
+use super::winding::{facings, Winding, WindingParams};
 use super::Mesh;
 
 /// What `bodyspace info` and the app show about a loaded scan.
@@ -31,10 +31,11 @@ pub struct MeshSummary {
     pub components: usize,
     /// Which way the triangles face ([`super::winding`]).
     pub winding: Winding,
-    /// Per vertex, which way its part faces ([`windings`]): 1 outwards, −1 inwards, 0 neither
-    /// known. Not in the summary's JSON (one entry per vertex); the app takes it as an array.
+    /// Per triangle as the file has it, which way its front faces ([`facings`]): 1 out of the
+    /// body, −1 into it, 0 not known. Not in the summary's JSON (one entry per triangle); the app
+    /// takes it as an array.
     #[serde(skip)]
-    pub vertex_winding: Vec<i8>,
+    pub triangle_facing: Vec<i8>,
 }
 
 /// Summarises a mesh whose positions are in file units.
@@ -44,13 +45,8 @@ pub fn summarise(mesh: &Mesh) -> MeshSummary {
     let units = detect_units(extent);
     let s = units.scale_to_metres();
     let (lo, hi) = bbox.unwrap_or((Point3::origin(), Point3::origin()));
-    let (labels, components) = component_labels(mesh);
-    let (winding, parts) = windings(
-        mesh,
-        &triangle_labels(mesh, &labels),
-        components,
-        &WindingParams::default(),
-    );
+    let (_, components) = component_labels(mesh);
+    let (winding, triangle_facing) = facings(mesh, &WindingParams::default());
     MeshSummary {
         vertices: mesh.vertex_count(),
         triangles: mesh.triangle_count(),
@@ -61,11 +57,7 @@ pub fn summarise(mesh: &Mesh) -> MeshSummary {
         boundary_loops: boundary_loops(mesh).len(),
         components,
         winding,
-        // A vertex no triangle uses belongs to no part.
-        vertex_winding: labels
-            .iter()
-            .map(|&l| parts.get(l as usize).copied().unwrap_or(0))
-            .collect(),
+        triangle_facing,
     }
 }
 
@@ -99,18 +91,18 @@ mod tests {
         assert_eq!(s.units_detected, Units::Metres);
         assert_eq!(s.components, 0);
         assert_eq!(s.winding, Winding::Mixed);
-        assert!(s.vertex_winding.is_empty());
+        assert!(s.triangle_facing.is_empty());
     }
 
     #[test]
-    fn each_vertex_carries_its_parts_winding() {
+    fn each_triangle_carries_which_way_it_faces() {
         // Two unit cubes apart, the second turned inside out: the scan is mixed, each part not.
         let mut mesh = crate::mesh::winding::tests::two_cubes(true);
         // And a lone point, which no triangle uses.
         mesh.positions.push(Point3::new(0.0, 5.0, 0.0));
         let s = summarise(&mesh);
         assert_eq!(s.winding, Winding::Mixed);
-        let expected: Vec<i8> = [vec![1; 8], vec![-1; 8], vec![0]].concat();
-        assert_eq!(s.vertex_winding, expected);
+        let expected: Vec<i8> = [vec![1; 12], vec![-1; 12]].concat();
+        assert_eq!(s.triangle_facing, expected);
     }
 }

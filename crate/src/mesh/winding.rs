@@ -386,15 +386,29 @@ fn sphere_directions(n: usize) -> Vec<Vector3<f64>> {
         .collect()
 }
 
-/// `mesh` with its triangles turned to face out of the body, and what was turned; `None` when
-/// nothing was. A file wound one way keeps its parts (connected components): each part wound
-/// inwards ([`windings`]: a part of note judged so, or a smaller piece of a scan wound inwards)
-/// is turned whole. A file whose triangles disagree with their neighbours has them turned to
-/// agree first ([`cohere`]); its pieces of surface are then its parts, each judged by the views
-/// where they can; one they cannot, whose triangles the walk turned, by the rays that see it from
-/// outside (`seen_from_outside`); any other keeps the file's way. Positions and their order
-/// stay.
-pub fn face_out(mesh: &Mesh, params: &WindingParams) -> Option<(Mesh, Reorientation)> {
+/// Which way each piece of `mesh` faces once its triangles agree with their neighbours
+/// ([`face_out`]'s judgement, before anything is turned to face out).
+struct Sides<'a> {
+    /// `mesh` with its triangles turned to agree ([`cohere`]), or `mesh` itself.
+    agreed: Cow<'a, Mesh>,
+    /// Per triangle, its piece: a part of a file wound one way, a piece [`cohere`] joined.
+    parts: Vec<u32>,
+    /// Per piece, which way its triangles in `agreed` face: 1 out of the body, −1 into it, 0 not
+    /// known.
+    sides: Vec<i8>,
+    /// The triangles [`cohere`] turned.
+    against: usize,
+    /// The whole `mesh`'s [`Winding`] where no triangle disagreed with its neighbours.
+    whole: Option<Winding>,
+}
+
+/// The judgement [`face_out`] and [`facings`] share: a file wound one way keeps its parts
+/// (connected components), each judged by [`windings`]. A file whose triangles disagree with
+/// their neighbours has them turned to agree first ([`cohere`]); its pieces of surface are then
+/// its parts, each judged by the views where they can; one they cannot, whose triangles the
+/// walk turned, by the rays that see it from outside (`seen_from_outside`); any other keeps the
+/// file's way.
+fn judge_sides<'a>(mesh: &'a Mesh, params: &WindingParams) -> Sides<'a> {
     let (agreed, parts, count, against) = match cohere(mesh) {
         Some(c) => (
             Cow::Owned(Mesh::new(mesh.positions.clone(), c.triangles)),
@@ -412,7 +426,7 @@ pub fn face_out(mesh: &Mesh, params: &WindingParams) -> Option<(Mesh, Reorientat
             )
         }
     };
-    let sides = if against > 0 {
+    let (sides, whole) = if against > 0 {
         // A piece [`cohere`] turned triangles of has no way of its own from the file: unless the
         // views judge it, the rays from it do. Any other keeps the file's way, as a part of a
         // file wound one way does.
@@ -431,10 +445,59 @@ pub fn face_out(mesh: &Mesh, params: &WindingParams) -> Option<(Mesh, Reorientat
                 None => Some(side(whole)),
             })
             .collect();
-        seen_from_outside(&agreed, &parts, &judged, params)
+        (seen_from_outside(&agreed, &parts, &judged, params), None)
     } else {
-        windings(&agreed, &parts, count, params).1
+        let (whole, own) = windings(&agreed, &parts, count, params);
+        (own, Some(whole))
     };
+    Sides {
+        agreed,
+        parts,
+        sides,
+        against,
+        whole,
+    }
+}
+
+/// The whole file's [`Winding`] and, per triangle as the file has it, which way its front (its
+/// counter-clockwise normal) faces: 1 out of the body, −1 into it, 0 not known (its piece
+/// one-sided, or judged by nothing). On a file whose triangles face both ways a triangle the
+/// walk turned faces opposite to its piece, so the app can tell a click on the body from one
+/// through a hole there too. The whole is judged on the file as it is ([`winding`]): `Mixed`
+/// where its triangles face both ways.
+pub fn facings(mesh: &Mesh, params: &WindingParams) -> (Winding, Vec<i8>) {
+    let judged = judge_sides(mesh, params);
+    let whole = judged.whole.unwrap_or_else(|| winding(mesh, params));
+    let per_triangle = judged
+        .agreed
+        .triangles
+        .iter()
+        .zip(&mesh.triangles)
+        .zip(&judged.parts)
+        .map(|((agreed, file), &part)| {
+            let side = judged.sides[part as usize];
+            if agreed == file {
+                side
+            } else {
+                -side
+            }
+        })
+        .collect();
+    (whole, per_triangle)
+}
+
+/// `mesh` with its triangles turned to face out of the body, and what was turned; `None` when
+/// nothing was. Each piece judged inwards by `judge_sides` is turned whole (on a file wound one
+/// way, a part: a part of note judged so, or a smaller piece of a scan wound inwards).
+/// Positions and their order stay.
+pub fn face_out(mesh: &Mesh, params: &WindingParams) -> Option<(Mesh, Reorientation)> {
+    let Sides {
+        agreed,
+        parts,
+        sides,
+        against,
+        ..
+    } = judge_sides(mesh, params);
     let turned = sides.iter().filter(|&&side| side < 0).count();
     if turned == 0 && against == 0 {
         return None;
@@ -696,6 +759,38 @@ pub(crate) mod tests {
         let (kept, what) = face_out(&file, &WindingParams::default()).unwrap();
         assert_eq!(kept.triangles[12..], file.triangles[12..]);
         assert_eq!((what.parts, what.triangles), (0, 1));
+    }
+
+    #[test]
+    fn each_triangle_says_which_way_its_front_faces() {
+        let p = WindingParams::default();
+        let out_in = |n_out: usize, n_in: usize| [vec![1i8; n_out], vec![-1; n_in]].concat();
+        // Parts wound each one way: each triangle its part's way.
+        assert_eq!(
+            facings(&two_cubes(false), &p),
+            (Winding::Outward, vec![1; 24])
+        );
+        assert_eq!(
+            facings(&two_cubes(true), &p),
+            (Winding::Mixed, out_in(12, 12))
+        );
+        // A part facing both ways: the file is mixed, and each triangle still says its own way,
+        // the turned ones into the body.
+        let both = flipped(&cube(), |t| t % 2 == 0);
+        let (whole, each) = facings(&both, &p);
+        assert_eq!(whole, Winding::Mixed);
+        let expected: Vec<i8> = (0..12).map(|t| if t % 2 == 0 { -1 } else { 1 }).collect();
+        assert_eq!(each, expected);
+        // The second of two cubes mostly turned: it faces in but for its first three.
+        let (whole, each) = facings(&flipped(&two_cubes(false), |t| t >= 15), &p);
+        assert_eq!(whole, Winding::Mixed);
+        assert_eq!(each, out_in(15, 9));
+        // Agrees with what `face_out` turns: a triangle facing in is turned, one facing out not.
+        let (turned, _) = face_out(&both, &p).unwrap();
+        let (_, each) = facings(&both, &p);
+        for ((file, out), facing) in both.triangles.iter().zip(&turned.triangles).zip(&each) {
+            assert_eq!(file == out, *facing == 1);
+        }
     }
 
     #[test]
