@@ -5,7 +5,9 @@ use nalgebra::Point3;
 use serde::Serialize;
 
 use super::bounds::bounding_box;
-use super::topology::{boundary_loops, component_labels};
+use super::topology::{
+    boundary_edges_and_disagreement, component_labels, loops_of, triangle_labels,
+};
 use super::units::{detect_units, Units};
 use super::winding::{facings, Winding, WindingParams};
 use super::Mesh;
@@ -45,8 +47,17 @@ pub fn summarise(mesh: &Mesh) -> MeshSummary {
     let units = detect_units(extent);
     let s = units.scale_to_metres();
     let (lo, hi) = bbox.unwrap_or((Point3::origin(), Point3::origin()));
-    let (_, components) = component_labels(mesh);
-    let (winding, triangle_facing) = facings(mesh, &WindingParams::default());
+    let (labels, components) = component_labels(mesh);
+    // One pass over the edges for the holes and for whether the triangles agree.
+    let (boundary, disagree) =
+        boundary_edges_and_disagreement(mesh.positions.len(), &mesh.triangles);
+    let (winding, triangle_facing) = facings(
+        mesh,
+        &triangle_labels(mesh, &labels),
+        components,
+        disagree,
+        &WindingParams::default(),
+    );
     MeshSummary {
         vertices: mesh.vertex_count(),
         triangles: mesh.triangle_count(),
@@ -54,7 +65,7 @@ pub fn summarise(mesh: &Mesh) -> MeshSummary {
         bbox_max: [hi.x * s, hi.y * s, hi.z * s],
         units_detected: units,
         scale_to_metres: s,
-        boundary_loops: boundary_loops(mesh).len(),
+        boundary_loops: loops_of(&boundary).len(),
         components,
         winding,
         triangle_facing,
@@ -103,6 +114,15 @@ mod tests {
         let s = summarise(&mesh);
         assert_eq!(s.winding, Winding::Mixed);
         let expected: Vec<i8> = [vec![1; 12], vec![-1; 12]].concat();
+        assert_eq!(s.triangle_facing, expected);
+        // A cube whose every other triangle is turned: mixed, and each triangle its own way.
+        let both =
+            crate::mesh::winding::tests::flipped(&crate::mesh::topology::tests::cube(), |t| {
+                t % 2 == 0
+            });
+        let s = summarise(&both);
+        assert_eq!(s.winding, Winding::Mixed);
+        let expected: Vec<i8> = (0..12).map(|t| if t % 2 == 0 { -1 } else { 1 }).collect();
         assert_eq!(s.triangle_facing, expected);
     }
 }

@@ -76,14 +76,25 @@ pub fn for_each_edge(
 /// Boundary edges `[a, b]`, directed as in their triangle (so loops run consistently), sorted.
 /// `triangles`: `#F` indexing `vertex_count` vertices.
 pub fn boundary_edges(vertex_count: usize, triangles: &[[u32; 3]]) -> Vec<[u32; 2]> {
+    boundary_edges_and_disagreement(vertex_count, triangles).0
+}
+
+/// [`boundary_edges`], and whether any edge's two triangles run it the same way (they disagree
+/// on which of their sides is the surface's outside: [`super::orientation`]), from one pass over
+/// the edges: the scan summary needs both, and the pass is most of either's cost.
+pub fn boundary_edges_and_disagreement(
+    vertex_count: usize,
+    triangles: &[[u32; 3]],
+) -> (Vec<[u32; 2]>, bool) {
     let mut out = Vec::new();
-    for_each_edge(vertex_count, triangles, |uses| {
-        if let [(_, _, edge)] = uses {
-            out.push(*edge);
-        }
+    let mut disagree = false;
+    for_each_edge(vertex_count, triangles, |uses| match uses {
+        [(_, _, edge)] => out.push(*edge),
+        [(_, _, [a, _]), (_, _, [c, _])] => disagree |= a == c,
+        _ => {}
     });
     out.sort_unstable();
-    out
+    (out, disagree)
 }
 
 /// `#V` flags: whether each vertex lies on a boundary edge (a hole rim or an open border).
@@ -100,7 +111,11 @@ pub fn boundary_vertices(vertex_count: usize, triangles: &[[u32; 3]]) -> Vec<boo
 /// chained head to tail; where a boundary vertex is pinched (two loops touch), each loop is still
 /// traced separately, and a chain that cannot close is returned as it is.
 pub fn boundary_loops(mesh: &Mesh) -> Vec<Vec<u32>> {
-    let edges = boundary_edges(mesh.positions.len(), &mesh.triangles);
+    loops_of(&boundary_edges(mesh.positions.len(), &mesh.triangles))
+}
+
+/// [`boundary_loops`] of the boundary edges `edges` as [`boundary_edges`] gives them (sorted).
+pub fn loops_of(edges: &[[u32; 2]]) -> Vec<Vec<u32>> {
     let mut used = vec![false; edges.len()];
     let mut loops = Vec::new();
     // `edges` is sorted by start vertex, so the edges leaving `v` are one contiguous run.
@@ -251,6 +266,21 @@ pub(crate) mod tests {
         let flags = boundary_vertices(mesh.positions.len(), &mesh.triangles);
         assert_eq!(flags.iter().filter(|b| **b).count(), 4);
         assert!(flags[1] && flags[3] && flags[5] && flags[7]);
+    }
+
+    #[test]
+    fn one_pass_says_the_boundary_and_whether_triangles_disagree() {
+        let census =
+            |mesh: &Mesh| boundary_edges_and_disagreement(mesh.positions.len(), &mesh.triangles);
+        assert_eq!(census(&cube()), (vec![], false));
+        let mut open = cube();
+        open.triangles.truncate(10);
+        let (edges, disagree) = census(&open);
+        assert_eq!(edges, boundary_edges(open.positions.len(), &open.triangles));
+        assert_eq!((edges.len(), disagree), (4, false));
+        // One triangle turned: its three edges are run the same way by it and its neighbours.
+        let turned = crate::mesh::winding::tests::flipped(&open, |t| t == 3);
+        assert!(census(&turned).1);
     }
 
     #[test]

@@ -36,7 +36,7 @@ use nalgebra::{Point3, Vector3};
 
 use super::bounds::bounding_box;
 use super::bvh::TriangleBvh;
-use super::orientation::cohere;
+use super::orientation::{cohere, Cohered};
 use super::topology::{component_labels, triangle_labels};
 use super::Mesh;
 
@@ -402,29 +402,26 @@ struct Sides<'a> {
     whole: Option<Winding>,
 }
 
-/// The judgement [`face_out`] and [`facings`] share: a file wound one way keeps its parts
-/// (connected components), each judged by [`windings`]. A file whose triangles disagree with
-/// their neighbours has them turned to agree first ([`cohere`]); its pieces of surface are then
-/// its parts, each judged by the views where they can; one they cannot, whose triangles the
-/// walk turned, by the rays that see it from outside (`seen_from_outside`); any other keeps the
-/// file's way.
-fn judge_sides<'a>(mesh: &'a Mesh, params: &WindingParams) -> Sides<'a> {
-    let (agreed, parts, count, against) = match cohere(mesh) {
+/// The judgement [`face_out`] and [`facings`] share. A file wound one way (`cohered` is `None`)
+/// keeps its parts (`parts`: each triangle's connected component, `0..count`), each judged by
+/// [`windings`]. A file whose triangles disagree with their neighbours has them turned to agree
+/// first (`cohered`: [`cohere`]'s); its pieces of surface are then its parts, each judged by the
+/// views where they can; one they cannot, whose triangles the walk turned, by the rays that see
+/// it from outside (`seen_from_outside`); any other keeps the file's way.
+fn judge_sides<'a>(
+    mesh: &'a Mesh,
+    (parts, count): (Vec<u32>, usize),
+    cohered: Option<Cohered>,
+    params: &WindingParams,
+) -> Sides<'a> {
+    let (agreed, parts, count, against) = match cohered {
         Some(c) => (
             Cow::Owned(Mesh::new(mesh.positions.clone(), c.triangles)),
             c.piece,
             c.pieces,
             c.turned,
         ),
-        None => {
-            let (labels, count) = component_labels(mesh);
-            (
-                Cow::Borrowed(mesh),
-                triangle_labels(mesh, &labels),
-                count,
-                0,
-            )
-        }
+        None => (Cow::Borrowed(mesh), parts, count, 0),
     };
     let (sides, whole) = if against > 0 {
         // A piece [`cohere`] turned triangles of has no way of its own from the file: unless the
@@ -463,11 +460,22 @@ fn judge_sides<'a>(mesh: &'a Mesh, params: &WindingParams) -> Sides<'a> {
 /// counter-clockwise normal) faces: 1 out of the body, −1 into it, 0 not known (its piece
 /// one-sided, or judged by nothing). On a file whose triangles face both ways a triangle the
 /// walk turned faces opposite to its piece, so the app can tell a click on the body from one
-/// through a hole there too. The whole is judged on the file as it is ([`winding`]): `Mixed`
-/// where its triangles face both ways.
-pub fn facings(mesh: &Mesh, params: &WindingParams) -> (Winding, Vec<i8>) {
-    let judged = judge_sides(mesh, params);
-    let whole = judged.whole.unwrap_or_else(|| winding(mesh, params));
+/// through a hole there too. The whole is judged on the file as it is ([`windings`]): `Mixed`
+/// where its triangles face both ways. `parts`: each triangle's connected component, `0..count`;
+/// `disagree`: whether any edge's two triangles run it the same way
+/// ([`super::topology::boundary_edges_and_disagreement`]), or else [`cohere`] is not run.
+pub fn facings(
+    mesh: &Mesh,
+    parts: &[u32],
+    count: usize,
+    disagree: bool,
+    params: &WindingParams,
+) -> (Winding, Vec<i8>) {
+    let cohered = if disagree { cohere(mesh) } else { None };
+    let judged = judge_sides(mesh, (parts.to_vec(), count), cohered, params);
+    let whole = judged
+        .whole
+        .unwrap_or_else(|| windings(mesh, parts, count, params).0);
     let per_triangle = judged
         .agreed
         .triangles
@@ -491,13 +499,19 @@ pub fn facings(mesh: &Mesh, params: &WindingParams) -> (Winding, Vec<i8>) {
 /// way, a part: a part of note judged so, or a smaller piece of a scan wound inwards).
 /// Positions and their order stay.
 pub fn face_out(mesh: &Mesh, params: &WindingParams) -> Option<(Mesh, Reorientation)> {
+    let (labels, count) = component_labels(mesh);
     let Sides {
         agreed,
         parts,
         sides,
         against,
         ..
-    } = judge_sides(mesh, params);
+    } = judge_sides(
+        mesh,
+        (triangle_labels(mesh, &labels), count),
+        cohere(mesh),
+        params,
+    );
     let turned = sides.iter().filter(|&&side| side < 0).count();
     if turned == 0 && against == 0 {
         return None;
@@ -558,6 +572,7 @@ pub fn face_out(mesh: &Mesh, params: &WindingParams) -> Option<(Mesh, Reorientat
 #[cfg(test)]
 pub(crate) mod tests {
     use super::*;
+    use crate::mesh::topology::boundary_edges_and_disagreement;
     use crate::mesh::topology::tests::cube;
     use nalgebra::Point3;
 
@@ -764,6 +779,11 @@ pub(crate) mod tests {
     #[test]
     fn each_triangle_says_which_way_its_front_faces() {
         let p = WindingParams::default();
+        let facings = |mesh: &Mesh, p: &WindingParams| {
+            let (labels, count) = parts(mesh);
+            let disagree = boundary_edges_and_disagreement(mesh.positions.len(), &mesh.triangles).1;
+            super::facings(mesh, &labels, count, disagree, p)
+        };
         let out_in = |n_out: usize, n_in: usize| [vec![1i8; n_out], vec![-1; n_in]].concat();
         // Parts wound each one way: each triangle its part's way.
         assert_eq!(
