@@ -5,8 +5,9 @@ use nalgebra::Point3;
 use serde::Serialize;
 
 use super::bounds::bounding_box;
+use super::orientation::cohere;
 use super::topology::{
-    boundary_edges_and_disagreement, component_labels, loops_of, triangle_labels,
+    boundary_edges, boundary_edges_and_disagreement, component_labels, loops_of, triangle_labels,
 };
 use super::units::{detect_units, Units};
 use super::winding::{facings, Winding, WindingParams};
@@ -48,14 +49,20 @@ pub fn summarise(mesh: &Mesh) -> MeshSummary {
     let s = units.scale_to_metres();
     let (lo, hi) = bbox.unwrap_or((Point3::origin(), Point3::origin()));
     let (labels, components) = component_labels(mesh);
-    // One pass over the edges for the holes and for whether the triangles agree.
-    let (boundary, disagree) =
-        boundary_edges_and_disagreement(mesh.positions.len(), &mesh.triangles);
+    // One pass over the edges for the holes and for whether the triangles agree. Where they do
+    // not, the holes are traced on the triangles turned to agree: a rim's edges then run head
+    // to tail (on a file with half its triangles turned, the sample's 107 holes came out 5,750).
+    let n = mesh.positions.len();
+    let (mut boundary, disagree) = boundary_edges_and_disagreement(n, &mesh.triangles);
+    let cohered = if disagree { cohere(mesh) } else { None };
+    if let Some(c) = &cohered {
+        boundary = boundary_edges(n, &c.triangles);
+    }
     let (winding, triangle_facing) = facings(
         mesh,
         &triangle_labels(mesh, &labels),
         components,
-        disagree,
+        cohered,
         &WindingParams::default(),
     );
     MeshSummary {
@@ -121,7 +128,13 @@ mod tests {
                 t % 2 == 0
             });
         let s = summarise(&both);
-        assert_eq!(s.winding, Winding::Mixed);
+        assert_eq!((s.winding, s.boundary_loops), (Winding::Mixed, 0));
+        // Open at one face, with every other triangle turned: one hole, as wound one way.
+        let mut open = crate::mesh::topology::tests::cube();
+        open.triangles.truncate(10);
+        let both = crate::mesh::winding::tests::flipped(&open, |t| t % 2 == 0);
+        assert!(crate::mesh::topology::boundary_loops(&both).len() > 1);
+        assert_eq!(summarise(&both).boundary_loops, 1);
         let expected: Vec<i8> = (0..12).map(|t| if t % 2 == 0 { -1 } else { 1 }).collect();
         assert_eq!(s.triangle_facing, expected);
     }

@@ -462,16 +462,15 @@ fn judge_sides<'a>(
 /// walk turned faces opposite to its piece, so the app can tell a click on the body from one
 /// through a hole there too. The whole is judged on the file as it is ([`windings`]): `Mixed`
 /// where its triangles face both ways. `parts`: each triangle's connected component, `0..count`;
-/// `disagree`: whether any edge's two triangles run it the same way
-/// ([`super::topology::boundary_edges_and_disagreement`]), or else [`cohere`] is not run.
+/// `cohered`: [`cohere`]'s answer, `None` also where the caller knows that no edge's two
+/// triangles run it the same way ([`super::topology::boundary_edges_and_disagreement`]).
 pub fn facings(
     mesh: &Mesh,
     parts: &[u32],
     count: usize,
-    disagree: bool,
+    cohered: Option<Cohered>,
     params: &WindingParams,
 ) -> (Winding, Vec<i8>) {
-    let cohered = if disagree { cohere(mesh) } else { None };
     let judged = judge_sides(mesh, (parts.to_vec(), count), cohered, params);
     let whole = judged
         .whole
@@ -572,7 +571,6 @@ pub fn face_out(mesh: &Mesh, params: &WindingParams) -> Option<(Mesh, Reorientat
 #[cfg(test)]
 pub(crate) mod tests {
     use super::*;
-    use crate::mesh::topology::boundary_edges_and_disagreement;
     use crate::mesh::topology::tests::cube;
     use nalgebra::Point3;
 
@@ -781,8 +779,7 @@ pub(crate) mod tests {
         let p = WindingParams::default();
         let facings = |mesh: &Mesh, p: &WindingParams| {
             let (labels, count) = parts(mesh);
-            let disagree = boundary_edges_and_disagreement(mesh.positions.len(), &mesh.triangles).1;
-            super::facings(mesh, &labels, count, disagree, p)
+            super::facings(mesh, &labels, count, cohere(mesh), p)
         };
         let out_in = |n_out: usize, n_in: usize| [vec![1i8; n_out], vec![-1; n_in]].concat();
         // Parts wound each one way: each triangle its part's way.
