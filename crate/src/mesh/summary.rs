@@ -129,13 +129,14 @@ mod tests {
             });
         let s = summarise(&both);
         assert_eq!((s.winding, s.boundary_loops), (Winding::Mixed, 0));
-        // Open at one face, with every other triangle turned: one hole, as wound one way.
+        let expected: Vec<i8> = (0..12).map(|t| if t % 2 == 0 { -1 } else { 1 }).collect();
+        assert_eq!(s.triangle_facing, expected);
+        // Open at one face, with every other triangle turned: one hole, as wound one way (the
+        // rim traced on the file's own order breaks where its triangles disagree).
         let mut open = crate::mesh::topology::tests::cube();
         open.triangles.truncate(10);
         let both = crate::mesh::winding::tests::flipped(&open, |t| t % 2 == 0);
         assert!(crate::mesh::topology::boundary_loops(&both).len() > 1);
         assert_eq!(summarise(&both).boundary_loops, 1);
-        let expected: Vec<i8> = (0..12).map(|t| if t % 2 == 0 { -1 } else { 1 }).collect();
-        assert_eq!(s.triangle_facing, expected);
     }
 }

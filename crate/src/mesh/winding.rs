@@ -21,7 +21,8 @@
 //! The app needs it to tell a click on the body from one that fell through a hole onto the inside
 //! of the body's far side: there the triangle faces away from the camera on a scan wound
 //! outwards. On a scan whose parts disagree, each part of note still says its own way
-//! ([`windings`]), so the app can tell it on every part wound one way. The fit and the landmark
+//! ([`windings`]), and the app is told each triangle's own ([`facings`]), so it can tell it on
+//! every part wound one way, and on a part whose triangles face both ways. The fit and the landmark
 //! estimate match the scan's normals against the template's, so a part wound inwards is turned
 //! to face out before either runs ([`face_out`]): left as it was, a file wound clockwise matched
 //! a tenth of the template, and its estimate ended 129 mm off. A file whose triangles face both
@@ -798,16 +799,15 @@ pub(crate) mod tests {
         assert_eq!(whole, Winding::Mixed);
         let expected: Vec<i8> = (0..12).map(|t| if t % 2 == 0 { -1 } else { 1 }).collect();
         assert_eq!(each, expected);
+        // Agrees with what `face_out` turns: a triangle facing in is turned, one facing out not.
+        let (turned, _) = face_out(&both, &p).unwrap();
+        for ((file, out), facing) in both.triangles.iter().zip(&turned.triangles).zip(&each) {
+            assert_eq!(file == out, *facing == 1);
+        }
         // The second of two cubes mostly turned: it faces in but for its first three.
         let (whole, each) = facings(&flipped(&two_cubes(false), |t| t >= 15), &p);
         assert_eq!(whole, Winding::Mixed);
         assert_eq!(each, out_in(15, 9));
-        // Agrees with what `face_out` turns: a triangle facing in is turned, one facing out not.
-        let (turned, _) = face_out(&both, &p).unwrap();
-        let (_, each) = facings(&both, &p);
-        for ((file, out), facing) in both.triangles.iter().zip(&turned.triangles).zip(&each) {
-            assert_eq!(file == out, *facing == 1);
-        }
     }
 
     #[test]
