@@ -51,6 +51,7 @@ use crate::landmarks::CAESAR_LANDMARKS;
 use crate::mesh::bounding_extent;
 use crate::mesh::summary::{summarise, MeshSummary};
 use crate::mesh::units::{detect_units, Units};
+use crate::mesh::winding::turned_out;
 use crate::mesh::Mesh;
 
 /// The core's version, so the front end can show what it runs.
@@ -81,7 +82,9 @@ pub fn caesar_landmark_names() -> Vec<String> {
 #[wasm_bindgen]
 pub struct ParsedScan {
     mesh: Mesh,
-    /// `#V·3` unit vertex normals, xyz interleaved.
+    /// `#V·3` unit vertex normals, xyz interleaved, of the triangles each turned to face out of
+    /// the body where the summary knows it faces in ([`turned_out`]): a file whose triangles face
+    /// both ways is shaded as one surface.
     normals: Vec<f32>,
     summary: MeshSummary,
 }
@@ -110,7 +113,7 @@ impl ParsedScan {
         Uint32Array::from(self.mesh.flat_triangles().as_slice())
     }
 
-    /// `#V·3` unit vertex normals, xyz interleaved (copied out).
+    /// `#V·3` unit vertex normals of the triangles turned to face out, xyz interleaved (copied out).
     pub fn normals(&self) -> Float32Array {
         Float32Array::from(self.normals.as_slice())
     }
@@ -135,8 +138,12 @@ impl ParsedScan {
 pub fn parse_scan(bytes: &[u8], file_name: &str) -> Result<ParsedScan, JsError> {
     let file_name = checked_file_name(file_name)?;
     let mesh = read_scan(bytes, file_name).map_err(|e| JsError::new(&e.to_string()))?;
-    let normals = mesh.flat_vertex_normals_f32();
     let summary = summarise(&mesh);
+    let normals = Mesh::new(
+        mesh.positions.clone(),
+        turned_out(&mesh.triangles, &summary.triangle_facing),
+    )
+    .flat_vertex_normals_f32();
     Ok(ParsedScan {
         mesh,
         normals,

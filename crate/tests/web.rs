@@ -108,6 +108,46 @@ fn a_binary_ply_comes_out_as_flat_arrays_and_a_summary() {
     assert_eq!(summary["components"], 1);
 }
 
+/// A unit cube as OBJ (metres) whose triangles face out, but every other one turned to face in:
+/// a file whose triangles face both ways.
+fn cube_facing_both_ways_obj() -> String {
+    let mut obj = String::new();
+    for i in 0..8 {
+        obj += &format!("v {} {} {}\n", i & 1, (i >> 1) & 1, (i >> 2) & 1);
+    }
+    let quads = [
+        [0, 2, 3, 1],
+        [4, 5, 7, 6],
+        [0, 1, 5, 4],
+        [2, 6, 7, 3],
+        [0, 4, 6, 2],
+        [1, 3, 7, 5],
+    ];
+    let triangles = quads
+        .iter()
+        .flat_map(|q| [[q[0], q[1], q[2]], [q[0], q[2], q[3]]]);
+    for (t, [a, b, c]) in triangles.enumerate() {
+        let [b, c] = if t % 2 == 0 { [c, b] } else { [b, c] };
+        obj += &format!("f {} {} {}\n", a + 1, b + 1, c + 1);
+    }
+    obj
+}
+
+#[wasm_bindgen_test]
+fn a_scan_facing_both_ways_says_so_per_triangle_and_is_shaded_as_one_surface() {
+    let scan = parse_scan(cube_facing_both_ways_obj().as_bytes(), "cube.obj")
+        .unwrap_or_else(|_| panic!("readable"));
+    let facing = scan.triangle_facing().to_vec();
+    let expected: Vec<i8> = (0..12).map(|t| if t % 2 == 0 { -1 } else { 1 }).collect();
+    assert_eq!(facing, expected);
+    // Each corner's normal points away from the centre, as a cube wound one way has it.
+    let positions = scan.positions().to_vec();
+    for (p, n) in positions.chunks(3).zip(scan.normals().to_vec().chunks(3)) {
+        let out: f32 = (0..3).map(|k| (p[k] - 0.5) * n[k]).sum();
+        assert!(out > 0.25, "normal {n:?} at {p:?} does not point out");
+    }
+}
+
 #[wasm_bindgen_test]
 fn an_lnd_comes_out_with_canonical_names_and_a_report() {
     let lnd = "SUBJECT_ID = 1\r\nSTD_LAND = 73\r\nSTANDARD =\r\nAUX =\r\n\

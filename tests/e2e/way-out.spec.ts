@@ -10,7 +10,7 @@
 // placed on the throat is named with the landmarks to check first, and three clicked on the face,
 // each from its close-up, re-pose the head; a click through a hole places nothing, on a scan
 // whose parts face different ways and whose triangles face both ways too. A scan wound inwards, or with its triangles facing both
-// ways, is turned before it is fitted, and fits as the sample does.
+// ways, is turned before it is fitted, and fits as the sample does; one facing both ways is drawn as the sample is.
 import { gunzipSync } from 'node:zlib';
 import { expect, test, type Page } from '@playwright/test';
 import { dropFiles } from './fixtures';
@@ -36,6 +36,38 @@ async function align(page: Page): Promise<{ rms: number; flags: string }> {
   await expect(body(page)).toHaveAttribute('data-align-state', 'done', { timeout: 240_000 });
   const rms = Number(await page.getByTestId('align-rms').getAttribute('data-rms-mm'));
   return { rms, flags: (await page.getByTestId('align-check').getAttribute('data-flags')) ?? '' };
+}
+
+/**
+ * Of the body's pixels in `a` (a PNG of the viewport: those brighter than the dark background and
+ * its grid), the share whose colour in `b` (as large) differs by at least `by` (of 255) in some
+ * channel. Both are decoded in the page.
+ */
+async function pixelsApart(page: Page, a: Buffer, b: Buffer, by: number): Promise<number> {
+  return page.evaluate(
+    async ({ images, by }) => {
+      const pixels = await Promise.all(
+        images.map(async (base64) => {
+          const bytes = Uint8Array.from(atob(base64), (c) => c.charCodeAt(0));
+          const bitmap = await createImageBitmap(new Blob([bytes], { type: 'image/png' }));
+          const canvas = new OffscreenCanvas(bitmap.width, bitmap.height);
+          const context = canvas.getContext('2d')!;
+          context.drawImage(bitmap, 0, 0);
+          return context.getImageData(0, 0, bitmap.width, bitmap.height).data;
+        }),
+      );
+      const [p, q] = pixels as [Uint8ClampedArray, Uint8ClampedArray];
+      if (p.length !== q.length) return 1;
+      let [apart, body] = [0, 0];
+      for (let i = 0; i < p.length; i += 4) {
+        if (Math.max(p[i]!, p[i + 1]!, p[i + 2]!) < 120) continue;
+        body++;
+        if (Math.max(Math.abs(p[i]! - q[i]!), Math.abs(p[i + 1]! - q[i + 1]!), Math.abs(p[i + 2]! - q[i + 2]!)) >= by) apart++;
+      }
+      return body > 0 ? apart / body : 1;
+    },
+    { images: [a.toString('base64'), b.toString('base64')], by },
+  );
 }
 
 /** The confidences (%) the list shows for the estimated landmarks. */
@@ -193,14 +225,22 @@ test('a scan wound inwards is turned to face out, estimated and aligned as the s
   await expect(page.getByTestId('align-check')).toContainText("Turned: the scan's triangles faced into the body");
 });
 
-test('a scan whose triangles face both ways is turned to agree and aligned as the sample is, and the page says so', async ({ page }) => {
+test('a scan whose triangles face both ways is drawn as the sample is, turned to agree and aligned as the sample is, and the page says so', async ({ page }) => {
   test.setTimeout(300_000);
   // The sample scan with about half its triangles' corners in the other order: left so, its
   // normals said nothing and the fit from the sample's own landmarks folded and left the scan
   // uncovered (the end-to-end test in crate/tests/subject_paths.rs).
-  const bothWays = { name: 'both-ways.ply', bytes: facingBothWays(gunzipSync(sampleFile('scan_001.ply.gz').bytes)) };
+  const oneWay = gunzipSync(sampleFile('scan_001.ply.gz').bytes);
+  await openWithSample(page, [{ name: 'one-way.ply', bytes: oneWay }, sampleFile('landmarks_001.csv')]);
+  const drawnOneWay = await page.getByTestId('viewport-canvas').screenshot();
+  const bothWays = { name: 'both-ways.ply', bytes: facingBothWays(oneWay) };
   await openWithSample(page, [bothWays, sampleFile('landmarks_001.csv')]);
   await expect(page.getByTestId('scan-winding')).toHaveText('mixed');
+  // It is drawn as the sample is: each triangle facing in is shown turned, and lit as one surface
+  // (0.09 % of the body's pixels 16 or more apart). Drawn in the file's own order its shading was
+  // speckled: 14 % apart, and 10 % with the normals turned but not the triangles shown.
+  const apart = await pixelsApart(page, drawnOneWay, await page.getByTestId('viewport-canvas').screenshot(), 16);
+  expect(apart).toBeLessThan(0.01);
   // Its holes are counted on its triangles turned to agree: within a tenth of the sample's 107
   // (112 here; the rims traced on the file's own order had made thousands of them).
   const holes = Number((await page.getByTestId('scan-holes').textContent())!.replace(/,/g, ''));

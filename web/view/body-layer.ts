@@ -43,7 +43,9 @@ export class BodyLayer {
   private source: BodyMesh | null = null;
   private markers: LandmarkMarkers | null = null;
   private landmarks: LandmarkPoints | null = null;
+  /** The core's, per triangle of the mesh as sent. */
   private facing: Int8Array | null = null;
+  private shownFacing: Int8Array | null = null;
 
   constructor(name: string) {
     this.group.name = name;
@@ -55,7 +57,11 @@ export class BodyLayer {
    * rebuilds the geometry.
    */
   update(content: BodyContent): void {
-    if (content.triangleFacing !== undefined) this.facing = content.triangleFacing;
+    const facing = content.triangleFacing !== undefined && content.triangleFacing !== this.facing;
+    if (facing) {
+      this.facing = content.triangleFacing!;
+      this.shownFacing = this.facing && this.facing.map((f) => Math.abs(f));
+    }
     let rebuilt = false;
     if (content.mesh !== undefined && content.mesh !== this.source) {
       if (content.mesh && this.sameTopology(content.mesh)) this.morphMesh(content.mesh);
@@ -64,6 +70,7 @@ export class BodyLayer {
         rebuilt = true;
       }
     }
+    if (facing && !rebuilt && this.mesh) this.mesh.geometry.setIndex(new THREE.BufferAttribute(this.shownTriangles(this.source!.triangles), 1));
     if (this.mesh && content.meshScale !== undefined) this.mesh.scale.setScalar(content.meshScale);
     if (content.vertexColours !== undefined) this.setVertexColours(content.vertexColours);
     if (content.opacity !== undefined) this.setOpacity(content.opacity);
@@ -91,9 +98,13 @@ export class BodyLayer {
     return this.markers?.count ?? 0;
   }
 
-  /** Per triangle, which way its front faces (1 out of the body, −1 into it, 0 not known), when known. */
+  /**
+   * Per triangle as shown, which way its front faces (1 out of the body, −1 into it, 0 not known),
+   * when known. A triangle the core says faces into the body is shown turned (`shownTriangles`),
+   * so as shown it faces out.
+   */
   get triangleFacing(): Int8Array | null {
-    return this.facing;
+    return this.shownFacing;
   }
 
   /** The body's surface, which hides markers behind it from the tooltip. */
@@ -142,7 +153,7 @@ export class BodyLayer {
     if (!body) return;
     const geometry = new THREE.BufferGeometry();
     geometry.setAttribute('position', new THREE.BufferAttribute(body.positions, 3));
-    geometry.setIndex(new THREE.BufferAttribute(body.triangles, 1));
+    geometry.setIndex(new THREE.BufferAttribute(this.shownTriangles(body.triangles), 1));
     if (body.normals) geometry.setAttribute('normal', new THREE.BufferAttribute(body.normals, 3));
     else geometry.computeVertexNormals();
     geometry.computeBoundingBox();
@@ -157,6 +168,25 @@ export class BodyLayer {
     this.mesh = new THREE.Mesh(geometry, material);
     this.mesh.name = 'body-mesh';
     this.group.add(this.mesh);
+  }
+
+  /**
+   * The triangles as drawn: each the core says faces into the body turned to face out, as the
+   * core's normals of a scan are (`ParsedScan.normals`), so a scan whose triangles face both ways
+   * is lit as one surface (three.js turns the normal of a triangle seen from behind). The same
+   * array where none faces in.
+   */
+  private shownTriangles(triangles: Uint32Array): Uint32Array {
+    const facing = this.facing;
+    if (!facing || facing.length !== triangles.length / 3 || !facing.includes(-1)) return triangles;
+    const shown = triangles.slice();
+    for (let t = 0; t < facing.length; t++) {
+      if (facing[t]! < 0) {
+        shown[3 * t + 1] = triangles[3 * t + 2]!;
+        shown[3 * t + 2] = triangles[3 * t + 1]!;
+      }
+    }
+    return shown;
   }
 
   private sameTopology(body: BodyMesh): boolean {

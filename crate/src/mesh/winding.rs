@@ -494,6 +494,22 @@ pub fn facings(
     (whole, per_triangle)
 }
 
+/// `triangles` with each whose front faces into the body (`facing` −1, [`facings`]) turned to
+/// face out; the rest as they are. What a scan is shaded by: the vertex normals of a file whose
+/// triangles face both ways, taken as it is, point every way.
+pub fn turned_out(triangles: &[[u32; 3]], facing: &[i8]) -> Vec<[u32; 3]> {
+    triangles
+        .iter()
+        .zip(facing.iter().chain(std::iter::repeat(&0)))
+        .map(|(&t, &f)| if f < 0 { turned_round(t) } else { t })
+        .collect()
+}
+
+/// A triangle with its front turned: the same corners, the other way round.
+fn turned_round([a, b, c]: [u32; 3]) -> [u32; 3] {
+    [a, c, b]
+}
+
 /// `mesh` with its triangles turned to face out of the body, and what was turned; `None` when
 /// nothing was. Each piece judged inwards by `judge_sides` is turned whole (on a file wound one
 /// way, a part: a part of note judged so, or a smaller piece of a scan wound inwards).
@@ -521,7 +537,7 @@ pub fn face_out(mesh: &Mesh, params: &WindingParams) -> Option<(Mesh, Reorientat
         .triangles
         .iter()
         .zip(&inward)
-        .map(|(&[a, b, c], &turn)| if turn { [a, c, b] } else { [a, b, c] })
+        .map(|(&t, &turn)| if turn { turned_round(t) } else { t })
         .collect();
     let changed = triangles
         .iter()
@@ -592,7 +608,7 @@ pub(crate) mod tests {
             .triangles
             .iter()
             .enumerate()
-            .map(|(t, &[a, b, c])| if flip(t) { [a, c, b] } else { [a, b, c] })
+            .map(|(t, &tri)| if flip(t) { turned_round(tri) } else { tri })
             .collect();
         Mesh::new(mesh.positions.clone(), triangles)
     }
@@ -804,6 +820,19 @@ pub(crate) mod tests {
         for ((file, out), facing) in both.triangles.iter().zip(&turned.triangles).zip(&each) {
             assert_eq!(file == out, *facing == 1);
         }
+        // Turned out by what each says, every triangle faces out: each vertex's normal points
+        // away from the cube's centre, where the file's own point every way.
+        let centre = Point3::new(0.5, 0.5, 0.5);
+        let outwards = |triangles: &[[u32; 3]]| {
+            let normals = crate::mesh::normals::vertex_normals(&both.positions, triangles);
+            both.positions
+                .iter()
+                .zip(&normals)
+                .filter(|(p, n)| n.dot(&(*p - centre).normalize()) > 0.5)
+                .count()
+        };
+        assert_eq!(outwards(&turned_out(&both.triangles, &each)), 8);
+        assert!(outwards(&both.triangles) < 8);
         // The second of two cubes mostly turned: it faces in but for its first three.
         let (whole, each) = facings(&flipped(&two_cubes(false), |t| t >= 15), &p);
         assert_eq!(whole, Winding::Mixed);
