@@ -42,6 +42,7 @@ pub(super) fn laid_hand(
     let slid = along.map(|_| HandPose {
         slide: held,
         rotation: None,
+        stretch: None,
     });
     let (wrist, axis) = wrist_and_axis(positions, hand.styloids, hand.epicondyles);
     let elbow = mid(positions, hand.epicondyles);
@@ -107,6 +108,7 @@ pub(super) fn laid_hand(
     Some(HandPose {
         slide: held,
         rotation: Some(turn.to_rotation_matrix()),
+        stretch: None,
     })
 }
 

@@ -19,6 +19,8 @@
 //!    better (nearest compatible points): the moments also see
 //!    whatever else lies in the region, so a hand hanging beside the thigh was turned 55–58°
 //!    away from where it hung (held-out seed 2468).
+//! 3. a free hand is stretched along itself to the scan's fingertip (`stretch_to_fingertip`),
+//!    where that lies near the template hand's.
 //!
 //! A hand that is not free (against the thigh) or not seen (a hole) shows there as much more or
 //! much less surface than a hand: it is not turned. The hand of an arm bent more than the limbs'
@@ -39,10 +41,12 @@
 //!   ([`body_plane`]), the palm across the knuckles' line; [`laid_wrist`] — its wrist where the
 //!   forearm levels out.
 //! * [`twist`] — a hand's turn about the forearm carried down the forearm.
+//! * [`length`] — a free hand stretched to its fingertip on the scan.
 
 pub mod body_plane;
 pub mod laid;
 pub mod laid_wrist;
+pub mod length;
 pub mod moments;
 pub mod pose;
 pub mod twist;
@@ -54,11 +58,13 @@ use nalgebra::{Point3, Rotation3, Vector3};
 
 use crate::template::hand::Hand;
 
-/// Where a hand was moved: the wrist's slide along the forearm (m) and the turn about it.
+/// Where a hand was moved: the wrist's slide along the forearm (m), the turn about it and the
+/// stretch to its fingertip.
 #[derive(Debug, Clone, Copy)]
 pub struct HandPose {
     pub slide: f64,
     pub rotation: Option<Rotation3<f64>>,
+    pub stretch: Option<f64>,
 }
 
 /// Slides the wrist `by` (m) along the forearm's unit `axis`: the forearm stretched from the

@@ -1,11 +1,12 @@
 //! A hand's pose about the wrist, from the scan ([`pose_hands`]): the wrist slid along the
-//! forearm, then a free hand turned and kept when its own vertices match better, or a hand
-//! resting on the body laid on it (`laid.rs`).
+//! forearm, then a free hand turned and kept when its own vertices match better and stretched to
+//! its fingertip (`length.rs`), or a hand resting on the body laid on it (`laid.rs`).
 
 use nalgebra::{Point3, UnitQuaternion, Vector3};
 
 use super::laid::laid_hand;
 use super::laid_wrist::laid_wrist;
+use super::length::stretch_to_fingertip;
 use super::moments::{hand_like, hand_rotation, surface, BeyondWrist, Surface};
 use super::wrist_profile::{wrist_from_profile, Profiles};
 use super::{slide_wrist, HandPose};
@@ -108,6 +109,7 @@ fn pose_hand(
         return Some(HandPose {
             slide,
             rotation: None,
+            stretch: None,
         });
     }
     let (wrist, axis) = wrist_and_axis(positions, hand.styloids, hand.epicondyles);
@@ -134,7 +136,12 @@ fn pose_hand(
             rotation = None;
         }
     }
-    Some(HandPose { slide, rotation })
+    let stretch = stretch_to_fingertip(hand, positions, &profiles.scan.positions, params);
+    Some(HandPose {
+        slide,
+        rotation,
+        stretch,
+    })
 }
 
 /// Where the vertices `hand` moves (the forearm's and the hand's) are in `positions`.

@@ -21,6 +21,15 @@ pub struct HandParams {
     /// A larger turn of a free hand is not believed: a hand's flexion or deviation at the wrist
     /// is within it, a match to the thigh or the hip often is not. Default 60°.
     pub max_turn_deg: f64,
+    /// A free hand's fingertip is the scan's farthest point beyond the wrist within this
+    /// distance of the template hand's farthest vertex (`hand/length.rs`). Default 6 cm.
+    pub fingertip_search: f64,
+    /// The hand is stretched to the scan's fingertip only when it lies less than this farther or
+    /// nearer than the template's: farther, it is the thigh beside the hand, or a blob's swollen
+    /// surface. Default 1.5 cm (on the tuning zoo 4242 free hands' fingertips lay 3–12 mm beyond
+    /// the estimate's, those of hands beside the thigh 40–60 mm; at 2.5 cm the `blob` scans'
+    /// landmarks were worse, 11.9 → 12.1 mm on subjects 3–8).
+    pub fingertip_gate: f64,
     /// The forearm's width profile (the wrist's slide).
     pub profile: WristProfileParams,
     /// A hand laid on the body.
@@ -35,6 +44,8 @@ impl Default for HandParams {
             beyond: 0.01,
             area_range: (0.6, 1.5),
             max_turn_deg: 60.0,
+            fingertip_search: 0.06,
+            fingertip_gate: 0.015,
             profile: WristProfileParams::default(),
             laid: LaidHandParams::default(),
         }
