@@ -139,11 +139,11 @@ pub fn parse_scan(bytes: &[u8], file_name: &str) -> Result<ParsedScan, JsError> 
     let file_name = checked_file_name(file_name)?;
     let mesh = read_scan(bytes, file_name).map_err(|e| JsError::new(&e.to_string()))?;
     let summary = summarise(&mesh);
-    let normals = Mesh::new(
-        mesh.positions.clone(),
-        turned_out(&mesh.triangles, &summary.triangle_facing),
-    )
-    .flat_vertex_normals_f32();
+    // A file wound one way (no triangle faces in) is shaded as it is, without a copy.
+    let normals = match turned_out(&mesh.triangles, &summary.triangle_facing) {
+        Some(triangles) => Mesh::new(mesh.positions.clone(), triangles).flat_vertex_normals_f32(),
+        None => mesh.flat_vertex_normals_f32(),
+    };
     Ok(ParsedScan {
         mesh,
         normals,

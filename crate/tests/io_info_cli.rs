@@ -7,6 +7,8 @@ use bodyspace::io::write_ply;
 use bodyspace::mesh::Mesh;
 use nalgebra::Point3;
 
+mod cube;
+
 fn temp_dir(tag: &str) -> PathBuf {
     let dir = std::env::temp_dir().join(format!("bodyspace-info-{tag}-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
@@ -15,28 +17,8 @@ fn temp_dir(tag: &str) -> PathBuf {
 
 /// A closed cube 1800 mm tall (so: millimetres, 0 loops, 1 component).
 fn cube_mm() -> Mesh {
-    let positions = (0..8)
-        .map(|i| {
-            Point3::new(
-                (i & 1) as f64 * 400.0,
-                ((i >> 1) & 1) as f64 * 1800.0,
-                ((i >> 2) & 1) as f64 * 300.0,
-            )
-        })
-        .collect();
-    let quads = [
-        [0, 2, 3, 1],
-        [4, 5, 7, 6],
-        [0, 1, 5, 4],
-        [2, 6, 7, 3],
-        [0, 4, 6, 2],
-        [1, 3, 7, 5],
-    ];
-    let triangles = quads
-        .iter()
-        .flat_map(|q| [[q[0], q[1], q[2]], [q[0], q[2], q[3]]])
-        .collect();
-    Mesh::new(positions, triangles)
+    let (corners, triangles) = cube::cube([400.0, 1800.0, 300.0]);
+    Mesh::new(corners.into_iter().map(Point3::from).collect(), triangles)
 }
 
 #[test]

@@ -7,6 +7,8 @@ use bodyspace::bindings::{
 };
 use wasm_bindgen_test::*;
 
+mod cube;
+
 wasm_bindgen_test_configure!(run_in_browser);
 
 /// A binary little-endian PLY of a unit square in the z = 0 plane, in millimetres ×1000 so the
@@ -111,22 +113,12 @@ fn a_binary_ply_comes_out_as_flat_arrays_and_a_summary() {
 /// A unit cube as OBJ (metres) whose triangles face out, but every other one turned to face in:
 /// a file whose triangles face both ways.
 fn cube_facing_both_ways_obj() -> String {
+    let (corners, triangles) = cube::cube([1.0; 3]);
     let mut obj = String::new();
-    for i in 0..8 {
-        obj += &format!("v {} {} {}\n", i & 1, (i >> 1) & 1, (i >> 2) & 1);
+    for [x, y, z] in corners {
+        obj += &format!("v {x} {y} {z}\n");
     }
-    let quads = [
-        [0, 2, 3, 1],
-        [4, 5, 7, 6],
-        [0, 1, 5, 4],
-        [2, 6, 7, 3],
-        [0, 4, 6, 2],
-        [1, 3, 7, 5],
-    ];
-    let triangles = quads
-        .iter()
-        .flat_map(|q| [[q[0], q[1], q[2]], [q[0], q[2], q[3]]]);
-    for (t, [a, b, c]) in triangles.enumerate() {
+    for (t, [a, b, c]) in triangles.into_iter().enumerate() {
         let [b, c] = if t % 2 == 0 { [c, b] } else { [b, c] };
         obj += &format!("f {} {} {}\n", a + 1, b + 1, c + 1);
     }

@@ -495,14 +495,18 @@ pub fn facings(
 }
 
 /// `triangles` with each whose front faces into the body (`facing` −1, [`facings`]) turned to
-/// face out; the rest as they are. What a scan is shaded by: the vertex normals of a file whose
-/// triangles face both ways, taken as it is, point every way.
-pub fn turned_out(triangles: &[[u32; 3]], facing: &[i8]) -> Vec<[u32; 3]> {
-    triangles
+/// face out, the rest as they are; `None` where none faces in. What a scan is shaded by: the
+/// vertex normals of a file whose triangles face both ways, taken as it is, point every way.
+pub fn turned_out(triangles: &[[u32; 3]], facing: &[i8]) -> Option<Vec<[u32; 3]>> {
+    if !facing.contains(&-1) {
+        return None;
+    }
+    let turned = triangles
         .iter()
         .zip(facing.iter().chain(std::iter::repeat(&0)))
         .map(|(&t, &f)| if f < 0 { turned_round(t) } else { t })
-        .collect()
+        .collect();
+    Some(turned)
 }
 
 /// A triangle with its front turned: the same corners, the other way round.
@@ -831,7 +835,7 @@ pub(crate) mod tests {
                 .filter(|(p, n)| n.dot(&(*p - centre).normalize()) > 0.5)
                 .count()
         };
-        assert_eq!(outwards(&turned_out(&both.triangles, &each)), 8);
+        assert_eq!(outwards(&turned_out(&both.triangles, &each).unwrap()), 8);
         assert!(outwards(&both.triangles) < 8);
         // The second of two cubes mostly turned: it faces in but for its first three.
         let (whole, each) = facings(&flipped(&two_cubes(false), |t| t >= 15), &p);
